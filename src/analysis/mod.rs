@@ -1,0 +1,1 @@
+//! Studies built from many runs: spectra (SPEC §7), physical units and self-similarity (SPEC §8).

@@ -1,0 +1,90 @@
+//! The command line: a thin layer over the library. Each subcommand lives in
+//! its own file and returns `Result<(), CliError>`; `main` maps the error to
+//! the exit code.
+//!
+//! Exit codes: 0 success; 1 a check failed or a file could not be written;
+//! 2 bad input (a parameter out of range, an unknown preset, a malformed
+//! file, not a terminal for the explorer). Clap's own usage errors are 2 too.
+
+pub mod output;
+pub mod params;
+pub mod run;
+
+use clap::{Parser, Subcommand};
+
+/// A command's failure, with the exit code it maps to.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    /// Bad input: exit code 2.
+    #[error("{0}")]
+    Usage(String),
+    /// A failed check or an I/O error: exit code 1.
+    #[error("{0}")]
+    Failed(String),
+}
+
+impl CliError {
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            CliError::Usage(_) => 2,
+            CliError::Failed(_) => 1,
+        }
+    }
+}
+
+impl From<crate::model::ParamError> for CliError {
+    fn from(e: crate::model::ParamError) -> Self {
+        CliError::Usage(e.to_string())
+    }
+}
+
+impl From<crate::model::PresetError> for CliError {
+    fn from(e: crate::model::PresetError) -> Self {
+        match e {
+            crate::model::PresetError::Io { .. } => CliError::Usage(e.to_string()),
+            _ => CliError::Usage(e.to_string()),
+        }
+    }
+}
+
+#[derive(Debug, Parser)]
+#[command(
+    name = "pounding",
+    version,
+    about = "Pounding of two adjacent inelastic SDOF structures, in Buckingham-Π form",
+    long_about = "Pounding of two adjacent inelastic SDOF structures under sinusoidal ground \
+                  acceleration (Kelvin or improved Kelvin contact, bilinear hysteresis, \
+                  Newmark-β). Without a command it opens the terminal explorer."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Run one simulation and print its peaks, impacts and energy balance.
+    Run(run::RunArgs),
+}
+
+/// Parses the command line and runs the chosen command.
+pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32 {
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => {
+            let _ = e.print();
+            return e.exit_code();
+        }
+    };
+    let outcome = match cli.command {
+        Some(Command::Run(args)) => run::execute(&args),
+        None => run::execute(&run::RunArgs::default()),
+    };
+    match outcome {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("error: {e}");
+            e.exit_code()
+        }
+    }
+}

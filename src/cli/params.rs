@@ -1,0 +1,82 @@
+//! The options every simulating command shares: which preset, which
+//! overrides. Resolved once into a validated [`Params`].
+
+use std::path::PathBuf;
+
+use clap::Args;
+
+use super::CliError;
+use crate::model::{Params, Preset};
+
+#[derive(Debug, Clone, Default, Args)]
+pub struct ParamArgs {
+    /// Built-in preset name (set1, set2, ...) or a path to a preset file [default: set1].
+    #[arg(long, value_name = "NAME|PATH")]
+    pub preset: Option<String>,
+    /// Override one parameter, e.g. --set gap=0.5 (repeatable; keys as in presets).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub overrides: Vec<String>,
+    /// Contact model.
+    #[arg(long, value_parser = ["kelvin", "improved-kelvin"])]
+    pub model: Option<String>,
+    /// Newmark time step Δτ.
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub dt: Option<String>,
+    /// Duration in excitation cycles.
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    pub cycles: Option<String>,
+    /// No contact at all (gap = inf): the no-pounding baseline.
+    #[arg(long)]
+    pub no_pounding: bool,
+    /// Directory of the user's own presets [default: $XDG_CONFIG_HOME/pounding/presets].
+    #[arg(long, value_name = "DIR")]
+    pub presets: Option<PathBuf>,
+}
+
+/// The user's preset directory: `--presets DIR`, else
+/// `$XDG_CONFIG_HOME/pounding/presets`, else `~/.config/pounding/presets`.
+pub fn user_preset_dir(explicit: Option<&PathBuf>) -> Option<PathBuf> {
+    if let Some(d) = explicit {
+        return Some(d.clone());
+    }
+    let base = std::env::var_os("XDG_CONFIG_HOME")
+        .filter(|v| !v.is_empty())
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".config")))?;
+    Some(base.join("pounding").join("presets"))
+}
+
+impl ParamArgs {
+    /// The preset, with every override applied and validated. A `dt` too
+    /// coarse for the contact is a warning on stderr, not an error.
+    pub fn resolve(&self) -> Result<(Preset, Params), CliError> {
+        let dirs: Vec<PathBuf> = user_preset_dir(self.presets.as_ref()).into_iter().collect();
+        let preset = Preset::find(self.preset.as_deref().unwrap_or("set1"), &dirs)?;
+        let mut p = preset.params;
+        for kv in &self.overrides {
+            let (key, value) = kv.split_once('=').ok_or_else(|| {
+                CliError::Usage(format!(
+                    "--set `{kv}`: expected KEY=VALUE, e.g. --set gap=0.5"
+                ))
+            })?;
+            p.set(key.trim(), value)?;
+        }
+        if let Some(m) = &self.model {
+            p.set("model", m)?;
+        }
+        if let Some(dt) = &self.dt {
+            p.set("dt", dt)?;
+        }
+        if let Some(c) = &self.cycles {
+            p.set("cycles", c)?;
+        }
+        if self.no_pounding {
+            p.gap = f64::INFINITY;
+        }
+        p.validate()?;
+        if let Some(w) = p.coarse_dt_warning() {
+            eprintln!("{w}");
+        }
+        Ok((preset, p))
+    }
+}

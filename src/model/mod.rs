@@ -1,0 +1,14 @@
+//! The physical model: parameters (SPEC §1), bilinear springs (§3), contact
+//! laws (§4), the excitation (§2) and presets.
+
+pub mod contact;
+pub mod excitation;
+pub mod hysteresis;
+pub mod params;
+pub mod preset;
+
+pub use contact::{ContactLaw, ContactModel};
+pub use excitation::Excitation;
+pub use hysteresis::{Bilinear, SpringState};
+pub use params::{ParamError, Params, SET1, SET2};
+pub use preset::{Preset, PresetError};

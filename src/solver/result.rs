@@ -1,0 +1,98 @@
+//! What a run reports (SPEC §6).
+
+use serde::Serialize;
+
+/// Peak response of one structure: Π_u = max |x|, Π_v = max |ẋ| (SPEC §6).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct StructurePeaks {
+    pub peak_displacement: f64,
+    pub peak_velocity: f64,
+    /// Whether the spring left its elastic range at any time.
+    pub yielded: bool,
+}
+
+/// One contact phase, from the located onset to the located separation.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Impact {
+    /// τ at which contact began.
+    pub start: f64,
+    /// τ at which contact ended (the run's end if it had not).
+    pub end: f64,
+    /// δ̇ at onset, v₀ (before the floor of the improved Kelvin law).
+    pub approach_velocity: f64,
+    /// −δ̇ at separation.
+    pub separation_velocity: f64,
+    /// Achieved restitution: separation / approach velocity.
+    pub restitution: f64,
+    pub peak_force: f64,
+    pub max_penetration: f64,
+    /// False when the run ended during this contact.
+    pub ended: bool,
+}
+
+/// Energy balance of SPEC §6, in units of m2 a_p²/ω_p².
+///
+/// Every work term is accumulated per Newmark step as the mean of its force
+/// at the two ends times the displacement increment; with the average
+/// acceleration rule this is the step's exact discrete work, so the balance
+/// closes to the Newton tolerance and round-off.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct EnergyBalance {
+    /// E_in = −∫ (Π_m ẋ1 + ẋ2) g dτ.
+    pub input: f64,
+    /// E_kin = ½ Π_m ẋ1² + ½ ẋ2² at the end.
+    pub kinetic: f64,
+    /// E_damp = ∫ (2Π_ξΠ_mΠ_ω1 ẋ1² + 2Π_ξΠ_ω2 ẋ2²) dτ.
+    pub damping: f64,
+    /// E_spring = ∫ (f_s1 ẋ1 + f_s2 ẋ2) dτ (stored plus dissipated by yielding).
+    pub spring: f64,
+    /// E_contact = ∫ f_p δ̇ dτ.
+    pub contact: f64,
+    /// max |E_in| over the run.
+    pub max_input: f64,
+    /// |E_kin + E_damp + E_spring + E_contact − E_in| / max |E_in|.
+    pub residual: f64,
+}
+
+/// The summary of one run.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct RunResult {
+    pub left: StructurePeaks,
+    pub right: StructurePeaks,
+    pub impacts: Vec<Impact>,
+    /// Largest pounding force (0 without contact).
+    pub max_force: f64,
+    /// Smallest pounding force: below 0 means the element pulled (tension).
+    pub min_force: f64,
+    pub energy: EnergyBalance,
+    /// τ reached (τ_end unless stopped early).
+    pub tau_end: f64,
+    /// Accepted Newmark steps, counting split and contact sub-steps.
+    pub steps: usize,
+    /// Steps retried at a smaller size because Newton did not converge.
+    pub step_retries: usize,
+    /// Steps accepted although Newton had not converged at the smallest size.
+    pub unconverged_steps: usize,
+    /// False when the observer stopped the run early.
+    pub completed: bool,
+}
+
+impl RunResult {
+    /// Peaks of the four headline numbers [Π_u1, Π_v1, Π_u2, Π_v2].
+    pub fn peaks(&self) -> [f64; 4] {
+        [
+            self.left.peak_displacement,
+            self.left.peak_velocity,
+            self.right.peak_displacement,
+            self.right.peak_velocity,
+        ]
+    }
+
+    /// Whether every number is finite.
+    pub fn is_finite(&self) -> bool {
+        self.peaks().iter().all(|v| v.is_finite())
+            && self.max_force.is_finite()
+            && self.min_force.is_finite()
+            && self.energy.residual.is_finite()
+    }
+}
