@@ -16,8 +16,10 @@
 //! assert_eq!(result.impacts.len(), 9); // the paper's nine poundings
 //! ```
 
+pub mod accuracy;
 pub mod analysis;
 pub mod cli;
 pub mod model;
+pub mod reference;
 pub mod solver;
 pub mod tui;

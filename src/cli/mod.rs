@@ -6,9 +6,14 @@
 //! 2 bad input (a parameter out of range, an unknown preset, a malformed
 //! file, not a terminal for the explorer). Clap's own usage errors are 2 too.
 
+pub mod bench;
 pub mod output;
 pub mod params;
 pub mod run;
+pub mod similarity;
+pub mod spectrum;
+pub mod stress;
+pub mod tui;
 
 use clap::{Parser, Subcommand};
 
@@ -40,10 +45,7 @@ impl From<crate::model::ParamError> for CliError {
 
 impl From<crate::model::PresetError> for CliError {
     fn from(e: crate::model::PresetError) -> Self {
-        match e {
-            crate::model::PresetError::Io { .. } => CliError::Usage(e.to_string()),
-            _ => CliError::Usage(e.to_string()),
-        }
+        CliError::Usage(e.to_string())
     }
 }
 
@@ -65,6 +67,16 @@ pub struct Cli {
 pub enum Command {
     /// Run one simulation and print its peaks, impacts and energy balance.
     Run(run::RunArgs),
+    /// Response spectra: peak response against Π_ω1 with and without pounding (SPEC §7).
+    Spectrum(spectrum::SpectrumArgs),
+    /// Physical units in and out, and the self-similarity of SPEC §8.
+    Similarity(similarity::SimilarityArgs),
+    /// Open the terminal explorer (the default without a command).
+    Tui(tui::TuiArgs),
+    /// Work-precision table: run time against error for each method.
+    Bench(bench::BenchArgs),
+    /// Numerical stress test over corner and random parameter sets.
+    Stress(stress::StressArgs),
 }
 
 /// Parses the command line and runs the chosen command.
@@ -78,6 +90,11 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
     };
     let outcome = match cli.command {
         Some(Command::Run(args)) => run::execute(&args),
+        Some(Command::Spectrum(args)) => spectrum::execute(&args),
+        Some(Command::Similarity(args)) => similarity::execute(&args),
+        Some(Command::Tui(args)) => tui::execute(&args),
+        Some(Command::Bench(args)) => bench::execute(&args),
+        Some(Command::Stress(args)) => stress::execute(&args),
         None => run::execute(&run::RunArgs::default()),
     };
     match outcome {

@@ -1,0 +1,1 @@
+//! Accuracy and speed, measured: work-precision rows and the numerical stress test.
