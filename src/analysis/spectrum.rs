@@ -1,0 +1,103 @@
+//! Response spectra (SPEC §7): Π_ω1 swept over a grid with Π_ω2 = μ Π_ω1,
+//! every other Π fixed; at each point the peaks with pounding and without it
+//! (`gap = inf`), and the left structure's spectral region.
+
+use serde::Serialize;
+
+use crate::model::Params;
+use crate::solver::{RunResult, StructurePeaks, run};
+
+/// Relative change of the left structure's Π_u beyond which pounding counts
+/// as amplifying or suppressing it (SPEC §7).
+pub const REGION_THRESHOLD: f64 = 0.02;
+
+/// The left structure's spectral region at one point (SPEC §7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Region {
+    /// Pounding raises Π_u by more than 2 %.
+    Amplification,
+    /// Pounding lowers Π_u by more than 2 %.
+    Suppression,
+    /// Within ±2 %.
+    None,
+}
+
+impl Region {
+    /// Classifies from the left structure's Π_u with and without pounding.
+    pub fn classify(with_pounding: f64, without: f64) -> Region {
+        if with_pounding > without * (1.0 + REGION_THRESHOLD) {
+            Region::Amplification
+        } else if with_pounding < without * (1.0 - REGION_THRESHOLD) {
+            Region::Suppression
+        } else {
+            Region::None
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Region::Amplification => "amplification",
+            Region::Suppression => "suppression",
+            Region::None => "none",
+        }
+    }
+}
+
+/// One point of a spectrum.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SpectrumPoint {
+    pub omega1: f64,
+    pub omega2: f64,
+    /// With pounding.
+    pub left: StructurePeaks,
+    pub right: StructurePeaks,
+    /// The no-pounding baseline (`gap = inf`).
+    pub free_left: StructurePeaks,
+    pub free_right: StructurePeaks,
+    pub impacts: usize,
+    pub region: Region,
+}
+
+/// The parameters of the point Π_ω1 = `omega1`, Π_ω2 = μ Π_ω1.
+pub fn at_omega(p: &Params, omega1: f64, mu: f64) -> Params {
+    Params {
+        omega1,
+        omega2: mu * omega1,
+        ..*p
+    }
+}
+
+/// The no-pounding twin of a parameter set.
+pub fn baseline_params(p: &Params) -> Params {
+    Params {
+        gap: f64::INFINITY,
+        ..*p
+    }
+}
+
+/// Combines a pounding run with its baseline into a spectrum point.
+pub fn combine(p: &Params, with: &RunResult, without: &RunResult) -> SpectrumPoint {
+    SpectrumPoint {
+        omega1: p.omega1,
+        omega2: p.omega2,
+        left: with.left,
+        right: with.right,
+        free_left: without.left,
+        free_right: without.right,
+        impacts: with.impacts.len(),
+        region: Region::classify(with.left.peak_displacement, without.left.peak_displacement),
+    }
+}
+
+/// One spectrum point, peaks only: the pounding run and its baseline. A
+/// pounding run with no impact is its own baseline.
+pub fn point(p: &Params, omega1: f64, mu: f64) -> SpectrumPoint {
+    let q = at_omega(p, omega1, mu);
+    let with = run(&q);
+    if with.impacts.is_empty() {
+        return combine(&q, &with, &with);
+    }
+    let without = run(&baseline_params(&q));
+    combine(&q, &with, &without)
+}
