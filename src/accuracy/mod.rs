@@ -1,1 +1,18 @@
-//! Accuracy and speed, measured: work-precision rows and the numerical stress test.
+//! Accuracy and speed, measured (issue 5).
+//!
+//! - [`method`]: the schemes compared (Newmark plain, located, sub-stepped in
+//!   contact; the reference at a given tolerance);
+//! - [`timing`]: median wall time per run, warm-up excluded;
+//! - [`work_precision`]: the rows of `pounding bench` (time against error
+//!   measured on the reference at its tightest tolerance, observed order);
+//! - [`plot`]: error against time on log–log axes in Braille;
+//! - [`stress`]: the corner and random cases of `pounding stress` and the
+//!   invariants each must keep;
+//! - [`random`]: a small seeded generator for the random cases.
+
+pub mod method;
+pub mod plot;
+pub mod random;
+pub mod stress;
+pub mod timing;
+pub mod work_precision;

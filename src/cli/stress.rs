@@ -1,14 +1,127 @@
-//! `pounding stress`: Numerical stress test over corner and random parameter sets.
+//! `pounding stress`: the numerical stress test over corner and random
+//! parameter sets (see [`crate::accuracy::stress`]). Exit code 1 if any case fails.
+
+use std::fmt::Write as _;
 
 use clap::Args;
 
 use super::CliError;
+use super::output::Format;
+use crate::accuracy::stress::{Outcome, check, corner_cases, random_cases};
 
-#[derive(Debug, Clone, Default, Args)]
-pub struct StressArgs {}
+#[derive(Debug, Clone, Args)]
+pub struct StressArgs {
+    /// Number of random parameter sets after the corner cases.
+    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(0..=100_000))]
+    pub cases: u32,
+    /// Seed of the random parameter sets (same seed, same cases).
+    #[arg(long, value_name = "S", default_value_t = 1)]
+    pub seed: u64,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+}
 
-pub fn execute(_args: &StressArgs) -> Result<(), CliError> {
-    Err(CliError::Failed(
-        "`pounding stress` is not built yet".into(),
-    ))
+impl Default for StressArgs {
+    fn default() -> Self {
+        StressArgs {
+            cases: 100,
+            seed: 1,
+            format: Format::Table,
+        }
+    }
+}
+
+pub fn execute(args: &StressArgs) -> Result<(), CliError> {
+    let mut cases = corner_cases();
+    cases.extend(random_cases(args.cases as usize, args.seed));
+    let outcomes: Vec<Outcome> = cases.iter().map(check).collect();
+    let failed = outcomes.iter().filter(|o| !o.passed).count();
+    let text = match args.format {
+        Format::Json => {
+            serde_json::json!({
+                "cases": outcomes,
+                "passed": outcomes.len() - failed,
+                "failed": failed,
+            })
+            .to_string()
+                + "\n"
+        }
+        Format::Csv => csv(&outcomes),
+        Format::Table => table(&outcomes),
+    };
+    print!("{text}");
+    if failed > 0 {
+        Err(CliError::Failed(format!(
+            "{failed} of {} stress cases failed",
+            outcomes.len()
+        )))
+    } else {
+        Ok(())
+    }
+}
+
+fn why(o: &Outcome) -> String {
+    o.failures
+        .iter()
+        .chain(&o.notes)
+        .cloned()
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+fn table(outcomes: &[Outcome]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "{:<44} {:<4} {:>7} {:>9} {:>7} {:>9} {:>10} {:>9}  why / notes",
+        "case", "", "impacts", "steps", "retries", "residual", "min force", "ms"
+    );
+    for o in outcomes {
+        let _ = writeln!(
+            s,
+            "{:<44} {:<4} {:>7} {:>9} {:>7} {:>9.1e} {:>10.3e} {:>9.1}  {}",
+            o.name,
+            if o.passed { "pass" } else { "FAIL" },
+            o.impacts,
+            o.steps,
+            o.step_retries,
+            o.energy_residual,
+            o.min_force,
+            o.ms,
+            why(o)
+        );
+    }
+    let failed = outcomes.iter().filter(|o| !o.passed).count();
+    let _ = writeln!(
+        s,
+        "{} cases, {} passed, {failed} failed",
+        outcomes.len(),
+        outcomes.len() - failed
+    );
+    for o in outcomes.iter().filter(|o| !o.passed) {
+        let _ = writeln!(s, "failed: {}: {}", o.name, o.params);
+    }
+    s
+}
+
+fn csv(outcomes: &[Outcome]) -> String {
+    let mut s =
+        String::from("case,passed,impacts,steps,step_retries,energy_residual,min_force,ms,why\n");
+    for o in outcomes {
+        let _ = writeln!(
+            s,
+            "\"{}\",{},{},{},{},{},{},{},\"{}\"",
+            o.name,
+            o.passed,
+            o.impacts,
+            o.steps,
+            o.step_retries,
+            o.energy_residual,
+            o.min_force,
+            o.ms,
+            why(o).replace('"', "'")
+        );
+    }
+    s
 }

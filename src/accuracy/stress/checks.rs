@@ -1,0 +1,163 @@
+//! Running one case and checking it.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use super::cases::{Case, Expect};
+use crate::model::ContactModel;
+use crate::solver::{RunResult, simulate};
+
+/// Largest accepted energy residual |E_kin + E_damp + E_spring + E_contact − E_in| / max|E_in|.
+/// The work terms are the exact discrete work of each Newmark step, so the
+/// balance closes to the Newton tolerance and round-off.
+pub const ENERGY_TOLERANCE: f64 = 1e-8;
+/// Tension allowed from the improved Kelvin element for e ≥ 0.4, relative to
+/// the peak force (round-off at the located separation, where δ ≈ 0).
+pub const TENSION_TOLERANCE: f64 = 1e-9;
+/// Restitution from which the improved Kelvin element must never pull.
+pub const NO_TENSION_FROM: f64 = 0.4;
+
+/// The verdict on one case.
+#[derive(Debug, Clone, Serialize)]
+pub struct Outcome {
+    pub name: String,
+    pub passed: bool,
+    /// Why it failed (empty when it passed).
+    pub failures: Vec<String>,
+    /// Things worth knowing that are not failures (retries, flagged coarse Δτ).
+    pub notes: Vec<String>,
+    pub params: String,
+    pub impacts: usize,
+    pub steps: usize,
+    pub step_retries: usize,
+    pub energy_residual: f64,
+    pub min_force: f64,
+    pub max_force: f64,
+    pub ms: f64,
+}
+
+/// Resident set size of this process in bytes (Linux; None elsewhere).
+fn resident_bytes() -> Option<usize> {
+    let text = std::fs::read_to_string("/proc/self/statm").ok()?;
+    let pages: usize = text.split_whitespace().nth(1)?.parse().ok()?;
+    Some(pages * 4096)
+}
+
+/// Runs `case` and checks every invariant.
+pub fn check(case: &Case) -> Outcome {
+    let p = &case.params;
+    let rss_before = resident_bytes();
+    let start = Instant::now();
+    let r = simulate(p, &case.options, &mut ());
+    let ms = start.elapsed().as_secs_f64() * 1e3;
+    let rss_after = resident_bytes();
+    let mut failures = invariants(case, &r);
+    let mut notes = Vec::new();
+    if r.step_retries > 0 {
+        notes.push(format!("{} steps retried smaller", r.step_retries));
+    }
+    if p.coarse_dt_warning().is_some() {
+        let substeps = case.options.substeps(p);
+        notes.push(if substeps > 1 {
+            format!("coarse dt flagged; {substeps} sub-steps per dt in contact")
+        } else {
+            format!(
+                "flagged under-resolved: {:.2} steps per contact period",
+                p.steps_per_contact_period()
+            )
+        });
+    }
+    match case.expect {
+        Expect::Invariants => {}
+        Expect::AmplitudeBound(bound) => {
+            for (i, (peak, b)) in [r.left.peak_displacement, r.right.peak_displacement]
+                .into_iter()
+                .zip(bound)
+                .enumerate()
+            {
+                if !(peak <= b * (1.0 + 1e-9)) {
+                    failures.push(format!("Π_u{} = {peak} exceeds the amplitude {b}", i + 1));
+                }
+            }
+        }
+        Expect::MemoryBound(limit) => match (rss_before, rss_after) {
+            (Some(a), Some(b)) => {
+                let growth = b.saturating_sub(a);
+                if growth > limit {
+                    failures.push(format!(
+                        "resident memory grew by {growth} bytes over {} steps",
+                        r.steps
+                    ));
+                } else {
+                    notes.push(format!(
+                        "memory growth {} kB over {} steps",
+                        growth / 1024,
+                        r.steps
+                    ));
+                }
+            }
+            _ => notes.push("memory not measured (no /proc/self/statm)".into()),
+        },
+    }
+    Outcome {
+        name: case.name.clone(),
+        passed: failures.is_empty(),
+        failures,
+        notes,
+        params: p.to_string(),
+        impacts: r.impacts.len(),
+        steps: r.steps,
+        step_retries: r.step_retries,
+        energy_residual: r.energy.residual,
+        min_force: r.min_force,
+        max_force: r.max_force,
+        ms,
+    }
+}
+
+/// The invariants every run keeps; returns what broke.
+pub fn invariants(case: &Case, r: &RunResult) -> Vec<String> {
+    let p = &case.params;
+    let mut failures = Vec::new();
+    let impacts_finite = r.impacts.iter().all(|i| {
+        [
+            i.start,
+            i.end,
+            i.approach_velocity,
+            i.separation_velocity,
+            i.peak_force,
+            i.max_penetration,
+        ]
+        .iter()
+        .all(|v| v.is_finite())
+    });
+    if !r.is_finite() || !impacts_finite {
+        failures.push(format!("non-finite output: peaks {:?}", r.peaks()));
+    }
+    if !r.completed || (r.tau_end - p.tau_end()).abs() > 1e-9 * p.tau_end() {
+        failures.push(format!("stopped at τ = {} of {}", r.tau_end, p.tau_end()));
+    }
+    if !(r.energy.residual <= ENERGY_TOLERANCE) {
+        failures.push(format!(
+            "energy residual {:.2e} > {ENERGY_TOLERANCE:e}",
+            r.energy.residual
+        ));
+    }
+    if r.unconverged_steps > 0 {
+        failures.push(format!(
+            "{} steps accepted with Newton unconverged",
+            r.unconverged_steps
+        ));
+    }
+    if p.model == ContactModel::ImprovedKelvin
+        && p.restitution >= NO_TENSION_FROM
+        && r.min_force < -TENSION_TOLERANCE * r.max_force.max(1.0)
+    {
+        failures.push(format!(
+            "tension {:.3e} from improved Kelvin at e = {}",
+            r.min_force, p.restitution
+        ));
+    }
+    failures
+}
