@@ -76,6 +76,10 @@ pub struct ReferenceResult {
     pub peaks: [f64; 4],
     pub impacts: Vec<ReferenceImpact>,
     pub yielded: [bool; 2],
+    /// Largest and smallest pounding force at the accepted points (step ends
+    /// and events) in contact; below 0 the element pulls.
+    pub max_force: f64,
+    pub min_force: f64,
     /// The state at the end.
     pub final_state: [f64; 4],
     pub tau_end: f64,
@@ -274,6 +278,15 @@ impl<'a> Run<'a> {
     }
 
     fn track_point(&mut self, y: &Vector) {
+        if self.mode.contact.is_some() {
+            let f = self.system.pounding_force(&self.mode, y);
+            self.result.max_force = self.result.max_force.max(f);
+            self.result.min_force = self.result.min_force.min(f);
+        }
+        self.track_peaks(y);
+    }
+
+    fn track_peaks(&mut self, y: &Vector) {
         for (peak, value) in self.result.peaks.iter_mut().zip(y) {
             *peak = peak.max(value.abs());
         }
@@ -311,6 +324,6 @@ impl<'a> Run<'a> {
             }
         }
         drop(f);
-        self.track_point(&found);
+        self.track_peaks(&found);
     }
 }

@@ -17,6 +17,10 @@ pub enum Expect {
     /// A long run with the peaks-only observer: resident memory must not grow
     /// by more than this many bytes.
     MemoryBound(usize),
+    /// Contact deliberately under-resolved (flagged): it must stay finite,
+    /// converged and energy-consistent, but accuracy properties (no tension)
+    /// are reported as degradation, not failure.
+    UnderResolved,
 }
 
 /// One run to check.
@@ -53,18 +57,14 @@ pub fn corner_cases() -> Vec<Case> {
         out.push(case(format!("contact_omega={w}"), with("contact_omega", w)));
     }
     // Under-resolved contact (Π_ωcon·Δτ = 10) without sub-steps: must stay finite and be flagged.
-    for (label, options) in [
-        ("located", SolverOptions::located()),
-        ("plain", SolverOptions::plain()),
-    ] {
-        out.push(Case {
-            options,
-            ..case(
-                format!("contact_omega=1e4 {label}"),
-                with("contact_omega", 1e4),
-            )
-        });
-    }
+    out.push(Case {
+        options: SolverOptions::located(),
+        expect: Expect::UnderResolved,
+        ..case(
+            "contact_omega=1e4 located, no sub-steps",
+            with("contact_omega", 1e4),
+        )
+    });
     for e in [1e-3, 1e-2, 0.1, 0.4, 0.7, 1.0] {
         for model in MODELS {
             let p = Params {
