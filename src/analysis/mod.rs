@@ -13,6 +13,8 @@
 pub mod baseline;
 pub mod family;
 pub mod grid;
+pub mod physical;
+pub mod similarity;
 pub mod spectrum;
 pub mod spectrum_spec;
 pub mod sweep;
