@@ -103,7 +103,12 @@ pub fn sweep(specs: &[CurveSpec], omega1: &[f64], cache: &mut BaselineCache) -> 
 
     // Combine.
     let mut results = points.iter().zip(pounding).map(|(q, with)| {
-        let without = cache.get(q).unwrap_or_default().as_run();
+        // A pounding run with no impact is its own baseline, bit for bit.
+        let free = match &with {
+            Some(r) if r.impacts.is_empty() => Some(FreePeaks::of(r)),
+            _ => cache.get(q),
+        };
+        let without = free.unwrap_or_default().as_run();
         combine(q, with.as_ref().unwrap_or(&without), &without)
     });
     specs
