@@ -1,12 +1,16 @@
 //! One Newmark-β step (γ = 1/2, β = 1/4, SPEC §5) of the two-structure system
 //!
-//!     M ẍ + C ẋ + f_s(x) + B f_p(δ, δ̇) = −M g(τ),   B = (1, −1)ᵀ,
+//! ```text
+//! M ẍ + C ẋ + f_s(x) + B f_p(δ, δ̇) = −M g(τ),   B = (1, −1)ᵀ,
+//! ```
 //!
 //! with M = diag(Π_m, 1), C = diag(2Π_ξΠ_mΠ_ω1, 2Π_ξΠ_ω2) (SPEC §2).
 //! The average-acceleration rule writes the end-of-step velocity and
 //! acceleration in terms of the unknown displacement x = x_n + Δ:
 //!
-//!     ẋ = 2Δ/h − ẋ_n,     ẍ = 4Δ/h² − 4ẋ_n/h − ẍ_n.
+//! ```text
+//! ẋ = 2Δ/h − ẋ_n,     ẍ = 4Δ/h² − 4ẋ_n/h − ẍ_n.
+//! ```
 //!
 //! Out of contact the two structures are uncoupled and each spring is
 //! piecewise affine in Δ (elastic or on one of the two yield branches), so
@@ -15,7 +19,9 @@
 //! is nonlinear, so Newton–Raphson runs on the 2×2 residual with the
 //! consistent tangent
 //!
-//!     J = 4M/h² + 2C/h + diag(k_t) + (∂f_p/∂δ + 2/h ∂f_p/∂δ̇) B Bᵀ.
+//! ```text
+//! J = 4M/h² + 2C/h + diag(k_t) + (∂f_p/∂δ + 2/h ∂f_p/∂δ̇) B Bᵀ.
+//! ```
 
 use nalgebra::{Matrix2, Vector2};
 
