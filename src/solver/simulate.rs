@@ -113,8 +113,7 @@ pub fn simulate<O: Observer>(p: &Params, options: &SolverOptions, observer: &mut
     let system =
         System::new(p, options.excitation).with_steps([p.dt, p.dt / options.substeps(p) as f64]);
     let mut run = Driver::new(p, options, system);
-    let start = run.state;
-    run.record(observer, &start);
+    run.record(observer);
     run.time_loop(observer);
     run.finish()
 }
@@ -159,7 +158,7 @@ impl<'a> Driver<'a> {
         if matches!(d.phase, Phase::Contact(_)) {
             d.open_impact(&s);
         }
-        d.track(&s);
+        d.track();
         d
     }
 
@@ -264,9 +263,8 @@ impl<'a> Driver<'a> {
         self.peaks_within(start, &next);
         self.state = next;
         switch(self);
-        let s = self.state;
-        self.track(&s);
-        self.record(observer, &s);
+        self.track();
+        self.record(observer);
         self.result.steps += 1;
     }
 
@@ -354,23 +352,31 @@ impl<'a> Driver<'a> {
     }
 
     /// Peaks, yielding, force extremes and the open impact's maxima.
-    fn track(&mut self, s: &State) {
-        let r = &mut self.result;
+    fn track(&mut self) {
+        let Driver {
+            result: r,
+            state: s,
+            open_impact,
+            system,
+            ..
+        } = self;
         for (peaks, i) in [(&mut r.left, 0), (&mut r.right, 1)] {
             peaks.peak_displacement = peaks.peak_displacement.max(s.x[i].abs());
             peaks.peak_velocity = peaks.peak_velocity.max(s.v[i].abs());
             peaks.yielded |= s.plastic[i];
         }
-        if let Some(i) = self.open_impact {
+        if let Some(i) = *open_impact {
             r.max_force = r.max_force.max(s.fp);
             r.min_force = r.min_force.min(s.fp);
             let imp = &mut r.impacts[i];
             imp.peak_force = imp.peak_force.max(s.fp);
-            imp.max_penetration = imp.max_penetration.max(self.system.penetration(s.x));
+            imp.max_penetration = imp.max_penetration.max(system.penetration(s.x));
         }
     }
 
-    fn record<O: Observer>(&self, observer: &mut O, s: &State) {
+    #[inline]
+    fn record<O: Observer>(&self, observer: &mut O) {
+        let s = &self.state;
         observer.record(&Sample {
             tau: s.tau,
             x: s.x,
