@@ -3,8 +3,10 @@
 //! With the base quantities m2, a_p and ω_p, the energy length
 //! l_e = a_p/ω_p² and the velocity scale a_p/ω_p give (SPEC §1)
 //!
-//!     Π_m = m1/m2,  Π_ωi = ωi/ω_p,  Π_uyi = u_yi/l_e,  Π_d = d/l_e,
-//!     Π_ωcon = ω̄/ω_p,  Π_ξ = ξ,  Π_α = α,  Π_e = e,
+//! ```text
+//! Π_m = m1/m2,  Π_ωi = ωi/ω_p,  Π_uyi = u_yi/l_e,  Π_d = d/l_e,
+//! Π_ωcon = ω̄/ω_p,  Π_ξ = ξ,  Π_α = α,  Π_e = e,
+//! ```
 //!
 //! and results map back as X_max = Π_u l_e, Ẋ_max = Π_v a_p/ω_p.
 //!
