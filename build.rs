@@ -5,7 +5,8 @@ use std::{env, fs, path::Path};
 
 fn main() {
     println!("cargo:rerun-if-changed=presets");
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("presets");
+    let dir = Path::new(&env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"))
+        .join("presets");
     let mut entries: Vec<_> = fs::read_dir(&dir)
         .map(|rd| {
             rd.filter_map(|e| e.ok())

@@ -175,7 +175,7 @@ impl System {
 
     /// One Newmark step of size `h` from `s`. Returns the new state and
     /// whether Newton converged (always true out of contact).
-    #[inline]
+    #[inline(always)]
     pub fn step(&self, s: &State, h: f64, phase: &Phase) -> (State, bool) {
         match phase {
             Phase::Free => (self.free_step(s, h), true),
@@ -184,7 +184,7 @@ impl System {
     }
 
     /// Builds the end-of-step state from the displacement increment.
-    #[inline]
+    #[inline(always)]
     fn finish(
         &self,
         s: &State,
@@ -218,8 +218,8 @@ impl System {
     /// Uncoupled step: per structure, the residual
     /// R(Δ) = (4m/h² + 2c/h) Δ + r₀ + f_s(x_n + Δ) is continuous, increasing
     /// and affine on each spring branch, so its root is found exactly.
-    #[inline]
-    fn free_step(&self, s: &State, h: f64) -> State {
+    #[inline(always)]
+    pub fn free_step(&self, s: &State, h: f64) -> State {
         let phasor = self.excitation_after(s, h);
         let g = phasor[0];
         let inv_h = 1.0 / h;
@@ -286,7 +286,7 @@ impl System {
 /// f_s = Π_α k (x_n + Δ) + σ (1 − Π_α) k Π_uy. The residual is continuous and
 /// increasing, so exactly one branch holds its root: try elastic first, then
 /// the branch on the side the elastic trial overshot to.
-#[inline]
+#[inline(always)]
 fn solve_bilinear(k_eff: f64, r0: f64, spring: &Bilinear, from: SpringState, fs_n: f64) -> f64 {
     let k = spring.stiffness;
     let uy = spring.yield_displacement;

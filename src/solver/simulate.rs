@@ -202,7 +202,17 @@ impl<'a> Driver<'a> {
             } else {
                 base
             };
-            h /= f64::from(1u32 << halvings.min(30));
+            if halvings > 0 {
+                h /= f64::from(1u32 << halvings.min(30));
+            }
+            if h == dt && matches!(self.phase, Phase::Free) {
+                if !self.free_flight(observer, dt, tau_end - end_slack) {
+                    break;
+                }
+                if self.state.tau + dt + end_slack > tau_end {
+                    continue;
+                }
+            }
             let start = self.state;
             let (next, converged) = self.system.step(&start, h, &self.phase);
             if !converged && halvings < self.options.max_step_halvings {
@@ -248,6 +258,38 @@ impl<'a> Driver<'a> {
         if let Some(i) = self.open_impact {
             self.result.impacts[i].end = self.state.tau;
         }
+    }
+
+    /// The hot path: whole steps of Δτ out of contact, up to [`POLL_EVERY`]
+    /// of them, until a step would start a contact or the run's last step is
+    /// due; then the general loop takes over (and redoes that one step with
+    /// event location). The same step and the same accounting as
+    /// [`Driver::accept`], with the state kept in locals. Returns false when
+    /// the observer asked to stop.
+    fn free_flight<O: Observer>(&mut self, observer: &mut O, dt: f64, tau_end: f64) -> bool {
+        if !observer.keep_going() {
+            self.result.completed = false;
+            return false;
+        }
+        self.system.resync(&mut self.state);
+        let mut current = self.state;
+        for _ in 0..POLL_EVERY {
+            if current.tau + dt > tau_end {
+                break;
+            }
+            let next = self.system.free_step(&current, dt);
+            if self.system.penetration(next.x) > 0.0 {
+                break;
+            }
+            self.add_work(&current, &next);
+            self.peaks_within(&current, &next);
+            track_peaks(&mut self.result, &next);
+            observer.record(&sample(&next, false));
+            self.result.steps += 1;
+            current = next;
+        }
+        self.state = current;
+        true
     }
 
     /// Accepts `next` as the state after `start`: work integrals, then the
@@ -376,16 +418,10 @@ impl<'a> Driver<'a> {
 
     #[inline]
     fn record<O: Observer>(&self, observer: &mut O) {
-        let s = &self.state;
-        observer.record(&Sample {
-            tau: s.tau,
-            x: s.x,
-            v: s.v,
-            a: s.a,
-            fs: s.fs,
-            fp: s.fp,
-            in_contact: matches!(self.phase, Phase::Contact(_)),
-        });
+        observer.record(&sample(
+            &self.state,
+            matches!(self.phase, Phase::Contact(_)),
+        ));
     }
 
     fn finish(mut self) -> RunResult {
@@ -407,6 +443,30 @@ impl<'a> Driver<'a> {
         self.result.energy = self.energy;
         self.result.tau_end = s.tau;
         self.result
+    }
+}
+
+/// Peaks and yielding at an accepted state.
+#[inline]
+fn track_peaks(r: &mut RunResult, s: &State) {
+    for (peaks, i) in [(&mut r.left, 0), (&mut r.right, 1)] {
+        peaks.peak_displacement = peaks.peak_displacement.max(s.x[i].abs());
+        peaks.peak_velocity = peaks.peak_velocity.max(s.v[i].abs());
+        peaks.yielded |= s.plastic[i];
+    }
+}
+
+/// What an observer sees of a state.
+#[inline]
+fn sample(s: &State, in_contact: bool) -> Sample {
+    Sample {
+        tau: s.tau,
+        x: s.x,
+        v: s.v,
+        a: s.a,
+        fs: s.fs,
+        fp: s.fp,
+        in_contact,
     }
 }
 
