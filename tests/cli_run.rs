@@ -217,3 +217,26 @@ fn coarse_dt_is_a_warning_not_an_error() {
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert!(v["left"]["peak_displacement"].as_f64().unwrap().is_finite());
 }
+
+#[test]
+fn physical_preset_runs_its_own_pi_groups() {
+    // two-buildings holds only a [physical] table: its Π-groups, not set 1's, are run.
+    let o = pounding(&[
+        "run",
+        "--preset",
+        "two-buildings",
+        "--format",
+        "json",
+        "--cycles",
+        "1",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let omega1 = v["params"]["omega1"].as_f64().unwrap();
+    // Π_ω1 = ω1/ω_p = (2π/0.95)/(2π/1.0) = 1/0.95.
+    assert!((omega1 - 1.0 / 0.95).abs() < 1e-12, "{omega1}");
+    // Π_d = d ω_p²/a_p = 0.025 (2π)² / (0.5 g).
+    let gap = v["params"]["gap"].as_f64().unwrap();
+    let expected = 0.025 * (2.0 * std::f64::consts::PI).powi(2) / (0.5 * 9.80665);
+    assert!((gap - expected).abs() < 1e-12, "{gap} vs {expected}");
+}

@@ -1,9 +1,9 @@
 //! Self-similarity (SPEC §8): the physical example at 0.2 g, 0.5 g and 0.8 g.
 //! Dimensionless spectra agree to round-off; dimensional ones scale with a_p.
 
-use pounding::analysis::physical::{G, Physical};
 use pounding::analysis::similarity::{master_curve_spread, study};
 use pounding::model::Preset;
+use pounding::model::physical::{G, Physical};
 
 fn example() -> (Physical, pounding::model::Params) {
     let preset = Preset::find("two-buildings", &[]).unwrap();

@@ -13,7 +13,6 @@
 pub mod baseline;
 pub mod family;
 pub mod grid;
-pub mod physical;
 pub mod similarity;
 pub mod spectrum;
 pub mod spectrum_spec;

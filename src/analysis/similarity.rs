@@ -7,9 +7,9 @@
 //! Ẋ_max = Π_v a_p/ω_p.
 
 use super::baseline::BaselineCache;
-use super::physical::Physical;
 use super::spectrum::SpectrumPoint;
 use super::sweep::{Curve, CurveSpec, sweep};
+use crate::model::physical::Physical;
 use crate::model::{ParamError, Params};
 
 /// One excitation level: its physical system, Π-groups and spectrum.

@@ -11,9 +11,9 @@ use super::CliError;
 use super::output::{Format, num};
 use super::params::ParamArgs;
 use super::spectrum::SpectrumPlan;
-use crate::analysis::physical::{G, Physical, parse_acceleration};
 use crate::analysis::similarity::{Level, master_curve_spread, study};
 use crate::analysis::spectrum_spec::SpectrumSpec;
+use crate::model::physical::{G, Physical, parse_acceleration};
 
 /// Π keys that a `[physical]` table fixes; `--set` may not change them.
 const CONVERTED: [&str; 10] = [

@@ -5,6 +5,7 @@ pub mod contact;
 pub mod excitation;
 pub mod hysteresis;
 pub mod params;
+pub mod physical;
 pub mod preset;
 
 pub use contact::{ContactLaw, ContactModel};

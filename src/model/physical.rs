@@ -31,7 +31,7 @@
 
 use std::f64::consts::PI;
 
-use crate::model::{ParamError, Params};
+use super::params::{ParamError, Params};
 
 /// Standard gravity, m/s², for accelerations written as `0.5g`.
 pub const G: f64 = 9.80665;
