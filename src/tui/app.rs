@@ -51,7 +51,7 @@ impl Scene {
             Scene::History => "time history",
             Scene::Loops => "force-drift",
             Scene::Kelvin => "kelvin vs improved",
-            Scene::Sets => "set 1 vs set 2",
+            Scene::Sets => "set 1 vs 2",
             Scene::Spectrum => "spectrum",
         }
     }
@@ -652,3 +652,22 @@ impl App {
 /// History buckets of the force–drift scene: fine enough that a bucket's
 /// midpoint traces the loop (SPEC §3).
 pub const LOOP_BUCKETS: usize = 2048;
+
+impl App {
+    /// Computes what the visible scene needs on the calling thread (tests,
+    /// benchmarks): the same job the worker would run, with the same outputs.
+    pub fn compute_blocking(&mut self) {
+        if let Some(job) = self.job() {
+            let outputs = std::cell::RefCell::new(Vec::new());
+            let send = |o: Output| outputs.borrow_mut().push(o);
+            super::worker::run_job(&job, &|| true, &send);
+            for o in outputs.into_inner() {
+                self.on_output(o);
+            }
+            self.on_output(Output::Done {
+                generation: job.generation,
+                cancelled: false,
+            });
+        }
+    }
+}

@@ -121,7 +121,7 @@ fn header(app: &App, frame: &mut Frame, area: Rect) {
         Style::new().add_modifier(Modifier::BOLD),
     )];
     for s in Scene::ALL {
-        let text = format!(" {} {} ", s.key(), s.title());
+        let text = format!(" {}:{} ", s.key(), s.title());
         let style = if s == app.scene {
             Style::new().add_modifier(Modifier::REVERSED)
         } else {

@@ -147,11 +147,19 @@ pub fn draw(frame: &mut Frame, area: Rect, look: Look, spec: &ChartSpec, series:
     if spec.x_labels {
         x_axis = x_axis.labels(labels(xb)).title(spec.x_title.to_string());
     }
+    // A legend box needs room; in a short chart the names go in the title instead.
+    let roomy = area.height >= 12;
+    let title = if roomy {
+        spec.title.to_string()
+    } else {
+        let names: Vec<&str> = series.iter().map(|s| s.name.as_str()).collect();
+        format!("{} [{}]", spec.title, names.join(", "))
+    };
     let chart = Chart::new(datasets)
-        .block(Block::new().title(spec.title.to_string()))
+        .block(Block::new().title(title))
         .x_axis(x_axis)
         .y_axis(Axis::default().bounds(yb).labels(labels(yb)))
-        .legend_position(Some(LegendPosition::TopRight))
+        .legend_position(roomy.then_some(LegendPosition::TopRight))
         .hidden_legend_constraints((
             ratatui::layout::Constraint::Percentage(60),
             ratatui::layout::Constraint::Percentage(90),
