@@ -48,7 +48,7 @@ impl Scene {
 
     pub fn title(self) -> &'static str {
         match self {
-            Scene::History => "time history",
+            Scene::History => "time",
             Scene::Loops => "force-drift",
             Scene::Kelvin => "kelvin vs improved",
             Scene::Sets => "set 1 vs 2",
