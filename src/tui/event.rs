@@ -39,10 +39,10 @@ pub fn spawn_input(tx: Sender<AppEvent>) {
         .name("pounding-input".into())
         .spawn(move || {
             while let Ok(e) = crossterm::event::read() {
-                if let Some(ev) = translate(e) {
-                    if tx.send(ev).is_err() {
-                        return;
-                    }
+                if let Some(ev) = translate(e)
+                    && tx.send(ev).is_err()
+                {
+                    return;
                 }
             }
         });
