@@ -101,3 +101,34 @@ pub fn point(p: &Params, omega1: f64, mu: f64) -> SpectrumPoint {
     let without = run(&baseline_params(&q));
     combine(&q, &with, &without)
 }
+
+/// A run of consecutive grid points in the same region: Π_ω1 from `from` to `to`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RegionRange {
+    pub region: Region,
+    pub from: f64,
+    pub to: f64,
+    /// Number of grid points in the run.
+    pub points: usize,
+}
+
+/// The left structure's regions along a curve, as maximal runs of
+/// consecutive points (SPEC §7).
+pub fn region_ranges(points: &[SpectrumPoint]) -> Vec<RegionRange> {
+    let mut ranges: Vec<RegionRange> = Vec::new();
+    for pt in points {
+        match ranges.last_mut() {
+            Some(r) if r.region == pt.region => {
+                r.to = pt.omega1;
+                r.points += 1;
+            }
+            _ => ranges.push(RegionRange {
+                region: pt.region,
+                from: pt.omega1,
+                to: pt.omega1,
+                points: 1,
+            }),
+        }
+    }
+    ranges
+}
