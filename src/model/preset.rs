@@ -81,7 +81,7 @@ pub fn builtin(name: &str) -> Option<Preset> {
     })
 }
 
-/// Every built-in preset, sorted by name.
+/// Every built-in preset: the paper's sets first, then the rest by name.
 pub fn builtins() -> Vec<Preset> {
     builtin_names().into_iter().filter_map(builtin).collect()
 }
