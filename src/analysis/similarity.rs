@@ -7,7 +7,6 @@
 //! Ẋ_max = Π_v a_p/ω_p.
 
 use super::baseline::BaselineCache;
-use super::spectrum::SpectrumPoint;
 use super::sweep::{Curve, CurveSpec, sweep};
 use crate::model::physical::Physical;
 use crate::model::{ParamError, Params};
@@ -70,20 +69,6 @@ pub fn study(
         .collect())
 }
 
-/// The eight dimensionless peaks of a point: Π_u, Π_v of both structures, with and without pounding.
-pub fn dimensionless_peaks(p: &SpectrumPoint) -> [f64; 8] {
-    [
-        p.left.peak_displacement,
-        p.left.peak_velocity,
-        p.right.peak_displacement,
-        p.right.peak_velocity,
-        p.free_left.peak_displacement,
-        p.free_left.peak_velocity,
-        p.free_right.peak_displacement,
-        p.free_right.peak_velocity,
-    ]
-}
-
 /// Largest relative difference of any dimensionless peak between any level
 /// and the first (the master curve): round-off when the levels are similar.
 pub fn master_curve_spread(levels: &[Level]) -> f64 {
@@ -93,7 +78,7 @@ pub fn master_curve_spread(levels: &[Level]) -> f64 {
     let mut spread: f64 = 0.0;
     for level in &levels[1..] {
         for (a, b) in master.curve.points.iter().zip(&level.curve.points) {
-            for (x, y) in dimensionless_peaks(a).iter().zip(dimensionless_peaks(b)) {
+            for (x, y) in a.peaks().iter().zip(b.peaks()) {
                 spread = spread.max((x - y).abs() / x.abs().max(y.abs()).max(f64::MIN_POSITIVE));
             }
         }

@@ -59,6 +59,23 @@ pub struct SpectrumPoint {
     pub region: Region,
 }
 
+impl SpectrumPoint {
+    /// The eight dimensionless peaks: Π_u, Π_v of the left and right
+    /// structures with pounding, then the same without it.
+    pub fn peaks(&self) -> [f64; 8] {
+        [
+            self.left.peak_displacement,
+            self.left.peak_velocity,
+            self.right.peak_displacement,
+            self.right.peak_velocity,
+            self.free_left.peak_displacement,
+            self.free_left.peak_velocity,
+            self.free_right.peak_displacement,
+            self.free_right.peak_velocity,
+        ]
+    }
+}
+
 /// The parameters of the point Π_ω1 = `omega1`, Π_ω2 = μ Π_ω1.
 pub fn at_omega(p: &Params, omega1: f64, mu: f64) -> Params {
     Params {

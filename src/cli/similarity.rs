@@ -15,20 +15,6 @@ use crate::analysis::similarity::{Level, master_curve_spread, study};
 use crate::analysis::spectrum_spec::SpectrumSpec;
 use crate::model::physical::{G, Physical, parse_acceleration};
 
-/// Π keys that a `[physical]` table fixes; `--set` may not change them.
-const CONVERTED: [&str; 10] = [
-    "mass_ratio",
-    "omega1",
-    "omega2",
-    "yield1",
-    "yield2",
-    "damping",
-    "alpha",
-    "contact_omega",
-    "restitution",
-    "gap",
-];
-
 #[derive(Debug, Clone, Default, Args)]
 pub struct SimilarityArgs {
     #[command(flatten)]
@@ -93,12 +79,9 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
     };
     let physical = match &plan.preset.physical {
         Some(t) => {
-            if let Some(kv) = args
-                .params
-                .overrides
-                .iter()
-                .find(|kv| CONVERTED.contains(&kv.split('=').next().unwrap_or("").trim()))
-            {
+            if let Some(kv) = args.params.overrides.iter().find(|kv| {
+                crate::model::params::PI_KEYS.contains(&kv.split('=').next().unwrap_or("").trim())
+            }) {
                 return Err(usage(format!(
                     "--set `{kv}`: preset `{}` gives this in physical units; edit its [physical] table",
                     plan.preset.name
@@ -239,7 +222,7 @@ fn csv(levels: &[Level]) -> String {
     for l in levels {
         let (lx, lv) = (l.length_scale(), l.velocity_scale());
         for p in &l.curve.points {
-            let pi = crate::analysis::similarity::dimensionless_peaks(p);
+            let pi = p.peaks();
             let _ = write!(
                 s,
                 "{},{},{}",

@@ -173,20 +173,14 @@ pub fn csv(plan: &SpectrumPlan, curves: &[Curve]) -> String {
             if let Some(m) = &c.spec.member {
                 let _ = write!(s, "{},", m.text);
             }
+            let peaks: Vec<String> = p.peaks().iter().map(|v| v.to_string()).collect();
             let _ = writeln!(
                 s,
-                "{},{},{},{},{},{},{},{},{},{},{},{},{}",
+                "{},{},{},{},{},{}",
                 c.spec.mu,
                 p.omega1,
                 p.omega2,
-                p.left.peak_displacement,
-                p.left.peak_velocity,
-                p.right.peak_displacement,
-                p.right.peak_velocity,
-                p.free_left.peak_displacement,
-                p.free_left.peak_velocity,
-                p.free_right.peak_displacement,
-                p.free_right.peak_velocity,
+                peaks.join(","),
                 p.impacts,
                 p.region.name()
             );
