@@ -5,7 +5,8 @@ use std::{env, fs, path::Path};
 
 fn main() {
     println!("cargo:rerun-if-changed=presets");
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("presets");
+    let dir = Path::new(&env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"))
+        .join("presets");
     let mut entries: Vec<_> = fs::read_dir(&dir)
         .map(|rd| {
             rd.filter_map(|e| e.ok())
@@ -14,9 +15,17 @@ fn main() {
                 .collect()
         })
         .unwrap_or_default();
-    entries.sort();
+    // The paper's parameter sets first (keys 1 and 2 in the explorer), then the rest by name.
+    entries.sort_by_key(|p| {
+        let stem = p
+            .file_stem()
+            .unwrap_or_default()
+            .to_string_lossy()
+            .into_owned();
+        (!stem.starts_with("set"), stem)
+    });
     let mut out = String::from(
-        "/// (name, file name, contents) of every built-in preset, sorted by name.\npub static BUILTIN: &[(&str, &str, &str)] = &[\n",
+        "/// (name, file name, contents) of every built-in preset: set1, set2, then the rest by name.\npub static BUILTIN: &[(&str, &str, &str)] = &[\n",
     );
     for p in &entries {
         println!("cargo:rerun-if-changed={}", p.display());

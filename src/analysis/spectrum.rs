@@ -59,6 +59,23 @@ pub struct SpectrumPoint {
     pub region: Region,
 }
 
+impl SpectrumPoint {
+    /// The eight dimensionless peaks: Π_u, Π_v of the left and right
+    /// structures with pounding, then the same without it.
+    pub fn peaks(&self) -> [f64; 8] {
+        [
+            self.left.peak_displacement,
+            self.left.peak_velocity,
+            self.right.peak_displacement,
+            self.right.peak_velocity,
+            self.free_left.peak_displacement,
+            self.free_left.peak_velocity,
+            self.free_right.peak_displacement,
+            self.free_right.peak_velocity,
+        ]
+    }
+}
+
 /// The parameters of the point Π_ω1 = `omega1`, Π_ω2 = μ Π_ω1.
 pub fn at_omega(p: &Params, omega1: f64, mu: f64) -> Params {
     Params {
@@ -100,4 +117,35 @@ pub fn point(p: &Params, omega1: f64, mu: f64) -> SpectrumPoint {
     }
     let without = run(&baseline_params(&q));
     combine(&q, &with, &without)
+}
+
+/// A run of consecutive grid points in the same region: Π_ω1 from `from` to `to`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RegionRange {
+    pub region: Region,
+    pub from: f64,
+    pub to: f64,
+    /// Number of grid points in the run.
+    pub points: usize,
+}
+
+/// The left structure's regions along a curve, as maximal runs of
+/// consecutive points (SPEC §7).
+pub fn region_ranges(points: &[SpectrumPoint]) -> Vec<RegionRange> {
+    let mut ranges: Vec<RegionRange> = Vec::new();
+    for pt in points {
+        match ranges.last_mut() {
+            Some(r) if r.region == pt.region => {
+                r.to = pt.omega1;
+                r.points += 1;
+            }
+            _ => ranges.push(RegionRange {
+                region: pt.region,
+                from: pt.omega1,
+                to: pt.omega1,
+                points: 1,
+            }),
+        }
+    }
+    ranges
 }

@@ -95,7 +95,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
         Some(Command::Tui(args)) => tui::execute(&args),
         Some(Command::Bench(args)) => bench::execute(&args),
         Some(Command::Stress(args)) => stress::execute(&args),
-        None => run::execute(&run::RunArgs::default()),
+        None => tui::execute(&tui::TuiArgs::default()),
     };
     match outcome {
         Ok(()) => 0,

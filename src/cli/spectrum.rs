@@ -1,14 +1,246 @@
-//! `pounding spectrum`: Compute response spectra (peak response against Π_ω1, with and without pounding).
+//! `pounding spectrum`: response spectra (SPEC §7): Π_u and Π_v of both
+//! structures against Π_ω1, with and without pounding, one curve per family
+//! value, as a table, JSON or CSV.
+
+use std::fmt::Write as _;
+use std::time::Instant;
 
 use clap::Args;
 
 use super::CliError;
+use super::output::{Format, num, params_json};
+use super::params::ParamArgs;
+use crate::analysis::baseline::BaselineCache;
+use crate::analysis::family::{Family, parse_mu};
+use crate::analysis::grid::Grid;
+use crate::analysis::spectrum::region_ranges;
+use crate::analysis::spectrum_spec::SpectrumSpec;
+use crate::analysis::sweep::{Curve, curve_specs, sweep};
+use crate::model::{Params, Preset};
 
 #[derive(Debug, Clone, Default, Args)]
-pub struct SpectrumArgs {}
+pub struct SpectrumArgs {
+    #[command(flatten)]
+    pub params: ParamArgs,
+    /// The Π_ω1 grid START:STOP:STEP [default: the preset's, else 0.1:3.0:0.01].
+    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
+    pub omega1: Option<String>,
+    /// Frequency ratio μ, Π_ω2 = μ Π_ω1 [default: the preset's, else omega2/omega1].
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub mu: Option<String>,
+    /// One curve per value of a key, e.g. mass_ratio=0.1,0.5,0.9, gap=0.2,1.5,inf, mu=1.5,4,10.
+    #[arg(long, value_name = "KEY=V1,V2,...")]
+    pub family: Option<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+}
 
-pub fn execute(_args: &SpectrumArgs) -> Result<(), CliError> {
-    Err(CliError::Failed(
-        "`pounding spectrum` is not built yet".into(),
-    ))
+/// What to sweep, resolved from the preset's `[spectrum]` table and the flags (flags win).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpectrumPlan {
+    pub preset: Preset,
+    pub params: Params,
+    pub grid: Grid,
+    pub mu: f64,
+    pub family: Option<Family>,
+}
+
+impl SpectrumPlan {
+    pub fn resolve(
+        params: &ParamArgs,
+        omega1: Option<&str>,
+        mu: Option<&str>,
+        family: Option<&str>,
+    ) -> Result<SpectrumPlan, CliError> {
+        let (preset, p) = params.resolve()?;
+        let usage = |e: &dyn std::fmt::Display| CliError::Usage(e.to_string());
+        let spec = match &preset.spectrum {
+            Some(t) => {
+                SpectrumSpec::from_table(t).map_err(|e| usage(&format!("{}: {e}", preset.name)))?
+            }
+            None => SpectrumSpec::default(),
+        };
+        let grid = match omega1 {
+            Some(text) => text.parse().map_err(|e| usage(&e))?,
+            None => spec.grid.unwrap_or_default(),
+        };
+        let mu = match (mu, spec.mu) {
+            (Some(text), _) => parse_mu(text)
+                .map_err(|_| usage(&format!("--mu {text}: must be a finite number > 0")))?,
+            (None, Some(m)) => m,
+            (None, None) => parse_mu(&p.mu().to_string()).map_err(|_| {
+                usage(&format!(
+                    "omega2/omega1 = {}/{}: the frequency ratio must be finite and > 0; give --mu",
+                    p.omega2, p.omega1
+                ))
+            })?,
+        };
+        let family = match (family, &spec.family) {
+            (Some(text), _) => Some(Family::parse(text, &p).map_err(|e| usage(&e))?),
+            (None, Some((key, values))) => {
+                Some(Family::new(key, values, &p).map_err(|e| usage(&e))?)
+            }
+            (None, None) => None,
+        };
+        Ok(SpectrumPlan {
+            preset,
+            params: p,
+            grid,
+            mu,
+            family,
+        })
+    }
+
+    /// Computes every curve with a fresh baseline cache; returns the curves,
+    /// the cache (for its counters) and the wall time in ms.
+    pub fn compute(&self) -> Result<(Vec<Curve>, BaselineCache, f64), CliError> {
+        let specs = curve_specs(&self.params, self.mu, self.family.as_ref())
+            .map_err(|e| CliError::Usage(e.to_string()))?;
+        let mut cache = BaselineCache::new();
+        let t = Instant::now();
+        let curves = sweep(&specs, &self.grid.values(), &mut cache);
+        Ok((curves, cache, t.elapsed().as_secs_f64() * 1e3))
+    }
+}
+
+pub fn execute(args: &SpectrumArgs) -> Result<(), CliError> {
+    let plan = SpectrumPlan::resolve(
+        &args.params,
+        args.omega1.as_deref(),
+        args.mu.as_deref(),
+        args.family.as_deref(),
+    )?;
+    let (curves, cache, elapsed_ms) = plan.compute()?;
+    let text = match args.format {
+        Format::Json => json(&plan, &curves, &cache, elapsed_ms).to_string() + "\n",
+        Format::Csv => csv(&plan, &curves),
+        Format::Table => table(&plan, &curves, &cache, elapsed_ms),
+    };
+    print!("{text}");
+    Ok(())
+}
+
+/// The spectrum as the JSON object of issue 3.
+pub fn json(
+    plan: &SpectrumPlan,
+    curves: &[Curve],
+    cache: &BaselineCache,
+    elapsed_ms: f64,
+) -> serde_json::Value {
+    let curves: Vec<serde_json::Value> = curves
+        .iter()
+        .map(|c| {
+            let mut family = serde_json::Map::new();
+            if let Some(m) = &c.spec.member {
+                family.insert(m.key.clone(), m.json_value());
+            }
+            serde_json::json!({
+                "family": family,
+                "mu": c.spec.mu,
+                "points": c.points,
+                "regions": region_ranges(&c.points),
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "preset": plan.preset.name,
+        "params": params_json(&plan.params),
+        "mu": plan.mu,
+        "model": plan.params.model.name(),
+        "omega1_grid": plan.grid.to_string(),
+        "curves": curves,
+        "baseline_runs": cache.runs,
+        "baselines_from_pounding_runs": cache.from_pounding,
+        "elapsed_ms": elapsed_ms,
+    })
+}
+
+/// One row per point, one column per value.
+pub fn csv(plan: &SpectrumPlan, curves: &[Curve]) -> String {
+    let family_column = plan.family.as_ref().map(|f| f.key.clone());
+    let mut s = String::new();
+    if let Some(k) = &family_column {
+        let _ = write!(s, "{k},");
+    }
+    s.push_str(
+        "mu,omega1,omega2,left_peak_displacement,left_peak_velocity,right_peak_displacement,right_peak_velocity,\
+         free_left_peak_displacement,free_left_peak_velocity,free_right_peak_displacement,free_right_peak_velocity,\
+         impacts,region\n",
+    );
+    for c in curves {
+        for p in &c.points {
+            if let Some(m) = &c.spec.member {
+                let _ = write!(s, "{},", m.text);
+            }
+            let peaks: Vec<String> = p.peaks().iter().map(|v| v.to_string()).collect();
+            let _ = writeln!(
+                s,
+                "{},{},{},{},{},{}",
+                c.spec.mu,
+                p.omega1,
+                p.omega2,
+                peaks.join(","),
+                p.impacts,
+                p.region.name()
+            );
+        }
+    }
+    s
+}
+
+fn table(plan: &SpectrumPlan, curves: &[Curve], cache: &BaselineCache, elapsed_ms: f64) -> String {
+    let p = &plan.params;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "{}: spectrum over Π_ω1 = {} ({} points), {} contact, Π_m = {}, Π_d = {}",
+        plan.preset.name,
+        plan.grid,
+        plan.grid.len(),
+        p.model,
+        num(p.mass_ratio),
+        num(p.gap)
+    );
+    for c in curves {
+        let label = c
+            .spec
+            .member
+            .as_ref()
+            .map_or_else(String::new, |m| format!("{m}, "));
+        let _ = writeln!(s, "\n{label}μ = {}   (free = no pounding)", c.spec.mu);
+        let _ = writeln!(
+            s,
+            "{:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7}  region",
+            "Π_ω1", "Π_u1", "free", "Π_v1", "free", "Π_u2", "free", "Π_v2", "free", "impacts"
+        );
+        for pt in &c.points {
+            let _ = writeln!(
+                s,
+                "{:>7.3} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>7}  {}",
+                pt.omega1,
+                pt.left.peak_displacement,
+                pt.free_left.peak_displacement,
+                pt.left.peak_velocity,
+                pt.free_left.peak_velocity,
+                pt.right.peak_displacement,
+                pt.free_right.peak_displacement,
+                pt.right.peak_velocity,
+                pt.free_right.peak_velocity,
+                pt.impacts,
+                pt.region.name()
+            );
+        }
+        let ranges: Vec<String> = region_ranges(&c.points)
+            .iter()
+            .map(|r| format!("{} {}–{}", r.region.name(), r.from, r.to))
+            .collect();
+        let _ = writeln!(s, "left-structure regions: {}", ranges.join(", "));
+    }
+    let _ = writeln!(
+        s,
+        "\n{} baseline runs ({} baselines taken from impact-free pounding runs), {elapsed_ms:.0} ms",
+        cache.runs, cache.from_pounding
+    );
+    s
 }

@@ -134,8 +134,8 @@ mod tests {
     #[test]
     fn kelvin_zeta_limits() {
         assert!(kelvin_damping_ratio(1.0).abs() < 1e-15);
-        // e = 0.4: ln e = -0.916291, ζ = 0.916291/√(9.869604+0.839589) = 0.279977
-        assert!((kelvin_damping_ratio(0.4) - 0.279977).abs() < 1e-6);
+        // e = 0.4: ln e = -0.916291, ζ = 0.916291/√(9.869604+0.839589) = 0.2799978
+        assert!((kelvin_damping_ratio(0.4) - 0.2799978).abs() < 1e-6);
     }
 
     #[test]

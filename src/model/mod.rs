@@ -5,10 +5,11 @@ pub mod contact;
 pub mod excitation;
 pub mod hysteresis;
 pub mod params;
+pub mod physical;
 pub mod preset;
 
 pub use contact::{ContactLaw, ContactModel};
-pub use excitation::Excitation;
+pub use excitation::{Excitation, Rotation};
 pub use hysteresis::{Bilinear, SpringState};
 pub use params::{ParamError, Params, SET1, SET2};
 pub use preset::{Preset, PresetError};

@@ -109,6 +109,9 @@ pub const KEYS: [&str; 14] = [
     "min_impact_velocity",
 ];
 
+/// The ten Π keys of SPEC §1, the first ten of [`KEYS`].
+pub const PI_KEYS: &[&str] = KEYS.split_at(10).0;
+
 /// One key's allowed range, as stated in error messages and help.
 struct Rule {
     key: &'static str,

@@ -18,7 +18,8 @@ pub struct Preset {
     pub params: Params,
     /// The `[spectrum]` table (grid, mu, family), if any: read by `pounding spectrum`.
     pub spectrum: Option<toml::Table>,
-    /// The `[physical]` table (physical units, SPEC §8), if any.
+    /// The `[physical]` table (physical units, SPEC §8), if any; when present,
+    /// `params` holds its Π-groups.
     pub physical: Option<toml::Table>,
     /// Where it came from: `None` for a built-in.
     pub path: Option<PathBuf>,
@@ -42,6 +43,8 @@ pub enum PresetError {
         column: usize,
         message: String,
     },
+    #[error("{file}: {message}")]
+    Physical { file: String, message: String },
     #[error("{file}: {source}")]
     Value {
         file: String,
@@ -78,7 +81,7 @@ pub fn builtin(name: &str) -> Option<Preset> {
     })
 }
 
-/// Every built-in preset, sorted by name.
+/// Every built-in preset: the paper's sets first, then the rest by name.
 pub fn builtins() -> Vec<Preset> {
     builtin_names().into_iter().filter_map(builtin).collect()
 }
@@ -143,6 +146,17 @@ impl Preset {
                 }
                 (k, v) => preset.params.set(k, &value_text(&v)).map_err(value_err)?,
             }
+        }
+        // A [physical] table (SPEC §8) gives the Π-groups in physical units;
+        // the flat keys then only set the run settings (model, cycles, dt, ...).
+        if let Some(table) = &preset.physical {
+            let physical = super::physical::Physical::from_table(table).map_err(|e| {
+                PresetError::Physical {
+                    file: file.into(),
+                    message: e.to_string(),
+                }
+            })?;
+            preset.params = physical.to_params(&preset.params).map_err(value_err)?;
         }
         preset.params.validate().map_err(value_err)?;
         Ok(preset)

@@ -1,12 +1,16 @@
 //! One Newmark-β step (γ = 1/2, β = 1/4, SPEC §5) of the two-structure system
 //!
-//!     M ẍ + C ẋ + f_s(x) + B f_p(δ, δ̇) = −M g(τ),   B = (1, −1)ᵀ,
+//! ```text
+//! M ẍ + C ẋ + f_s(x) + B f_p(δ, δ̇) = −M g(τ),   B = (1, −1)ᵀ,
+//! ```
 //!
 //! with M = diag(Π_m, 1), C = diag(2Π_ξΠ_mΠ_ω1, 2Π_ξΠ_ω2) (SPEC §2).
 //! The average-acceleration rule writes the end-of-step velocity and
 //! acceleration in terms of the unknown displacement x = x_n + Δ:
 //!
-//!     ẋ = 2Δ/h − ẋ_n,     ẍ = 4Δ/h² − 4ẋ_n/h − ẍ_n.
+//! ```text
+//! ẋ = 2Δ/h − ẋ_n,     ẍ = 4Δ/h² − 4ẋ_n/h − ẍ_n.
+//! ```
 //!
 //! Out of contact the two structures are uncoupled and each spring is
 //! piecewise affine in Δ (elastic or on one of the two yield branches), so
@@ -15,11 +19,13 @@
 //! is nonlinear, so Newton–Raphson runs on the 2×2 residual with the
 //! consistent tangent
 //!
-//!     J = 4M/h² + 2C/h + diag(k_t) + (∂f_p/∂δ + 2/h ∂f_p/∂δ̇) B Bᵀ.
+//! ```text
+//! J = 4M/h² + 2C/h + diag(k_t) + (∂f_p/∂δ + 2/h ∂f_p/∂δ̇) B Bᵀ.
+//! ```
 
 use nalgebra::{Matrix2, Vector2};
 
-use crate::model::{Bilinear, ContactLaw, Excitation, Params, SpringState};
+use crate::model::{Bilinear, ContactLaw, Excitation, Params, Rotation, SpringState};
 
 /// The constant coefficients of the equations of motion (SPEC §2–3).
 #[derive(Debug, Clone, Copy)]
@@ -33,6 +39,8 @@ pub struct System {
     /// Π_d (infinite: no pounding).
     pub gap: f64,
     pub excitation: Excitation,
+    /// Phasor rotations for the run's usual step sizes (Δτ and the contact sub-step).
+    pub rotations: [Rotation; 2],
 }
 
 /// The full state at one instant: what Newmark needs to take the next step.
@@ -47,6 +55,8 @@ pub struct State {
     pub fp: f64,
     /// Ground acceleration g(τ) at this instant (cached: it is needed twice per step).
     pub g: f64,
+    /// dg/dτ at this instant, so that the next g comes by a rotation.
+    pub g_rate: f64,
     /// Whether each spring's last step ended on a yield branch.
     pub plastic: [bool; 2],
 }
@@ -56,6 +66,13 @@ pub struct State {
 pub enum Phase {
     Free,
     Contact(ContactLaw),
+}
+
+/// `[f(0), f(1)]`: one value per structure, written out so the hot path
+/// compiles to straight-line code.
+#[inline(always)]
+fn pair<T>(f: impl Fn(usize) -> T) -> [T; 2] {
+    [f(0), f(1)]
 }
 
 /// Largest Newton iteration count before a contact step is declared unconverged.
@@ -80,7 +97,31 @@ impl System {
             ],
             gap: p.gap,
             excitation,
+            rotations: [Rotation::new(p.dt); 2],
         }
+    }
+
+    /// Sets the step sizes whose phasor rotations are precomputed.
+    pub fn with_steps(mut self, steps: [f64; 2]) -> Self {
+        self.rotations = steps.map(Rotation::new);
+        self
+    }
+
+    /// (g, dg/dτ) at τ + h from the state's phasor: a rotation for the usual
+    /// step sizes, a fresh evaluation otherwise.
+    #[inline]
+    fn excitation_after(&self, s: &State, h: f64) -> [f64; 2] {
+        for r in &self.rotations {
+            if r.step == h {
+                return r.advance([s.g, s.g_rate]);
+            }
+        }
+        self.excitation.phasor(s.tau + h)
+    }
+
+    /// Re-evaluates the state's phasor from τ (removes the rotations' drift).
+    pub fn resync(&self, s: &mut State) {
+        [s.g, s.g_rate] = self.excitation.phasor(s.tau);
     }
 
     /// Penetration δ = x1 − x2 − Π_d (SPEC §4).
@@ -102,25 +143,26 @@ impl System {
     #[inline]
     pub fn acceleration(&self, g: f64, v: [f64; 2], fs: [f64; 2], fp: f64) -> [f64; 2] {
         let sign = [1.0, -1.0];
-        std::array::from_fn(|i| (-self.damping[i] * v[i] - fs[i] - sign[i] * fp) / self.mass[i] - g)
+        pair(|i| (-self.damping[i] * v[i] - fs[i] - sign[i] * fp) / self.mass[i] - g)
     }
 
     /// A state at rest or with given initial conditions, its acceleration in equilibrium.
     pub fn initial_state(&self, x: [f64; 2], v: [f64; 2], phase: &Phase) -> State {
-        let springs = [0, 1].map(|i| self.springs[i].respond(SpringState::default(), x[i]));
-        let fs = springs.map(|r| r.force);
+        let springs = pair(|i| self.springs[i].respond(SpringState::default(), x[i]));
+        let fs = pair(|i| springs[i].force);
         let fp = self.contact_force(phase, x, v);
-        let g = self.excitation.at(0.0);
+        let [g, g_rate] = self.excitation.phasor(0.0);
         State {
             tau: 0.0,
             x,
             v,
             a: self.acceleration(g, v, fs, fp),
             g,
-            springs: springs.map(|r| r.state),
+            g_rate,
+            springs: pair(|i| springs[i].state),
             fs,
             fp,
-            plastic: springs.map(|r| r.plastic),
+            plastic: pair(|i| springs[i].plastic),
         }
     }
 
@@ -133,6 +175,7 @@ impl System {
 
     /// One Newmark step of size `h` from `s`. Returns the new state and
     /// whether Newton converged (always true out of contact).
+    #[inline(always)]
     pub fn step(&self, s: &State, h: f64, phase: &Phase) -> (State, bool) {
         match phase {
             Phase::Free => (self.free_step(s, h), true),
@@ -141,52 +184,58 @@ impl System {
     }
 
     /// Builds the end-of-step state from the displacement increment.
-    #[inline]
+    #[inline(always)]
     fn finish(
         &self,
         s: &State,
         h: f64,
-        g: f64,
+        inv_h: f64,
+        [g, g_rate]: [f64; 2],
         dx: [f64; 2],
         fp: impl Fn([f64; 2], [f64; 2]) -> f64,
     ) -> State {
         let tau = s.tau + h;
         let x = [s.x[0] + dx[0], s.x[1] + dx[1]];
-        let v = [0, 1].map(|i| 2.0 * dx[i] / h - s.v[i]);
-        let r = [0, 1].map(|i| self.springs[i].respond(s.springs[i], x[i]));
-        let fs = r.map(|r| r.force);
+        let v = pair(|i| 2.0 * dx[i] * inv_h - s.v[i]);
+        let r = pair(|i| self.springs[i].respond(s.springs[i], x[i]));
+        let fs = pair(|i| r[i].force);
         let fp = fp(x, v);
         State {
             tau,
             x,
             v,
             // Newmark's own acceleration; equal to the equation-of-motion one at convergence.
-            a: [0, 1].map(|i| 4.0 * dx[i] / (h * h) - 4.0 * s.v[i] / h - s.a[i]),
-            springs: r.map(|r| r.state),
+            a: pair(|i| 4.0 * inv_h * (dx[i] * inv_h - s.v[i]) - s.a[i]),
+            springs: pair(|i| r[i].state),
             fs,
             fp,
             g,
-            plastic: r.map(|r| r.plastic),
+            g_rate,
+            plastic: pair(|i| r[i].plastic),
         }
     }
 
     /// Uncoupled step: per structure, the residual
     /// R(Δ) = (4m/h² + 2c/h) Δ + r₀ + f_s(x_n + Δ) is continuous, increasing
     /// and affine on each spring branch, so its root is found exactly.
-    fn free_step(&self, s: &State, h: f64) -> State {
-        let g = self.excitation.at(s.tau + h);
-        let dx = [0, 1].map(|i| {
+    #[inline(always)]
+    pub fn free_step(&self, s: &State, h: f64) -> State {
+        let phasor = self.excitation_after(s, h);
+        let g = phasor[0];
+        let inv_h = 1.0 / h;
+        let dx = pair(|i| {
             let (m, c, spring) = (self.mass[i], self.damping[i], &self.springs[i]);
-            let k_eff = 4.0 * m / (h * h) + 2.0 * c / h;
-            let r0 = m * (-4.0 * s.v[i] / h - s.a[i]) - c * s.v[i] + m * g;
+            let k_eff = (4.0 * m * inv_h + 2.0 * c) * inv_h;
+            let r0 = m * (-4.0 * s.v[i] * inv_h - s.a[i]) - c * s.v[i] + m * g;
             solve_bilinear(k_eff, r0, spring, s.springs[i], s.fs[i])
         });
-        self.finish(s, h, g, dx, |_, _| 0.0)
+        self.finish(s, h, inv_h, phasor, dx, |_, _| 0.0)
     }
 
     /// Coupled step in contact: Newton–Raphson from the constant-acceleration predictor.
     fn contact_step(&self, s: &State, h: f64, law: &ContactLaw) -> (State, bool) {
-        let g = self.excitation.at(s.tau + h);
+        let phasor = self.excitation_after(s, h);
+        let g = phasor[0];
         let m = Vector2::from(self.mass);
         let c = Vector2::from(self.damping);
         let k_dyn = m * (4.0 / (h * h)) + c * (2.0 / h);
@@ -198,9 +247,9 @@ impl System {
         let scale = 1e-13 * (1.0 + s.x[0].abs() + s.x[1].abs());
         for _ in 0..MAX_NEWTON {
             let x = [s.x[0] + dx[0], s.x[1] + dx[1]];
-            let r = [0, 1].map(|i| self.springs[i].respond(s.springs[i], x[i]));
-            let v = [0, 1].map(|i| 2.0 * dx[i] / h - s.v[i]);
-            let a = [0, 1].map(|i| 4.0 * dx[i] / (h * h) - 4.0 * s.v[i] / h - s.a[i]);
+            let r = pair(|i| self.springs[i].respond(s.springs[i], x[i]));
+            let v = pair(|i| 2.0 * dx[i] / h - s.v[i]);
+            let a = pair(|i| 4.0 * dx[i] / (h * h) - 4.0 * s.v[i] / h - s.a[i]);
             let f = law.force(self.penetration(x), v[0] - v[1]);
             let residual = Vector2::new(
                 m[0] * (a[0] + g) + c[0] * v[0] + r[0].force + f.force,
@@ -218,13 +267,13 @@ impl System {
             };
             dx += step;
             if step.amax() <= scale {
-                let state = self.finish(s, h, g, [dx[0], dx[1]], |x, v| {
+                let state = self.finish(s, h, 1.0 / h, phasor, [dx[0], dx[1]], |x, v| {
                     law.force(self.penetration(x), v[0] - v[1]).force
                 });
                 return (state, true);
             }
         }
-        let state = self.finish(s, h, g, [dx[0], dx[1]], |x, v| {
+        let state = self.finish(s, h, 1.0 / h, phasor, [dx[0], dx[1]], |x, v| {
             law.force(self.penetration(x), v[0] - v[1]).force
         });
         (state, false)
@@ -237,7 +286,7 @@ impl System {
 /// f_s = Π_α k (x_n + Δ) + σ (1 − Π_α) k Π_uy. The residual is continuous and
 /// increasing, so exactly one branch holds its root: try elastic first, then
 /// the branch on the side the elastic trial overshot to.
-#[inline]
+#[inline(always)]
 fn solve_bilinear(k_eff: f64, r0: f64, spring: &Bilinear, from: SpringState, fs_n: f64) -> f64 {
     let k = spring.stiffness;
     let uy = spring.yield_displacement;

@@ -18,8 +18,11 @@ use super::result::{EnergyBalance, Impact, RunResult};
 /// How many Newmark sub-steps each Δτ is cut into while the structures are in contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ContactSubsteps {
-    /// Enough that Π_ωcon · h ≤ [`AUTO_CONTACT_PHASE`]: the contact phase,
-    /// a few per cent of a run, is then integrated as accurately as the rest.
+    /// n = ⌈Π_ωcon · 0.001 / [`AUTO_CONTACT_PHASE`]⌉ = ⌈Π_ωcon / 5⌉: at the
+    /// default Δτ = 0.001 the contact step then has Π_ωcon · h ≤ 0.005, and the
+    /// contact phase (a few per cent of a run) is integrated as accurately as
+    /// the rest. n depends on the contact stiffness only, not on Δτ, so
+    /// refining Δτ refines the whole scheme uniformly (second order).
     Auto,
     /// Exactly this many (1: the paper's plain Δτ throughout).
     Fixed(u32),
@@ -28,6 +31,8 @@ pub enum ContactSubsteps {
 /// Largest Π_ωcon · h inside a contact under [`ContactSubsteps::Auto`].
 /// Newmark's period error is (ωh)²/12, so 0.005 gives about 2e-6 per contact.
 pub const AUTO_CONTACT_PHASE: f64 = 0.005;
+/// The Δτ at which [`ContactSubsteps::Auto`] meets [`AUTO_CONTACT_PHASE`] (the paper's step).
+const AUTO_REFERENCE_DT: f64 = 0.001;
 
 /// Numerical choices of a run beyond the Π-groups. The defaults are the
 /// project's accurate scheme; the paper's plain scheme is
@@ -83,7 +88,7 @@ impl SolverOptions {
         match self.contact_substeps {
             ContactSubsteps::Fixed(n) => n.max(1),
             ContactSubsteps::Auto => {
-                let n = (p.contact_omega * p.dt / AUTO_CONTACT_PHASE).ceil();
+                let n = (p.contact_omega * AUTO_REFERENCE_DT / AUTO_CONTACT_PHASE).ceil();
                 if n.is_finite() {
                     n.clamp(1.0, 1e6) as u32
                 } else {
@@ -105,10 +110,10 @@ const POLL_EVERY: usize = 1024;
 /// Runs one simulation of `p` (which must have passed [`Params::validate`]),
 /// reporting every accepted state to `observer`.
 pub fn simulate<O: Observer>(p: &Params, options: &SolverOptions, observer: &mut O) -> RunResult {
-    let system = System::new(p, options.excitation);
+    let system =
+        System::new(p, options.excitation).with_steps([p.dt, p.dt / options.substeps(p) as f64]);
     let mut run = Driver::new(p, options, system);
-    let start = run.state;
-    run.record(observer, &start);
+    run.record(observer);
     run.time_loop(observer);
     run.finish()
 }
@@ -153,7 +158,7 @@ impl<'a> Driver<'a> {
         if matches!(d.phase, Phase::Contact(_)) {
             d.open_impact(&s);
         }
-        d.track(&s);
+        d.track();
         d
     }
 
@@ -179,9 +184,12 @@ impl<'a> Driver<'a> {
         let mut iterations = 0usize;
         while self.state.tau < tau_end - end_slack {
             iterations += 1;
-            if iterations % POLL_EVERY == 0 && !observer.keep_going() {
-                self.result.completed = false;
-                break;
+            if iterations % POLL_EVERY == 0 {
+                if !observer.keep_going() {
+                    self.result.completed = false;
+                    break;
+                }
+                self.system.resync(&mut self.state);
             }
             let base = if matches!(self.phase, Phase::Contact(_)) {
                 contact_dt
@@ -194,7 +202,17 @@ impl<'a> Driver<'a> {
             } else {
                 base
             };
-            h /= f64::from(1u32 << halvings.min(30));
+            if halvings > 0 {
+                h /= f64::from(1u32 << halvings.min(30));
+            }
+            if h == dt && matches!(self.phase, Phase::Free) {
+                if !self.free_flight(observer, dt, tau_end - end_slack) {
+                    break;
+                }
+                if self.state.tau + dt + end_slack > tau_end {
+                    continue;
+                }
+            }
             let start = self.state;
             let (next, converged) = self.system.step(&start, h, &self.phase);
             if !converged && halvings < self.options.max_step_halvings {
@@ -242,6 +260,38 @@ impl<'a> Driver<'a> {
         }
     }
 
+    /// The hot path: whole steps of Δτ out of contact, up to [`POLL_EVERY`]
+    /// of them, until a step would start a contact or the run's last step is
+    /// due; then the general loop takes over (and redoes that one step with
+    /// event location). The same step and the same accounting as
+    /// [`Driver::accept`], with the state kept in locals. Returns false when
+    /// the observer asked to stop.
+    fn free_flight<O: Observer>(&mut self, observer: &mut O, dt: f64, tau_end: f64) -> bool {
+        if !observer.keep_going() {
+            self.result.completed = false;
+            return false;
+        }
+        self.system.resync(&mut self.state);
+        let mut current = self.state;
+        for _ in 0..POLL_EVERY {
+            if current.tau + dt > tau_end {
+                break;
+            }
+            let next = self.system.free_step(&current, dt);
+            if self.system.penetration(next.x) > 0.0 {
+                break;
+            }
+            self.add_work(&current, &next);
+            self.peaks_within(&current, &next);
+            track_peaks(&mut self.result, &next);
+            observer.record(&sample(&next, false));
+            self.result.steps += 1;
+            current = next;
+        }
+        self.state = current;
+        true
+    }
+
     /// Accepts `next` as the state after `start`: work integrals, then the
     /// phase switch `switch` (if any), then peaks and the observer.
     fn accept<O: Observer>(
@@ -252,11 +302,11 @@ impl<'a> Driver<'a> {
         switch: impl FnOnce(&mut Self),
     ) {
         self.add_work(start, &next);
+        self.peaks_within(start, &next);
         self.state = next;
         switch(self);
-        let s = self.state;
-        self.track(&s);
-        self.record(observer, &s);
+        self.track();
+        self.record(observer);
         self.result.steps += 1;
     }
 
@@ -322,33 +372,56 @@ impl<'a> Driver<'a> {
         e.max_input = e.max_input.max(e.input.abs());
     }
 
-    /// Peaks, yielding, force extremes and the open impact's maxima.
-    fn track(&mut self, s: &State) {
+    /// Peaks reached between two accepted states: where ẋ_i (or ẍ_i) changes
+    /// sign inside the step, the extremum of x_i (or ẋ_i) is taken from the
+    /// cubic Hermite interpolant of the step's end values and slopes, so that
+    /// Π_u and Π_v are the peaks of the trajectory, not of its samples
+    /// (sampling alone would add an erratic O(h²) error).
+    #[inline]
+    fn peaks_within(&mut self, start: &State, next: &State) {
+        let h = next.tau - start.tau;
         let r = &mut self.result;
+        for (peaks, i) in [(&mut r.left, 0), (&mut r.right, 1)] {
+            if start.v[i] * next.v[i] < 0.0 {
+                let x = hermite_extremum(start.x[i], next.x[i], start.v[i], next.v[i], h);
+                peaks.peak_displacement = peaks.peak_displacement.max(x.abs());
+            }
+            if start.a[i] * next.a[i] < 0.0 {
+                let v = hermite_extremum(start.v[i], next.v[i], start.a[i], next.a[i], h);
+                peaks.peak_velocity = peaks.peak_velocity.max(v.abs());
+            }
+        }
+    }
+
+    /// Peaks, yielding, force extremes and the open impact's maxima.
+    fn track(&mut self) {
+        let Driver {
+            result: r,
+            state: s,
+            open_impact,
+            system,
+            ..
+        } = self;
         for (peaks, i) in [(&mut r.left, 0), (&mut r.right, 1)] {
             peaks.peak_displacement = peaks.peak_displacement.max(s.x[i].abs());
             peaks.peak_velocity = peaks.peak_velocity.max(s.v[i].abs());
             peaks.yielded |= s.plastic[i];
         }
-        if let Some(i) = self.open_impact {
+        if let Some(i) = *open_impact {
             r.max_force = r.max_force.max(s.fp);
             r.min_force = r.min_force.min(s.fp);
             let imp = &mut r.impacts[i];
             imp.peak_force = imp.peak_force.max(s.fp);
-            imp.max_penetration = imp.max_penetration.max(self.system.penetration(s.x));
+            imp.max_penetration = imp.max_penetration.max(system.penetration(s.x));
         }
     }
 
-    fn record<O: Observer>(&self, observer: &mut O, s: &State) {
-        observer.record(&Sample {
-            tau: s.tau,
-            x: s.x,
-            v: s.v,
-            a: s.a,
-            fs: s.fs,
-            fp: s.fp,
-            in_contact: matches!(self.phase, Phase::Contact(_)),
-        });
+    #[inline]
+    fn record<O: Observer>(&self, observer: &mut O) {
+        observer.record(&sample(
+            &self.state,
+            matches!(self.phase, Phase::Contact(_)),
+        ));
     }
 
     fn finish(mut self) -> RunResult {
@@ -370,5 +443,77 @@ impl<'a> Driver<'a> {
         self.result.energy = self.energy;
         self.result.tau_end = s.tau;
         self.result
+    }
+}
+
+/// Peaks and yielding at an accepted state.
+#[inline]
+fn track_peaks(r: &mut RunResult, s: &State) {
+    for (peaks, i) in [(&mut r.left, 0), (&mut r.right, 1)] {
+        peaks.peak_displacement = peaks.peak_displacement.max(s.x[i].abs());
+        peaks.peak_velocity = peaks.peak_velocity.max(s.v[i].abs());
+        peaks.yielded |= s.plastic[i];
+    }
+}
+
+/// What an observer sees of a state.
+#[inline]
+fn sample(s: &State, in_contact: bool) -> Sample {
+    Sample {
+        tau: s.tau,
+        x: s.x,
+        v: s.v,
+        a: s.a,
+        fs: s.fs,
+        fp: s.fp,
+        in_contact,
+    }
+}
+
+/// The value at the interior extremum of the cubic Hermite interpolant with
+/// end values p0, p1 and end slopes m0, m1 (m0·m1 < 0) over a step of size h.
+/// dp/ds = a s² + b s + c on s ∈ [0, 1], with a = 6(p0 − p1) + 3h(m0 + m1),
+/// b = −6(p0 − p1) − h(4m0 + 2m1), c = h m0; its root in (0, 1) is unique
+/// when the end slopes differ in sign.
+fn hermite_extremum(p0: f64, p1: f64, m0: f64, m1: f64, h: f64) -> f64 {
+    let (hm0, hm1) = (h * m0, h * m1);
+    let a = 6.0 * (p0 - p1) + 3.0 * (hm0 + hm1);
+    let b = -6.0 * (p0 - p1) - 4.0 * hm0 - 2.0 * hm1;
+    let c = hm0;
+    // Bisection-free root: the quadratic changes sign on [0, 1] (c and a + b + c = h m1 differ in sign).
+    let s = if a.abs() < 1e-300 {
+        -c / b
+    } else {
+        let disc = (b * b - 4.0 * a * c).max(0.0).sqrt();
+        // Numerically stable pair of roots; take the one inside [0, 1].
+        let q = -0.5 * (b + b.signum() * disc);
+        let (r1, r2) = (q / a, if q != 0.0 { c / q } else { f64::NAN });
+        if (0.0..=1.0).contains(&r1) { r1 } else { r2 }
+    };
+    let s = if s.is_finite() {
+        s.clamp(0.0, 1.0)
+    } else {
+        0.5
+    };
+    let (s2, s3) = (s * s, s * s * s);
+    (2.0 * s3 - 3.0 * s2 + 1.0) * p0
+        + (s3 - 2.0 * s2 + s) * hm0
+        + (-2.0 * s3 + 3.0 * s2) * p1
+        + (s3 - s2) * hm1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::hermite_extremum;
+
+    #[test]
+    fn hermite_finds_the_peak_of_a_sine() {
+        // sin on [1.5, 1.7]: peak 1 at π/2, cubic interpolation error O(h⁴).
+        let (t0, t1) = (1.5f64, 1.7f64);
+        let p = hermite_extremum(t0.sin(), t1.sin(), t0.cos(), t1.cos(), t1 - t0);
+        assert!((p - 1.0).abs() < 1e-5, "{p}");
+        // A parabola is reproduced exactly: p = 1 − (t − 0.3)², t ∈ [0, 1].
+        let p = hermite_extremum(1.0 - 0.09, 1.0 - 0.49, 0.6, -1.4, 1.0);
+        assert!((p - 1.0).abs() < 1e-14, "{p}");
     }
 }

@@ -1,0 +1,23 @@
+//! The default set-1 spectrum (291 points of Π_ω1 = 0.1:3.0:0.01, μ = 2.25,
+//! with its no-pounding baseline), from an empty baseline cache each time:
+//! the target is under 0.5 s wall on 2 cores, release build.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use pounding::analysis::baseline::BaselineCache;
+use pounding::analysis::grid::Grid;
+use pounding::analysis::sweep::{curve_specs, sweep};
+use pounding::model::SET1;
+
+fn default_spectrum(c: &mut Criterion) {
+    let grid = Grid::default().values();
+    let specs = curve_specs(&SET1, SET1.mu(), None).unwrap();
+    let mut group = c.benchmark_group("spectrum");
+    group.sample_size(10);
+    group.bench_function("set1_default_291_points", |b| {
+        b.iter(|| sweep(&specs, &grid, &mut BaselineCache::new()))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, default_spectrum);
+criterion_main!(benches);

@@ -1,0 +1,11 @@
+//! One file per part of the screen; each is a pure function of the state.
+
+pub mod chart;
+pub mod history;
+pub mod kelvin;
+pub mod loops;
+pub mod overlay;
+pub mod params;
+pub mod sets;
+pub mod spectrum;
+pub mod summary;

@@ -1,0 +1,243 @@
+//! The solver on a background thread, latest wins (after gitui's
+//! `AsyncSingleJob`): at most one job runs and at most one waits; a newer
+//! request replaces the waiting one and cancels the running one (through the
+//! observer's `keep_going`, and between spectrum points). Every output carries
+//! its job's generation so the app can drop stale ones.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Condvar, Mutex};
+use std::thread::JoinHandle;
+use std::time::Instant;
+
+use crate::analysis::spectrum::{SpectrumPoint, point};
+use crate::model::Params;
+use crate::solver::{Decimated, Observer, RunResult, Sample, SolverOptions, simulate};
+
+/// Which run of the explorer a result belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Slot {
+    /// Parameter set 0 (left pane) or 1 (right pane).
+    Set(usize),
+    /// The active set under the other contact model (Kelvin comparison).
+    Twin,
+}
+
+/// One run to compute: its parameters and how many history buckets to keep.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunSpec {
+    pub slot: Slot,
+    pub params: Params,
+    /// Time buckets of the decimated history (chart width × 2 Braille dots).
+    pub buckets: usize,
+}
+
+/// A spectrum to compute point by point (SPEC §7).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpectrumSpec {
+    /// Every parameter but Π_ω1, Π_ω2 (which the grid sets).
+    pub params: Params,
+    /// μ = Π_ω2/Π_ω1.
+    pub mu: f64,
+    /// Π_ω1 grid.
+    pub grid: Vec<f64>,
+}
+
+/// What the visible scene needs.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Job {
+    pub generation: u64,
+    pub runs: Vec<RunSpec>,
+    pub spectrum: Option<SpectrumSpec>,
+}
+
+/// A finished run.
+#[derive(Debug, Clone)]
+pub struct RunOutput {
+    pub spec: RunSpec,
+    pub result: RunResult,
+    pub history: Decimated,
+    /// Wall time of the run in milliseconds.
+    pub elapsed_ms: f64,
+}
+
+/// What the worker reports.
+#[derive(Debug, Clone)]
+pub enum Output {
+    Run {
+        generation: u64,
+        output: Box<RunOutput>,
+    },
+    Point {
+        generation: u64,
+        index: usize,
+        point: SpectrumPoint,
+    },
+    /// The job ended, complete or cancelled by a newer one.
+    Done { generation: u64, cancelled: bool },
+}
+
+impl Output {
+    pub fn generation(&self) -> u64 {
+        match self {
+            Output::Run { generation, .. }
+            | Output::Point { generation, .. }
+            | Output::Done { generation, .. } => *generation,
+        }
+    }
+}
+
+/// The waiting place: at most one job.
+#[derive(Debug, Default)]
+pub struct Pending {
+    waiting: Option<Job>,
+    shutdown: bool,
+}
+
+impl Pending {
+    /// Puts a job in the waiting place, returning the one it replaced.
+    pub fn put(&mut self, job: Job) -> Option<Job> {
+        self.waiting.replace(job)
+    }
+}
+
+struct Shared {
+    pending: Mutex<Pending>,
+    wake: Condvar,
+    /// Generation of the newest request; a job of an older one stops.
+    latest: AtomicU64,
+}
+
+/// The background solver thread.
+pub struct Worker {
+    shared: Arc<Shared>,
+    thread: Option<JoinHandle<()>>,
+}
+
+impl Worker {
+    /// Starts the thread; `send` receives every output.
+    pub fn start(send: impl Fn(Output) + Send + 'static) -> Worker {
+        let shared = Arc::new(Shared {
+            pending: Mutex::new(Pending::default()),
+            wake: Condvar::new(),
+            latest: AtomicU64::new(0),
+        });
+        let inner = Arc::clone(&shared);
+        let thread = std::thread::Builder::new()
+            .name("pounding-solver".into())
+            .spawn(move || worker_loop(&inner, &send))
+            .ok();
+        Worker { shared, thread }
+    }
+
+    /// Requests a job: it replaces any waiting job, and the running one stops.
+    pub fn submit(&self, job: Job) {
+        self.shared.latest.store(job.generation, Ordering::SeqCst);
+        if let Ok(mut p) = self.shared.pending.lock() {
+            p.put(job);
+        }
+        self.shared.wake.notify_one();
+    }
+}
+
+impl Drop for Worker {
+    fn drop(&mut self) {
+        self.shared.latest.store(u64::MAX, Ordering::SeqCst);
+        if let Ok(mut p) = self.shared.pending.lock() {
+            p.shutdown = true;
+        }
+        self.shared.wake.notify_one();
+        if let Some(t) = self.thread.take() {
+            let _ = t.join();
+        }
+    }
+}
+
+fn worker_loop(shared: &Shared, send: &dyn Fn(Output)) {
+    loop {
+        let job = {
+            let Ok(mut p) = shared.pending.lock() else {
+                return;
+            };
+            loop {
+                if p.shutdown {
+                    return;
+                }
+                if let Some(job) = p.waiting.take() {
+                    break job;
+                }
+                p = match shared.wake.wait(p) {
+                    Ok(p) => p,
+                    Err(_) => return,
+                };
+            }
+        };
+        let current = || shared.latest.load(Ordering::SeqCst) == job.generation;
+        let cancelled = !run_job(&job, &current, send);
+        send(Output::Done {
+            generation: job.generation,
+            cancelled,
+        });
+    }
+}
+
+/// Runs every part of a job while `current()` holds; false if it stopped early.
+pub fn run_job(job: &Job, current: &dyn Fn() -> bool, send: &dyn Fn(Output)) -> bool {
+    for spec in &job.runs {
+        if !current() {
+            return false;
+        }
+        let output = compute_run(spec, current);
+        if !output.result.completed || !current() {
+            return false;
+        }
+        send(Output::Run {
+            generation: job.generation,
+            output: Box::new(output),
+        });
+    }
+    if let Some(s) = &job.spectrum {
+        for (index, &omega1) in s.grid.iter().enumerate() {
+            if !current() {
+                return false;
+            }
+            send(Output::Point {
+                generation: job.generation,
+                index,
+                point: point(&s.params, omega1, s.mu),
+            });
+        }
+    }
+    true
+}
+
+/// A decimated history that stops when its job is superseded.
+struct Cancellable<'a> {
+    history: Decimated,
+    current: &'a dyn Fn() -> bool,
+}
+
+impl Observer for Cancellable<'_> {
+    #[inline]
+    fn record(&mut self, sample: &Sample) {
+        self.history.record(sample);
+    }
+    fn keep_going(&mut self) -> bool {
+        (self.current)()
+    }
+}
+
+/// One run with the default (accurate) solver options and a decimated history.
+pub fn compute_run(spec: &RunSpec, current: &dyn Fn() -> bool) -> RunOutput {
+    let start = Instant::now();
+    let mut observer = Cancellable {
+        history: Decimated::new(spec.buckets, spec.params.tau_end()),
+        current,
+    };
+    let result = simulate(&spec.params, &SolverOptions::default(), &mut observer);
+    RunOutput {
+        spec: *spec,
+        result,
+        history: observer.history,
+        elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
+    }
+}

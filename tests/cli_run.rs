@@ -1,0 +1,242 @@
+//! `pounding run` end to end: the JSON object, the history CSV, and every bad
+//! input of issue 2 item 8 (exit code 2, one clear line, no panic).
+
+use std::process::{Command, Output};
+
+fn pounding(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .output()
+        .expect("binary runs")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn json_has_every_key() {
+    let o = pounding(&["run", "--preset", "set1", "--format", "json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(
+        text.trim().lines().count(),
+        1,
+        "exactly one JSON object on one line"
+    );
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    for key in [
+        "mass_ratio",
+        "omega1",
+        "omega2",
+        "yield1",
+        "yield2",
+        "damping",
+        "alpha",
+        "contact_omega",
+        "restitution",
+        "gap",
+        "model",
+        "cycles",
+        "dt",
+        "min_impact_velocity",
+    ] {
+        assert!(v["params"].get(key).is_some(), "params.{key} missing");
+    }
+    assert_eq!(v["model"], "improved-kelvin");
+    assert_eq!(v["dt"], 0.001);
+    assert!((v["tau_end"].as_f64().unwrap() - 16.0 * std::f64::consts::PI).abs() < 1e-9);
+    assert!(v["steps"].as_u64().unwrap() >= 50_266);
+    assert_eq!(v["impacts"], 9);
+    assert_eq!(v["impact_list"].as_array().unwrap().len(), 9);
+    for key in [
+        "start",
+        "end",
+        "approach_velocity",
+        "separation_velocity",
+        "restitution",
+        "peak_force",
+        "max_penetration",
+    ] {
+        assert!(v["impact_list"][0][key].is_number(), "impact_list[0].{key}");
+    }
+    assert!((v["left"]["peak_displacement"].as_f64().unwrap() - 3.22245).abs() < 2e-5);
+    assert_eq!(v["left"]["yielded"], true);
+    assert_eq!(v["right"]["yielded"], false);
+    assert!(v["max_force"].as_f64().unwrap() > 30.0);
+    assert!(v["min_force"].as_f64().unwrap() >= 0.0);
+    assert!(v["energy_residual"].as_f64().unwrap() < 1e-6);
+    assert!(v["elapsed_ms"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn infinite_gap_is_written_as_inf_in_json() {
+    let o = pounding(&["run", "--no-pounding", "--format", "json", "--cycles", "1"]);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["params"]["gap"], "inf");
+    assert_eq!(v["impacts"], 0);
+}
+
+#[test]
+fn history_csv_has_one_row_per_step() {
+    let dir = std::env::temp_dir().join(format!("pounding-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("h.csv");
+    let o = pounding(&[
+        "run",
+        "--cycles",
+        "1",
+        "--format",
+        "json",
+        "--history",
+        path.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let csv = std::fs::read_to_string(&path).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next().unwrap(), "tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp");
+    // One row per accepted step plus the initial state.
+    assert_eq!(lines.count() as u64, v["steps"].as_u64().unwrap() + 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn csv_and_table_formats() {
+    let o = pounding(&["run", "--preset", "set2", "--format", "csv"]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(text.lines().count(), 2);
+    assert!(text.starts_with("left_peak_displacement,"));
+    let o = pounding(&["run", "--preset", "set2", "--model", "kelvin"]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.contains("kelvin contact") && text.contains("(tension)"),
+        "{text}"
+    );
+}
+
+/// Each bad input: exit code 2 and a one-line message with the given fragments.
+#[test]
+fn bad_input_is_a_clear_error() {
+    let cases: &[(&[&str], &[&str])] = &[
+        (&["run", "--set", "bogus=1"], &["unknown parameter `bogus`"]),
+        (
+            &["run", "--set", "gap=abc"],
+            &["`gap` = abc", "not a number"],
+        ),
+        (&["run", "--set", "gap=NaN"], &["`gap` = NaN"]),
+        (
+            &["run", "--set", "mass_ratio=0"],
+            &["`mass_ratio` = 0", "> 0"],
+        ),
+        (&["run", "--set", "mass_ratio=-2"], &["`mass_ratio` = -2"]),
+        (
+            &["run", "--set", "restitution=0"],
+            &["`restitution` = 0", "(0, 1]"],
+        ),
+        (
+            &["run", "--set", "restitution=1.5"],
+            &["`restitution` = 1.5", "(0, 1]"],
+        ),
+        (&["run", "--dt", "0"], &["`dt` = 0", "> 0"]),
+        (&["run", "--dt", "-0.001"], &["`dt` = -0.001"]),
+        (&["run", "--set", "gap=-0.1"], &["`gap` = -0.1", ">= 0"]),
+        (&["run", "--set", "yield1=-1"], &["`yield1` = -1"]),
+        (&["run", "--set", "yield2=0"], &["`yield2` = 0"]),
+        (
+            &["run", "--set", "damping=-0.05"],
+            &["`damping` = -0.05", ">= 0"],
+        ),
+        (
+            &["run", "--set", "contact_omega=-50"],
+            &["`contact_omega` = -50"],
+        ),
+        (&["run", "--set", "alpha=1.5"], &["`alpha` = 1.5", "[0, 1]"]),
+        (
+            &["run", "--set", "alpha=-0.1"],
+            &["`alpha` = -0.1", "[0, 1]"],
+        ),
+        (&["run", "--cycles", "0"], &["`cycles` = 0", "[1, 100000]"]),
+        (&["run", "--cycles", "2.5"], &["`cycles` = 2.5"]),
+        (
+            &["run", "--set", "model=hertz"],
+            &["`model` = hertz", "kelvin"],
+        ),
+        (&["run", "--set", "gap"], &["KEY=VALUE"]),
+        (
+            &["run", "--preset", "set3"],
+            &["no preset named `set3`", "set1", "set2"],
+        ),
+    ];
+    for (args, fragments) in cases {
+        let o = pounding(args);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert_eq!(
+            err.trim().lines().count(),
+            1,
+            "{args:?}: one line, got {err}"
+        );
+        for f in *fragments {
+            assert!(err.contains(f), "{args:?}: `{f}` not in {err}");
+        }
+    }
+}
+
+#[test]
+fn malformed_preset_names_file_line_and_column() {
+    let dir = std::env::temp_dir().join(format!("pounding-preset-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("broken.toml");
+    std::fs::write(&path, "mass_ratio = 0.5\nomega1 = [oops\n").unwrap();
+    let o = pounding(&["run", "--preset", path.to_str().unwrap()]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains(&format!("{}:2:", path.display())), "{err}");
+    std::fs::write(&path, "restitution = 2\n").unwrap();
+    let o = pounding(&["run", "--preset", path.to_str().unwrap()]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        err.contains("broken.toml") && err.contains("`restitution` = 2"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn coarse_dt_is_a_warning_not_an_error() {
+    let o = pounding(&["run", "--dt", "0.01", "--format", "json"]);
+    assert!(o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("warning") && err.contains("steps per contact period"),
+        "{err}"
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v["left"]["peak_displacement"].as_f64().unwrap().is_finite());
+}
+
+#[test]
+fn physical_preset_runs_its_own_pi_groups() {
+    // two-buildings holds only a [physical] table: its Π-groups, not set 1's, are run.
+    let o = pounding(&[
+        "run",
+        "--preset",
+        "two-buildings",
+        "--format",
+        "json",
+        "--cycles",
+        "1",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let omega1 = v["params"]["omega1"].as_f64().unwrap();
+    // Π_ω1 = ω1/ω_p = (2π/0.95)/(2π/1.0) = 1/0.95.
+    assert!((omega1 - 1.0 / 0.95).abs() < 1e-12, "{omega1}");
+    // Π_d = d ω_p²/a_p = 0.025 (2π)² / (0.5 g).
+    let gap = v["params"]["gap"].as_f64().unwrap();
+    let expected = 0.025 * (2.0 * std::f64::consts::PI).powi(2) / (0.5 * 9.80665);
+    assert!((gap - expected).abs() < 1e-12, "{gap} vs {expected}");
+}

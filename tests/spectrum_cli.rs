@@ -1,0 +1,101 @@
+//! `pounding spectrum` from the outside: JSON shape, CSV header, bad input.
+
+use std::process::Command;
+
+fn pounding(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+#[test]
+fn json_has_the_issue_shape() {
+    let (code, out, err) = pounding(&[
+        "spectrum",
+        "--preset",
+        "fig8-gap",
+        "--omega1",
+        "1.0:1.1:0.1",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["mu"], 1.5);
+    assert_eq!(v["model"], "improved-kelvin");
+    let curves = v["curves"].as_array().unwrap();
+    assert_eq!(curves.len(), 3);
+    assert_eq!(curves[0]["family"], serde_json::json!({"gap": 0.2}));
+    assert_eq!(curves[2]["family"], serde_json::json!({"gap": "inf"}));
+    let p = &curves[0]["points"][1];
+    assert_eq!(p["omega1"], 1.1);
+    assert!((p["omega2"].as_f64().unwrap() - 1.65).abs() < 1e-12);
+    for k in ["left", "right", "free_left", "free_right"] {
+        assert!(p[k]["peak_displacement"].as_f64().unwrap() > 0.0);
+        assert!(p[k]["peak_velocity"].as_f64().unwrap() > 0.0);
+    }
+    assert!(p["impacts"].as_u64().unwrap() > 0);
+    assert_eq!(p["region"], "amplification");
+    assert!(v["elapsed_ms"].as_f64().unwrap() >= 0.0);
+    // Without a family.
+    let (_, out, _) = pounding(&[
+        "spectrum",
+        "--omega1",
+        "0.1:0.1:0.1",
+        "--mu",
+        "2.25",
+        "--format",
+        "json",
+    ]);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["curves"][0]["family"], serde_json::json!({}));
+    assert_eq!(v["curves"][0]["points"][0]["region"], "none");
+}
+
+#[test]
+fn csv_has_one_row_per_point() {
+    let (code, out, _) = pounding(&[
+        "spectrum",
+        "--family",
+        "mass_ratio=0.1,0.9",
+        "--omega1",
+        "0.1:0.3:0.1",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(code, 0);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 1 + 2 * 3);
+    assert!(lines[0].starts_with("mass_ratio,mu,omega1,omega2,left_peak_displacement,"));
+    let columns = lines[0].split(',').count();
+    assert!(lines.iter().all(|l| l.split(',').count() == columns));
+    assert!(lines[4].starts_with("0.9,"));
+}
+
+#[test]
+fn bad_input_is_one_line_and_exit_2() {
+    for (args, needle) in [
+        (vec!["--omega1", "3:1:0.1"], "`omega1` grid = 3:1:0.1"),
+        (vec!["--mu", "0"], "--mu 0"),
+        (
+            vec!["--family", "restitution=0.5,7"],
+            "`restitution` = 7: must be in (0, 1]",
+        ),
+        (vec!["--family", "omega2=1,2"], "swept"),
+        (vec!["--set", "gap=-1"], "`gap` = -1"),
+    ] {
+        let mut all = vec!["spectrum"];
+        all.extend(args);
+        let (code, out, err) = pounding(&all);
+        assert_eq!(code, 2, "{all:?}");
+        assert!(out.is_empty());
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{err}");
+    }
+}
