@@ -11,8 +11,11 @@ pub enum Expect {
     /// The invariants only.
     Invariants,
     /// Linear, undamped, free: |x_i| never exceeds the exact amplitude
-    /// √(x₀² + (v₀/ω)²) (average acceleration conserves the energy of a
-    /// linear undamped system at any Δτ: unconditional stability).
+    /// √(x₀² + (v₀/ω)²) by more than [`AMPLITUDE_TOLERANCE`] (average
+    /// acceleration conserves the discrete energy of a linear undamped system
+    /// at any Δτ, which the energy residual shows exactly; the solver's peaks
+    /// come from a cubic interpolant inside each step, which may overshoot the
+    /// state's amplitude by its interpolation error: 1.5e-6 at Π_ω·Δτ = 0.12).
     AmplitudeBound([f64; 2]),
     /// A long run with the peaks-only observer: resident memory must not grow
     /// by more than this many bytes.
@@ -22,6 +25,9 @@ pub enum Expect {
     /// are reported as degradation, not failure.
     UnderResolved,
 }
+
+/// Allowed relative overshoot of the amplitude by the interpolated peaks.
+pub const AMPLITUDE_TOLERANCE: f64 = 1e-3;
 
 /// One run to check.
 #[derive(Debug, Clone)]

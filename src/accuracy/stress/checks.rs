@@ -4,7 +4,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::cases::{Case, Expect};
+use super::cases::{AMPLITUDE_TOLERANCE, Case, Expect};
 use crate::model::ContactModel;
 use crate::reference::{ReferenceOptions, reference};
 use crate::solver::{RunResult, simulate};
@@ -99,7 +99,7 @@ pub fn check(case: &Case) -> Outcome {
                 .zip(bound)
                 .enumerate()
             {
-                if !(peak <= b * (1.0 + 1e-9)) {
+                if !(peak <= b * (1.0 + AMPLITUDE_TOLERANCE)) {
                     failures.push(format!("Π_u{} = {peak} exceeds the amplitude {b}", i + 1));
                 }
             }

@@ -1,0 +1,33 @@
+//! One run of each built-in preset (both contact models), peaks only and with
+//! the full history, with the default solver options (issue 5, item 4).
+//! `cargo bench --bench run`. The default spectrum is in `benches/spectrum.rs`.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use pounding::model::{ContactModel, Params, SET1, SET2};
+use pounding::solver::{FullHistory, SolverOptions, simulate};
+use std::hint::black_box;
+
+fn runs(c: &mut Criterion) {
+    let options = SolverOptions::default();
+    let mut group = c.benchmark_group("run");
+    for (name, base) in [("set1", SET1), ("set2", SET2)] {
+        for model in ContactModel::ALL {
+            let p = Params { model, ..base };
+            group.bench_function(format!("{name}/{model}/peaks-only"), |b| {
+                b.iter(|| simulate(black_box(&p), &options, &mut ()))
+            });
+            let steps = (p.tau_end() / p.dt) as usize + 1024;
+            group.bench_function(format!("{name}/{model}/full-history"), |b| {
+                b.iter(|| {
+                    let mut history = FullHistory::with_capacity(steps);
+                    simulate(black_box(&p), &options, &mut history);
+                    history
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, runs);
+criterion_main!(benches);
