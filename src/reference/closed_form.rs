@@ -3,7 +3,9 @@
 //!
 //! Each structure is then the damped oscillator (SPEC §2 divided by its mass)
 //!
-//!     ẍ + 2ζω ẋ + ω² x = −s sin τ,   x(0) = x₀, ẋ(0) = v₀,
+//! ```text
+//! ẍ + 2ζω ẋ + ω² x = −s sin τ,   x(0) = x₀, ẋ(0) = v₀,
+//! ```
 //!
 //! with ω = Π_ωi, ζ = Π_ξ and s = 1 (sine excitation) or 0 (free motion).
 //! Its solution is the steady state x_p = A sin τ + B cos τ with
