@@ -197,7 +197,7 @@ impl<'a> Driver<'a> {
         let mut iterations = 0usize;
         while self.state.tau < tau_end - end_slack {
             iterations += 1;
-            if iterations % POLL_EVERY == 0 {
+            if iterations.is_multiple_of(POLL_EVERY) {
                 if !observer.keep_going() {
                     self.result.completed = false;
                     break;
