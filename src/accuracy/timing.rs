@@ -3,8 +3,6 @@
 
 use std::time::Instant;
 
-use crate::cli::output::median;
-
 /// How long the repeated runs of one row may take together, roughly.
 pub const ROW_BUDGET_MS: f64 = 150.0;
 /// Fewest and most timed runs per row.
@@ -25,4 +23,18 @@ pub fn median_ms<T>(mut run: impl FnMut() -> T) -> (f64, T) {
         times.push(t.elapsed().as_secs_f64() * 1e3);
     }
     (median(times), out)
+}
+
+/// The median of a list of durations in milliseconds (0 for an empty list).
+pub fn median(mut values: Vec<f64>) -> f64 {
+    if values.is_empty() {
+        return 0.0;
+    }
+    values.sort_by(|a, b| a.total_cmp(b));
+    let n = values.len();
+    if n % 2 == 1 {
+        values[n / 2]
+    } else {
+        0.5 * (values[n / 2 - 1] + values[n / 2])
+    }
 }

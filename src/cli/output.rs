@@ -28,17 +28,3 @@ pub fn num(v: f64) -> String {
         format!("{v}")
     }
 }
-
-/// The median of a list of durations in milliseconds (0 for an empty list).
-pub fn median(mut values: Vec<f64>) -> f64 {
-    if values.is_empty() {
-        return 0.0;
-    }
-    values.sort_by(|a, b| a.total_cmp(b));
-    let n = values.len();
-    if n % 2 == 1 {
-        values[n / 2]
-    } else {
-        0.5 * (values[n / 2 - 1] + values[n / 2])
-    }
-}

@@ -8,8 +8,9 @@ use std::time::Instant;
 use clap::Args;
 
 use super::CliError;
-use super::output::{Format, median, num, params_json};
+use super::output::{Format, num, params_json};
 use super::params::ParamArgs;
+use crate::accuracy::timing::median;
 use crate::model::{Params, preset::write_atomic};
 use crate::solver::{FullHistory, RunResult, SolverOptions, simulate};
 
@@ -43,7 +44,7 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
         let steps = (p.tau_end() / p.dt) as usize + 64;
         let mut history = FullHistory::with_capacity(steps.min(50_000_000));
         simulate(&p, &options, &mut history);
-        write_atomic(path, history_csv(&history).as_bytes()).map_err(|e| {
+        write_atomic(path, history.to_csv().as_bytes()).map_err(|e| {
             CliError::Failed(format!("cannot write history to {}: {e}", path.display()))
         })?;
     }
@@ -54,22 +55,6 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
     };
     print!("{text}");
     Ok(())
-}
-
-/// The history CSV: header `tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp`, one row per accepted state.
-pub fn history_csv(history: &FullHistory) -> String {
-    let mut out = String::with_capacity(history.samples.len() * 120);
-    out.push_str("tau,");
-    out.push_str(&crate::solver::observer::CHANNEL_NAMES.join(","));
-    out.push('\n');
-    for s in &history.samples {
-        let _ = write!(out, "{}", s.tau);
-        for v in s.channels() {
-            let _ = write!(out, ",{v}");
-        }
-        out.push('\n');
-    }
-    out
 }
 
 /// The run summary as the JSON object of the issue (SPEC §6).

@@ -81,6 +81,25 @@ impl FullHistory {
     }
 }
 
+impl FullHistory {
+    /// The history as CSV: header `tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp`, one row per accepted state.
+    pub fn to_csv(&self) -> String {
+        use std::fmt::Write as _;
+        let mut out = String::with_capacity(self.samples.len() * 120);
+        out.push_str("tau,");
+        out.push_str(&CHANNEL_NAMES.join(","));
+        out.push('\n');
+        for s in &self.samples {
+            let _ = write!(out, "{}", s.tau);
+            for v in s.channels() {
+                let _ = write!(out, ",{v}");
+            }
+            out.push('\n');
+        }
+        out
+    }
+}
+
 impl Observer for FullHistory {
     #[inline]
     fn record(&mut self, sample: &Sample) {

@@ -3,7 +3,6 @@
 
 use std::path::Path;
 
-use crate::cli::run::history_csv;
 use crate::model::Params;
 use crate::model::preset::write_atomic;
 use crate::solver::{FullHistory, SolverOptions, simulate};
@@ -13,7 +12,7 @@ pub fn write(params: &Params, path: &Path) -> String {
     let steps = (params.tau_end() / params.dt).ceil() as usize + 1;
     let mut history = FullHistory::with_capacity(steps.min(1 << 24));
     simulate(params, &SolverOptions::default(), &mut history);
-    match write_atomic(path, history_csv(&history).as_bytes()) {
+    match write_atomic(path, history.to_csv().as_bytes()) {
         Ok(()) => format!(
             "exported {} ({} rows)",
             path.display(),
