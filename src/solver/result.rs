@@ -2,6 +2,8 @@
 
 use serde::Serialize;
 
+use super::method::Method;
+
 /// Peak response of one structure: Π_u = max |x|, Π_v = max |ẋ| (SPEC §6).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct StructurePeaks {
@@ -73,9 +75,64 @@ pub struct RunResult {
     pub step_retries: usize,
     /// Steps accepted although Newton had not converged at the smallest size.
     pub unconverged_steps: usize,
-    /// False when the observer stopped the run early.
+    /// False when the run stopped before τ_end (see `stop`).
     pub completed: bool,
+    /// Why and where the run stopped early; `None` when it reached τ_end.
+    pub stop: Option<Stop>,
+    /// The integrator that produced this result.
+    pub method: Method,
 }
+
+/// Why a run ended before τ_end.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum StopReason {
+    /// The observer asked to stop (a superseded explorer job).
+    Cancelled,
+    /// A state variable or force became NaN or infinite.
+    NonFinite,
+    /// The run took more steps than its cap.
+    StepCap,
+    /// The run met more events (impacts, yields, unloadings) than its cap: chatter or Zeno.
+    EventCap,
+    /// Too many steps had to be retried at a smaller size.
+    RetryCap,
+}
+
+impl StopReason {
+    pub fn describe(self) -> &'static str {
+        match self {
+            StopReason::Cancelled => "cancelled",
+            StopReason::NonFinite => "the state became non-finite (NaN or infinite)",
+            StopReason::StepCap => "the step cap was reached",
+            StopReason::EventCap => "the event cap was reached (chattering contact)",
+            StopReason::RetryCap => "the retry cap was reached (the step would not converge)",
+        }
+    }
+}
+
+/// Where (τ) and why a run stopped early.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Stop {
+    pub tau: f64,
+    pub reason: StopReason,
+}
+
+impl std::fmt::Display for Stop {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "run stopped at τ = {:.6}: {}",
+            self.tau,
+            self.reason.describe()
+        )
+    }
+}
+
+/// Largest energy residual (SPEC §6) of a run whose numbers are trusted.
+/// Both methods close the balance to about 1e-10 on every accepted case;
+/// a residual above this means the step did not resolve the motion.
+pub const ENERGY_TOLERANCE: f64 = 1e-4;
 
 impl RunResult {
     /// Peaks of the four headline numbers [Π_u1, Π_v1, Π_u2, Π_v2].
@@ -86,6 +143,25 @@ impl RunResult {
             self.right.peak_displacement,
             self.right.peak_velocity,
         ]
+    }
+
+    /// Why this result should not be trusted, or `None` when it may be:
+    /// it stopped early (other than by cancellation, which callers discard),
+    /// a number is not finite, or the energy residual exceeds [`ENERGY_TOLERANCE`].
+    pub fn unreliable(&self) -> Option<String> {
+        if let Some(stop) = self.stop {
+            return Some(stop.to_string());
+        }
+        if !self.is_finite() {
+            return Some("a result is not finite".into());
+        }
+        if self.energy.residual > ENERGY_TOLERANCE {
+            return Some(format!(
+                "energy residual {:.3e} exceeds {:.0e}",
+                self.energy.residual, ENERGY_TOLERANCE
+            ));
+        }
+        None
     }
 
     /// Whether every number is finite.

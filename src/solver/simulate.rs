@@ -13,7 +13,7 @@ use crate::model::{ContactLaw, Excitation, Params};
 use super::events::locate;
 use super::newmark::{Phase, State, System};
 use super::observer::{Observer, Sample};
-use super::result::{EnergyBalance, Impact, RunResult};
+use super::result::{EnergyBalance, Impact, RunResult, Stop, StopReason};
 
 /// How many Newmark sub-steps each Δτ is cut into while the structures are in contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -200,6 +200,10 @@ impl<'a> Driver<'a> {
             if iterations.is_multiple_of(POLL_EVERY) {
                 if !observer.keep_going() {
                     self.result.completed = false;
+                    self.result.stop = Some(Stop {
+                        tau: self.state.tau,
+                        reason: StopReason::Cancelled,
+                    });
                     break;
                 }
                 self.system.resync(&mut self.state);
@@ -289,6 +293,10 @@ impl<'a> Driver<'a> {
     fn free_flight<O: Observer>(&mut self, observer: &mut O, dt: f64, tau_end: f64) -> bool {
         if !observer.keep_going() {
             self.result.completed = false;
+            self.result.stop = Some(Stop {
+                tau: self.state.tau,
+                reason: StopReason::Cancelled,
+            });
             return false;
         }
         self.system.resync(&mut self.state);
