@@ -4,6 +4,7 @@
 pub mod contact;
 pub mod excitation;
 pub mod hysteresis;
+pub mod method;
 pub mod params;
 pub mod physical;
 pub mod preset;
@@ -11,5 +12,6 @@ pub mod preset;
 pub use contact::{ContactLaw, ContactModel};
 pub use excitation::{Excitation, Rotation};
 pub use hysteresis::{Bilinear, SpringState};
+pub use method::Method;
 pub use params::{ParamError, Params, SET1, SET2};
 pub use preset::{Preset, PresetError};

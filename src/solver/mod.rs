@@ -9,13 +9,12 @@
 //! - [`result`]: what a run reports (SPEC §6).
 
 pub mod events;
-pub mod method;
 pub mod newmark;
 pub mod observer;
 pub mod result;
 pub mod simulate;
 
-pub use method::Method;
+pub use crate::model::Method;
 pub use observer::{Decimated, FullHistory, Observer, Sample};
 pub use result::{
     ENERGY_TOLERANCE, EnergyBalance, Impact, RunResult, Stop, StopReason, StructurePeaks,

@@ -2,7 +2,7 @@
 
 use serde::Serialize;
 
-use super::method::Method;
+use crate::model::Method;
 
 /// Peak response of one structure: Π_u = max |x|, Π_v = max |ẋ| (SPEC §6).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]

@@ -9,7 +9,9 @@
 //!   (SPEC §2–3); contact phases are integrated by a high-order Taylor
 //!   series whose error is controlled on the contact's own scale.
 //!
-//! [`RunResult`]: super::RunResult
+//! It lives in the model, beside Δτ, because a parameter set names it.
+//!
+//! [`RunResult`]: crate::solver::RunResult
 
 use serde::{Deserialize, Serialize};
 use std::fmt;
