@@ -32,6 +32,48 @@ impl Excitation {
     }
 }
 
+/// 1/k for k < 64 (1/0 unused), so that 1/k! comes by multiplication.
+const RECIPROCALS: [f64; 64] = {
+    let mut r = [0.0; 64];
+    let mut k = 1;
+    while k < 64 {
+        r[k] = 1.0 / k as f64;
+        k += 1;
+    }
+    r
+};
+
+impl Excitation {
+    /// Taylor coefficients of g about τ: g(τ + t) = Σ_k out[k] t^k, for
+    /// k < out.len(). For the sine, g^{(k)}(τ) cycles through sin τ, cos τ,
+    /// −sin τ, −cos τ, so out[k] = g^{(k)}(τ)/k!. The event-driven method
+    /// expands the ground motion this way on each segment.
+    pub fn taylor(self, tau: f64, out: &mut [f64]) {
+        match self {
+            Excitation::Sine => {
+                let (s, c) = tau.sin_cos();
+                let cycle = [s, c, -s, -c];
+                let mut inv_factorial = 1.0;
+                for (k, o) in out.iter_mut().enumerate() {
+                    if k > 0 {
+                        inv_factorial *= RECIPROCALS[k.min(RECIPROCALS.len() - 1)];
+                    }
+                    *o = cycle[k % 4] * inv_factorial;
+                }
+            }
+            Excitation::None => out.iter_mut().for_each(|o| *o = 0.0),
+        }
+    }
+
+    /// The first τ after `tau` at which g changes formula (a kink or jump),
+    /// where a segment of the event-driven method must end: never, for the
+    /// sine. Pulses (pieces of sinusoids) and records (piecewise linear) end
+    /// their pieces here.
+    pub fn next_break(self, _tau: f64) -> f64 {
+        f64::INFINITY
+    }
+}
+
 /// Advances the phasor (sin τ, cos τ) by a fixed step h:
 /// sin(τ+h) = sin τ cos h + cos τ sin h, cos(τ+h) = cos τ cos h − sin τ sin h.
 /// Each use adds about one rounding error, so a run re-synchronises the
@@ -68,5 +110,18 @@ mod tests {
             p = r.advance(p);
         }
         assert!((p[0] - 1f64.sin()).abs() < 1e-14 && (p[1] - 1f64.cos()).abs() < 1e-14);
+    }
+
+    #[test]
+    fn taylor_series_of_the_sine_sums_to_it() {
+        let mut c = [0.0; 24];
+        Excitation::Sine.taylor(0.3, &mut c);
+        let t: f64 = 1.2;
+        let sum: f64 = c
+            .iter()
+            .enumerate()
+            .map(|(k, a)| a * t.powi(k as i32))
+            .sum();
+        assert!((sum - 1.5f64.sin()).abs() < 1e-15);
     }
 }

@@ -9,6 +9,7 @@
 //! - [`result`]: what a run reports (SPEC §6).
 
 pub mod events;
+pub mod exact;
 pub mod newmark;
 pub mod observer;
 pub mod result;

@@ -41,6 +41,11 @@ impl Sample {
 
 /// Receives every accepted state, in time order, starting with τ = 0.
 pub trait Observer {
+    /// Whether this observer looks at samples at all. Peaks only (`()`) does
+    /// not, so a method that must construct each sample (the event-driven
+    /// one evaluates its series at output instants) skips that work.
+    const RECORDS: bool = true;
+
     fn record(&mut self, sample: &Sample);
 
     /// Polled now and then by the driver; returning `false` stops the run
@@ -52,11 +57,13 @@ pub trait Observer {
 
 /// Peaks only: records nothing (the run summary carries the peaks).
 impl Observer for () {
+    const RECORDS: bool = false;
     #[inline]
     fn record(&mut self, _: &Sample) {}
 }
 
 impl<O: Observer + ?Sized> Observer for &mut O {
+    const RECORDS: bool = O::RECORDS;
     #[inline]
     fn record(&mut self, sample: &Sample) {
         (**self).record(sample)

@@ -1,0 +1,623 @@
+//! The event-driven run: from rest to τ_end, one segment at a time.
+//!
+//! Each pass of the loop
+//! 1. expands the motion about the current instant as Taylor series
+//!    ([`super::dynamics`]): each structure alone out of contact, both
+//!    together with the pounding force in contact;
+//! 2. chooses the segment length: a fixed reach of the fastest free rate out
+//!    of contact, where the series is the closed-form response summed to
+//!    round-off; from the size of the last terms in contact, relative to the
+//!    contact's own scale δ ~ v₀/Π_ωcon;
+//! 3. finds the earliest event in the segment on the series
+//!    ([`super::roots`]): contact onset (δ = 0, rising), separation (δ = 0,
+//!    falling), yield (|z| reaches Π_uy) and unloading (ẋ changes sign while
+//!    yielded) of either structure, and cuts the segment there;
+//! 4. raises the peaks to the true maxima on the segment (Π_u at zeros of ẋ,
+//!    Π_v at zeros of ẍ, and an impact's penetration and force at zeros of
+//!    their rates), hands the observer its samples, and switches branch or
+//!    contact at the event.
+//!
+//! The state is checked for non-finite values at every segment, and caps on
+//! segments and events turn a runaway (chatter, a Zeno cascade of impacts)
+//! into a reported stop.
+
+use crate::model::{ContactLaw, Excitation, Method, Params};
+
+use super::super::observer::{Observer, Sample};
+use super::super::result::{Impact, RunResult, Stop, StopReason};
+use super::super::simulate::SolverOptions;
+use super::dynamics::{Branch, Structure, contact_series, free_series, step_for};
+use super::energy::Work;
+use super::roots::{fires_at_start, first_crossing};
+use super::series::{MAX_DEGREE, Series};
+
+/// Degree of the series out of contact.
+const FREE_DEGREE: usize = 20;
+/// Segment length out of contact in units of 1/Ω, Ω the fastest free rate
+/// (structures and excitation): the last term is then about 1/21! ≈ 2e-20 of
+/// the motion, below round-off.
+const FREE_REACH: f64 = 1.0;
+/// Degree of the series in contact.
+const CONTACT_DEGREE: usize = 24;
+/// Size of each of the last two terms of a contact series, relative to the
+/// contact scale δ ~ v₀/Π_ωcon.
+const CONTACT_TOLERANCE: f64 = 1e-16;
+/// Events (onsets, separations, yields, unloadings) allowed per cycle of the
+/// run, beyond a fixed allowance: a physical run has a few per cycle.
+const EVENTS_PER_CYCLE: usize = 1_000;
+const EVENT_ALLOWANCE: usize = 10_000;
+/// How often (in segments) the observer is asked whether to go on.
+const POLL_EVERY: usize = 256;
+
+/// What a run may use besides the Π-groups.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ExactOptions {
+    pub excitation: Excitation,
+    pub initial_displacement: [f64; 2],
+    pub initial_velocity: [f64; 2],
+    /// Integrate the work terms of SPEC §6 (Gauss–Legendre on each segment).
+    /// Costs about as much as the motion itself; spectra and maps skip it.
+    pub energy: bool,
+}
+
+impl Default for ExactOptions {
+    fn default() -> Self {
+        ExactOptions {
+            excitation: Excitation::Sine,
+            initial_displacement: [0.0; 2],
+            initial_velocity: [0.0; 2],
+            energy: true,
+        }
+    }
+}
+
+impl From<&SolverOptions> for ExactOptions {
+    fn from(o: &SolverOptions) -> Self {
+        ExactOptions {
+            excitation: o.excitation,
+            initial_displacement: o.initial_displacement,
+            initial_velocity: o.initial_velocity,
+            energy: true,
+        }
+    }
+}
+
+/// Which event ends a segment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Event {
+    Onset,
+    Separation,
+    /// Structure i reaches z = sign · Π_uy.
+    Yield(usize, f64),
+    /// Structure i, yielded, turns back.
+    Unload(usize),
+}
+
+/// Runs `p` (which must have passed [`Params::validate`]) with the exact method.
+pub fn simulate<O: Observer>(p: &Params, options: &ExactOptions, observer: &mut O) -> RunResult {
+    let mut run = Run::new(p, options);
+    run.sample_now(observer);
+    run.time_loop(observer);
+    run.finish()
+}
+
+struct Run<'a> {
+    p: &'a Params,
+    options: &'a ExactOptions,
+    structures: [Structure; 2],
+    tau: f64,
+    x: [f64; 2],
+    v: [f64; 2],
+    branch: [Branch; 2],
+    contact: Option<ContactLaw>,
+    /// The open impact, an index into `result.impacts`.
+    open_impact: Option<usize>,
+    /// Length of a free segment.
+    free_step: f64,
+    /// Output grid spacing for observers (Δτ of the parameter set).
+    sample_step: f64,
+    /// Index of the next output instant k · Δτ.
+    next_sample: u64,
+    events: usize,
+    max_events: usize,
+    max_segments: usize,
+    work: Work,
+    result: RunResult,
+}
+
+impl<'a> Run<'a> {
+    fn new(p: &'a Params, options: &'a ExactOptions) -> Self {
+        let structures = Structure::pair(p);
+        let [x1, x2] = options.initial_displacement;
+        let [v1, v2] = options.initial_velocity;
+        let rate = structures[0].rate.max(structures[1].rate).max(1.0);
+        let free_step = FREE_REACH / rate;
+        let tau_end = p.tau_end();
+        let mut run = Run {
+            p,
+            options,
+            structures,
+            tau: 0.0,
+            x: [x1, x2],
+            v: [v1, v2],
+            branch: [
+                structures[0].initial_branch(x1, v1),
+                structures[1].initial_branch(x2, v2),
+            ],
+            contact: None,
+            open_impact: None,
+            free_step,
+            sample_step: p.dt,
+            next_sample: 1,
+            events: 0,
+            max_events: EVENT_ALLOWANCE + EVENTS_PER_CYCLE * p.cycles as usize,
+            // Free segments needed, times a margin for events and contact segments.
+            max_segments: 1_000_000 + (100.0 * tau_end / free_step).min(1e9) as usize,
+            work: Work::default(),
+            result: RunResult {
+                completed: true,
+                method: Method::Exact,
+                ..RunResult::default()
+            },
+        };
+        run.result.impacts.reserve(32);
+        for i in 0..2 {
+            run.result_peaks(i, run.x[i].abs(), run.v[i].abs());
+            if matches!(run.branch[i], Branch::Yielded { .. }) {
+                run.mark_yielded(i);
+            }
+        }
+        let delta = x1 - x2 - p.gap;
+        if delta > 0.0 || (delta == 0.0 && v1 > v2) {
+            run.begin_contact();
+        }
+        run
+    }
+
+    fn result_peaks(&mut self, i: usize, u: f64, v: f64) {
+        let peaks = if i == 0 {
+            &mut self.result.left
+        } else {
+            &mut self.result.right
+        };
+        peaks.peak_displacement = peaks.peak_displacement.max(u);
+        peaks.peak_velocity = peaks.peak_velocity.max(v);
+    }
+
+    fn mark_yielded(&mut self, i: usize) {
+        if i == 0 {
+            self.result.left.yielded = true;
+        } else {
+            self.result.right.yielded = true;
+        }
+    }
+
+    fn stop(&mut self, reason: StopReason) {
+        self.result.completed = false;
+        self.result.stop = Some(Stop {
+            tau: self.tau,
+            reason,
+        });
+    }
+
+    fn time_loop<O: Observer>(&mut self, observer: &mut O) {
+        let tau_end = self.p.tau_end();
+        let mut segments = 0usize;
+        let mut ground = Series {
+            degree: CONTACT_DEGREE.max(FREE_DEGREE),
+            ..Series::default()
+        };
+        while self.tau < tau_end {
+            segments += 1;
+            if segments.is_multiple_of(POLL_EVERY) && !observer.keep_going() {
+                self.stop(StopReason::Cancelled);
+                return;
+            }
+            if segments > self.max_segments {
+                self.stop(StopReason::StepCap);
+                return;
+            }
+            if !(self.x[0] + self.x[1] + self.v[0] + self.v[1]).is_finite() {
+                self.stop(StopReason::NonFinite);
+                return;
+            }
+            let excitation = self.options.excitation;
+            let to_end = tau_end - self.tau;
+            let reach = (tau_end - self.tau).min(excitation.next_break(self.tau) - self.tau);
+            excitation.taylor(self.tau, &mut ground.c[..=ground.degree]);
+            let segment = match self.contact {
+                None => self.free_segment(&ground, reach),
+                Some(law) => self.contact_segment(&law, &ground, reach),
+            };
+            let (length, event) = segment.end;
+            self.account(&segment, length, observer);
+            self.advance(&segment, length);
+            if let Some(event) = event {
+                self.events += 1;
+                if self.events > self.max_events {
+                    self.stop(StopReason::EventCap);
+                    return;
+                }
+                self.switch(event);
+                if O::RECORDS {
+                    observer.record(&self.sample(self.tau));
+                }
+            }
+            if event.is_none() && length >= to_end {
+                // The last segment lands exactly on τ_end.
+                self.tau = tau_end;
+            }
+        }
+    }
+
+    /// Both structures out of contact, each on its own branch.
+    fn free_segment(&self, ground: &Series, reach: f64) -> Segment {
+        let x = free_series(
+            &self.structures,
+            self.branch,
+            self.x,
+            self.v,
+            ground,
+            FREE_DEGREE,
+        );
+        let h = self.free_step.min(reach);
+        let mut segment = Segment::new(x, None, h);
+        if self.p.gap.is_finite() {
+            let delta0 = self.x[0] - self.x[1] - self.p.gap;
+            if delta0 + segment.swing[0] + segment.swing[1] >= 0.0 {
+                let delta = segment.x[0].minus(&segment.x[1]).shifted(self.p.gap);
+                segment.consider(&delta, Event::Onset);
+            }
+        }
+        self.spring_events(&mut segment);
+        segment
+    }
+
+    /// Both structures coupled through the contact law.
+    fn contact_segment(&self, law: &ContactLaw, ground: &Series, reach: f64) -> Segment {
+        let s = contact_series(
+            &self.structures,
+            self.branch,
+            self.x,
+            self.v,
+            self.p.gap,
+            law,
+            ground,
+            CONTACT_DEGREE,
+        );
+        let impact = &self.result.impacts[self.open_impact.expect("contact has an impact")];
+        let scale = impact
+            .approach_velocity
+            .abs()
+            .max(self.p.min_impact_velocity)
+            / self.p.contact_omega;
+        let h = step_for(&[&s.x[0], &s.x[1]], CONTACT_TOLERANCE * scale)
+            .min(self.free_step)
+            .min(reach);
+        let mut segment = Segment::new(s.x, Some(s.force), h);
+        let separation = segment.x[1].minus(&segment.x[0]).shifted(-self.p.gap);
+        segment.consider(&separation, Event::Separation);
+        self.spring_events(&mut segment);
+        segment
+    }
+
+    fn spring_events(&self, segment: &mut Segment) {
+        for i in 0..2 {
+            match self.branch[i] {
+                Branch::Elastic { offset } => {
+                    let uy = self.structures[i].yield_displacement;
+                    let z0 = self.x[i] - offset;
+                    if uy.is_finite() && z0.abs() + segment.swing[i] >= uy {
+                        let z = segment.x[i].shifted(offset);
+                        segment.consider(&z.shifted(uy), Event::Yield(i, 1.0));
+                        segment.consider(&z.scaled(-1.0).shifted(uy), Event::Yield(i, -1.0));
+                    }
+                }
+                Branch::Yielded { sign } => {
+                    if -sign * self.v[i] + segment.swing[2 + i] >= 0.0 {
+                        let back = segment.v[i].scaled(-sign);
+                        segment.consider(&back, Event::Unload(i));
+                    }
+                }
+            }
+        }
+    }
+
+    /// Peaks, impact extremes, work and samples over [0, length] of the segment.
+    fn account<O: Observer>(&mut self, segment: &Segment, length: f64, observer: &mut O) {
+        for i in 0..2 {
+            let peaks = if i == 0 {
+                &mut self.result.left
+            } else {
+                &mut self.result.right
+            };
+            if self.x[i].abs() + segment.swing[i] > peaks.peak_displacement {
+                raise_abs_max(
+                    &segment.x[i],
+                    &segment.v[i],
+                    length,
+                    &mut peaks.peak_displacement,
+                );
+            }
+            if self.v[i].abs() + segment.swing[2 + i] > peaks.peak_velocity {
+                let a = segment.v[i].derivative();
+                raise_abs_max(&segment.v[i], &a, length, &mut peaks.peak_velocity);
+            }
+        }
+        if let (Some(force), Some(k)) = (&segment.force, self.open_impact) {
+            let delta = segment.x[0].minus(&segment.x[1]).shifted(self.p.gap);
+            let rate = delta.derivative();
+            let df = force.derivative();
+            let r = &mut self.result;
+            let imp = &mut r.impacts[k];
+            raise_max(&delta, &rate, length, &mut imp.max_penetration);
+            raise_max(force, &df, length, &mut imp.peak_force);
+            r.max_force = r.max_force.max(imp.peak_force);
+            let mut pull = -r.min_force;
+            raise_max(&force.scaled(-1.0), &df.scaled(-1.0), length, &mut pull);
+            r.min_force = -pull;
+        }
+        if self.options.energy {
+            self.work.add(
+                &self.structures,
+                self.branch,
+                segment,
+                self.p.gap,
+                self.tau,
+                length,
+                self.options.excitation,
+            );
+        }
+        if O::RECORDS {
+            let end = self.tau + length;
+            loop {
+                let t = self.next_sample as f64 * self.sample_step;
+                if t >= end {
+                    break;
+                }
+                observer.record(&segment.sample(self, t - self.tau, t));
+                self.next_sample += 1;
+            }
+        }
+    }
+
+    fn advance(&mut self, segment: &Segment, length: f64) {
+        for i in 0..2 {
+            let (x, v) = segment.x[i].value_slope(length);
+            self.x[i] = x;
+            self.v[i] = v;
+        }
+        self.tau += length;
+    }
+
+    fn switch(&mut self, event: Event) {
+        match event {
+            Event::Onset => self.begin_contact(),
+            Event::Separation => {
+                self.contact = None;
+                if let Some(k) = self.open_impact.take() {
+                    let imp = &mut self.result.impacts[k];
+                    imp.end = self.tau;
+                    imp.separation_velocity = -(self.v[0] - self.v[1]);
+                    imp.restitution = if imp.approach_velocity > 0.0 {
+                        imp.separation_velocity / imp.approach_velocity
+                    } else {
+                        0.0
+                    };
+                    imp.ended = true;
+                }
+            }
+            Event::Yield(i, sign) => {
+                self.branch[i] = Branch::Yielded { sign };
+                self.mark_yielded(i);
+            }
+            Event::Unload(i) => {
+                if let Branch::Yielded { sign } = self.branch[i] {
+                    let uy = self.structures[i].yield_displacement;
+                    self.branch[i] = Branch::Elastic {
+                        offset: self.x[i] - sign * uy,
+                    };
+                }
+            }
+        }
+    }
+
+    /// Onset at the current instant: v₀ = δ̇ here (SPEC §4).
+    fn begin_contact(&mut self) {
+        let p = self.p;
+        let rate = self.v[0] - self.v[1];
+        let law = ContactLaw::new(
+            p.model,
+            p.mass_ratio,
+            p.contact_omega,
+            p.restitution,
+            rate,
+            p.min_impact_velocity,
+        );
+        self.contact = Some(law);
+        let delta = self.x[0] - self.x[1] - p.gap;
+        let force = law.force(delta.max(0.0), rate).force;
+        self.result.impacts.push(Impact {
+            start: self.tau,
+            end: self.tau,
+            approach_velocity: rate,
+            separation_velocity: 0.0,
+            restitution: 0.0,
+            peak_force: force,
+            max_penetration: delta.max(0.0),
+            ended: false,
+        });
+        self.result.max_force = self.result.max_force.max(force);
+        self.result.min_force = self.result.min_force.min(force);
+        self.open_impact = Some(self.result.impacts.len() - 1);
+    }
+
+    fn sample_now<O: Observer>(&self, observer: &mut O) {
+        if O::RECORDS {
+            observer.record(&self.sample(self.tau));
+        }
+    }
+
+    /// The state at the current instant, for observers.
+    fn sample(&self, tau: f64) -> Sample {
+        let fs = [0, 1].map(|i| self.structures[i].spring_force(self.branch[i], self.x[i]));
+        let delta = self.x[0] - self.x[1] - self.p.gap;
+        let rate = self.v[0] - self.v[1];
+        let fp = match &self.contact {
+            Some(law) => law.force(delta, rate).force,
+            None => 0.0,
+        };
+        let g = self.options.excitation.at(tau);
+        let a = [0, 1].map(|i| {
+            let s = &self.structures[i];
+            let push = if i == 0 { -fp } else { fp };
+            (push - s.damping * self.v[i] - fs[i]) / s.mass - g
+        });
+        Sample {
+            tau,
+            x: self.x,
+            v: self.v,
+            a,
+            fs,
+            fp,
+            in_contact: self.contact.is_some(),
+        }
+    }
+
+    fn finish(mut self) -> RunResult {
+        if let Some(k) = self.open_impact {
+            self.result.impacts[k].end = self.tau;
+        }
+        if self.options.energy {
+            let m = [self.structures[0].mass, self.structures[1].mass];
+            let initial = 0.5
+                * (m[0] * self.options.initial_velocity[0].powi(2)
+                    + m[1] * self.options.initial_velocity[1].powi(2));
+            self.result.energy = self.work.balance(m, self.v, initial);
+        }
+        self.result.tau_end = self.tau;
+        self.result.steps = 0;
+        self.result
+    }
+}
+
+/// One segment's series and its earliest event.
+pub struct Segment {
+    pub x: [Series; 2],
+    pub v: [Series; 2],
+    /// f_p in contact.
+    pub force: Option<Series>,
+    /// Σ_{k≥1} |c_k| h^k of x1, x2, ẋ1, ẋ2 over the segment's full length h:
+    /// how far each can move from its start value, a bound that clears most
+    /// event functions and peaks without a search.
+    pub swing: [f64; 4],
+    /// Where the segment ends: its full length, or the earliest event.
+    end: (f64, Option<Event>),
+}
+
+impl Segment {
+    fn new(x: [Series; 2], force: Option<Series>, h: f64) -> Self {
+        let v = [x[0].derivative(), x[1].derivative()];
+        let mut powers = [0.0; MAX_DEGREE + 1];
+        let mut hk = 1.0;
+        for p in powers.iter_mut().skip(1) {
+            hk *= h;
+            *p = hk;
+        }
+        let swing = |q: &Series| -> f64 { (1..=q.degree).map(|k| q.c[k].abs() * powers[k]).sum() };
+        Segment {
+            swing: [swing(&x[0]), swing(&x[1]), swing(&v[0]), swing(&v[1])],
+            v,
+            x,
+            force,
+            end: (h, None),
+        }
+    }
+
+    /// Cuts the segment at `event` if `e` turns positive before its current end.
+    fn consider(&mut self, e: &Series, event: Event) {
+        if self.end.0 == 0.0 {
+            return;
+        }
+        if fires_at_start(e) {
+            self.end = (0.0, Some(event));
+        } else if let Some(t) = first_crossing(e, 0.0, self.end.0) {
+            self.end = (t, Some(event));
+        }
+    }
+
+    /// The state at offset t into the segment (τ = `tau`), for observers.
+    fn sample(&self, run: &Run, t: f64, tau: f64) -> Sample {
+        let x = [self.x[0].value(t), self.x[1].value(t)];
+        let (v0, a0) = self.v[0].value_slope(t);
+        let (v1, a1) = self.v[1].value_slope(t);
+        let fs = [0, 1].map(|i| run.structures[i].spring_force(run.branch[i], x[i]));
+        Sample {
+            tau,
+            x,
+            v: [v0, v1],
+            a: [a0, a1],
+            fs,
+            fp: self.force.as_ref().map_or(0.0, |f| f.value(t)),
+            in_contact: self.force.is_some(),
+        }
+    }
+}
+
+/// Raises `peak` to the maximum of q on (0, t1], given the series of q and q'.
+/// The maxima of q are the falling zeros of q' (or t1), and between two of
+/// them lies a rising zero (a minimum); the walk goes from one to the next,
+/// and stops as soon as q cannot exceed the peak on what is left.
+fn raise_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
+    *peak = peak.max(q.c[0]);
+    if bound_on(q, t1) <= *peak {
+        return;
+    }
+    // Where q first rises above the peak (most segments: nowhere).
+    let Some(mut t) = first_crossing(&q.shifted(*peak), 0.0, t1) else {
+        return;
+    };
+    let falling = dq.scaled(-1.0);
+    // A segment of at most about a radian holds one or two maxima; the cap only guards progress.
+    for _ in 0..8 {
+        // Ascending from t: the next maximum is at the next falling zero of q'.
+        let tm = first_crossing(&falling, t, t1).unwrap_or(t1);
+        *peak = peak.max(q.value(tm));
+        if tm >= t1 {
+            return;
+        }
+        // Descending from tm: the next rise starts at a minimum (a rising zero of q'),
+        // and matters only if q then climbs above the peak.
+        let Some(tmin) = first_crossing(dq, tm, t1).filter(|&s| s > tm) else {
+            return;
+        };
+        match first_crossing(&q.shifted(*peak), tmin, t1) {
+            Some(tc) => t = tc,
+            None => return,
+        }
+    }
+}
+
+/// Σ |c_k| t1^k: a bound of q on [0, t1].
+#[inline]
+fn bound_on(q: &Series, t1: f64) -> f64 {
+    let mut bound = q.c[0];
+    let mut tk = 1.0;
+    for k in 1..=q.degree {
+        tk *= t1;
+        bound += q.c[k].abs() * tk;
+    }
+    bound
+}
+
+/// Raises `peak` to the maximum of |q| on (0, t1].
+fn raise_abs_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
+    *peak = peak.max(q.c[0].abs());
+    if bound_on(q, t1) - q.c[0] + q.c[0].abs() <= *peak {
+        return;
+    }
+    raise_max(q, dq, t1, peak);
+    raise_max(&q.scaled(-1.0), &dq.scaled(-1.0), t1, peak);
+}
+
+const _: () = assert!(CONTACT_DEGREE <= MAX_DEGREE && FREE_DEGREE <= MAX_DEGREE);

@@ -1,0 +1,251 @@
+//! The equations of motion of one segment between events, as Taylor-series
+//! recurrences (SPEC §2–4).
+//!
+//! Between events each spring is on one branch of the bilinear law (SPEC §3),
+//! on which f_s is affine in x:
+//!
+//! ```text
+//! elastic, z = x − p (p the plastic offset):  f_s = k x − (1 − Π_α) k p
+//! yielded, z = σ Π_uy:                         f_s = Π_α k x + (1 − Π_α) k σ Π_uy
+//! ```
+//!
+//! so each structure obeys m ẍ + c ẋ + K x = Q − m g(τ) ∓ f_p with constant
+//! K (k or Π_α k) and Q. With x(τ₀ + t) = Σ x_k t^k and g(τ₀ + t) = Σ g_k t^k,
+//! matching powers of t gives the recurrence
+//!
+//! ```text
+//! m (k+1)(k+2) x_{k+2} = Q [k = 0] − m g_k − c (k+1) x_{k+1} − K x_k ∓ f_k,
+//! ```
+//!
+//! where f_k are the coefficients of the pounding force. Out of contact
+//! f_k = 0 and each structure is a linear oscillator with constant
+//! coefficients: its series is its closed-form response, summed to
+//! round-off. In contact (SPEC §4), f_p = k̄δ + cδ̇ + hδδ̇ with
+//! δ = x1 − x2 − Π_d, so
+//!
+//! ```text
+//! f_k = k̄ δ_k + c (k+1) δ_{k+1} + h Σ_{j=0}^{k} δ_j (k−j+1) δ_{k−j+1},
+//! ```
+//!
+//! which needs only coefficients up to k+1: the recurrence stays explicit.
+
+use crate::model::{ContactLaw, Params};
+
+use super::series::{MAX_DEGREE, Series};
+
+/// One spring's branch between events (SPEC §3).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Branch {
+    /// z = x − offset, |z| < Π_uy.
+    Elastic { offset: f64 },
+    /// z = sign · Π_uy, while sign · ẋ > 0.
+    Yielded { sign: f64 },
+}
+
+/// The constant coefficients of one structure (SPEC §2–3).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Structure {
+    /// m: Π_m (left) or 1 (right).
+    pub mass: f64,
+    /// c: 2Π_ξΠ_mΠ_ω1 or 2Π_ξΠ_ω2.
+    pub damping: f64,
+    /// Elastic k: Π_m Π_ω1² or Π_ω2².
+    pub stiffness: f64,
+    pub alpha: f64,
+    /// Π_uy (infinite: elastic for ever).
+    pub yield_displacement: f64,
+    /// Fastest rate of the structure's free motion on any branch, a bound on
+    /// the modulus of the eigenvalues of its first-order system: ξω + √(ξ²ω² + ω²).
+    pub rate: f64,
+}
+
+impl Structure {
+    pub fn pair(p: &Params) -> [Structure; 2] {
+        let make = |mass: f64, omega: f64, uy: f64| {
+            let zw = p.damping * omega;
+            Structure {
+                mass,
+                damping: 2.0 * zw * mass,
+                stiffness: mass * omega * omega,
+                alpha: p.alpha,
+                yield_displacement: uy,
+                rate: zw + (zw * zw + omega * omega).sqrt(),
+            }
+        };
+        [
+            make(p.mass_ratio, p.omega1, p.yield1),
+            make(1.0, p.omega2, p.yield2),
+        ]
+    }
+
+    /// (K, Q) of m ẍ + c ẋ + K x = Q − m g ∓ f_p on `branch`.
+    #[inline]
+    pub fn affine(&self, branch: Branch) -> (f64, f64) {
+        let k = self.stiffness;
+        match branch {
+            Branch::Elastic { offset } => (k, (1.0 - self.alpha) * k * offset),
+            Branch::Yielded { sign } => (
+                self.alpha * k,
+                -(1.0 - self.alpha) * k * sign * self.yield_displacement,
+            ),
+        }
+    }
+
+    /// z at displacement x on `branch`.
+    #[inline]
+    pub fn elastic_part(&self, branch: Branch, x: f64) -> f64 {
+        match branch {
+            Branch::Elastic { offset } => x - offset,
+            Branch::Yielded { sign } => sign * self.yield_displacement,
+        }
+    }
+
+    /// f_s = Π_α k x + (1 − Π_α) k z (SPEC §3).
+    #[inline]
+    pub fn spring_force(&self, branch: Branch, x: f64) -> f64 {
+        let k = self.stiffness;
+        self.alpha * k * x + (1.0 - self.alpha) * k * self.elastic_part(branch, x)
+    }
+
+    /// The branch at the start of a run from displacement x, with no plastic history.
+    pub fn initial_branch(&self, x: f64, v: f64) -> Branch {
+        let uy = self.yield_displacement;
+        if x.abs() > uy || (x.abs() == uy && x * v > 0.0) {
+            Branch::Yielded { sign: x.signum() }
+        } else {
+            Branch::Elastic { offset: 0.0 }
+        }
+    }
+}
+
+/// 1/((j+1)(j+2)), the divisor of the recurrence, and j + 1, as floats.
+const INV_PAIR: [f64; MAX_DEGREE + 1] = {
+    let mut r = [0.0; MAX_DEGREE + 1];
+    let mut j = 0;
+    while j <= MAX_DEGREE {
+        r[j] = 1.0 / ((j + 1) * (j + 2)) as f64;
+        j += 1;
+    }
+    r
+};
+const NEXT: [f64; MAX_DEGREE + 1] = {
+    let mut r = [0.0; MAX_DEGREE + 1];
+    let mut j = 0;
+    while j <= MAX_DEGREE {
+        r[j] = (j + 1) as f64;
+        j += 1;
+    }
+    r
+};
+
+/// Series of both structures out of contact, each alone on its branch:
+/// x_i from x₀, ẋ₀ and the ground series `g`, to degree `n`. The two
+/// recurrences run in one loop so that their dependency chains overlap.
+pub fn free_series(
+    s: &[Structure; 2],
+    branch: [Branch; 2],
+    x0: [f64; 2],
+    v0: [f64; 2],
+    g: &Series,
+    n: usize,
+) -> [Series; 2] {
+    let n = n.min(MAX_DEGREE);
+    let mut x = [Series::default(), Series::default()];
+    let mut k = [0.0; 2];
+    let mut c = [0.0; 2];
+    for i in 0..2 {
+        let inv_m = 1.0 / s[i].mass;
+        let (ki, qi) = s[i].affine(branch[i]);
+        k[i] = ki * inv_m;
+        c[i] = s[i].damping * inv_m;
+        x[i].degree = n;
+        x[i].c[0] = x0[i];
+        x[i].c[1] = v0[i];
+        // The constant load enters the first step only.
+        x[i].c[2] = (qi * inv_m - g.c[0] - c[i] * v0[i] - k[i] * x0[i]) * INV_PAIR[0];
+    }
+    for j in 1..n.saturating_sub(1) {
+        for i in 0..2 {
+            let xi = &mut x[i];
+            let rhs = -g.c[j] - c[i] * NEXT[j] * xi.c[j + 1] - k[i] * xi.c[j];
+            xi.c[j + 2] = rhs * INV_PAIR[j];
+        }
+    }
+    x
+}
+
+/// Series of both structures and of the pounding force in contact.
+pub struct ContactSeries {
+    pub x: [Series; 2],
+    /// f_p.
+    pub force: Series,
+}
+
+/// The coupled contact recurrence to degree `n` (f_p to degree n − 1).
+#[allow(clippy::too_many_arguments)]
+pub fn contact_series(
+    s: &[Structure; 2],
+    branch: [Branch; 2],
+    x0: [f64; 2],
+    v0: [f64; 2],
+    gap: f64,
+    law: &ContactLaw,
+    g: &Series,
+    n: usize,
+) -> ContactSeries {
+    let n = n.min(MAX_DEGREE);
+    let kq = [s[0].affine(branch[0]), s[1].affine(branch[1])];
+    let inv_m = [1.0 / s[0].mass, 1.0 / s[1].mass];
+    let mut x = [Series::default(), Series::default()];
+    let mut force = Series::default();
+    let mut delta = [0.0; MAX_DEGREE + 1];
+    for i in 0..2 {
+        x[i].degree = n;
+        x[i].c[0] = x0[i];
+        x[i].c[1] = v0[i];
+    }
+    delta[0] = x0[0] - x0[1] - gap;
+    delta[1] = v0[0] - v0[1];
+    let (kc, cc, hc) = (law.stiffness, law.linear_damping, law.hertz_damping);
+    for j in 0..n.saturating_sub(1) {
+        // f_j from δ_0 … δ_{j+1}.
+        let mut f = kc * delta[j] + cc * (j + 1) as f64 * delta[j + 1];
+        if hc != 0.0 {
+            let mut conv = 0.0;
+            for i in 0..=j {
+                conv += delta[i] * (j - i + 1) as f64 * delta[j - i + 1];
+            }
+            f += hc * conv;
+        }
+        force.c[j] = f;
+        for i in 0..2 {
+            let (k, q) = kq[i];
+            let load = if j == 0 { q } else { 0.0 };
+            let push = if i == 0 { -f } else { f };
+            let xi = &mut x[i];
+            let rhs = (load + push - s[i].damping * NEXT[j] * xi.c[j + 1] - k * xi.c[j]) * inv_m[i]
+                - g.c[j];
+            xi.c[j + 2] = rhs * INV_PAIR[j];
+        }
+        delta[j + 2] = x[0].c[j + 2] - x[1].c[j + 2];
+    }
+    force.degree = n.saturating_sub(2);
+    ContactSeries { x, force }
+}
+
+/// The largest t at which the series' last two terms are below `tol` each:
+/// min over q of (tol/|c_n|)^{1/n} and (tol/|c_{n−1}|)^{1/(n−1)} (the usual
+/// step choice of Taylor integrators, Jorba and Zou 2005).
+pub fn step_for(series: &[&Series], tol: f64) -> f64 {
+    let mut h = f64::INFINITY;
+    for s in series {
+        let n = s.degree;
+        for k in [n - 1, n] {
+            let a = s.c[k].abs();
+            if a > 0.0 {
+                h = h.min((tol / a).powf(1.0 / k as f64));
+            }
+        }
+    }
+    h
+}

@@ -1,0 +1,278 @@
+//! The earliest instant at which an event function turns positive on a
+//! segment, found on its Taylor series to round-off.
+//!
+//! Sign tests at the ends of a segment are not enough: an event function can
+//! rise above zero and fall back inside a segment whose two ends are both
+//! negative (a grazing contact, a yield that is undone at once). So a
+//! sub-interval [t, t + w] is cleared only when the cubic majorant of
+//! [`Series::cubic_majorant`],
+//!
+//! ```text
+//! e(t + s) ≤ e(t) + e'(t) s + ½e''(t) s² + M s³,   s ∈ [0, w],
+//! ```
+//!
+//! is negative on (0, w]. Otherwise the interval is halved, left half first,
+//! until it is cleared or holds a sign change, which is then solved by
+//! Newton's method kept inside the bracket.
+//!
+//! An event function that starts a segment at or just past zero (a root just
+//! located, left with a round-off residue such as δ = +1e-17) counts as an
+//! event only if it is still moving further past zero: a contact that has
+//! just ended must not restart with a negative approach velocity.
+
+use super::series::Series;
+
+/// Halvings after which an interval that is neither cleared nor bracketed is
+/// taken as a tangency at round-off level (no crossing).
+const MAX_DEPTH: u32 = 52;
+
+/// Whether e, at or just past zero at t = 0, is moving further past zero:
+/// its first nonzero derivative there is positive. Then the event fires at once.
+#[inline]
+pub fn fires_at_start(e: &Series) -> bool {
+    e.c[0] >= 0.0 && first_nonzero_positive(&e.c[1..=e.degree.max(1)])
+}
+
+#[inline]
+fn first_nonzero_positive(derivatives: &[f64]) -> bool {
+    derivatives
+        .iter()
+        .find(|d| **d != 0.0)
+        .is_some_and(|d| *d > 0.0)
+}
+
+/// Evaluations of the majorant allowed per search: a guard against
+/// pathological series (a tangency of high order); a search that exhausts it
+/// reports no crossing.
+const BUDGET: u32 = 4_000;
+
+/// The earliest t ∈ [a, b] where e turns positive. At t = a a value ≥ 0
+/// counts only if e is moving further past zero ([`fires_at_start`]); a
+/// residue left by a located root that is moving back is taken as zero.
+pub fn first_crossing(e: &Series, a: f64, b: f64) -> Option<f64> {
+    if !(b > a) {
+        return None;
+    }
+    let [d0, d1, d2, _] = e.cubic_majorant(a, 0.0);
+    if d0 >= 0.0 {
+        let moving_on = if a == 0.0 {
+            fires_at_start(e)
+        } else {
+            first_nonzero_positive(&[d1, d2])
+        };
+        if moving_on {
+            return Some(a);
+        }
+    }
+    let mut budget = BUDGET;
+    search(e, a, b, 0, &mut budget)
+}
+
+fn search(e: &Series, lo: f64, hi: f64, depth: u32, budget: &mut u32) -> Option<f64> {
+    if *budget == 0 {
+        return None;
+    }
+    *budget -= 1;
+    let w = hi - lo;
+    let [d0, d1, d2, m] = e.cubic_majorant(lo, w);
+    if cleared(d0.min(0.0), d1, d2, m, w) {
+        return None;
+    }
+    let e_hi = e.value(hi);
+    let rising = increasing(d1, d2, m, w);
+    if e_hi > 0.0 {
+        // A sign change inside: solve it. Where e is increasing it is the only
+        // one; otherwise make sure no earlier crossing hides before the root.
+        let root = solve(e, lo, hi);
+        if rising || depth >= MAX_DEPTH || root <= lo {
+            return Some(root);
+        }
+        let [d0, d1, d2, m] = e.cubic_majorant(lo, root - lo);
+        if !cleared(d0.min(0.0), d1, d2, m, root - lo)
+            && let Some(earlier) = search_strict(e, lo, root, depth + 1, budget)
+        {
+            return Some(earlier);
+        }
+        return Some(root);
+    }
+    // e(hi) ≤ 0: a monotone e has no crossing in between.
+    if rising || decreasing(d1, d2, m, w) {
+        return None;
+    }
+    if depth >= MAX_DEPTH || w <= f64::EPSILON * hi.abs().max(lo.abs()).max(f64::MIN_POSITIVE) {
+        return None;
+    }
+    let mid = lo + 0.5 * w;
+    search(e, lo, mid, depth + 1, budget).or_else(|| search(e, mid, hi, depth + 1, budget))
+}
+
+/// Whether e' > 0 on [t, t + w], from e'(t + s) ≥ d1 + 2 d2 s − 3M s²
+/// (concave in s, so its minimum is at an end).
+#[inline]
+fn increasing(d1: f64, d2: f64, m: f64, w: f64) -> bool {
+    d1 > 0.0 && d1 + w * (2.0 * d2 - 3.0 * m * w) > 0.0
+}
+
+/// Whether e' < 0 on [t, t + w].
+#[inline]
+fn decreasing(d1: f64, d2: f64, m: f64, w: f64) -> bool {
+    d1 < 0.0 && d1 + w * (2.0 * d2 + 3.0 * m * w) < 0.0
+}
+
+/// As [`search`] on [lo, root), for a root already found at `root`: only a
+/// crossing strictly before it counts.
+fn search_strict(e: &Series, lo: f64, root: f64, depth: u32, budget: &mut u32) -> Option<f64> {
+    let mid = lo + 0.5 * (root - lo);
+    if mid <= lo || mid >= root {
+        return None;
+    }
+    search(e, lo, mid, depth, budget)
+        .or_else(|| search(e, mid, root, depth, budget))
+        .filter(|&t| t < root)
+}
+
+/// Whether P(s) = d0 + d1 s + d2 s² + M s³ < 0 on (0, w] (d0 ≤ 0, M ≥ 0).
+#[inline]
+fn cleared(d0: f64, d1: f64, d2: f64, m: f64, w: f64) -> bool {
+    let p = |s: f64| d0 + s * (d1 + s * (d2 + s * m));
+    if !(p(w) < 0.0) {
+        return false;
+    }
+    if d0 == 0.0 && d1 >= 0.0 && (d1 > 0.0 || d2 >= 0.0) {
+        return false;
+    }
+    // Interior maxima: roots of P'(s) = d1 + 2 d2 s + 3M s².
+    let (qa, qb, qc) = (3.0 * m, 2.0 * d2, d1);
+    if qa == 0.0 {
+        if qb != 0.0 {
+            let s = -qc / qb;
+            if s > 0.0 && s < w && !(p(s) < 0.0) {
+                return false;
+            }
+        }
+        return true;
+    }
+    let disc = qb * qb - 4.0 * qa * qc;
+    if disc < 0.0 {
+        return true;
+    }
+    let sq = disc.sqrt();
+    let q = -0.5 * (qb + sq.copysign(qb));
+    for s in [q / qa, if q != 0.0 { qc / q } else { 0.0 }] {
+        if s > 0.0 && s < w && !(p(s) < 0.0) {
+            return false;
+        }
+    }
+    true
+}
+
+/// The root of e in (lo, hi] with e(lo) ≤ 0 < e(hi): Newton steps kept inside
+/// the bracket (bisection when a step would leave it), to the last bit.
+fn solve(e: &Series, mut lo: f64, mut hi: f64) -> f64 {
+    // Start from the secant through the bracket's ends.
+    let (e_lo, e_hi) = (e.value(lo), e.value(hi));
+    let secant = lo + (hi - lo) * (-e_lo / (e_hi - e_lo));
+    let mut t = if secant > lo && secant < hi {
+        secant
+    } else {
+        hi
+    };
+    for _ in 0..100 {
+        let (v, dv) = e.value_slope(t);
+        if v == 0.0 {
+            return t;
+        }
+        if v > 0.0 {
+            hi = t;
+        } else {
+            lo = t;
+        }
+        let mid = lo + 0.5 * (hi - lo);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        let newton = t - v / dv;
+        if newton > lo && newton < hi {
+            // Converged when the Newton correction is at the last bit of t.
+            if (newton - t).abs() <= 2.0 * f64::EPSILON * t.abs() {
+                return if e.value(newton) > 0.0 {
+                    newton
+                } else {
+                    hi.min(newton.next_up())
+                };
+            }
+            t = newton;
+        } else {
+            t = mid;
+        }
+    }
+    hi
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn poly(c: &[f64]) -> Series {
+        let mut s = Series {
+            degree: c.len() - 1,
+            ..Default::default()
+        };
+        s.c[..c.len()].copy_from_slice(c);
+        s
+    }
+
+    #[test]
+    fn finds_a_plain_crossing() {
+        // e = t − 0.3
+        let t = first_crossing(&poly(&[-0.3, 1.0]), 0.0, 1.0).unwrap();
+        assert!((t - 0.3).abs() < 1e-16);
+    }
+
+    #[test]
+    fn finds_a_crossing_hidden_between_negative_ends() {
+        // e = −(t − 0.5)² + 1e-6: positive only on 0.5 ± 1e-3, negative at both ends.
+        let e = poly(&[-0.25 + 1e-6, 1.0, -1.0]);
+        let t = first_crossing(&e, 0.0, 1.0).unwrap();
+        assert!((t - (0.5 - 1e-3)).abs() < 1e-12, "{t}");
+    }
+
+    #[test]
+    fn a_tangency_below_zero_is_no_crossing() {
+        let e = poly(&[-0.25 - 1e-12, 1.0, -1.0]);
+        assert_eq!(first_crossing(&e, 0.0, 1.0), None);
+    }
+
+    #[test]
+    fn the_earliest_of_several_crossings() {
+        // e = sin-like cubic with roots at 0.1, 0.4 (up, down) then 0.8 (up): (t−0.1)(t−0.4)(t−0.8)·(−1)
+        let (r1, r2, r3) = (0.1, 0.4, 0.8);
+        let e = poly(&[
+            r1 * r2 * r3,
+            -(r1 * r2 + r1 * r3 + r2 * r3),
+            r1 + r2 + r3,
+            -1.0,
+        ])
+        .scaled(-1.0);
+        // e(0) = r1 r2 r3 · (−1) < 0, rises through 0.1.
+        let t = first_crossing(&e, 0.0, 1.0).unwrap();
+        assert!((t - 0.1).abs() < 1e-15, "{t}");
+        // From 0.2, where e > 0 and rising, the event fires at once; past 0.4 the next is 0.8.
+        assert_eq!(first_crossing(&e, 0.2, 1.0), Some(0.2));
+        let t = first_crossing(&e, 0.45, 1.0).unwrap();
+        assert!((t - 0.8).abs() < 1e-15, "{t}");
+    }
+
+    #[test]
+    fn a_round_off_residue_moving_back_does_not_fire() {
+        // Just after a located root: e = 1e-17 − 2t.
+        let e = poly(&[1e-17, -2.0, 0.5]);
+        assert!(!fires_at_start(&e));
+        assert_eq!(first_crossing(&e, 0.0, 1.0), None);
+        assert!(fires_at_start(&poly(&[1e-17, 2.0])));
+        // ẋ = 0 exactly at an unloading point, moving back: cleared by the curvature.
+        let e = poly(&[0.0, 0.0, -1.0, 0.1]);
+        assert!(!fires_at_start(&e));
+        assert_eq!(first_crossing(&e, 0.0, 1.0), None);
+    }
+}
