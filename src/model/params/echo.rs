@@ -13,8 +13,11 @@ pub fn number(v: f64) -> String {
     if v.is_infinite() {
         return if v > 0.0 { "inf" } else { "-inf" }.into();
     }
-    // Rust's `{:?}` is the shortest round trip, in exponent form outside
-    // 1e-5..1e16; drop the `.0` it adds to whole numbers.
+    // Both `{:e}` and `{:?}` print the shortest digits that round-trip; the
+    // exponent form is used outside 1e-4..1e6, as `%g` does.
+    if v != 0.0 && !(1e-4..1e6).contains(&v.abs()) {
+        return format!("{v:e}");
+    }
     let s = format!("{v:?}");
     s.strip_suffix(".0").map_or(s.clone(), str::to_string)
 }
@@ -77,6 +80,9 @@ mod tests {
         assert_eq!(number(0.5), "0.5");
         assert_eq!(number(50.0), "50");
         assert_eq!(number(1e300), "1e300");
+        assert_eq!(number(1e15), "1e15");
+        assert_eq!(number(1234.5), "1234.5");
+        assert_eq!(number(1.5e-7), "1.5e-7");
         assert_eq!(number(1e-300), "1e-300");
         assert_eq!(number(-0.0), "-0");
         assert_eq!(number(f64::NEG_INFINITY), "-inf");
