@@ -32,12 +32,11 @@ pub fn g4(v: f64) -> String {
     if (-4..6).contains(&exp) {
         let decimals = (3 - exp).max(0) as usize;
         let s = format!("{v:.decimals$}");
-        let s = if s.contains('.') {
+        if s.contains('.') {
             s.trim_end_matches('0').trim_end_matches('.').to_string()
         } else {
             s
-        };
-        s
+        }
     } else {
         let s = format!("{v:.3e}");
         let (mantissa, e) = s.split_once('e').unwrap_or((&s, "0"));
