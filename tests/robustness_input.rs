@@ -227,7 +227,7 @@ fn every_finding_is_a_clear_error() {
         ),
         bad(
             &["run", "--set", "omega1=1e100"],
-            &["`omega1` = 1e100: must be a number in [0.01, 1000]"],
+            &["`omega1` = 1e100: must be a number in [0, 1000]"],
         ),
         // Values that printed nonsense with exit 0.
         bad(
@@ -464,7 +464,6 @@ fn generated_bad_inputs_are_handled() {
         "3:1:0.1",
         "0.1:3:0",
         "0.1:3:-1",
-        "0:3:0.1",
         "-1:3:0.1",
         "0.1:inf:0.1",
         "NaN:1:0.1",

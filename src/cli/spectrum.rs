@@ -11,11 +11,12 @@ use super::CliError;
 use super::output::{Format, num, params_json};
 use super::params::ParamArgs;
 use crate::analysis::baseline::BaselineCache;
-use crate::analysis::family::{Family, mu_error, parse_mu};
+use crate::analysis::family::{Family, parse_mu};
 use crate::analysis::grid::Grid;
 use crate::analysis::spectrum::region_ranges;
 use crate::analysis::spectrum_spec::{SpectrumSpec, check_sweep};
 use crate::analysis::sweep::{Curve, curve_specs, sweep};
+use crate::model::params::echo;
 use crate::model::{Params, Preset};
 
 #[derive(Debug, Clone, Default, Args)]
@@ -66,9 +67,12 @@ impl SpectrumPlan {
             None => spec.grid.unwrap_or_default(),
         };
         let mu = match (mu, spec.mu) {
-            (Some(text), _) => {
-                parse_mu(text).ok_or_else(|| usage(&format!("--mu: {}", mu_error(text))))?
-            }
+            (Some(text), _) => parse_mu(text).ok_or_else(|| {
+                usage(&format!(
+                    "--mu {}: must be a finite number > 0",
+                    echo::text(text.trim())
+                ))
+            })?,
             (None, Some(m)) => m,
             (None, None) => parse_mu(&p.mu().to_string()).ok_or_else(|| {
                 usage(&format!(
