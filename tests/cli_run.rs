@@ -1,5 +1,5 @@
 //! `pounding run` end to end: the JSON object, the history CSV, and every bad
-//! input of issue 2 item 8 (exit code 2, one clear line, no panic).
+//! input of the parameter table (exit code 2, one clear line, no panic).
 
 use std::process::{Command, Output};
 
@@ -25,22 +25,7 @@ fn json_has_every_key() {
         "exactly one JSON object on one line"
     );
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    for key in [
-        "mass_ratio",
-        "omega1",
-        "omega2",
-        "yield1",
-        "yield2",
-        "damping",
-        "alpha",
-        "contact_omega",
-        "restitution",
-        "gap",
-        "model",
-        "cycles",
-        "dt",
-        "min_impact_velocity",
-    ] {
+    for key in pounding::model::params::keys() {
         assert!(v["params"].get(key).is_some(), "params.{key} missing");
     }
     assert_eq!(v["model"], "improved-kelvin");
@@ -127,25 +112,28 @@ fn bad_input_is_a_clear_error() {
         (&["run", "--set", "gap=NaN"], &["`gap` = NaN"]),
         (
             &["run", "--set", "mass_ratio=0"],
-            &["`mass_ratio` = 0", "> 0"],
+            &["`mass_ratio` = 0", "[0.001, 1000]"],
         ),
         (&["run", "--set", "mass_ratio=-2"], &["`mass_ratio` = -2"]),
         (
             &["run", "--set", "restitution=0"],
-            &["`restitution` = 0", "(0, 1]"],
+            &["`restitution` = 0", "[0.001, 1]"],
         ),
         (
             &["run", "--set", "restitution=1.5"],
-            &["`restitution` = 1.5", "(0, 1]"],
+            &["`restitution` = 1.5", "[0.001, 1]"],
         ),
-        (&["run", "--dt", "0"], &["`dt` = 0", "> 0"]),
+        (&["run", "--dt", "0"], &["`dt` = 0", "[1e-6, 0.3142]"]),
         (&["run", "--dt", "-0.001"], &["`dt` = -0.001"]),
-        (&["run", "--set", "gap=-0.1"], &["`gap` = -0.1", ">= 0"]),
+        (
+            &["run", "--set", "gap=-0.1"],
+            &["`gap` = -0.1", "[0, 1e6], or inf"],
+        ),
         (&["run", "--set", "yield1=-1"], &["`yield1` = -1"]),
         (&["run", "--set", "yield2=0"], &["`yield2` = 0"]),
         (
             &["run", "--set", "damping=-0.05"],
-            &["`damping` = -0.05", ">= 0"],
+            &["`damping` = -0.05", "[0, 1]"],
         ),
         (
             &["run", "--set", "contact_omega=-50"],
@@ -239,4 +227,32 @@ fn physical_preset_runs_its_own_pi_groups() {
     let gap = v["params"]["gap"].as_f64().unwrap();
     let expected = 0.025 * (2.0 * std::f64::consts::PI).powi(2) / (0.5 * 9.80665);
     assert!((gap - expected).abs() < 1e-12, "{gap} vs {expected}");
+}
+
+/// The README's key list is the parameter table: one row per key, with its
+/// symbol, meaning and range exactly as the table states them.
+#[test]
+fn readme_lists_every_key_of_the_table() {
+    let readme = include_str!("../README.md");
+    let rows: Vec<String> = pounding::model::params::FIELDS
+        .iter()
+        .map(|f| {
+            format!(
+                "| `{}` | {} | {} | {} |",
+                f.key,
+                f.symbol,
+                f.meaning,
+                f.range().replace('|', "\\|")
+            )
+        })
+        .collect();
+    let missing: Vec<&String> = rows
+        .iter()
+        .filter(|r| !readme.contains(r.as_str()))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "README lacks these rows:\n{}",
+        rows.join("\n")
+    );
 }

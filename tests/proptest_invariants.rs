@@ -39,6 +39,7 @@ fn params() -> impl Strategy<Value = Params> {
                 } else {
                     ContactModel::ImprovedKelvin
                 },
+                method: pounding::model::Method::Newmark,
                 cycles,
                 dt: 0.001,
                 min_impact_velocity: 1e-3,

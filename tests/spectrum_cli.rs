@@ -85,7 +85,7 @@ fn bad_input_is_one_line_and_exit_2() {
         (vec!["--mu", "0"], "--mu 0"),
         (
             vec!["--family", "restitution=0.5,7"],
-            "`restitution` = 7: must be in (0, 1]",
+            "`restitution` = 7: must be a number in [0.001, 1]",
         ),
         (vec!["--family", "omega2=1,2"], "swept"),
         (vec!["--set", "gap=-1"], "`gap` = -1"),

@@ -15,7 +15,7 @@ fn figure(name: &str, grid: &[f64], cache: &mut BaselineCache) -> Vec<Curve> {
     let spec = SpectrumSpec::from_table(preset.spectrum.as_ref().unwrap()).unwrap();
     let family = spec
         .family
-        .map(|(k, v)| Family::new(&k, &v, &preset.params).unwrap());
+        .map(|(k, v)| Family::new("[spectrum] family", &k, &v, &preset.params).unwrap());
     let specs = curve_specs(&preset.params, spec.mu.unwrap(), family.as_ref()).unwrap();
     sweep(&specs, grid, cache)
 }

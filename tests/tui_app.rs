@@ -125,7 +125,7 @@ fn typed_value_is_checked_and_old_value_stays() {
     key(&mut a, KeyCode::Enter);
     match &a.mode {
         Mode::Editing { error: Some(e), .. } => {
-            assert_eq!(e, "`gap` = -1: must be a number >= 0, or inf")
+            assert_eq!(e, "`gap` = -1: must be a number in [0, 1e6], or inf")
         }
         m => panic!("expected an edit error, got {m:?}"),
     }

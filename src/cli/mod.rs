@@ -83,8 +83,15 @@ pub enum Command {
 pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32 {
     let cli = match Cli::try_parse_from(args) {
         Ok(cli) => cli,
-        Err(e) => {
+        // Help and version print in full; a usage error is its first line
+        // only (it names the flag and the value), like every other bad input.
+        Err(e) if !e.use_stderr() => {
             let _ = e.print();
+            return e.exit_code();
+        }
+        Err(e) => {
+            let text = e.render().to_string();
+            eprintln!("{}", text.lines().next().unwrap_or("error: bad arguments"));
             return e.exit_code();
         }
     };
@@ -100,7 +107,8 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
     match outcome {
         Ok(()) => 0,
         Err(e) => {
-            eprintln!("error: {e}");
+            // One line whatever a message quotes.
+            eprintln!("error: {}", e.to_string().replace(['\n', '\r'], " "));
             e.exit_code()
         }
     }

@@ -14,7 +14,7 @@ pub struct ParamArgs {
     #[arg(long, value_name = "NAME|PATH")]
     pub preset: Option<String>,
     /// Override one parameter, e.g. --set gap=0.5 (repeatable; keys as in presets).
-    #[arg(long = "set", value_name = "KEY=VALUE")]
+    #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
     pub overrides: Vec<String>,
     /// Contact model.
     #[arg(long, value_parser = ["kelvin", "improved-kelvin"])]
@@ -56,7 +56,8 @@ impl ParamArgs {
         for kv in &self.overrides {
             let (key, value) = kv.split_once('=').ok_or_else(|| {
                 CliError::Usage(format!(
-                    "--set `{kv}`: expected KEY=VALUE, e.g. --set gap=0.5"
+                    "--set `{}`: expected KEY=VALUE, e.g. --set gap=0.5",
+                    crate::model::params::echo::text(kv)
                 ))
             })?;
             p.set(key.trim(), value)?;

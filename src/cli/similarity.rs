@@ -13,17 +13,22 @@ use super::params::ParamArgs;
 use super::spectrum::SpectrumPlan;
 use crate::analysis::similarity::{Level, master_curve_spread, study};
 use crate::analysis::spectrum_spec::SpectrumSpec;
-use crate::model::physical::{G, Physical, parse_acceleration};
+use crate::model::physical::{G, OMEGA_P, OMEGA_P_ALLOWED, Physical, parse_acceleration};
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct SimilarityArgs {
     #[command(flatten)]
     pub params: ParamArgs,
     /// Excitation amplitudes a_p, in m/s² or as multiples of g.
-    #[arg(long, value_name = "A1,A2,...", default_value = "0.2g,0.5g,0.8g")]
+    #[arg(
+        long,
+        value_name = "A1,A2,...",
+        default_value = "0.2g,0.5g,0.8g",
+        allow_hyphen_values = true
+    )]
     pub ap: String,
     /// Excitation circular frequency ω_p in rad/s [default: the preset's [physical] omega_p].
-    #[arg(long = "omega-p", value_name = "W")]
+    #[arg(long = "omega-p", value_name = "W", allow_hyphen_values = true)]
     pub omega_p: Option<String>,
     /// The Π_ω1 grid START:STOP:STEP [default: the preset's, else 0.1:3.0:0.01].
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
@@ -58,7 +63,7 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
             parse_acceleration(a).ok_or_else(|| {
                 usage(format!(
                     "--ap `{}`: must be an acceleration > 0 in m/s², or like 0.5g",
-                    a.trim()
+                    crate::model::params::echo::text(a.trim())
                 ))
             })
         })
@@ -68,10 +73,11 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
             w.trim()
                 .parse::<f64>()
                 .ok()
-                .filter(|v| v.is_finite() && *v > 0.0)
+                .filter(|v| OMEGA_P.contains(v))
                 .ok_or_else(|| {
                     usage(format!(
-                        "--omega-p {w}: must be a finite number > 0 (rad/s)"
+                        "--omega-p {}: {OMEGA_P_ALLOWED}",
+                        crate::model::params::echo::text(w)
                     ))
                 })?,
         ),
@@ -79,9 +85,11 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
     };
     let physical = match &plan.preset.physical {
         Some(t) => {
-            if let Some(kv) = args.params.overrides.iter().find(|kv| {
-                crate::model::params::PI_KEYS.contains(&kv.split('=').next().unwrap_or("").trim())
-            }) {
+            if let Some(kv) =
+                args.params.overrides.iter().find(|kv| {
+                    crate::model::params::is_pi(kv.split('=').next().unwrap_or("").trim())
+                })
+            {
                 return Err(usage(format!(
                     "--set `{kv}`: preset `{}` gives this in physical units; edit its [physical] table",
                     plan.preset.name

@@ -14,8 +14,9 @@ use crate::analysis::baseline::BaselineCache;
 use crate::analysis::family::{Family, parse_mu};
 use crate::analysis::grid::Grid;
 use crate::analysis::spectrum::region_ranges;
-use crate::analysis::spectrum_spec::SpectrumSpec;
+use crate::analysis::spectrum_spec::{SpectrumSpec, check_sweep};
 use crate::analysis::sweep::{Curve, curve_specs, sweep};
+use crate::model::params::echo;
 use crate::model::{Params, Preset};
 
 #[derive(Debug, Clone, Default, Args)]
@@ -29,7 +30,7 @@ pub struct SpectrumArgs {
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub mu: Option<String>,
     /// One curve per value of a key, e.g. mass_ratio=0.1,0.5,0.9, gap=0.2,1.5,inf, mu=1.5,4,10.
-    #[arg(long, value_name = "KEY=V1,V2,...")]
+    #[arg(long, value_name = "KEY=V1,V2,...", allow_hyphen_values = true)]
     pub family: Option<String>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Table)]
@@ -66,10 +67,14 @@ impl SpectrumPlan {
             None => spec.grid.unwrap_or_default(),
         };
         let mu = match (mu, spec.mu) {
-            (Some(text), _) => parse_mu(text)
-                .map_err(|_| usage(&format!("--mu {text}: must be a finite number > 0")))?,
+            (Some(text), _) => parse_mu(text).ok_or_else(|| {
+                usage(&format!(
+                    "--mu {}: must be a finite number > 0",
+                    echo::text(text.trim())
+                ))
+            })?,
             (None, Some(m)) => m,
-            (None, None) => parse_mu(&p.mu().to_string()).map_err(|_| {
+            (None, None) => parse_mu(&p.mu().to_string()).ok_or_else(|| {
                 usage(&format!(
                     "omega2/omega1 = {}/{}: the frequency ratio must be finite and > 0; give --mu",
                     p.omega2, p.omega1
@@ -78,11 +83,13 @@ impl SpectrumPlan {
         };
         let family = match (family, &spec.family) {
             (Some(text), _) => Some(Family::parse(text, &p).map_err(|e| usage(&e))?),
-            (None, Some((key, values))) => {
-                Some(Family::new(key, values, &p).map_err(|e| usage(&e))?)
-            }
+            (None, Some((key, values))) => Some(
+                Family::new(&preset.origin("spectrum.family"), key, values, &p)
+                    .map_err(|e| usage(&e))?,
+            ),
             (None, None) => None,
         };
+        check_sweep(&p, &grid, mu, family.as_ref()).map_err(|e| usage(&e))?;
         Ok(SpectrumPlan {
             preset,
             params: p,

@@ -12,10 +12,15 @@ use crate::accuracy::stress::{Outcome, check, corner_cases, random_cases};
 #[derive(Debug, Clone, Args)]
 pub struct StressArgs {
     /// Number of random parameter sets after the corner cases.
-    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(0..=100_000))]
+    #[arg(long, value_name = "N", default_value_t = 100, allow_negative_numbers = true, value_parser = clap::value_parser!(u32).range(0..=100_000))]
     pub cases: u32,
     /// Seed of the random parameter sets (same seed, same cases).
-    #[arg(long, value_name = "S", default_value_t = 1)]
+    #[arg(
+        long,
+        value_name = "S",
+        default_value_t = 1,
+        allow_negative_numbers = true
+    )]
     pub seed: u64,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Table)]

@@ -3,11 +3,14 @@
 
 pub mod contact;
 pub mod excitation;
+pub mod family;
+pub mod grid;
 pub mod hysteresis;
 pub mod method;
 pub mod params;
 pub mod physical;
 pub mod preset;
+pub mod spectrum_spec;
 
 pub use contact::{ContactLaw, ContactModel};
 pub use excitation::{Excitation, Rotation};

@@ -36,6 +36,14 @@ use super::params::{ParamError, Params};
 /// Standard gravity, m/s², for accelerations written as `0.5g`.
 pub const G: f64 = 9.80665;
 
+/// The excitation's circular frequency ω_p in rad/s: periods from 6.3 ms to
+/// 10 min hold every ground motion (dominant periods 0.05–10 s) with room to
+/// spare, and keep l_e = a_p/ω_p² a normal number (ω_p = 1e300 made it 0,
+/// and every Π-group NaN).
+pub const OMEGA_P: std::ops::RangeInclusive<f64> = 1e-2..=1e3;
+/// [`OMEGA_P`] as stated in messages.
+pub const OMEGA_P_ALLOWED: &str = "must be a number in [0.01, 1000] (rad/s)";
+
 /// Physical description of the two structures and the excitation (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Physical {
@@ -110,8 +118,8 @@ impl Physical {
         if let Some(k) = t.keys().find(|k| !KNOWN.contains(&k.as_str())) {
             return Err(PhysicalError {
                 context: TABLE,
-                key: k.clone(),
-                value: t[k].to_string(),
+                key: super::params::echo::text(k),
+                value: super::params::echo::text(&t[k].to_string()),
                 allowed: "unknown key (known: m1, m2, omega1|period1, omega2|period2, yield1, yield2, \
                           gap, damping, alpha, contact_omega, restitution, ap, omega_p|period_p)",
             });
@@ -119,9 +127,10 @@ impl Physical {
         let err = |key: &str, allowed| PhysicalError {
             context: TABLE,
             key: key.to_string(),
-            value: t
-                .get(key)
-                .map_or_else(|| "(missing)".into(), |v| v.to_string()),
+            value: t.get(key).map_or_else(
+                || "(missing)".into(),
+                |v| super::params::echo::text(&v.to_string()),
+            ),
             allowed,
         };
         let number = |key: &str| -> Option<f64> {
@@ -164,6 +173,15 @@ impl Physical {
                 "must be an acceleration > 0 in m/s², or like \"0.5g\"",
             )
         })?;
+        let omega_p = frequency("omega_p", "period_p")?;
+        if !OMEGA_P.contains(&omega_p) {
+            return Err(PhysicalError {
+                context: TABLE,
+                key: "omega_p".into(),
+                value: super::params::echo::number(omega_p),
+                allowed: OMEGA_P_ALLOWED,
+            });
+        }
         Ok(Physical {
             mass: [positive("m1")?, positive("m2")?],
             omega: [
@@ -185,7 +203,7 @@ impl Physical {
                 .filter(|v| *v > 0.0 && *v <= 1.0)
                 .ok_or_else(|| err("restitution", "must be in (0, 1]"))?,
             ap,
-            omega_p: frequency("omega_p", "period_p")?,
+            omega_p,
         })
     }
 
@@ -221,6 +239,20 @@ impl Physical {
     /// come from `settings`. The result is validated.
     pub fn to_params(&self, settings: &Params) -> Result<Params, ParamError> {
         let le = self.length_scale();
+        if !(le.is_normal() && le > 0.0) {
+            return Err(ParamError::OutOfRange {
+                key: "ap",
+                value: format!(
+                    "{} m/s² at omega_p = {} rad/s",
+                    super::params::echo::number(self.ap),
+                    super::params::echo::number(self.omega_p)
+                ),
+                allowed: format!(
+                    "the length scale a_p/ω_p² = {} m is not a usable number",
+                    super::params::echo::number(le)
+                ),
+            });
+        }
         let p = Params {
             mass_ratio: self.mass[0] / self.mass[1],
             omega1: self.omega[0] / self.omega_p,

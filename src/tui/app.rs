@@ -619,6 +619,7 @@ impl App {
             spectrum: base.spectrum.clone(),
             physical: base.physical.clone(),
             path: Some(path.clone()),
+            lines: Default::default(),
         };
         match preset.save(&path) {
             Ok(()) => {

@@ -48,7 +48,10 @@ pub fn areas(area: Rect) -> Areas {
         Constraint::Min(0),
     ])
     .areas(main);
-    let [panes, info] = Layout::vertical([Constraint::Length(16), Constraint::Min(0)]).areas(left);
+    // One row per parameter, a header and two borders.
+    let rows = crate::tui::fields::FIELDS.len() as u16 + 3;
+    let [panes, info] =
+        Layout::vertical([Constraint::Length(rows), Constraint::Min(0)]).areas(left);
     Areas {
         header,
         panes,

@@ -237,6 +237,7 @@ pub fn random_params(rng: &mut SplitMix64) -> Params {
         } else {
             ContactModel::ImprovedKelvin
         },
+        method: crate::model::Method::Newmark,
         cycles: 2 + (rng.next_u64() % 7) as u32,
         dt: 0.001,
         min_impact_velocity: 1e-3,

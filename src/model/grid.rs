@@ -4,6 +4,8 @@
 use std::fmt;
 use std::str::FromStr;
 
+use super::params::{echo, field};
+
 /// Most points one grid may have: keeps a typo (`0:3:1e-9`) from asking for
 /// billions of runs.
 pub const MAX_GRID_POINTS: usize = 100_000;
@@ -31,24 +33,32 @@ impl Default for Grid {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("`omega1` grid = {text}: {allowed}")]
 pub struct GridError {
+    /// The grid as written, cut and escaped for one line.
     pub text: String,
-    pub allowed: &'static str,
+    pub allowed: String,
 }
 
 impl Grid {
-    /// Checks the ranges: 0 ≤ START ≤ STOP finite, STEP > 0, at most
-    /// [`MAX_GRID_POINTS`] points.
+    /// Checks the ranges: START ≤ STOP both within `omega1`'s range of the
+    /// parameter table, STEP > 0, at most [`MAX_GRID_POINTS`] points.
     pub fn new(start: f64, stop: f64, step: f64) -> Result<Grid, GridError> {
         let g = Grid { start, stop, step };
-        let bad = |allowed| GridError {
+        let bad = |allowed: &str| GridError {
             text: g.to_string(),
-            allowed,
+            allowed: allowed.to_string(),
         };
         if !(start.is_finite() && stop.is_finite() && step.is_finite()) {
             return Err(bad("START, STOP and STEP must be finite numbers"));
         }
-        if start < 0.0 || stop < start {
-            return Err(bad("must have 0 <= START <= STOP"));
+        if stop < start {
+            return Err(bad("must have START <= STOP"));
+        }
+        let omega1 = field("omega1").expect("omega1 is a key");
+        if omega1.check_number(start).is_err() || omega1.check_number(stop).is_err() {
+            return Err(bad(&format!(
+                "START and STOP are values of omega1, which {}",
+                omega1.allowed()
+            )));
         }
         if step <= 0.0 {
             return Err(bad("STEP must be > 0"));
@@ -80,7 +90,13 @@ impl Grid {
 
 impl fmt::Display for Grid {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}:{}", self.start, self.stop, self.step)
+        write!(
+            f,
+            "{}:{}:{}",
+            echo::number(self.start),
+            echo::number(self.stop),
+            echo::number(self.step)
+        )
     }
 }
 
@@ -88,9 +104,9 @@ impl FromStr for Grid {
     type Err = GridError;
 
     fn from_str(text: &str) -> Result<Grid, GridError> {
-        let bad = |allowed| GridError {
-            text: text.to_string(),
-            allowed,
+        let bad = |allowed: &str| GridError {
+            text: echo::text(text),
+            allowed: allowed.to_string(),
         };
         let parts: Vec<&str> = text.split(':').map(str::trim).collect();
         let [start, stop, step] = parts[..] else {
@@ -101,7 +117,7 @@ impl FromStr for Grid {
                 .map_err(|_| bad("START, STOP and STEP must be numbers"))
         };
         Grid::new(num(start)?, num(stop)?, num(step)?).map_err(|e| GridError {
-            text: text.to_string(),
+            text: echo::text(text),
             ..e
         })
     }
@@ -132,6 +148,7 @@ mod tests {
             "0:1e9:1e-9",
             "-1:1:0.1",
             "0:inf:1",
+            "1e300:1e300:1",
         ] {
             let e = text.parse::<Grid>().unwrap_err();
             assert!(

@@ -8,7 +8,11 @@
 //! family = { gap = [0.2, 1.5, inf] }  # one curve per value (or "gap=0.2,1.5,inf")
 //! ```
 
+use std::collections::BTreeMap;
+
+use super::family::{Family, mu_error, parse_mu};
 use super::grid::Grid;
+use super::params::{Params, echo};
 
 /// The settings of a `[spectrum]` table; each is optional.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -19,10 +23,13 @@ pub struct SpectrumSpec {
     pub family: Option<(String, Vec<String>)>,
 }
 
-/// A `[spectrum]` entry that cannot be used: one line naming key, value and the allowed form.
+/// A `[spectrum]` entry that cannot be used: one line naming where, the key,
+/// the value and the allowed form.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("[spectrum] `{key}` = {value}: {allowed}")]
+#[error("{origin}[spectrum] `{key}` = {value}: {allowed}")]
 pub struct SpecError {
+    /// `FILE:LINE: ` when known, else empty.
+    pub origin: String,
     pub key: String,
     pub value: String,
     pub allowed: String,
@@ -31,10 +38,7 @@ pub struct SpecError {
 /// A TOML scalar as the text a command-line flag would carry (`inf` for infinity).
 fn scalar_text(v: &toml::Value) -> Option<String> {
     match v {
-        toml::Value::Float(f) if f.is_infinite() => {
-            Some(if *f > 0.0 { "inf" } else { "-inf" }.into())
-        }
-        toml::Value::Float(f) => Some(f.to_string()),
+        toml::Value::Float(f) => Some(echo::number(*f)),
         toml::Value::Integer(i) => Some(i.to_string()),
         toml::Value::String(s) => Some(s.clone()),
         _ => None,
@@ -44,17 +48,30 @@ fn scalar_text(v: &toml::Value) -> Option<String> {
 impl SpectrumSpec {
     /// Reads a `[spectrum]` table; unknown keys are refused.
     pub fn from_table(t: &toml::Table) -> Result<SpectrumSpec, SpecError> {
+        let entries: BTreeMap<String, (toml::Value, String)> = t
+            .iter()
+            .map(|(k, v)| (k.clone(), (v.clone(), String::new())))
+            .collect();
+        SpectrumSpec::from_entries(&entries)
+    }
+
+    /// Reads `[spectrum]` entries, each with the origin (`FILE:LINE: `) its
+    /// messages start with; unknown keys are refused.
+    pub fn from_entries(
+        entries: &BTreeMap<String, (toml::Value, String)>,
+    ) -> Result<SpectrumSpec, SpecError> {
         let mut spec = SpectrumSpec::default();
-        for (key, value) in t {
+        for (key, (value, origin)) in entries {
             let bad = |allowed: &str| SpecError {
-                key: key.clone(),
-                value: value.to_string(),
+                origin: origin.clone(),
+                key: echo::text(key),
+                value: echo::text(&value.to_string()),
                 allowed: allowed.to_string(),
             };
             match key.as_str() {
                 "omega1" => {
                     let text = value.as_str().ok_or_else(|| bad("must be a string START:STOP:STEP"))?;
-                    spec.grid = Some(text.parse().map_err(|e: super::grid::GridError| bad(e.allowed))?);
+                    spec.grid = Some(text.parse().map_err(|e: super::grid::GridError| bad(&e.allowed))?);
                 }
                 "mu" => {
                     let mu = value
@@ -72,6 +89,52 @@ impl SpectrumSpec {
         }
         Ok(spec)
     }
+}
+
+/// Checks a whole sweep before any run: every curve (each family member, or
+/// `base` alone) at both ends of the grid, with Π_ω2 = μ Π_ω1, must pass
+/// [`Params::validate`] — so Π_ω2 stays in its range and Δτ resolves the
+/// shortest structural period at the grid's top. Returns the message.
+pub fn check_sweep(
+    base: &Params,
+    grid: &Grid,
+    mu: f64,
+    family: Option<&Family>,
+) -> Result<(), String> {
+    let curves: Vec<(Params, f64, String)> = match family {
+        None => vec![(*base, mu, String::new())],
+        Some(f) => f
+            .members
+            .iter()
+            .map(|m| {
+                m.apply(base, mu)
+                    .map(|(p, mu)| (p, mu, format!(" (family {m})")))
+            })
+            .collect::<Result<_, _>>()
+            .map_err(|e| e.to_string())?,
+    };
+    for (p, mu, which) in curves {
+        for w in [grid.start, grid.stop] {
+            let q = Params {
+                omega1: w,
+                omega2: mu * w,
+                ..p
+            };
+            q.validate().map_err(|e| {
+                format!(
+                    "at omega1 = {}, omega2 = mu·omega1 = {}{which} of the grid {grid}: {e}",
+                    echo::number(w),
+                    echo::number(mu * w)
+                )
+            })?;
+        }
+    }
+    Ok(())
+}
+
+/// μ from its text, or the one-line message naming it.
+pub fn mu_from_text(text: &str) -> Result<f64, String> {
+    parse_mu(text).ok_or_else(|| mu_error(text))
 }
 
 fn family_entry(value: &toml::Value) -> Option<(String, Vec<String>)> {
@@ -118,6 +181,26 @@ mod tests {
         assert_eq!(
             s.family.unwrap(),
             ("mu".into(), vec!["1.5".into(), "4".into()])
+        );
+    }
+
+    #[test]
+    fn checks_the_sweep_at_the_grid_ends() {
+        use crate::model::SET1;
+        let grid: Grid = "0.1:3:0.01".parse().unwrap();
+        check_sweep(&SET1, &grid, 2.25, None).unwrap();
+        // μ = 1000 puts Π_ω2 = 3000 above its range at the top of the grid.
+        let e = check_sweep(&SET1, &grid, 1000.0, None).unwrap_err();
+        assert!(
+            e.contains("at omega1 = 3, omega2 = mu·omega1 = 3000"),
+            "{e}"
+        );
+        assert!(e.contains("`omega2` = 3000"), "{e}");
+        let family = Family::parse("dt=0.001,0.05", &SET1).unwrap();
+        let e = check_sweep(&SET1, &grid, 2.25, Some(&family)).unwrap_err();
+        assert!(
+            e.contains("(family dt=0.05)") && e.contains("`dt` = 0.05"),
+            "{e}"
         );
     }
 

@@ -5,32 +5,32 @@
 
 use std::fmt;
 
-use crate::model::{ParamError, Params};
+use super::params::{ParamError, Params, echo};
 
 /// The family key of the frequency ratio μ = Π_ω2/Π_ω1.
 pub const MU: &str = "mu";
 
-/// Why a family was refused: one line naming the key, the value and the allowed range.
+/// Where a family was written, for messages: the flag, or a preset's file and line.
+pub const FLAG: &str = "--family";
+
+/// Why a family was refused: one line naming where it was written, the key,
+/// the value and the allowed range.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum FamilyError {
-    #[error("--family `{0}`: expected KEY=V1,V2,..., e.g. mass_ratio=0.1,0.5,0.9")]
-    Syntax(String),
-    #[error(
-        "--family `{0}`: omega1 and omega2 are swept by the spectrum; use `mu` for the frequency ratio"
-    )]
-    Swept(String),
-    #[error("--family: {0}")]
-    Value(#[from] ParamError),
-    #[error("--family `mu` = {0}: must be a finite number > 0")]
-    Mu(String),
+#[error("{origin}: {detail}")]
+pub struct FamilyError {
+    /// `--family`, or `FILE:LINE: [spectrum] family`.
+    pub origin: String,
+    pub detail: String,
 }
 
-/// One member of a family: the key's value as written and as a number.
+/// One member of a family: the key's value as written.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Member {
     pub key: String,
     /// The value as the user wrote it (`inf`, `kelvin`, `0.5`).
     pub text: String,
+    /// Where the family was written (see [`FamilyError::origin`]).
+    pub origin: String,
 }
 
 impl Member {
@@ -42,14 +42,24 @@ impl Member {
         }
     }
 
+    fn error(&self, detail: impl fmt::Display) -> FamilyError {
+        FamilyError {
+            origin: self.origin.clone(),
+            detail: detail.to_string(),
+        }
+    }
+
     /// Applies the member to the base parameters and μ: returns the curve's
-    /// parameters and frequency ratio.
+    /// parameters (validated as a whole) and frequency ratio.
     pub fn apply(&self, base: &Params, mu: f64) -> Result<(Params, f64), FamilyError> {
         if self.key == MU {
-            return Ok((*base, parse_mu(&self.text)?));
+            let mu = parse_mu(&self.text).ok_or_else(|| self.error(mu_error(&self.text)))?;
+            return Ok((*base, mu));
         }
         let mut p = *base;
-        p.set(&self.key, &self.text)?;
+        p.set(&self.key, &self.text)
+            .and_then(|()| p.validate())
+            .map_err(|e: ParamError| self.error(e))?;
         Ok((p, mu))
     }
 }
@@ -67,31 +77,55 @@ pub struct Family {
     pub members: Vec<Member>,
 }
 
-/// μ must be finite and positive (Π_ω2 = μ Π_ω1 ≥ 0).
-pub fn parse_mu(text: &str) -> Result<f64, FamilyError> {
-    match text.trim().parse::<f64>() {
-        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
-        _ => Err(FamilyError::Mu(text.trim().to_string())),
-    }
+/// μ must be finite and positive (Π_ω2 = μ Π_ω1 > 0); the frequencies it
+/// gives are checked against their ranges at the grid's ends.
+pub fn parse_mu(text: &str) -> Option<f64> {
+    text.trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite() && *v > 0.0)
+}
+
+/// The message for a μ that [`parse_mu`] refused.
+pub fn mu_error(text: &str) -> String {
+    format!(
+        "`mu` = {}: must be a finite number > 0",
+        echo::text(text.trim())
+    )
 }
 
 impl Family {
     /// Builds a family from a key and the values as text, checking each one
     /// on `base` (so an out-of-range value is refused before any run).
-    pub fn new(key: &str, values: &[String], base: &Params) -> Result<Family, FamilyError> {
+    /// `origin` says where it was written: [`FLAG`], or a preset's file and line.
+    pub fn new(
+        origin: &str,
+        key: &str,
+        values: &[String],
+        base: &Params,
+    ) -> Result<Family, FamilyError> {
         let key = key.trim();
-        let written = format!("{key}={}", values.join(","));
+        let error = |detail: String| FamilyError {
+            origin: origin.to_string(),
+            detail,
+        };
+        let written = echo::text(&format!("{key}={}", values.join(",")));
         if key == "omega1" || key == "omega2" {
-            return Err(FamilyError::Swept(written));
+            return Err(error(format!(
+                "`{written}`: omega1 and omega2 are swept by the spectrum; use `mu` for the frequency ratio"
+            )));
         }
-        if values.is_empty() || values.iter().any(|v| v.trim().is_empty()) {
-            return Err(FamilyError::Syntax(written));
+        if key.is_empty() || values.is_empty() || values.iter().any(|v| v.trim().is_empty()) {
+            return Err(error(format!(
+                "`{written}`: expected KEY=V1,V2,..., e.g. mass_ratio=0.1,0.5,0.9"
+            )));
         }
         let members: Vec<Member> = values
             .iter()
             .map(|v| Member {
                 key: key.to_string(),
                 text: v.trim().to_string(),
+                origin: origin.to_string(),
             })
             .collect();
         for m in &members {
@@ -103,13 +137,19 @@ impl Family {
         })
     }
 
-    /// Parses `KEY=V1,V2,...`.
+    /// Parses `KEY=V1,V2,...` as given to `--family`.
     pub fn parse(text: &str, base: &Params) -> Result<Family, FamilyError> {
-        let (key, values) = text
-            .split_once('=')
-            .ok_or_else(|| FamilyError::Syntax(text.to_string()))?;
+        let Some((key, values)) = text.split_once('=') else {
+            return Err(FamilyError {
+                origin: FLAG.into(),
+                detail: format!(
+                    "`{}`: expected KEY=V1,V2,..., e.g. mass_ratio=0.1,0.5,0.9",
+                    echo::text(text)
+                ),
+            });
+        };
         let values: Vec<String> = values.split(',').map(str::to_string).collect();
-        Family::new(key, &values, base)
+        Family::new(FLAG, key, &values, base)
     }
 }
 
@@ -136,8 +176,10 @@ mod tests {
         let msg = |t: &str| Family::parse(t, &SET1).unwrap_err().to_string();
         assert_eq!(
             msg("restitution=0.5,2"),
-            "--family: `restitution` = 2: must be in (0, 1]"
+            "--family: `restitution` = 2: must be a number in [0.001, 1]"
         );
+        // Every member is validated as a whole: Δτ = 1e-9 is below Δτ's range.
+        assert!(msg("dt=0.001,1e-9").contains("`dt` = 1e-9"));
         assert!(msg("omega1=1,2").contains("swept"));
         assert!(msg("mass_ratio").contains("expected KEY=V1"));
         assert!(msg("mass_ratio=0.1,,0.2").contains("expected KEY=V1"));
