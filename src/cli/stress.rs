@@ -50,7 +50,7 @@ pub fn execute(args: &StressArgs) -> Result<(), CliError> {
         Format::Csv => csv(&outcomes),
         Format::Table => table(&outcomes),
     };
-    print!("{text}");
+    super::output::print(&text)?;
     if failed > 0 {
         Err(CliError::Failed(format!(
             "{failed} of {} stress cases failed",

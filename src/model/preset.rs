@@ -233,10 +233,15 @@ impl Preset {
         s
     }
 
-    /// Writes the preset to `path` atomically (temporary file, then rename),
-    /// so a crash never leaves a half-written preset.
+    /// Writes the preset to `path` by the rules of [`crate::output`] (a
+    /// regular file is replaced atomically). The preset folder is the
+    /// program's own and is created if missing; any other folder is not.
     pub fn save(&self, path: &Path) -> std::io::Result<()> {
-        write_atomic(path, self.to_toml().as_bytes())
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            std::fs::create_dir_all(dir)?;
+        }
+        crate::output::write_file(path, self.to_toml().as_bytes())
+            .map_err(|e| std::io::Error::other(e.reason()))
     }
 }
 
@@ -259,31 +264,6 @@ pub fn user_preset_names(dir: &Path) -> Vec<String> {
         .unwrap_or_default();
     names.sort();
     names
-}
-
-/// Writes `bytes` to a temporary file beside `path`, flushes it, and renames
-/// it over `path`: readers see the old file or the new one, never a torn one.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    use std::io::Write;
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir)?;
-    let name = path
-        .file_name()
-        .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
 }
 
 #[cfg(test)]
