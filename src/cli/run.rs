@@ -308,3 +308,40 @@ impl Report for RunReport<'_> {
         s
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::output::report::{csv, json};
+
+    #[test]
+    fn unreliable_result_is_flagged_in_every_format() {
+        let p = crate::model::SET1;
+        let mut r = RunResult::default();
+        r.energy.residual = 0.5;
+        let report = RunReport::new("set1", &p, &r, 1.0, 1);
+        let v: serde_json::Value = serde_json::from_str(&json(&report).unwrap()).unwrap();
+        assert_eq!(v["reliable"], false);
+        assert_eq!(
+            v["unreliable_reason"],
+            "energy residual 5.000e-1 exceeds 1e-4"
+        );
+        assert_eq!(v["method"], "newmark");
+        let text = csv(&report.csv_header(), &report.csv_rows());
+        let last = text.lines().nth(1).unwrap();
+        assert!(
+            last.ends_with(",newmark,false,energy residual 5.000e-1 exceeds 1e-4"),
+            "{last}"
+        );
+        assert!(
+            report
+                .table()
+                .contains("UNRELIABLE: energy residual 5.000e-1 exceeds 1e-4")
+        );
+        r.energy.residual = 1e-12;
+        let report = RunReport::new("set1", &p, &r, 1.0, 1);
+        let v: serde_json::Value = serde_json::from_str(&json(&report).unwrap()).unwrap();
+        assert_eq!(v["reliable"], true);
+        assert!(!report.table().contains("UNRELIABLE"));
+    }
+}
