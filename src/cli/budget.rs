@@ -21,10 +21,10 @@ pub const MAX_OUTPUT_BYTES: f64 = 1e9;
 /// Rows of the paper's sets measure 180 (set1) and 185 (set2) bytes on
 /// average; a row is at most 250 bytes (ten cells of 24 characters).
 pub const HISTORY_ROW_BYTES: f64 = 200.0;
-/// Cost of formatting and writing one history row, measured on set1 in a
-/// release build: about 2.5 µs (`run --cycles 80 --history h.csv`:
-/// 1.38 s for 552 000 rows, against 0.06 s without the history).
-pub const SECONDS_PER_ROW: f64 = 2.5e-6;
+/// Cost of formatting and writing one history row, measured in a release
+/// build: about 1 µs of CPU (`run --cycles 20000 --history /dev/null
+/// --allow-large`: 135 s of user time for 1.38e8 rows).
+pub const SECONDS_PER_ROW: f64 = 1e-6;
 
 /// Nominal Newmark steps of one run of `p`: τ_end/Δτ.
 pub fn run_steps(p: &Params) -> f64 {
