@@ -538,3 +538,37 @@ fn unreliable_run_is_flagged_and_exits_1_unless_allowed() {
     assert_eq!(v["reliable"], false);
     assert!(fs::read_to_string(&target).unwrap().starts_with(HEADER));
 }
+
+#[test]
+fn progress_bar_with_time_left_on_a_terminal() {
+    use portable_pty::{CommandBuilder, PtySize, native_pty_system};
+    let pty = native_pty_system()
+        .openpty(PtySize {
+            rows: 24,
+            cols: 80,
+            pixel_width: 0,
+            pixel_height: 0,
+        })
+        .unwrap();
+    // Estimated at just over a second: 1 000 runs of set1's 50 266 steps.
+    let mut cmd = CommandBuilder::new(BIN);
+    cmd.args(["run", "--repeat", "1000", "--format", "json"]);
+    cmd.env("TERM", "xterm-256color");
+    let mut child = pty.slave.spawn_command(cmd).unwrap();
+    drop(pty.slave);
+    let mut reader = pty.master.try_clone_reader().unwrap();
+    let collected = std::thread::spawn(move || {
+        let mut all = Vec::new();
+        let _ = reader.read_to_end(&mut all);
+        all
+    });
+    let status = child.wait().unwrap();
+    drop(pty.master);
+    let screen = text(&collected.join().unwrap());
+    assert!(status.success(), "{screen}");
+    assert!(
+        screen.contains("about ") && screen.contains("%"),
+        "no bar with a time estimate:\n{screen}"
+    );
+    assert!(screen.contains("\"reliable\":true"), "{screen}");
+}
