@@ -234,8 +234,9 @@ impl Preset {
     }
 
     /// Writes the preset to `path` by the rules of [`crate::output`] (a
-    /// regular file is replaced atomically). The preset folder is the
-    /// program's own and is created if missing; any other folder is not.
+    /// regular file is replaced atomically, a read-only one refused). The
+    /// folder is created if missing: presets are saved into the program's
+    /// own preset folder.
     pub fn save(&self, path: &Path) -> std::io::Result<()> {
         if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
             std::fs::create_dir_all(dir)?;
