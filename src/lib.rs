@@ -20,6 +20,7 @@ pub mod accuracy;
 pub mod analysis;
 pub mod cli;
 pub mod model;
+pub mod output;
 pub mod reference;
 pub mod solver;
 pub mod tui;

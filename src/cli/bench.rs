@@ -61,12 +61,13 @@ pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
         Format::Csv => csv(&all),
         Format::Table => table(&all),
     };
-    print!("{text}");
+    let mut text = text;
     if args.plot {
         for group in &groups {
-            print!("{}", plot(group));
+            text += &plot(group);
         }
     }
+    super::output::print(&text)?;
     Ok(())
 }
 

@@ -2,13 +2,19 @@
 //! its own file and returns `Result<(), CliError>`; `main` maps the error to
 //! the exit code.
 //!
-//! Exit codes: 0 success; 1 a check failed or a file could not be written;
-//! 2 bad input (a parameter out of range, an unknown preset, a malformed
-//! file, not a terminal for the explorer). Clap's own usage errors are 2 too.
+//! Exit codes: 0 success; 1 a check failed, a run was unreliable, or output
+//! could not be written; 2 bad input (a parameter out of range, an unknown
+//! preset, a malformed file, not a terminal for the explorer, a request
+//! beyond the work or size bound without its confirming flag). Clap's own
+//! usage errors are 2 too. A pipe closed by its reader (`| head`) ends the
+//! command quietly with 0, as the reader asked for no more. SIGINT, SIGTERM
+//! and SIGHUP remove temporary files, then end the process by the signal.
 
 pub mod bench;
+pub mod budget;
 pub mod output;
 pub mod params;
+pub mod progress;
 pub mod run;
 pub mod similarity;
 pub mod spectrum;
@@ -26,6 +32,9 @@ pub enum CliError {
     /// A failed check or an I/O error: exit code 1.
     #[error("{0}")]
     Failed(String),
+    /// Stdout's reader went away (`| head`): stop quietly, exit code 0.
+    #[error("broken pipe")]
+    BrokenPipe,
 }
 
 impl CliError {
@@ -33,6 +42,7 @@ impl CliError {
         match self {
             CliError::Usage(_) => 2,
             CliError::Failed(_) => 1,
+            CliError::BrokenPipe => 0,
         }
     }
 }
@@ -40,6 +50,15 @@ impl CliError {
 impl From<crate::model::ParamError> for CliError {
     fn from(e: crate::model::ParamError) -> Self {
         CliError::Usage(e.to_string())
+    }
+}
+
+impl From<crate::output::OutputError> for CliError {
+    fn from(e: crate::output::OutputError) -> Self {
+        match e {
+            crate::output::OutputError::BrokenPipe => CliError::BrokenPipe,
+            e => CliError::Failed(e.to_string()),
+        }
     }
 }
 
@@ -95,6 +114,11 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
             return e.exit_code();
         }
     };
+    let explorer = matches!(cli.command, None | Some(Command::Tui(_)));
+    if !explorer {
+        // The explorer handles these signals itself, and cleans up on its way out.
+        let _ = crate::output::temp::cleanup_then_die_on_signals();
+    }
     let outcome = match cli.command {
         Some(Command::Run(args)) => run::execute(&args),
         Some(Command::Spectrum(args)) => spectrum::execute(&args),
@@ -104,11 +128,17 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
         Some(Command::Stress(args)) => stress::execute(&args),
         None => tui::execute(&tui::TuiArgs::default()),
     };
+    crate::output::temp::remove_live();
     match outcome {
-        Ok(()) => 0,
+        Ok(()) | Err(CliError::BrokenPipe) => 0,
         Err(e) => {
-            // One line whatever a message quotes.
-            eprintln!("error: {}", e.to_string().replace(['\n', '\r'], " "));
+            // One line whatever a message quotes; stderr may be unwritable too.
+            use std::io::Write as _;
+            let _ = writeln!(
+                std::io::stderr(),
+                "error: {}",
+                e.to_string().replace(['\n', '\r'], " ")
+            );
             e.exit_code()
         }
     }

@@ -1,8 +1,13 @@
-//! Output formats shared by the commands: a table for people, JSON and CSV for scripts.
+//! Output formats shared by the commands: a table for people, JSON and CSV
+//! for scripts, each written by one writer from the command's typed report
+//! (see [`crate::output::report`]).
 
 use clap::ValueEnum;
 
+use super::CliError;
 use crate::model::Params;
+use crate::output::Num;
+use crate::output::report::{self, Report};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
 pub enum Format {
@@ -15,6 +20,20 @@ pub enum Format {
     Csv,
 }
 
+/// `report` in `format`.
+pub fn render(r: &impl Report, format: Format) -> Result<String, CliError> {
+    Ok(match format {
+        Format::Table => r.table(),
+        Format::Json => report::json(r).map_err(|e| CliError::Failed(format!("JSON: {e}")))?,
+        Format::Csv => report::csv(&r.csv_header(), &r.csv_rows()),
+    })
+}
+
+/// Writes `text` to stdout.
+pub fn print(text: &str) -> Result<(), CliError> {
+    Ok(crate::output::stdout::print(text)?)
+}
+
 /// Every parameter key and value as a JSON object (infinite values as "inf").
 pub fn params_json(p: &Params) -> serde_json::Value {
     serde_json::to_value(p).unwrap_or(serde_json::Value::Null)
@@ -22,9 +41,5 @@ pub fn params_json(p: &Params) -> serde_json::Value {
 
 /// A float for tables and CSV: `inf` for infinity, otherwise the shortest exact form.
 pub fn num(v: f64) -> String {
-    if v.is_infinite() {
-        if v > 0.0 { "inf".into() } else { "-inf".into() }
-    } else {
-        format!("{v}")
-    }
+    Num(v).to_string()
 }

@@ -1,18 +1,24 @@
 //! `pounding run`: one simulation, its summary as a table, JSON or CSV, and
-//! optionally its full history as CSV.
+//! optionally its full history as CSV, streamed to its target as it is computed.
 
 use std::fmt::Write as _;
+use std::io::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::Args;
+use serde::Serialize;
 
 use super::CliError;
-use super::output::{Format, num, params_json};
+use super::budget::{Work, run_steps};
+use super::output::{Format, num, print, render};
 use super::params::ParamArgs;
+use super::progress::{Progress, Tracked};
 use crate::accuracy::timing::median;
-use crate::model::{Params, preset::write_atomic};
-use crate::solver::{FullHistory, RunResult, SolverOptions, simulate};
+use crate::model::{Method, Params};
+use crate::output::report::Report;
+use crate::output::{Num, Target};
+use crate::solver::{CsvHistory, Impact, RunResult, SolverOptions, StructurePeaks, simulate};
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct RunArgs {
@@ -21,156 +27,321 @@ pub struct RunArgs {
     /// Output format of the summary.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-    /// Write the history as CSV (tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp), one row per step.
+    /// Write the history as CSV (tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp), one row per step,
+    /// streamed as it is computed. `-` is stdout (the summary then goes to stderr).
     #[arg(long, value_name = "FILE")]
     pub history: Option<PathBuf>,
     /// Run the same case N times in this process and report the median time.
     #[arg(long, value_name = "N", default_value_t = 1, allow_negative_numbers = true, value_parser = clap::value_parser!(u32).range(1..=100_000))]
     pub repeat: u32,
+    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
+    #[arg(long)]
+    pub allow_long: bool,
+    /// Write a history even when it is estimated at over 1 GB.
+    #[arg(long)]
+    pub allow_large: bool,
+    /// Exit 0 and keep the history even when the result is unreliable (it is still flagged).
+    #[arg(long)]
+    pub allow_unreliable: bool,
 }
 
 pub fn execute(args: &RunArgs) -> Result<(), CliError> {
     let (preset, p) = args.params.resolve()?;
+    let steps = run_steps(&p);
+    let history_runs = f64::from(u8::from(args.history.is_some()));
+    let work = Work {
+        steps: steps * (f64::from(args.repeat) + history_runs),
+        rows: steps * history_runs,
+    };
+    let what = if args.history.is_some() {
+        "run with --history"
+    } else {
+        "run"
+    };
+    work.check(what, args.allow_long, args.allow_large)?;
+    // Open the history target before any work, so a bad path fails at once.
+    let history = args.history.as_deref().map(Target::open).transpose()?;
+    let progress = Progress::start(&work);
+
     let options = SolverOptions::default();
     let mut times = Vec::with_capacity(args.repeat as usize);
     let mut result = RunResult::default();
-    for _ in 0..args.repeat {
+    for i in 0..args.repeat {
         let t = Instant::now();
-        result = simulate(&p, &options, &mut ());
+        let mut tracked = Tracked::new((), &progress, steps * f64::from(i), p.dt);
+        result = simulate(&p, &options, &mut tracked);
         times.push(t.elapsed().as_secs_f64() * 1e3);
     }
     let elapsed_ms = median(times);
-    if let Some(path) = &args.history {
-        let steps = (p.tau_end() / p.dt) as usize + 64;
-        let mut history = FullHistory::with_capacity(steps.min(50_000_000));
-        simulate(&p, &options, &mut history);
-        write_atomic(path, history.to_csv().as_bytes()).map_err(|e| {
-            CliError::Failed(format!("cannot write history to {}: {e}", path.display()))
-        })?;
-    }
-    let text = match args.format {
-        Format::Table => table(&preset.name, &p, &result, elapsed_ms, args.repeat),
-        Format::Json => json(&p, &result, elapsed_ms).to_string() + "\n",
-        Format::Csv => csv(&result, elapsed_ms),
-    };
-    print!("{text}");
-    Ok(())
-}
+    let reason = result.unreliable();
+    let accepted = reason.is_none() || args.allow_unreliable;
 
-/// The run summary as the JSON object of the issue (SPEC §6).
-pub fn json(p: &Params, r: &RunResult, elapsed_ms: f64) -> serde_json::Value {
-    serde_json::json!({
-        "params": params_json(p),
-        "model": p.model.name(),
-        "dt": p.dt,
-        "tau_end": r.tau_end,
-        "steps": r.steps,
-        "left": r.left,
-        "right": r.right,
-        "impacts": r.impacts.len(),
-        "max_force": r.max_force,
-        "min_force": r.min_force,
-        "energy_residual": r.energy.residual,
-        "energy": r.energy,
-        "impact_list": r.impacts,
-        "step_retries": r.step_retries,
-        "unconverged_steps": r.unconverged_steps,
-        "elapsed_ms": elapsed_ms,
-    })
-}
-
-fn csv(r: &RunResult, elapsed_ms: f64) -> String {
-    let header = "left_peak_displacement,left_peak_velocity,left_yielded,right_peak_displacement,\
-                  right_peak_velocity,right_yielded,impacts,max_force,min_force,energy_residual,steps,elapsed_ms";
-    format!(
-        "{header}\n{},{},{},{},{},{},{},{},{},{},{},{}\n",
-        r.left.peak_displacement,
-        r.left.peak_velocity,
-        r.left.yielded,
-        r.right.peak_displacement,
-        r.right.peak_velocity,
-        r.right.yielded,
-        r.impacts.len(),
-        r.max_force,
-        r.min_force,
-        r.energy.residual,
-        r.steps,
-        elapsed_ms
-    )
-}
-
-fn table(name: &str, p: &Params, r: &RunResult, elapsed_ms: f64, repeat: u32) -> String {
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "{name}: {} contact, Δτ = {}, {} cycles (τ_end = {:.3}), Π_d = {}",
-        p.model,
-        p.dt,
-        p.cycles,
-        r.tau_end,
-        num(p.gap)
-    );
-    let _ = writeln!(
-        s,
-        "{:<12} {:>12} {:>12}  yielded",
-        "structure", "Π_u", "Π_v"
-    );
-    for (label, peaks) in [("left (1)", &r.left), ("right (2)", &r.right)] {
-        let _ = writeln!(
-            s,
-            "{label:<12} {:>12.6} {:>12.6}  {}",
-            peaks.peak_displacement,
-            peaks.peak_velocity,
-            if peaks.yielded { "yes" } else { "no" }
-        );
-    }
-    let tension = if r.min_force < 0.0 { " (tension)" } else { "" };
-    let _ = writeln!(
-        s,
-        "impacts {}   max force {:.4}   min force {:.4}{tension}   energy residual {:.1e}",
-        r.impacts.len(),
-        r.max_force,
-        r.min_force,
-        r.energy.residual
-    );
-    let timing = if repeat > 1 {
-        format!("median of {repeat}: ")
-    } else {
-        String::new()
-    };
-    let _ = writeln!(s, "steps {}   {timing}{elapsed_ms:.3} ms", r.steps);
-    if r.step_retries + r.unconverged_steps > 0 {
-        let _ = writeln!(
-            s,
-            "warning: {} steps retried smaller, {} accepted unconverged",
-            r.step_retries, r.unconverged_steps
-        );
-    }
-    if !r.impacts.is_empty() {
-        let _ = writeln!(
-            s,
-            "\n{:>3} {:>9} {:>9} {:>9} {:>9} {:>7} {:>10} {:>11}",
-            "#", "start", "end", "v_approach", "v_sep", "e", "peak force", "penetration"
-        );
-        for (i, imp) in r.impacts.iter().enumerate() {
-            let _ = writeln!(
-                s,
-                "{:>3} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>7.4} {:>10.4} {:>11.6}{}",
-                i + 1,
-                imp.start,
-                imp.end,
-                imp.approach_velocity,
-                imp.separation_velocity,
-                imp.restitution,
-                imp.peak_force,
-                imp.max_penetration,
-                if imp.ended {
-                    ""
-                } else {
-                    "  (in contact at end)"
-                }
-            );
+    let mut history_to_stdout = false;
+    let mut discarded = None;
+    if let Some(target) = history {
+        history_to_stdout = target.is_stdout();
+        let offset = steps * f64::from(args.repeat);
+        let mut csv = Tracked::new(CsvHistory::new(target), &progress, offset, p.dt);
+        simulate(&p, &options, &mut csv);
+        let target = match csv.inner.finish() {
+            Ok((target, _rows)) => target,
+            Err((target, e)) => return Err(target.error(&e).into()),
+        };
+        if accepted {
+            target.commit()?;
+        } else {
+            discarded = Some(target.name().to_string());
         }
     }
-    s
+    drop(progress);
+
+    let report = RunReport::new(&preset.name, &p, &result, elapsed_ms, args.repeat);
+    let text = render(&report, args.format)?;
+    if history_to_stdout {
+        // Stdout carries the history alone.
+        let _ = std::io::stderr().write_all(text.as_bytes());
+    } else {
+        print(&text)?;
+    }
+    match reason {
+        Some(why) if !args.allow_unreliable => {
+            let kept = discarded.map_or(String::new(), |name| format!("; {name} was not written"));
+            Err(CliError::Failed(format!(
+                "unreliable result: {why}{kept}; pass --allow-unreliable to accept it"
+            )))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// The summary of one run, in every format (SPEC §6).
+#[derive(Debug, Serialize)]
+pub struct RunReport<'a> {
+    #[serde(skip)]
+    preset: &'a str,
+    #[serde(skip)]
+    repeat: u32,
+    params: &'a Params,
+    model: &'static str,
+    method: Method,
+    dt: f64,
+    tau_end: f64,
+    steps: usize,
+    left: StructurePeaks,
+    right: StructurePeaks,
+    impacts: usize,
+    max_force: f64,
+    min_force: f64,
+    energy_residual: f64,
+    energy: crate::solver::EnergyBalance,
+    impact_list: &'a [Impact],
+    step_retries: usize,
+    unconverged_steps: usize,
+    /// False when the result should not be trusted; `unreliable_reason` says why.
+    reliable: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    unreliable_reason: Option<String>,
+    elapsed_ms: f64,
+}
+
+impl<'a> RunReport<'a> {
+    pub fn new(
+        preset: &'a str,
+        p: &'a Params,
+        r: &'a RunResult,
+        elapsed_ms: f64,
+        repeat: u32,
+    ) -> Self {
+        let unreliable_reason = r.unreliable();
+        RunReport {
+            preset,
+            repeat,
+            params: p,
+            model: p.model.name(),
+            method: r.method,
+            dt: p.dt,
+            tau_end: r.tau_end,
+            steps: r.steps,
+            left: r.left,
+            right: r.right,
+            impacts: r.impacts.len(),
+            max_force: r.max_force,
+            min_force: r.min_force,
+            energy_residual: r.energy.residual,
+            energy: r.energy,
+            impact_list: &r.impacts,
+            step_retries: r.step_retries,
+            unconverged_steps: r.unconverged_steps,
+            reliable: unreliable_reason.is_none(),
+            unreliable_reason,
+            elapsed_ms,
+        }
+    }
+}
+
+impl Report for RunReport<'_> {
+    fn csv_header(&self) -> Vec<&'static str> {
+        vec![
+            "left_peak_displacement",
+            "left_peak_velocity",
+            "left_yielded",
+            "right_peak_displacement",
+            "right_peak_velocity",
+            "right_yielded",
+            "impacts",
+            "max_force",
+            "min_force",
+            "energy_residual",
+            "steps",
+            "elapsed_ms",
+            "method",
+            "reliable",
+            "unreliable_reason",
+        ]
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        let (l, r) = (&self.left, &self.right);
+        vec![vec![
+            num(l.peak_displacement),
+            num(l.peak_velocity),
+            l.yielded.to_string(),
+            num(r.peak_displacement),
+            num(r.peak_velocity),
+            r.yielded.to_string(),
+            self.impacts.to_string(),
+            num(self.max_force),
+            num(self.min_force),
+            num(self.energy_residual),
+            self.steps.to_string(),
+            num(self.elapsed_ms),
+            self.method.to_string(),
+            self.reliable.to_string(),
+            self.unreliable_reason.clone().unwrap_or_default(),
+        ]]
+    }
+
+    fn table(&self) -> String {
+        let p = self.params;
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "{}: {} contact, {} method, Δτ = {}, {} cycles (τ_end = {:.3}), Π_d = {}",
+            self.preset,
+            p.model,
+            self.method,
+            Num(p.dt),
+            p.cycles,
+            self.tau_end,
+            Num(p.gap)
+        );
+        let _ = writeln!(
+            s,
+            "{:<12} {:>12} {:>12}  yielded",
+            "structure", "Π_u", "Π_v"
+        );
+        for (label, peaks) in [("left (1)", &self.left), ("right (2)", &self.right)] {
+            let _ = writeln!(
+                s,
+                "{label:<12} {:>12.6} {:>12.6}  {}",
+                peaks.peak_displacement,
+                peaks.peak_velocity,
+                if peaks.yielded { "yes" } else { "no" }
+            );
+        }
+        let tension = if self.min_force < 0.0 {
+            " (tension)"
+        } else {
+            ""
+        };
+        let _ = writeln!(
+            s,
+            "impacts {}   max force {:.4}   min force {:.4}{tension}   energy residual {:.1e}",
+            self.impacts, self.max_force, self.min_force, self.energy_residual
+        );
+        let timing = if self.repeat > 1 {
+            format!("median of {}: ", self.repeat)
+        } else {
+            String::new()
+        };
+        let _ = writeln!(
+            s,
+            "steps {}   {timing}{:.3} ms",
+            self.steps, self.elapsed_ms
+        );
+        if self.step_retries + self.unconverged_steps > 0 {
+            let _ = writeln!(
+                s,
+                "warning: {} steps retried smaller, {} accepted unconverged",
+                self.step_retries, self.unconverged_steps
+            );
+        }
+        if let Some(why) = &self.unreliable_reason {
+            let _ = writeln!(s, "UNRELIABLE: {why}");
+        }
+        if !self.impact_list.is_empty() {
+            let _ = writeln!(
+                s,
+                "\n{:>3} {:>9} {:>9} {:>9} {:>9} {:>7} {:>10} {:>11}",
+                "#", "start", "end", "v_approach", "v_sep", "e", "peak force", "penetration"
+            );
+            for (i, imp) in self.impact_list.iter().enumerate() {
+                let _ = writeln!(
+                    s,
+                    "{:>3} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>7.4} {:>10.4} {:>11.6}{}",
+                    i + 1,
+                    imp.start,
+                    imp.end,
+                    imp.approach_velocity,
+                    imp.separation_velocity,
+                    imp.restitution,
+                    imp.peak_force,
+                    imp.max_penetration,
+                    if imp.ended {
+                        ""
+                    } else {
+                        "  (in contact at end)"
+                    }
+                );
+            }
+        }
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::output::report::{csv, json};
+
+    #[test]
+    fn unreliable_result_is_flagged_in_every_format() {
+        let p = crate::model::SET1;
+        let mut r = RunResult::default();
+        r.energy.residual = 0.5;
+        let report = RunReport::new("set1", &p, &r, 1.0, 1);
+        let v: serde_json::Value = serde_json::from_str(&json(&report).unwrap()).unwrap();
+        assert_eq!(v["reliable"], false);
+        assert_eq!(
+            v["unreliable_reason"],
+            "energy residual 5.000e-1 exceeds 1e-4"
+        );
+        assert_eq!(v["method"], "newmark");
+        let text = csv(&report.csv_header(), &report.csv_rows());
+        let last = text.lines().nth(1).unwrap();
+        assert!(
+            last.ends_with(",newmark,false,energy residual 5.000e-1 exceeds 1e-4"),
+            "{last}"
+        );
+        assert!(
+            report
+                .table()
+                .contains("UNRELIABLE: energy residual 5.000e-1 exceeds 1e-4")
+        );
+        r.energy.residual = 1e-12;
+        let report = RunReport::new("set1", &p, &r, 1.0, 1);
+        let v: serde_json::Value = serde_json::from_str(&json(&report).unwrap()).unwrap();
+        assert_eq!(v["reliable"], true);
+        assert!(!report.table().contains("UNRELIABLE"));
+    }
 }

@@ -8,6 +8,7 @@ use std::time::Instant;
 use clap::Args;
 
 use super::CliError;
+use super::budget::Work;
 use super::output::{Format, num};
 use super::params::ParamArgs;
 use super::spectrum::SpectrumPlan;
@@ -43,6 +44,9 @@ pub struct SimilarityArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
+    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
+    #[arg(long)]
+    pub allow_long: bool,
 }
 
 fn usage(msg: impl std::fmt::Display) -> CliError {
@@ -123,6 +127,11 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
         (None, None) => physical.omega[1] / physical.omega[0],
         _ => plan.mu,
     };
+    let work = Work {
+        steps: levels.len() as f64 * plan.work()?.steps,
+        rows: 0.0,
+    };
+    work.check("similarity", args.allow_long, true)?;
     let t = Instant::now();
     let result = study(
         &physical,
@@ -148,7 +157,7 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
             args.fixed_structure,
         ),
     };
-    print!("{text}");
+    super::output::print(&text)?;
     Ok(())
 }
 

@@ -8,14 +8,16 @@ use std::time::Instant;
 use clap::Args;
 
 use super::CliError;
-use super::output::{Format, num, params_json};
+use super::budget::{Work, run_steps};
+use super::output::{Format, num, params_json, print};
 use super::params::ParamArgs;
+use super::progress::Progress;
 use crate::analysis::baseline::BaselineCache;
 use crate::analysis::family::{Family, parse_mu};
 use crate::analysis::grid::Grid;
 use crate::analysis::spectrum::region_ranges;
 use crate::analysis::spectrum_spec::{SpectrumSpec, check_sweep};
-use crate::analysis::sweep::{Curve, curve_specs, sweep};
+use crate::analysis::sweep::{Curve, CurveSpec, curve_specs, sweep};
 use crate::model::params::echo;
 use crate::model::{Params, Preset};
 
@@ -35,6 +37,9 @@ pub struct SpectrumArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
+    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
+    #[arg(long)]
+    pub allow_long: bool,
 }
 
 /// What to sweep, resolved from the preset's `[spectrum]` table and the flags (flags win).
@@ -99,14 +104,61 @@ impl SpectrumPlan {
         })
     }
 
+    /// The curves to compute.
+    pub fn specs(&self) -> Result<Vec<CurveSpec>, CliError> {
+        curve_specs(&self.params, self.mu, self.family.as_ref())
+            .map_err(|e| CliError::Usage(e.to_string()))
+    }
+
+    /// The estimated work: a pounding run and a baseline run per point of every curve.
+    pub fn work(&self) -> Result<Work, CliError> {
+        let points = self.grid.len() as f64;
+        let steps = self
+            .specs()?
+            .iter()
+            .map(|s| 2.0 * points * run_steps(&s.params))
+            .sum();
+        Ok(Work { steps, rows: 0.0 })
+    }
+
     /// Computes every curve with a fresh baseline cache; returns the curves,
     /// the cache (for its counters) and the wall time in ms.
     pub fn compute(&self) -> Result<(Vec<Curve>, BaselineCache, f64), CliError> {
-        let specs = curve_specs(&self.params, self.mu, self.family.as_ref())
-            .map_err(|e| CliError::Usage(e.to_string()))?;
+        self.compute_with(&Progress::start(&Work::default()))
+    }
+
+    /// [`SpectrumPlan::compute`], telling `progress` as it goes. With a bar
+    /// shown, the grid is swept in slices; every point depends on its own
+    /// Π_ω1 only, so the curves are the same either way.
+    pub fn compute_with(
+        &self,
+        progress: &Progress,
+    ) -> Result<(Vec<Curve>, BaselineCache, f64), CliError> {
+        let specs = self.specs()?;
+        let grid = self.grid.values();
         let mut cache = BaselineCache::new();
         let t = Instant::now();
-        let curves = sweep(&specs, &self.grid.values(), &mut cache);
+        let slice = if progress.is_shown() {
+            (grid.len() / 100).max(4 * rayon::current_num_threads())
+        } else {
+            grid.len().max(1)
+        };
+        let steps_per_point: f64 = specs.iter().map(|s| 2.0 * run_steps(&s.params)).sum();
+        let mut curves: Vec<Curve> = Vec::new();
+        for part in grid.chunks(slice) {
+            let swept = sweep(&specs, part, &mut cache);
+            if curves.is_empty() {
+                curves = swept;
+            } else {
+                for (curve, more) in curves.iter_mut().zip(swept) {
+                    curve.points.extend(more.points);
+                }
+            }
+            progress.add(steps_per_point * part.len() as f64);
+        }
+        if curves.is_empty() {
+            curves = sweep(&specs, &grid, &mut cache);
+        }
         Ok((curves, cache, t.elapsed().as_secs_f64() * 1e3))
     }
 }
@@ -118,14 +170,15 @@ pub fn execute(args: &SpectrumArgs) -> Result<(), CliError> {
         args.mu.as_deref(),
         args.family.as_deref(),
     )?;
-    let (curves, cache, elapsed_ms) = plan.compute()?;
+    let work = plan.work()?;
+    work.check("spectrum", args.allow_long, true)?;
+    let (curves, cache, elapsed_ms) = plan.compute_with(&Progress::start(&work))?;
     let text = match args.format {
         Format::Json => json(&plan, &curves, &cache, elapsed_ms).to_string() + "\n",
         Format::Csv => csv(&plan, &curves),
         Format::Table => table(&plan, &curves, &cache, elapsed_ms),
     };
-    print!("{text}");
-    Ok(())
+    print(&text)
 }
 
 /// The spectrum as the JSON object of issue 3.

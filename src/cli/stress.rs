@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use clap::Args;
 
 use super::CliError;
-use super::output::Format;
+use super::output::{Format, num};
 use crate::accuracy::stress::{Outcome, check, corner_cases, random_cases};
 
 #[derive(Debug, Clone, Args)]
@@ -55,7 +55,7 @@ pub fn execute(args: &StressArgs) -> Result<(), CliError> {
         Format::Csv => csv(&outcomes),
         Format::Table => table(&outcomes),
     };
-    print!("{text}");
+    super::output::print(&text)?;
     if failed > 0 {
         Err(CliError::Failed(format!(
             "{failed} of {} stress cases failed",
@@ -111,22 +111,32 @@ fn table(outcomes: &[Outcome]) -> String {
 }
 
 fn csv(outcomes: &[Outcome]) -> String {
-    let mut s =
-        String::from("case,passed,impacts,steps,step_retries,energy_residual,min_force,ms,why\n");
-    for o in outcomes {
-        let _ = writeln!(
-            s,
-            "\"{}\",{},{},{},{},{},{},{},\"{}\"",
-            o.name,
-            o.passed,
-            o.impacts,
-            o.steps,
-            o.step_retries,
-            o.energy_residual,
-            o.min_force,
-            o.ms,
-            why(o).replace('"', "'")
-        );
-    }
-    s
+    let header = [
+        "case",
+        "passed",
+        "impacts",
+        "steps",
+        "step_retries",
+        "energy_residual",
+        "min_force",
+        "ms",
+        "why",
+    ];
+    let rows: Vec<Vec<String>> = outcomes
+        .iter()
+        .map(|o| {
+            vec![
+                o.name.clone(),
+                o.passed.to_string(),
+                o.impacts.to_string(),
+                o.steps.to_string(),
+                o.step_retries.to_string(),
+                num(o.energy_residual),
+                num(o.min_force),
+                num(o.ms),
+                why(o),
+            ]
+        })
+        .collect();
+    crate::output::report::csv(&header, &rows)
 }

@@ -368,10 +368,16 @@ impl Preset {
         toml::to_string(&out).unwrap_or_else(|e| format!("# cannot write this preset: {e}\n"))
     }
 
-    /// Writes the preset to `path` atomically (temporary file, then rename),
-    /// so a crash never leaves a half-written preset.
+    /// Writes the preset to `path` by the rules of [`crate::output`] (a
+    /// regular file is replaced atomically, a read-only one refused). The
+    /// folder is created if missing: presets are saved into the program's
+    /// own preset folder.
     pub fn save(&self, path: &Path) -> std::io::Result<()> {
-        write_atomic(path, self.to_toml().as_bytes())
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            std::fs::create_dir_all(dir)?;
+        }
+        crate::output::write_file(path, self.to_toml().as_bytes())
+            .map_err(|e| std::io::Error::other(e.reason()))
     }
 }
 
@@ -396,31 +402,6 @@ pub fn user_preset_names(dir: &Path) -> Vec<String> {
         .unwrap_or_default();
     names.sort();
     names
-}
-
-/// Writes `bytes` to a temporary file beside `path`, flushes it, and renames
-/// it over `path`: readers see the old file or the new one, never a torn one.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    use std::io::Write;
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir)?;
-    let name = path
-        .file_name()
-        .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
 }
 
 #[cfg(test)]

@@ -16,7 +16,7 @@ pub mod result;
 pub mod simulate;
 
 pub use crate::model::Method;
-pub use observer::{Decimated, FullHistory, Observer, Sample};
+pub use observer::{CsvHistory, Decimated, FullHistory, Observer, Sample};
 pub use result::{
     ENERGY_TOLERANCE, EnergyBalance, Impact, RunResult, Stop, StopReason, StructurePeaks,
 };

@@ -3,6 +3,10 @@
 //! always kept by the driver itself, so "peaks only" is the empty observer
 //! `()`, which records nothing and allocates nothing per step.
 
+use std::io::{self, Write};
+
+use crate::output::Num;
+
 /// One accepted state of the two-structure system (SPEC §2–4).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Sample {
@@ -88,29 +92,67 @@ impl FullHistory {
     }
 }
 
-impl FullHistory {
-    /// The history as CSV: header `tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp`, one row per accepted state.
-    pub fn to_csv(&self) -> String {
-        use std::fmt::Write as _;
-        let mut out = String::with_capacity(self.samples.len() * 120);
-        out.push_str("tau,");
-        out.push_str(&CHANNEL_NAMES.join(","));
-        out.push('\n');
-        for s in &self.samples {
-            let _ = write!(out, "{}", s.tau);
-            for v in s.channels() {
-                let _ = write!(out, ",{v}");
-            }
-            out.push('\n');
-        }
-        out
-    }
-}
-
 impl Observer for FullHistory {
     #[inline]
     fn record(&mut self, sample: &Sample) {
         self.samples.push(*sample);
+    }
+}
+
+/// The header of the history CSV: τ, then the channels.
+pub const CSV_HEADER: &str = "tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp";
+
+/// One row of the history CSV (every value in its shortest round-trip form).
+pub fn write_csv_row(out: &mut impl Write, s: &Sample) -> io::Result<()> {
+    write!(out, "{}", Num(s.tau))?;
+    for v in s.channels() {
+        write!(out, ",{}", Num(v))?;
+    }
+    out.write_all(b"\n")
+}
+
+/// The history streamed as CSV ([`CSV_HEADER`], one row per accepted state)
+/// to a writer while the run goes, so memory stays bounded whatever its
+/// length. The first write error stops the run; [`CsvHistory::finish`] returns it.
+pub struct CsvHistory<W: Write> {
+    out: W,
+    rows: u64,
+    error: Option<io::Error>,
+}
+
+impl<W: Write> CsvHistory<W> {
+    /// Writes the header to `out`.
+    pub fn new(mut out: W) -> Self {
+        let error = writeln!(out, "{CSV_HEADER}").err();
+        CsvHistory {
+            out,
+            rows: 0,
+            error,
+        }
+    }
+
+    /// The writer back and the number of rows written, or the first write error.
+    pub fn finish(self) -> Result<(W, u64), (W, io::Error)> {
+        match self.error {
+            None => Ok((self.out, self.rows)),
+            Some(e) => Err((self.out, e)),
+        }
+    }
+}
+
+impl<W: Write> Observer for CsvHistory<W> {
+    #[inline]
+    fn record(&mut self, sample: &Sample) {
+        if self.error.is_none() {
+            match write_csv_row(&mut self.out, sample) {
+                Ok(()) => self.rows += 1,
+                Err(e) => self.error = Some(e),
+            }
+        }
+    }
+
+    fn keep_going(&mut self) -> bool {
+        self.error.is_none()
     }
 }
 
@@ -194,5 +236,51 @@ mod tests {
         let max = d.buckets.iter().map(|b| b.max[0]).fold(f64::MIN, f64::max);
         assert!(max > 0.9999, "peak lost: {max}");
         assert!(d.buckets.iter().all(|b| b.filled));
+    }
+
+    #[test]
+    fn csv_history_streams_rows_that_read_back_exactly() {
+        let samples = [
+            Sample::default(),
+            Sample {
+                tau: 0.001,
+                x: [1.0 / 3.0, -2e-20],
+                fp: 39.224_6,
+                ..Default::default()
+            },
+        ];
+        let mut csv = CsvHistory::new(Vec::new());
+        for s in &samples {
+            csv.record(s);
+        }
+        let (bytes, rows) = csv.finish().map_err(|(_, e)| e).unwrap();
+        assert_eq!(rows, 2);
+        let text = String::from_utf8(bytes).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines[0], CSV_HEADER);
+        assert_eq!(CSV_HEADER, format!("tau,{}", CHANNEL_NAMES.join(",")));
+        assert_eq!(lines[1], "0,0,0,0,0,0,0,0,0,0");
+        let values: Vec<f64> = lines[2].split(',').map(|v| v.parse().unwrap()).collect();
+        assert_eq!(values[0], 0.001);
+        assert_eq!(values[1], 1.0 / 3.0);
+        assert_eq!(values[4], -2e-20);
+        assert_eq!(values[9], 39.224_6);
+    }
+
+    #[test]
+    fn csv_history_stops_the_run_at_the_first_write_error() {
+        struct Full;
+        impl Write for Full {
+            fn write(&mut self, _: &[u8]) -> io::Result<usize> {
+                Err(io::Error::new(io::ErrorKind::StorageFull, "full"))
+            }
+            fn flush(&mut self) -> io::Result<()> {
+                Ok(())
+            }
+        }
+        let mut csv = CsvHistory::new(Full);
+        csv.record(&Sample::default());
+        assert!(!csv.keep_going());
+        assert!(csv.finish().is_err());
     }
 }

@@ -1,23 +1,27 @@
 //! `e`: the active run's full history as CSV (the columns of
-//! `pounding run --history`), written atomically.
+//! `pounding run --history`), streamed to its file by the rules of
+//! [`crate::output`] (atomic for a regular file, nothing kept in memory).
 
 use std::path::Path;
 
 use crate::model::Params;
-use crate::model::preset::write_atomic;
-use crate::solver::{FullHistory, SolverOptions, simulate};
+use crate::output::{OutputError, Target};
+use crate::solver::{CsvHistory, SolverOptions, simulate};
 
-/// Runs `params` with a full history and writes it to `path`; the status message.
+/// Runs `params`, streaming its history to `path`; the status message.
 pub fn write(params: &Params, path: &Path) -> String {
-    let steps = (params.tau_end() / params.dt).ceil() as usize + 1;
-    let mut history = FullHistory::with_capacity(steps.min(1 << 24));
-    simulate(params, &SolverOptions::default(), &mut history);
-    match write_atomic(path, history.to_csv().as_bytes()) {
-        Ok(()) => format!(
-            "exported {} ({} rows)",
-            path.display(),
-            history.samples.len()
-        ),
-        Err(e) => format!("could not write {}: {e}", path.display()),
+    match stream(params, path) {
+        Ok(rows) => format!("exported {} ({rows} rows)", path.display()),
+        Err(e) => format!("could not export: {e}"),
+    }
+}
+
+fn stream(params: &Params, path: &Path) -> Result<u64, OutputError> {
+    let target = Target::open(path)?;
+    let mut csv = CsvHistory::new(target);
+    simulate(params, &SolverOptions::default(), &mut csv);
+    match csv.finish() {
+        Ok((target, rows)) => target.commit().map(|()| rows),
+        Err((target, e)) => Err(target.error(&e)),
     }
 }
