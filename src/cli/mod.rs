@@ -7,6 +7,7 @@
 //! file, not a terminal for the explorer). Clap's own usage errors are 2 too.
 
 pub mod bench;
+pub mod figure;
 pub mod output;
 pub mod params;
 pub mod run;
@@ -77,6 +78,8 @@ pub enum Command {
     Bench(bench::BenchArgs),
     /// Numerical stress test over corner and random parameter sets.
     Stress(stress::StressArgs),
+    /// The paper's figures and the scenes as SVG or PNG files.
+    Figure(figure::FigureArgs),
 }
 
 /// Parses the command line and runs the chosen command.
@@ -95,6 +98,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
         Some(Command::Tui(args)) => tui::execute(&args),
         Some(Command::Bench(args)) => bench::execute(&args),
         Some(Command::Stress(args)) => stress::execute(&args),
+        Some(Command::Figure(args)) => figure::execute(&args),
         None => tui::execute(&tui::TuiArgs::default()),
     };
     match outcome {
