@@ -8,7 +8,8 @@
 //! - [`solver`]: Newmark-β with contact event location, driven by
 //!   [`solver::simulate`], reporting to an [`solver::Observer`] and
 //!   returning a [`solver::RunResult`];
-//! - [`analysis`]: what is built from many runs (spectra, similarity).
+//! - [`analysis`]: what is built from many runs (spectra, similarity);
+//! - [`figure`]: the paper's figures and the scenes as SVG or PNG files.
 //!
 //! ```
 //! use pounding::{model::SET1, solver};
@@ -19,6 +20,7 @@
 pub mod accuracy;
 pub mod analysis;
 pub mod cli;
+pub mod figure;
 pub mod model;
 pub mod output;
 pub mod reference;

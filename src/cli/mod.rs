@@ -12,6 +12,7 @@
 
 pub mod bench;
 pub mod budget;
+pub mod figure;
 pub mod output;
 pub mod params;
 pub mod progress;
@@ -96,6 +97,8 @@ pub enum Command {
     Bench(bench::BenchArgs),
     /// Numerical stress test over corner and random parameter sets.
     Stress(stress::StressArgs),
+    /// The paper's figures and the scenes as SVG or PNG files.
+    Figure(figure::FigureArgs),
 }
 
 /// Parses the command line and runs the chosen command.
@@ -126,6 +129,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
         Some(Command::Tui(args)) => tui::execute(&args),
         Some(Command::Bench(args)) => bench::execute(&args),
         Some(Command::Stress(args)) => stress::execute(&args),
+        Some(Command::Figure(args)) => figure::execute(&args),
         None => tui::execute(&tui::TuiArgs::default()),
     };
     crate::output::temp::remove_live();

@@ -1,0 +1,209 @@
+//! `pounding figure`: the paper's figures and the explorer's scenes as SVG
+//! or PNG files (drawn by [`crate::figure`]).
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use clap::Args;
+
+use super::CliError;
+use super::params::ParamArgs;
+use super::spectrum::SpectrumPlan;
+use crate::figure::{self, FigureError, FigureName, Format, Options, Scene, SpectrumInput};
+use crate::model::Method;
+
+/// Default canvas, pixels.
+const DEFAULT_SIZE: (u32, u32) = (1200, 900);
+
+#[derive(Debug, Clone, Default, Args)]
+pub struct FigureArgs {
+    /// fig3 … fig10 (the paper's), a scene (history, loops, contact-laws, spectrum), or `all`.
+    #[arg(value_name = "NAME")]
+    pub name: String,
+    /// Output file [default: NAME.FORMAT]; with `all`, a directory [default: figures].
+    #[arg(long, value_name = "FILE|DIR")]
+    pub out: Option<PathBuf>,
+    /// svg or png [default: the extension of --out, else svg; `all` writes both].
+    #[arg(long, value_name = "svg|png")]
+    pub format: Option<String>,
+    /// Canvas width in pixels (SVG user units).
+    #[arg(long, value_name = "W")]
+    pub width: Option<String>,
+    /// Canvas height in pixels.
+    #[arg(long, value_name = "H")]
+    pub height: Option<String>,
+    /// Integrator: newmark or exact.
+    #[arg(long, value_name = "M", default_value = "newmark")]
+    pub method: String,
+    /// The Π_ω1 grid of a spectrum figure START:STOP:STEP [default: the preset's, else 0.1:3.0:0.01].
+    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
+    pub omega1: Option<String>,
+    /// Frequency ratio μ of the spectrum scene.
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub mu: Option<String>,
+    /// One spectrum-scene curve per value of a key, e.g. gap=0.2,1.5,inf.
+    #[arg(long, value_name = "KEY=V1,V2,...")]
+    pub family: Option<String>,
+    #[command(flatten)]
+    pub params: ParamArgs,
+}
+
+fn usage(msg: impl std::fmt::Display) -> CliError {
+    CliError::Usage(msg.to_string())
+}
+
+impl From<FigureError> for CliError {
+    fn from(e: FigureError) -> Self {
+        match e {
+            FigureError::Input(_) | FigureError::MethodUnavailable(_) => {
+                CliError::Usage(e.to_string())
+            }
+            FigureError::Run(_) | FigureError::Draw(_) => CliError::Failed(e.to_string()),
+        }
+    }
+}
+
+fn parse_format(text: &str) -> Result<Format, CliError> {
+    match text.trim().to_ascii_lowercase().as_str() {
+        "svg" => Ok(Format::Svg),
+        "png" => Ok(Format::Png),
+        _ => Err(usage(format!("--format {text}: must be `svg` or `png`"))),
+    }
+}
+
+fn parse_side(key: &str, text: Option<&str>, default: u32) -> Result<u32, CliError> {
+    let Some(text) = text else {
+        return Ok(default);
+    };
+    text.trim().parse::<u32>().map_err(|_| {
+        usage(format!(
+            "{key} {text}: must be an integer in [{}, {}] pixels",
+            figure::render::MIN_SIDE,
+            figure::render::MAX_SIDE
+        ))
+    })
+}
+
+/// Whether any parameter option was given (they apply to scenes only).
+fn has_param_options(p: &ParamArgs) -> bool {
+    p.preset.is_some()
+        || !p.overrides.is_empty()
+        || p.model.is_some()
+        || p.dt.is_some()
+        || p.cycles.is_some()
+        || p.no_pounding
+}
+
+fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    crate::output::write_file(path, bytes)?;
+    super::output::print(&format!("wrote {}\n", path.display()))
+}
+
+pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
+    let all = args.name.trim() == "all";
+    let name = if all {
+        None
+    } else {
+        Some(args.name.parse::<FigureName>()?)
+    };
+    let method: Method = args
+        .method
+        .parse()
+        .map_err(|e| usage(format!("--method: {e}")))?;
+    let size = figure::check_size(
+        parse_side("--width", args.width.as_deref(), DEFAULT_SIZE.0)?,
+        parse_side("--height", args.height.as_deref(), DEFAULT_SIZE.1)?,
+    )?;
+    let format = match (&args.format, &args.out) {
+        (Some(f), _) => Some(parse_format(f)?),
+        (None, Some(out)) if !all => match out.extension().and_then(|e| e.to_str()) {
+            Some(ext) if ext.eq_ignore_ascii_case("png") => Some(Format::Png),
+            _ => Some(Format::Svg),
+        },
+        _ => None,
+    };
+    let scene_only = name.is_none_or(FigureName::is_paper);
+    if scene_only && has_param_options(&args.params) {
+        return Err(usage(format!(
+            "figure {}: --preset, --set, --model, --dt, --cycles and --no-pounding apply to the scenes \
+             (history, loops, contact-laws, spectrum); the paper's figures use the paper's values",
+            args.name
+        )));
+    }
+    if (args.mu.is_some() || args.family.is_some()) && name != Some(FigureName::Spectrum) {
+        return Err(usage(
+            "--mu and --family apply to the `spectrum` scene only",
+        ));
+    }
+    if args.omega1.is_some() && !(all || name.is_some_and(FigureName::is_spectrum)) {
+        return Err(usage(format!(
+            "--omega1 applies to spectrum figures (fig7–fig10, spectrum), not {}",
+            args.name
+        )));
+    }
+    let grid = match &args.omega1 {
+        Some(text) => Some(text.parse().map_err(|e| usage(&e))?),
+        None => None,
+    };
+    let mut options = Options {
+        method,
+        grid,
+        scene: Scene::default(),
+    };
+    if let Some(n) = name.filter(|n| !n.is_paper()) {
+        let plan = SpectrumPlan::resolve(
+            &args.params,
+            args.omega1.as_deref(),
+            args.mu.as_deref(),
+            args.family.as_deref(),
+        )?;
+        options.scene = Scene {
+            name: plan.preset.name.clone(),
+            params: plan.params,
+            spectrum: (n == FigureName::Spectrum).then(|| SpectrumInput {
+                name: plan.preset.name.clone(),
+                params: plan.params,
+                mu: plan.mu,
+                family: plan.family.clone(),
+                grid: plan.grid,
+            }),
+        };
+    }
+
+    match name {
+        Some(n) => {
+            let format = format.unwrap_or(Format::Svg);
+            let out = args
+                .out
+                .clone()
+                .unwrap_or_else(|| PathBuf::from(format!("{}.{}", n.name(), format.extension())));
+            let fig = figure::build(n, &options)?;
+            write(&out, &figure::encode(&fig, format, size)?)
+        }
+        None => {
+            let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("figures"));
+            // `all` names a directory to fill: it is made if missing (its files follow the output rules).
+            if !dir.is_dir() {
+                std::fs::create_dir_all(&dir).map_err(|e| {
+                    CliError::Failed(format!("cannot create directory {}: {e}", dir.display()))
+                })?;
+            }
+            let formats = match format {
+                Some(f) => vec![f],
+                None => vec![Format::Svg, Format::Png],
+            };
+            for n in FigureName::PAPER {
+                let t = Instant::now();
+                let fig = figure::build(n, &options)?;
+                for f in &formats {
+                    write(
+                        &dir.join(format!("{}.{}", n.name(), f.extension())),
+                        &figure::encode(&fig, *f, size)?,
+                    )?;
+                }
+                eprintln!("{}: {:.0} ms", n.name(), t.elapsed().as_secs_f64() * 1e3);
+            }
+            Ok(())
+        }
+    }
+}
