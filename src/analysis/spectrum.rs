@@ -5,7 +5,7 @@
 use serde::Serialize;
 
 use crate::model::Params;
-use crate::solver::{RunResult, StructurePeaks, run};
+use crate::solver::{RunResult, StructurePeaks, run_for_sweep as run};
 
 /// Relative change of the left structure's Π_u beyond which pounding counts
 /// as amplifying or suppressing it (SPEC §7).

@@ -21,7 +21,7 @@ use super::baseline::{BaselineCache, BaselineKey, FreePeaks};
 use super::family::{Family, FamilyError, Member};
 use super::spectrum::{SpectrumPoint, at_omega, baseline_params, combine};
 use crate::model::Params;
-use crate::solver::{RunResult, run};
+use crate::solver::{RunResult, run_for_sweep as run};
 
 /// One curve to compute: the family member it stands for (none without a
 /// family), its parameters and its frequency ratio μ.

@@ -32,8 +32,8 @@ pub struct FigureArgs {
     /// Canvas height in pixels.
     #[arg(long, value_name = "H")]
     pub height: Option<String>,
-    /// Integrator: newmark or exact.
-    #[arg(long, value_name = "M", default_value = "newmark")]
+    /// Integrator: newmark or exact (spectra run thousands of cases: exact is far faster).
+    #[arg(long, value_name = "M", default_value = "exact")]
     pub method: String,
     /// The Π_ω1 grid of a spectrum figure START:STOP:STEP [default: the preset's, else 0.1:3.0:0.01].
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
@@ -55,9 +55,7 @@ fn usage(msg: impl std::fmt::Display) -> CliError {
 impl From<FigureError> for CliError {
     fn from(e: FigureError) -> Self {
         match e {
-            FigureError::Input(_) | FigureError::MethodUnavailable(_) => {
-                CliError::Usage(e.to_string())
-            }
+            FigureError::Input(_) => CliError::Usage(e.to_string()),
             FigureError::Run(_) | FigureError::Draw(_) => CliError::Failed(e.to_string()),
         }
     }

@@ -19,6 +19,10 @@ pub struct ParamArgs {
     /// Contact model.
     #[arg(long, value_parser = ["kelvin", "improved-kelvin"])]
     pub model: Option<String>,
+    /// Integrator: newmark (the paper's, default of `run`) or exact (event-driven;
+    /// default of the commands that run many cases).
+    #[arg(long, value_parser = ["newmark", "exact"])]
+    pub method: Option<String>,
     /// Newmark time step Δτ.
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub dt: Option<String>,
@@ -49,6 +53,17 @@ pub fn user_preset_dir(explicit: Option<&PathBuf>) -> Option<PathBuf> {
 impl ParamArgs {
     /// The preset, with every override applied and validated. A `dt` too
     /// coarse for the contact is a warning on stderr, not an error.
+    /// As [`ParamArgs::resolve`], for a command that runs many cases
+    /// (spectra, similarity): without `--method` they use the exact method,
+    /// whatever the preset names.
+    pub fn resolve_for_many(&self) -> Result<(Preset, Params), CliError> {
+        let (preset, mut p) = self.resolve()?;
+        if self.method.is_none() {
+            p.method = crate::model::Method::Exact;
+        }
+        Ok((preset, p))
+    }
+
     pub fn resolve(&self) -> Result<(Preset, Params), CliError> {
         let dirs: Vec<PathBuf> = user_preset_dir(self.presets.as_ref()).into_iter().collect();
         let preset = Preset::find(self.preset.as_deref().unwrap_or("set1"), &dirs)?;
@@ -64,6 +79,9 @@ impl ParamArgs {
         }
         if let Some(m) = &self.model {
             p.set("model", m)?;
+        }
+        if let Some(m) = &self.method {
+            p.set("method", m)?;
         }
         if let Some(dt) = &self.dt {
             p.set("dt", dt)?;

@@ -90,6 +90,13 @@ impl<'a, O: Observer> Tracked<'a, O> {
 }
 
 impl<O: Observer> Observer for Tracked<'_, O> {
+    const RECORDS: bool = O::RECORDS;
+
+    fn reached(&mut self, tau: f64) {
+        self.tau = tau;
+        self.inner.reached(tau);
+    }
+
     #[inline]
     fn record(&mut self, sample: &Sample) {
         self.tau = sample.tau;

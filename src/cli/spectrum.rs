@@ -59,7 +59,7 @@ impl SpectrumPlan {
         mu: Option<&str>,
         family: Option<&str>,
     ) -> Result<SpectrumPlan, CliError> {
-        let (preset, p) = params.resolve()?;
+        let (preset, p) = params.resolve_for_many()?;
         let usage = |e: &dyn std::fmt::Display| CliError::Usage(e.to_string());
         let spec = match &preset.spectrum {
             Some(t) => {

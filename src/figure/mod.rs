@@ -39,8 +39,6 @@ pub enum FigureError {
     /// Bad input (a name, a size, a preset): exit code 2 at the command line.
     #[error("{0}")]
     Input(String),
-    #[error("--method {0}: not available for figures yet; use `newmark`")]
-    MethodUnavailable(Method),
     /// A run that cannot be trusted (stopped early, non-finite, energy not balanced).
     #[error("a run failed: {0}")]
     Run(String),

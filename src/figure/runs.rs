@@ -8,23 +8,15 @@ use crate::analysis::similarity::{Level, study};
 use crate::analysis::sweep::{Curve, CurveSpec, sweep};
 use crate::model::physical::Physical;
 use crate::model::{Method, Params};
-use crate::solver::{FullHistory, RunResult, SolverOptions, simulate};
+use crate::solver::{FullHistory, RunResult, solve};
 
 use super::FigureError;
 
-/// Refuses a method that is not available for figures yet.
-pub fn check_method(method: Method) -> Result<(), FigureError> {
-    match method {
-        Method::Newmark => Ok(()),
-        Method::Exact => Err(FigureError::MethodUnavailable(method)),
-    }
-}
-
 /// One run with every accepted state recorded.
 pub fn history(p: &Params, method: Method) -> Result<(RunResult, FullHistory), FigureError> {
-    check_method(method)?;
+    let p = &Params { method, ..*p };
     let mut h = FullHistory::with_capacity((p.tau_end() / p.dt) as usize + 16);
-    let r = simulate(p, &SolverOptions::default(), &mut h);
+    let r = solve(p, &mut h);
     if let Some(why) = r.unreliable() {
         return Err(FigureError::Run(why));
     }
@@ -37,8 +29,14 @@ pub fn spectra(
     omega1: &[f64],
     method: Method,
 ) -> Result<Vec<Curve>, FigureError> {
-    check_method(method)?;
-    Ok(sweep(specs, omega1, &mut BaselineCache::new()))
+    let specs: Vec<CurveSpec> = specs
+        .iter()
+        .map(|s| CurveSpec {
+            params: Params { method, ..s.params },
+            ..s.clone()
+        })
+        .collect();
+    Ok(sweep(&specs, omega1, &mut BaselineCache::new()))
 }
 
 /// The spectrum of `physical` at each excitation amplitude (SPEC §8).
@@ -50,7 +48,10 @@ pub fn levels(
     mu: f64,
     method: Method,
 ) -> Result<Vec<Level>, FigureError> {
-    check_method(method)?;
+    let settings = &Params {
+        method,
+        ..*settings
+    };
     study(physical, settings, amplitudes, omega1, mu, true)
         .map_err(|e| FigureError::Input(e.to_string()))
 }

@@ -49,7 +49,9 @@ impl SpectrumInput {
         };
         let p = preset.params;
         let family = match &spec.family {
-            Some((key, values)) => Some(Family::new(crate::model::family::FLAG, key, values, &p).map_err(|e| bad(&e))?),
+            Some((key, values)) => Some(
+                Family::new(crate::model::family::FLAG, key, values, &p).map_err(|e| bad(&e))?,
+            ),
             None => None,
         };
         Ok(SpectrumInput {

@@ -52,6 +52,10 @@ pub trait Observer {
 
     fn record(&mut self, sample: &Sample);
 
+    /// Told now and then how far the run has come, also when the observer
+    /// does not record samples (progress bars).
+    fn reached(&mut self, _tau: f64) {}
+
     /// Polled now and then by the driver; returning `false` stops the run
     /// early (its result says so). Lets a worker cancel a superseded run.
     fn keep_going(&mut self) -> bool {
@@ -71,6 +75,9 @@ impl<O: Observer + ?Sized> Observer for &mut O {
     #[inline]
     fn record(&mut self, sample: &Sample) {
         (**self).record(sample)
+    }
+    fn reached(&mut self, tau: f64) {
+        (**self).reached(tau)
     }
     fn keep_going(&mut self) -> bool {
         (**self).keep_going()

@@ -119,6 +119,8 @@ struct Run<'a> {
     /// Index of the next output instant k · Δτ.
     next_sample: u64,
     events: usize,
+    /// Segments taken (the run's `steps`).
+    segments: usize,
     max_events: usize,
     max_segments: usize,
     work: Work,
@@ -150,6 +152,7 @@ impl<'a> Run<'a> {
             sample_step: p.dt,
             next_sample: 1,
             events: 0,
+            segments: 0,
             max_events: EVENT_ALLOWANCE + EVENTS_PER_CYCLE * p.cycles as usize,
             // Free segments needed, times a margin for events and contact segments.
             max_segments: 1_000_000 + (100.0 * tau_end / free_step).min(1e9) as usize,
@@ -202,16 +205,20 @@ impl<'a> Run<'a> {
 
     fn time_loop<O: Observer>(&mut self, observer: &mut O) {
         let tau_end = self.p.tau_end();
-        let mut segments = 0usize;
+
         let mut ground = Series {
             degree: CONTACT_DEGREE.max(FREE_DEGREE),
             ..Series::default()
         };
         while self.tau < tau_end {
-            segments += 1;
-            if segments.is_multiple_of(POLL_EVERY) && !observer.keep_going() {
-                self.stop(StopReason::Cancelled);
-                return;
+            self.segments += 1;
+            let segments = self.segments;
+            if segments.is_multiple_of(POLL_EVERY) {
+                observer.reached(self.tau);
+                if !observer.keep_going() {
+                    self.stop(StopReason::Cancelled);
+                    return;
+                }
             }
             if segments > self.max_segments {
                 self.stop(StopReason::StepCap);
@@ -355,7 +362,10 @@ impl<'a> Run<'a> {
             r.max_force = r.max_force.max(imp.peak_force);
             let mut pull = -r.min_force;
             raise_max(&force.scaled(-1.0), &df.scaled(-1.0), length, &mut pull);
-            r.min_force = -pull;
+            // A pull within round-off of zero (δ ≈ ±1e-17 at a located onset) is no pull.
+            if pull > 1e-9 * r.max_force {
+                r.min_force = -pull;
+            }
         }
         if self.options.energy {
             self.work.add(
@@ -496,7 +506,7 @@ impl<'a> Run<'a> {
             self.result.energy = self.work.balance(m, self.v, initial);
         }
         self.result.tau_end = self.tau;
-        self.result.steps = 0;
+        self.result.steps = self.segments;
         self.result
     }
 }
