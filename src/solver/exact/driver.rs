@@ -58,6 +58,10 @@ pub struct ExactOptions {
     /// Integrate the work terms of SPEC §6 (Gauss–Legendre on each segment).
     /// Costs about as much as the motion itself; spectra and maps skip it.
     pub energy: bool,
+    /// Cap on events (onsets, separations, yields, unloadings) before the
+    /// run stops with [`StopReason::EventCap`]; `None`: 10,000 plus 1,000
+    /// per cycle, far above any physical run (a few per cycle).
+    pub max_events: Option<usize>,
 }
 
 impl Default for ExactOptions {
@@ -67,6 +71,7 @@ impl Default for ExactOptions {
             initial_displacement: [0.0; 2],
             initial_velocity: [0.0; 2],
             energy: true,
+            max_events: None,
         }
     }
 }
@@ -78,6 +83,7 @@ impl From<&SolverOptions> for ExactOptions {
             initial_displacement: o.initial_displacement,
             initial_velocity: o.initial_velocity,
             energy: true,
+            max_events: None,
         }
     }
 }
@@ -153,7 +159,9 @@ impl<'a> Run<'a> {
             next_sample: 1,
             events: 0,
             segments: 0,
-            max_events: EVENT_ALLOWANCE + EVENTS_PER_CYCLE * p.cycles as usize,
+            max_events: options
+                .max_events
+                .unwrap_or(EVENT_ALLOWANCE + EVENTS_PER_CYCLE * p.cycles as usize),
             // Free segments needed, times a margin for events and contact segments.
             max_segments: 1_000_000 + (100.0 * tau_end / free_step).min(1e9) as usize,
             work: Work::default(),

@@ -1,0 +1,252 @@
+//! The exact (event-driven) method against what is known independently:
+//! the DOPRI5 reference with event location (it shares no code with the
+//! solver), the closed-form elastic response, the Kelvin restitution of an
+//! isolated impact, and conservation of momentum. Then its guards: the event
+//! cap and the non-finite check turn runaways into reported stops.
+
+use pounding::model::{ContactModel, Excitation, Method, Params, SET1, SET2};
+use pounding::reference::{ReferenceOptions, reference};
+use pounding::solver::exact::{ExactOptions, simulate};
+use pounding::solver::{FullHistory, RunResult, StopReason, relative_peak_error};
+
+fn exact(p: &Params) -> RunResult {
+    simulate(p, &ExactOptions::default(), &mut ())
+}
+
+/// Exact against the reference at tolerance 1e-13: the four peaks to
+/// `tolerance` (relative) and the same impact count.
+fn agrees_with_reference(name: &str, p: &Params, tolerance: f64) {
+    let r = exact(p);
+    assert!(r.completed && r.stop.is_none(), "{name}: {:?}", r.stop);
+    assert_eq!(r.method, Method::Exact);
+    let q = reference(p, &ReferenceOptions::with_tolerance(1e-13));
+    assert!(q.completed, "{name}: reference incomplete");
+    let err = relative_peak_error(&r.peaks(), &q.peaks);
+    assert!(
+        err < tolerance,
+        "{name}: peaks {:?} vs {:?}: {err:.2e}",
+        r.peaks(),
+        q.peaks
+    );
+    assert_eq!(r.impacts.len(), q.impacts.len(), "{name}: impact count");
+    for (a, b) in r.impacts.iter().zip(&q.impacts) {
+        assert!(
+            (a.start - b.start).abs() < 1e-8,
+            "{name}: onset {} vs {}",
+            a.start,
+            b.start
+        );
+        let dv = (a.approach_velocity - b.approach_velocity).abs();
+        assert!(
+            dv < 1e-8,
+            "{name}: v0 {} vs {}",
+            a.approach_velocity,
+            b.approach_velocity
+        );
+    }
+    assert!(
+        r.energy.residual < 1e-10,
+        "{name}: energy residual {:.1e}",
+        r.energy.residual
+    );
+}
+
+#[test]
+fn presets_agree_with_the_reference_to_1e_8() {
+    for (name, p) in [("set1", SET1), ("set2", SET2)] {
+        for model in ContactModel::ALL {
+            agrees_with_reference(&format!("{name} {model}"), &Params { model, ..p }, 1e-8);
+        }
+    }
+}
+
+#[test]
+fn the_paper_counts_nine_impacts_on_set1() {
+    assert_eq!(exact(&SET1).impacts.len(), 9);
+}
+
+/// Near-grazing points of the Figure 8–10 spectra, where Newmark at
+/// Δτ = 0.001 is off by up to 3e-3 (Π_ω1 = 0.6, μ = 1.5 has a fourth impact
+/// at an approach velocity of about 0.066).
+#[test]
+fn grazing_cases_agree_with_the_reference_to_1e_8() {
+    let cases = [
+        (0.6, 1.5, 0.5, 0.2),
+        (0.6, 1.5, 0.5, 1.5),
+        (0.45, 1.5, 0.1, 0.2),
+        (0.75, 4.0, 0.5, 0.2),
+        (1.3, 1.5, 0.9, 0.2),
+        (2.0, 10.0, 0.5, 0.2),
+    ];
+    for (omega1, mu, mass_ratio, gap) in cases {
+        let p = Params {
+            omega1,
+            omega2: mu * omega1,
+            mass_ratio,
+            gap,
+            ..SET1
+        };
+        agrees_with_reference(
+            &format!("Π_ω1={omega1} μ={mu} Π_m={mass_ratio} Π_d={gap}"),
+            &p,
+            1e-8,
+        );
+    }
+}
+
+/// ẍ + 2ζωẋ + ω²x = −sin τ from rest (see `solver_elastic.rs` for the closed form).
+fn closed_form(omega: f64, zeta: f64, tau: f64) -> f64 {
+    let d = (omega * omega - 1.0).powi(2) + (2.0 * zeta * omega).powi(2);
+    let a = -(omega * omega - 1.0) / d;
+    let b = 2.0 * zeta * omega / d;
+    let wd = omega * (1.0 - zeta * zeta).sqrt();
+    let c1 = -b;
+    let c2 = (zeta * omega * c1 - a) / wd;
+    a * tau.sin()
+        + b * tau.cos()
+        + (-zeta * omega * tau).exp() * (c1 * (wd * tau).cos() + c2 * (wd * tau).sin())
+}
+
+#[test]
+fn linear_structures_follow_the_closed_form_to_1e_12() {
+    let p = Params {
+        yield1: f64::INFINITY,
+        yield2: f64::INFINITY,
+        gap: f64::INFINITY,
+        method: Method::Exact,
+        ..SET1
+    };
+    let mut h = FullHistory::default();
+    let r = simulate(&p, &ExactOptions::default(), &mut h);
+    assert!(r.impacts.is_empty() && !r.left.yielded && !r.right.yielded);
+    assert!(
+        h.samples.len() > 50_000,
+        "one sample per Δτ: {}",
+        h.samples.len()
+    );
+    let mut worst: f64 = 0.0;
+    for s in &h.samples {
+        worst = worst
+            .max((s.x[0] - closed_form(p.omega1, p.damping, s.tau)).abs())
+            .max((s.x[1] - closed_form(p.omega2, p.damping, s.tau)).abs());
+    }
+    assert!(worst < 1e-12, "largest error {worst:.2e}");
+    // Peaks are the continuous maxima: no sample exceeds them, and the closed
+    // form's maximum on a fine grid is matched.
+    let fine = (0..=2_000_000)
+        .map(|k| closed_form(p.omega1, p.damping, k as f64 * p.tau_end() / 2e6).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        (r.left.peak_displacement - fine).abs() < 1e-9,
+        "{} vs {fine}",
+        r.left.peak_displacement
+    );
+    assert!(
+        h.samples
+            .iter()
+            .all(|s| s.x[0].abs() <= r.left.peak_displacement)
+    );
+}
+
+/// Two free masses (Π_ω = 0, no damping, no ground motion) meeting at unit
+/// speed: the Kelvin element returns exactly the e it was built from,
+/// ζ = −ln e/√(π² + ln² e) (SPEC §4), and momentum is conserved.
+#[test]
+fn kelvin_restitution_of_an_isolated_impact_to_1e_9() {
+    for e in [0.1, 0.4, 0.8, 1.0] {
+        for mass_ratio in [0.5, 2.0] {
+            let p = Params {
+                mass_ratio,
+                omega1: 0.0,
+                omega2: 0.0,
+                damping: 0.0,
+                restitution: e,
+                gap: 0.05,
+                model: ContactModel::Kelvin,
+                cycles: 1,
+                ..SET1
+            };
+            let options = ExactOptions {
+                excitation: Excitation::None,
+                initial_velocity: [1.0, 0.0],
+                ..ExactOptions::default()
+            };
+            let mut h = FullHistory::default();
+            let r = simulate(&p, &options, &mut h);
+            assert_eq!(r.impacts.len(), 1);
+            let got = r.impacts[0].restitution;
+            assert!((got - e).abs() < 1e-9, "e={e} Π_m={mass_ratio}: {got}");
+            let end = h.samples.last().unwrap();
+            let momentum = mass_ratio * end.v[0] + end.v[1];
+            assert!((momentum - mass_ratio).abs() < 1e-12, "{momentum}");
+        }
+    }
+}
+
+#[test]
+fn the_event_cap_turns_a_runaway_into_a_reported_stop() {
+    let options = ExactOptions {
+        max_events: Some(5),
+        ..ExactOptions::default()
+    };
+    let r = simulate(&SET1, &options, &mut ());
+    let stop = r.stop.expect("stopped");
+    assert_eq!(stop.reason, StopReason::EventCap);
+    assert!(!r.completed && stop.tau > 0.0 && stop.tau < SET1.tau_end());
+    assert!(r.unreliable().is_some());
+}
+
+/// Two identical structures with no gap move together: δ ≡ 0, a tangency
+/// along the whole run. It must end, without a spurious impact storm.
+#[test]
+fn structures_moving_together_at_zero_gap_finish() {
+    let p = Params {
+        mass_ratio: 1.0,
+        omega1: 1.5,
+        omega2: 1.5,
+        yield1: f64::INFINITY,
+        yield2: f64::INFINITY,
+        gap: 0.0,
+        cycles: 2,
+        ..SET1
+    };
+    let r = exact(&p);
+    assert!(r.completed, "{:?}", r.stop);
+    assert!(r.impacts.len() <= 1, "{} impacts", r.impacts.len());
+}
+
+/// Values outside the accepted ranges, built directly: the run stops where
+/// the state stops being finite, or completes with finite numbers, and
+/// never hangs.
+#[test]
+fn hostile_values_stop_or_finish_finite() {
+    let cases = [
+        Params {
+            contact_omega: 1e300,
+            ..SET1
+        },
+        Params {
+            mass_ratio: 1e300,
+            ..SET1
+        },
+        Params {
+            restitution: 1e-100,
+            ..SET1
+        },
+        Params {
+            mass_ratio: 1e-320,
+            ..SET1
+        },
+        Params {
+            omega1: 1e100,
+            ..SET1
+        },
+    ];
+    for p in cases {
+        let r = exact(&p);
+        match r.stop {
+            Some(stop) => assert!(stop.tau.is_finite() && stop.reason != StopReason::Cancelled),
+            None => assert!(r.is_finite(), "{p}: {:?}", r.peaks()),
+        }
+    }
+}
