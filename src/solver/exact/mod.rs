@@ -13,6 +13,9 @@
 //! to round-off ([`roots`]): contact onset and separation, yield, unloading.
 //! Peaks are the true maxima, located at the zeros of the rates. The loop and
 //! its accounting are in [`driver`]; the energy balance in [`energy`].
+//! A free segment in which bounds show that nothing can happen (no event, no
+//! new peak) is advanced by a precomputed transition matrix instead
+//! ([`quiet`]), which is most of a run.
 //!
 //! The excitation enters only through its Taylor coefficients and the
 //! instants where it changes formula ([`crate::model::Excitation::taylor`]
@@ -28,6 +31,7 @@
 pub mod driver;
 pub mod dynamics;
 pub mod energy;
+pub mod quiet;
 pub mod roots;
 pub mod series;
 

@@ -1,0 +1,178 @@
+//! Quiet free segments by transition matrix, with no series at all.
+//!
+//! Out of contact, on a fixed branch, each structure's state y = (x, ẋ)
+//! after a segment of the fixed length h is linear in its inputs: the
+//! initial state, the ground phasor (sin τ₀, cos τ₀) of g = sin τ, and the
+//! branch's constant load Q/m (SPEC §2–3):
+//!
+//! ```text
+//! y(τ₀ + t) = Φ(t) y(τ₀) + sin τ₀ · γ_s(t) + cos τ₀ · γ_c(t) + (Q/m) · γ_1(t),
+//! ```
+//!
+//! where Φ columns and the γ are the responses to one unit input each
+//! (g(τ₀ + t) = sin τ₀ cos t + cos τ₀ sin t). These five unit responses are
+//! computed once per structure and branch kind, as series summed to
+//! round-off. The same superposition bounds how far x and ẋ can move inside
+//! the segment: |x(τ₀ + t) − x(τ₀)| ≤ Σ_j |input_j| · swing_j, with swing_j
+//! = Σ_{k≥1} |u_{j,k}| h^k of unit response j. When those bounds keep every
+//! event function negative and every peak below its running value, the
+//! segment is quiet: the state is advanced by the matrix alone.
+
+use super::dynamics::Structure;
+use super::series::{MAX_DEGREE, Series};
+
+/// Number of inputs: x₀, ẋ₀, sin τ₀, cos τ₀, Q/m.
+const INPUTS: usize = 5;
+
+/// The unit responses of one structure on one branch kind over length h.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Transition {
+    /// (x, ẋ) at h for each unit input.
+    pub end: [[f64; 2]; INPUTS],
+    /// (swing of x, swing of ẋ) over [0, h] for each unit input.
+    pub swing: [[f64; 2]; INPUTS],
+}
+
+impl Transition {
+    /// For stiffness `k` (k or Π_α k) on structure `s`, over length `h`,
+    /// with series of degree `n` (summed to round-off when Ω h ≤ 1).
+    pub fn new(s: &Structure, k: f64, h: f64, n: usize) -> Self {
+        let inv_m = 1.0 / s.mass;
+        let (c, k) = (s.damping * inv_m, k * inv_m);
+        let mut ground_sin = Series {
+            degree: n,
+            ..Series::default()
+        };
+        let mut ground_cos = ground_sin;
+        let zero = ground_sin;
+        // g(τ₀ + t) = sin τ₀ · cos t + cos τ₀ · sin t.
+        crate::model::Excitation::Sine.taylor(std::f64::consts::FRAC_PI_2, &mut ground_sin.c[..=n]);
+        crate::model::Excitation::Sine.taylor(0.0, &mut ground_cos.c[..=n]);
+        let units = [
+            oscillator(c, k, 0.0, 1.0, 0.0, &zero, n),
+            oscillator(c, k, 0.0, 0.0, 1.0, &zero, n),
+            oscillator(c, k, 0.0, 0.0, 0.0, &ground_sin, n),
+            oscillator(c, k, 0.0, 0.0, 0.0, &ground_cos, n),
+            oscillator(c, k, 1.0, 0.0, 0.0, &zero, n),
+        ];
+        let mut end = [[0.0; 2]; INPUTS];
+        let mut swing = [[0.0; 2]; INPUTS];
+        for (j, u) in units.iter().enumerate() {
+            let du = u.derivative();
+            end[j] = [u.value(h), du.value(h)];
+            swing[j] = [reach(u, h), reach(&du, h)];
+        }
+        Transition { end, swing }
+    }
+
+    /// The inputs of a segment, in the order of the unit responses, for a
+    /// structure at (x, ẋ) with load Q/m and stiffness K/m on its branch.
+    /// Where K > 0 the displacement is taken from the branch's static
+    /// equilibrium x* = Q/K (with a unit displacement response, which then
+    /// carries the load): the large, cancelling parts of x and Q/m of a
+    /// yielded branch then do not inflate the bounds.
+    /// Returns the inputs and the equilibrium they were taken from (0 without one).
+    #[inline]
+    pub fn inputs(
+        x: f64,
+        v: f64,
+        phasor: [f64; 2],
+        load: f64,
+        stiffness: f64,
+    ) -> ([f64; INPUTS], f64) {
+        if stiffness > 0.0 {
+            let equilibrium = load / stiffness;
+            ([x - equilibrium, v, phasor[0], phasor[1], 0.0], equilibrium)
+        } else {
+            ([x, v, phasor[0], phasor[1], load], 0.0)
+        }
+    }
+
+    /// (x, ẋ) at the segment's end, for inputs from [`Transition::inputs`]
+    /// and the equilibrium they were taken from.
+    #[inline]
+    pub fn advance(&self, inputs: &[f64; INPUTS], equilibrium: f64) -> [f64; 2] {
+        let mut y = [equilibrium, 0.0];
+        for (u, e) in inputs.iter().zip(&self.end) {
+            y[0] += u * e[0];
+            y[1] += u * e[1];
+        }
+        y
+    }
+
+    /// Bounds of |x − x₀| and |ẋ − ẋ₀| over the segment.
+    #[inline]
+    pub fn swing(&self, inputs: &[f64; INPUTS]) -> [f64; 2] {
+        let mut s = [0.0; 2];
+        for (u, w) in inputs.iter().zip(&self.swing) {
+            s[0] += u.abs() * w[0];
+            s[1] += u.abs() * w[1];
+        }
+        // The bounds are sums of products: allow for their own round-off.
+        s.map(|v| v * (1.0 + 1e-12))
+    }
+}
+
+/// Σ_{k≥1} |c_k| h^k.
+fn reach(q: &Series, h: f64) -> f64 {
+    let mut sum = 0.0;
+    let mut hk = 1.0;
+    for k in 1..=q.degree {
+        hk *= h;
+        sum += q.c[k].abs() * hk;
+    }
+    sum
+}
+
+/// Series of ẍ + c ẋ + k x = load − g from (x₀, ẋ₀), to degree n.
+fn oscillator(c: f64, k: f64, load: f64, x0: f64, v0: f64, g: &Series, n: usize) -> Series {
+    let n = n.min(MAX_DEGREE);
+    let mut x = Series {
+        degree: n,
+        ..Series::default()
+    };
+    x.c[0] = x0;
+    x.c[1] = v0;
+    for j in 0..n.saturating_sub(1) {
+        let constant = if j == 0 { load } else { 0.0 };
+        let rhs = constant - g.c[j] - c * (j + 1) as f64 * x.c[j + 1] - k * x.c[j];
+        x.c[j + 2] = rhs / ((j + 1) * (j + 2)) as f64;
+    }
+    x
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::SET1;
+
+    #[test]
+    fn transition_matches_the_series_of_the_whole_state() {
+        let s = Structure::pair(&SET1)[0];
+        let h = 0.4;
+        let t = Transition::new(&s, s.stiffness, h, 20);
+        let (x0, v0, tau0, load) = (0.3, -1.2, 2.0, 0.05);
+        let mut g = Series {
+            degree: 20,
+            ..Series::default()
+        };
+        crate::model::Excitation::Sine.taylor(tau0, &mut g.c[..=20]);
+        let inv_m = 1.0 / s.mass;
+        let whole = oscillator(s.damping * inv_m, s.stiffness * inv_m, load, x0, v0, &g, 20);
+        let (s0, c0) = f64::sin_cos(tau0);
+        for stiffness in [0.0, s.stiffness * inv_m] {
+            let (inputs, eq) = Transition::inputs(x0, v0, [s0, c0], load, stiffness);
+            let [x, v] = t.advance(&inputs, eq);
+            let (xs, vs) = whole.value_slope(h);
+            assert!(
+                (x - xs).abs() < 1e-15 && (v - vs).abs() < 1e-15,
+                "{x} {xs} {v} {vs}"
+            );
+            let [sx, sv] = t.swing(&inputs);
+            for i in 0..=40 {
+                let (xi, vi) = whole.value_slope(h * i as f64 / 40.0);
+                assert!((xi - x0).abs() <= sx && (vi - v0).abs() <= sv);
+            }
+        }
+    }
+}
