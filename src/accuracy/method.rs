@@ -4,6 +4,7 @@ use serde::Serialize;
 
 use crate::model::Params;
 use crate::reference::{ReferenceOptions, reference};
+use crate::solver::exact::{self, ExactOptions};
 use crate::solver::{SolverOptions, simulate};
 
 /// One way of computing a run's four peaks.
@@ -16,6 +17,8 @@ pub enum Method {
     /// Located contact plus sub-steps inside contact so that Π_ωcon·h ≤ 0.005
     /// (the project default, [`SolverOptions::default`]).
     NewmarkSubstepped,
+    /// The exact (event-driven) method at this contact tolerance, peaks only.
+    Exact(f64),
     /// The adaptive DOPRI5 reference at this tolerance.
     Reference(f64),
 }
@@ -33,6 +36,7 @@ impl Method {
             Method::NewmarkPlain => "newmark-plain",
             Method::NewmarkLocated => "newmark-located",
             Method::NewmarkSubstepped => "newmark-substep",
+            Method::Exact(_) => "exact",
             Method::Reference(_) => "reference",
         }
     }
@@ -44,6 +48,16 @@ impl Method {
             Method::NewmarkPlain => newmark(SolverOptions::plain()),
             Method::NewmarkLocated => newmark(SolverOptions::located()),
             Method::NewmarkSubstepped => newmark(SolverOptions::default()),
+            Method::Exact(tol) => exact::simulate(
+                p,
+                &ExactOptions {
+                    energy: false,
+                    contact_tolerance: tol,
+                    ..ExactOptions::default()
+                },
+                &mut (),
+            )
+            .peaks(),
             Method::Reference(tol) => reference(p, &ReferenceOptions::with_tolerance(tol)).peaks,
         }
     }

@@ -15,6 +15,8 @@ use crate::reference::{ReferenceOptions, reference};
 
 /// Time steps of the Newmark rows, coarse to fine.
 pub const STEPS: [f64; 4] = [0.004, 0.002, 0.001, 0.0005];
+/// Contact tolerances of the exact rows, loose to tight.
+pub const EXACT_TOLERANCES: [f64; 3] = [1e-8, 1e-11, 1e-14];
 /// Tolerances of the reference rows, loose to tight.
 pub const TOLERANCES: [f64; 5] = [1e-7, 1e-8, 1e-9, 1e-10, 1e-11];
 /// The tolerance of the solution every error is measured against
@@ -71,6 +73,9 @@ pub fn rows(preset: &str, p: &Params) -> Vec<Row> {
             let error = row(method, &q, Some(dt), None, previous);
             previous = Some((dt, error));
         }
+    }
+    for tol in EXACT_TOLERANCES {
+        row(Method::Exact(tol), p, None, Some(tol), None);
     }
     for tol in TOLERANCES {
         row(Method::Reference(tol), p, None, Some(tol), None);

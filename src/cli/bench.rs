@@ -26,6 +26,9 @@ pub struct BenchArgs {
     /// Also draw error against time on log–log axes (Braille), one plot per preset and model.
     #[arg(long)]
     pub plot: bool,
+    /// Only this method's rows (newmark: its three schemes; exact) [default: every method].
+    #[arg(long, value_parser = ["newmark", "exact"])]
+    pub method: Option<String>,
 }
 
 pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
@@ -53,6 +56,13 @@ pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
                 ..preset.params
             };
             groups.push(rows(&preset.name, &p));
+        }
+    }
+    if let Some(m) = &args.method {
+        // The reference rows stay: they are the error axis.
+        let keep = |r: &Row| r.method == "reference" || r.method.starts_with(m.as_str());
+        for g in &mut groups {
+            g.retain(|r| keep(r));
         }
     }
     let all: Vec<&Row> = groups.iter().flatten().collect();
@@ -141,11 +151,12 @@ fn plot(group: &[Row]) -> String {
     let Some(first) = group.first() else {
         return String::new();
     };
-    let markers = ['P', 'L', 'S', 'R'];
+    let markers = ['P', 'L', 'S', 'E', 'R'];
     let methods = [
         "newmark-plain",
         "newmark-located",
         "newmark-substep",
+        "exact",
         "reference",
     ];
     let series: Vec<Series> = methods

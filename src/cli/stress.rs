@@ -79,13 +79,22 @@ fn table(outcomes: &[Outcome]) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "{:<44} {:<4} {:>7} {:>9} {:>7} {:>9} {:>10} {:>9}  why / notes",
-        "case", "", "impacts", "steps", "retries", "residual", "min force", "ms"
+        "{:<44} {:<4} {:>7} {:>9} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9}  why / notes",
+        "case",
+        "",
+        "impacts",
+        "steps",
+        "retries",
+        "residual",
+        "min force",
+        "ms",
+        "exact ms",
+        "N vs E"
     );
     for o in outcomes {
         let _ = writeln!(
             s,
-            "{:<44} {:<4} {:>7} {:>9} {:>7} {:>9.1e} {:>10.3e} {:>9.1}  {}",
+            "{:<44} {:<4} {:>7} {:>9} {:>7} {:>9.1e} {:>10.3e} {:>9.1} {:>9.3} {:>9.1e}  {}",
             o.name,
             if o.passed { "pass" } else { "FAIL" },
             o.impacts,
@@ -94,6 +103,8 @@ fn table(outcomes: &[Outcome]) -> String {
             o.energy_residual,
             o.min_force,
             o.ms,
+            o.exact_ms,
+            o.methods_differ_by,
             why(o)
         );
     }
@@ -120,6 +131,9 @@ fn csv(outcomes: &[Outcome]) -> String {
         "energy_residual",
         "min_force",
         "ms",
+        "exact_ms",
+        "exact_energy_residual",
+        "newmark_vs_exact",
         "why",
     ];
     let rows: Vec<Vec<String>> = outcomes
@@ -134,6 +148,9 @@ fn csv(outcomes: &[Outcome]) -> String {
                 num(o.energy_residual),
                 num(o.min_force),
                 num(o.ms),
+                num(o.exact_ms),
+                num(o.exact_energy_residual),
+                num(o.methods_differ_by),
                 why(o),
             ]
         })

@@ -7,7 +7,8 @@ use serde::Serialize;
 use super::cases::{AMPLITUDE_TOLERANCE, Case, Expect};
 use crate::model::ContactModel;
 use crate::reference::{ReferenceOptions, reference};
-use crate::solver::{RunResult, simulate};
+use crate::solver::exact::{self, ExactOptions};
+use crate::solver::{RunResult, relative_peak_error, simulate};
 
 /// Largest accepted energy residual |E_kin + E_damp + E_spring + E_contact − E_in| / max|E_in|.
 /// The work terms are the exact discrete work of each Newmark step, so the
@@ -21,6 +22,10 @@ pub const NO_TENSION_FROM: f64 = 0.4;
 /// How closely the solver's tension must match the reference's, relative to
 /// the peak force, to count as the model's own.
 pub const MODEL_TENSION_AGREEMENT: f64 = 0.02;
+/// Largest relative difference of the four peaks between Newmark (at its
+/// default scheme) and the exact method on a case both resolve. Newmark's
+/// own error reaches 3e-3 at grazing impacts; beyond this bound one of the two is wrong.
+pub const METHOD_AGREEMENT: f64 = 1e-2;
 
 /// The verdict on one case.
 #[derive(Debug, Clone, Serialize)]
@@ -39,6 +44,12 @@ pub struct Outcome {
     pub min_force: f64,
     pub max_force: f64,
     pub ms: f64,
+    /// The exact method on the same case: its impacts, energy residual and time.
+    pub exact_impacts: usize,
+    pub exact_energy_residual: f64,
+    pub exact_ms: f64,
+    /// Largest relative difference of the four peaks, Newmark against exact.
+    pub methods_differ_by: f64,
 }
 
 /// Resident set size of this process in bytes (Linux; None elsewhere).
@@ -57,6 +68,22 @@ pub fn check(case: &Case) -> Outcome {
     let ms = start.elapsed().as_secs_f64() * 1e3;
     let rss_after = resident_bytes();
     let mut failures = invariants(case, &r);
+    // The same case with the exact method: its own invariants, then agreement.
+    let start = Instant::now();
+    let x = exact::simulate(p, &ExactOptions::from(&case.options), &mut ());
+    let exact_ms = start.elapsed().as_secs_f64() * 1e3;
+    let exact_case = Case {
+        name: case.name.clone(),
+        params: *p,
+        options: case.options,
+        expect: case.expect,
+    };
+    failures.extend(
+        invariants(&exact_case, &x)
+            .into_iter()
+            .map(|f| format!("exact: {f}")),
+    );
+    let methods_differ_by = relative_peak_error(&r.peaks(), &x.peaks());
     let mut notes = Vec::new();
     if let Some(tension) = tension(case, &r) {
         match model_tension(case) {
@@ -79,6 +106,18 @@ pub fn check(case: &Case) -> Outcome {
     }
     if r.step_retries > 0 {
         notes.push(format!("{} steps retried smaller", r.step_retries));
+    }
+    // Newmark's period error is (ωΔτ)²/12: a Δτ beyond a tenth of a radian of
+    // the fastest structure is a deliberately coarse corner, compared but not judged.
+    let coarse = p.dt * p.omega1.max(p.omega2).max(1.0) > 0.1;
+    if case.expect == Expect::UnderResolved || p.coarse_dt_warning().is_some() || coarse {
+        notes.push(format!(
+            "Newmark differs from exact by {methods_differ_by:.1e}"
+        ));
+    } else if !(methods_differ_by <= METHOD_AGREEMENT) {
+        failures.push(format!(
+            "Newmark and exact differ by {methods_differ_by:.2e} > {METHOD_AGREEMENT:e}"
+        ));
     }
     if p.coarse_dt_warning().is_some() {
         let substeps = case.options.substeps(p);
@@ -136,6 +175,10 @@ pub fn check(case: &Case) -> Outcome {
         min_force: r.min_force,
         max_force: r.max_force,
         ms,
+        exact_impacts: x.impacts.len(),
+        exact_energy_residual: x.energy.residual,
+        exact_ms,
+        methods_differ_by,
     }
 }
 

@@ -47,7 +47,7 @@ const CONTACT_DEGREE: usize = 24;
 /// Size of each of the last two terms of a contact series, relative to the
 /// contact scale δ ~ v₀/Π_ωcon. The peaks then agree with the reference to
 /// about 3e-13 on the presets, as at 1e-16, at a third fewer contact segments.
-const CONTACT_TOLERANCE: f64 = 1e-14;
+pub const CONTACT_TOLERANCE: f64 = 1e-14;
 /// Events (onsets, separations, yields, unloadings) allowed per cycle of the
 /// run, beyond a fixed allowance: a physical run has a few per cycle.
 const EVENTS_PER_CYCLE: usize = 1_000;
@@ -68,6 +68,9 @@ pub struct ExactOptions {
     /// run stops with [`StopReason::EventCap`]; `None`: 10,000 plus 1,000
     /// per cycle, far above any physical run (a few per cycle).
     pub max_events: Option<usize>,
+    /// Size allowed to each of the last two terms of a contact series,
+    /// relative to the contact scale δ ~ v₀/Π_ωcon (the method's one knob).
+    pub contact_tolerance: f64,
 }
 
 impl Default for ExactOptions {
@@ -78,6 +81,7 @@ impl Default for ExactOptions {
             initial_velocity: [0.0; 2],
             energy: true,
             max_events: None,
+            contact_tolerance: CONTACT_TOLERANCE,
         }
     }
 }
@@ -90,6 +94,7 @@ impl From<&SolverOptions> for ExactOptions {
             initial_velocity: o.initial_velocity,
             energy: true,
             max_events: None,
+            contact_tolerance: CONTACT_TOLERANCE,
         }
     }
 }
@@ -389,7 +394,7 @@ impl<'a> Run<'a> {
             .abs()
             .max(self.p.min_impact_velocity)
             / self.p.contact_omega;
-        let h = step_for(&[&s.x[0], &s.x[1]], CONTACT_TOLERANCE * scale)
+        let h = step_for(&[&s.x[0], &s.x[1]], self.options.contact_tolerance * scale)
             .min(self.free_step)
             .min(reach);
         let mut segment = Segment::new(s.x, Some(s.force), h);
