@@ -14,8 +14,13 @@ use crate::tui::worker::{RunOutput, Slot};
 /// One run in one line.
 pub fn line(label: &str, run: &RunOutput) -> String {
     let r = &run.result;
+    // Newmark's actual error against the exact method; an exact run says so.
+    let accuracy = match run.error_vs_exact {
+        Some(e) => format!("err {e:.0e}"),
+        None => r.method.name().to_string(),
+    };
     format!(
-        "{label}: Π_u {}/{} Π_v {}/{} impacts {} f_p {}..{} res {:.0e} {:.1} ms",
+        "{label}: Π_u {}/{} Π_v {}/{} impacts {} f_p {}..{} {accuracy} res {:.0e} {:.1} ms",
         short(r.left.peak_displacement),
         short(r.right.peak_displacement),
         short(r.left.peak_velocity),
