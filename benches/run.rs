@@ -1,9 +1,11 @@
-//! One run of each built-in preset (both contact models), peaks only and with
-//! the full history, with the default solver options (issue 5, item 4).
+//! One run of each paper preset (both contact models), peaks only and with
+//! the full history, with Newmark's default options and with the exact
+//! method (peaks only: with and without its energy quadrature).
 //! `cargo bench --bench run`. The default spectrum is in `benches/spectrum.rs`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use pounding::model::{ContactModel, Params, SET1, SET2};
+use pounding::solver::exact::{self, ExactOptions};
 use pounding::solver::{FullHistory, SolverOptions, simulate};
 use std::hint::black_box;
 
@@ -15,6 +17,17 @@ fn runs(c: &mut Criterion) {
             let p = Params { model, ..base };
             group.bench_function(format!("{name}/{model}/peaks-only"), |b| {
                 b.iter(|| simulate(black_box(&p), &options, &mut ()))
+            });
+            let sweep = ExactOptions {
+                energy: false,
+                ..ExactOptions::default()
+            };
+            group.bench_function(format!("{name}/{model}/exact"), |b| {
+                b.iter(|| exact::simulate(black_box(&p), &sweep, &mut ()))
+            });
+            let with_energy = ExactOptions::default();
+            group.bench_function(format!("{name}/{model}/exact-with-energy"), |b| {
+                b.iter(|| exact::simulate(black_box(&p), &with_energy, &mut ()))
             });
             let steps = (p.tau_end() / p.dt) as usize + 1024;
             group.bench_function(format!("{name}/{model}/full-history"), |b| {

@@ -6,16 +6,19 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use pounding::analysis::baseline::BaselineCache;
 use pounding::analysis::grid::Grid;
 use pounding::analysis::sweep::{curve_specs, sweep};
-use pounding::model::SET1;
+use pounding::model::{Method, Params, SET1};
 
 fn default_spectrum(c: &mut Criterion) {
     let grid = Grid::default().values();
-    let specs = curve_specs(&SET1, SET1.mu(), None).unwrap();
     let mut group = c.benchmark_group("spectrum");
     group.sample_size(10);
-    group.bench_function("set1_default_291_points", |b| {
-        b.iter(|| sweep(&specs, &grid, &mut BaselineCache::new()))
-    });
+    for method in Method::ALL {
+        let p = Params { method, ..SET1 };
+        let specs = curve_specs(&p, p.mu(), None).unwrap();
+        group.bench_function(format!("set1_default_291_points/{method}"), |b| {
+            b.iter(|| sweep(&specs, &grid, &mut BaselineCache::new()))
+        });
+    }
     group.finish();
 }
 
