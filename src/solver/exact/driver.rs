@@ -624,13 +624,20 @@ pub struct Segment {
 impl Segment {
     fn new(x: [Series; 2], force: Option<Series>, h: f64) -> Self {
         let v = [x[0].derivative(), x[1].derivative()];
+        let n = x[0].degree.max(x[1].degree);
         let mut powers = [0.0; MAX_DEGREE + 1];
         let mut hk = 1.0;
-        for p in powers.iter_mut().skip(1) {
+        for p in powers[1..=n].iter_mut() {
             hk *= h;
             *p = hk;
         }
-        let swing = |q: &Series| -> f64 { (1..=q.degree).map(|k| q.c[k].abs() * powers[k]).sum() };
+        let swing = |q: &Series| -> f64 {
+            q.c[1..=q.degree]
+                .iter()
+                .zip(&powers[1..=q.degree])
+                .map(|(c, p)| c.abs() * p)
+                .sum()
+        };
         Segment {
             swing: [swing(&x[0]), swing(&x[1]), swing(&v[0]), swing(&v[1])],
             v,

@@ -199,6 +199,8 @@ pub fn contact_series(
     let mut x = [Series::default(), Series::default()];
     let mut force = Series::default();
     let mut delta = [0.0; MAX_DEGREE + 1];
+    // (k+1) δ_{k+1}: the coefficients of δ̇.
+    let mut rate = [0.0; MAX_DEGREE + 1];
     for i in 0..2 {
         x[i].degree = n;
         x[i].c[0] = x0[i];
@@ -206,15 +208,18 @@ pub fn contact_series(
     }
     delta[0] = x0[0] - x0[1] - gap;
     delta[1] = v0[0] - v0[1];
+    rate[0] = delta[1];
     let (kc, cc, hc) = (law.stiffness, law.linear_damping, law.hertz_damping);
     for j in 0..n.saturating_sub(1) {
         // f_j from δ_0 … δ_{j+1}.
-        let mut f = kc * delta[j] + cc * (j + 1) as f64 * delta[j + 1];
+        let mut f = kc * delta[j] + cc * rate[j];
         if hc != 0.0 {
-            let mut conv = 0.0;
-            for i in 0..=j {
-                conv += delta[i] * (j - i + 1) as f64 * delta[j - i + 1];
-            }
+            // Σ_{i=0}^{j} δ_i · (δ̇)_{j−i}: the Cauchy product of δ and δ̇.
+            let conv: f64 = delta[..=j]
+                .iter()
+                .zip(rate[..=j].iter().rev())
+                .map(|(a, b)| a * b)
+                .sum();
             f += hc * conv;
         }
         force.c[j] = f;
@@ -228,6 +233,7 @@ pub fn contact_series(
             xi.c[j + 2] = rhs * INV_PAIR[j];
         }
         delta[j + 2] = x[0].c[j + 2] - x[1].c[j + 2];
+        rate[j + 1] = NEXT[j + 1] * delta[j + 2];
     }
     force.degree = n.saturating_sub(2);
     ContactSeries { x, force }

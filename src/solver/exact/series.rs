@@ -10,7 +10,7 @@
 
 /// Largest degree kept. Series are truncated where their terms fall below
 /// round-off over the segment (see [`super::dynamics`]), well before this.
-pub const MAX_DEGREE: usize = 28;
+pub const MAX_DEGREE: usize = 24;
 
 /// C(k, 3) = k(k−1)(k−2)/6.
 const BINOMIAL_3: [f64; MAX_DEGREE + 1] = {
