@@ -1,5 +1,5 @@
 //! One run of each built-in preset (both contact models), peaks only and with
-//! the full history, with the default solver options (issue 5, item 4).
+//! the full history, and set 1 without pounding, with the default solver options.
 //! `cargo bench --bench run`. The default spectrum is in `benches/spectrum.rs`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -26,6 +26,14 @@ fn runs(c: &mut Criterion) {
             });
         }
     }
+    // No pounding (Π_d = ∞): every step but the last is the free phase's tight loop.
+    let free = Params {
+        gap: f64::INFINITY,
+        ..SET1
+    };
+    group.bench_function("set1/no-pounding/peaks-only", |b| {
+        b.iter(|| simulate(black_box(&free), &options, &mut ()))
+    });
     group.finish();
 }
 

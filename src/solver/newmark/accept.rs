@@ -11,12 +11,15 @@ use crate::solver::result::{Impact, StopReason};
 
 impl Driver<'_> {
     /// Accepts `next` as the state after `start`, in this order:
-    /// 1. a non-finite `next` stops the run at `start` instead;
-    /// 2. work integrals and peaks inside the step, over the step as taken
+    /// 1. the phase switch `event` is worked out: the new phase, and the
+    ///    state in it (at a located crossing the force may jump, x and ẋ do not);
+    /// 2. a non-finite state, before or after the switch, stops the run at
+    ///    `start` instead, with nothing of the step accounted;
+    /// 3. work integrals and peaks inside the step, over the step as taken
     ///    (before any force jump at its end);
-    /// 3. the phase switch `event`, which may open or close an impact;
-    /// 4. peaks, yielding and force extremes at the new state, and the observer;
-    /// 5. every [`POLL_EVERY`] steps, the checkpoint (cancel, step cap).
+    /// 4. the switch, which may open or close an impact;
+    /// 5. peaks, yielding and force extremes at the new state, and the observer;
+    /// 6. every [`POLL_EVERY`] steps, the checkpoint (cancel, step cap).
     ///
     /// Returns whether the run goes on.
     #[inline(always)]
@@ -27,36 +30,36 @@ impl Driver<'_> {
         next: &State,
         event: Event,
     ) -> bool {
-        if !is_finite(next) {
+        let mut state = *next;
+        let switch = match event {
+            Event::None => None,
+            Event::Onset { law, rephase, .. } => Some((Phase::Contact(law), rephase)),
+            Event::Separation { rephase } => Some((Phase::Free, rephase)),
+        };
+        if let Some((phase, true)) = switch {
+            self.system.rephase(&mut state, &phase);
+        }
+        if !(is_finite(next) && is_finite(&state)) {
             self.halt(StopReason::NonFinite);
             return false;
         }
         self.add_work(start, next);
         self.peaks_within(start, next);
-        self.state = *next;
-        // Only an onset can meet a cap here (the impact cap).
-        let mut going = true;
-        match event {
-            Event::None => {}
-            Event::Onset {
-                law,
-                approach_velocity,
-                rephase,
-            } => {
-                self.phase = Phase::Contact(law);
-                if rephase {
-                    self.system.rephase(&mut self.state, &self.phase);
-                }
-                going = self.open_impact(approach_velocity);
-            }
-            Event::Separation { rephase } => {
-                self.phase = Phase::Free;
-                if rephase {
-                    self.system.rephase(&mut self.state, &self.phase);
-                }
-                self.close_impact();
-            }
+        self.state = state;
+        if let Some((phase, _)) = switch {
+            self.phase = phase;
         }
+        // Only an onset can meet a cap here (the impact cap).
+        let going = match event {
+            Event::None => true,
+            Event::Onset {
+                approach_velocity, ..
+            } => self.open_impact(approach_velocity),
+            Event::Separation { .. } => {
+                self.close_impact();
+                true
+            }
+        };
         self.track();
         self.record(observer);
         self.result.steps += 1;
@@ -114,9 +117,9 @@ impl Driver<'_> {
         let g = 0.5 * (start.g + next.g);
         let e = &mut self.energy;
         e.input -= g * (sys.mass[0] * dx[0] + sys.mass[1] * dx[1]);
-        for i in 0..2 {
-            e.damping += sys.damping[i] * 0.5 * (start.v[i] + next.v[i]) * dx[i];
-            e.spring += 0.5 * (start.fs[i] + next.fs[i]) * dx[i];
+        for (i, dx) in dx.into_iter().enumerate() {
+            e.damping += sys.damping[i] * 0.5 * (start.v[i] + next.v[i]) * dx;
+            e.spring += 0.5 * (start.fs[i] + next.fs[i]) * dx;
         }
         e.contact += 0.5 * (start.fp + next.fp) * (dx[0] - dx[1]);
         e.max_input = e.max_input.max(e.input.abs());

@@ -39,8 +39,9 @@ impl Clock {
         }
     }
 
-    /// Whether the run has reached τ_end (up to the slack).
+    /// Whether the run has reached τ_end (up to the slack); a NaN τ has.
     #[inline]
+    #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "a NaN must compare false")]
     pub fn done(&self, tau: f64) -> bool {
         !(tau < self.tau_end - self.end_slack)
     }
@@ -83,6 +84,7 @@ pub struct Driver<'a> {
 
 impl<'a> Driver<'a> {
     /// The run at τ = 0, its initial state recorded.
+    #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "a NaN must compare false")]
     pub fn new<O: Observer>(p: &'a Params, options: &'a SolverOptions, observer: &mut O) -> Self {
         let substeps = options.substeps(p);
         let clock = Clock::new(p, substeps);

@@ -61,6 +61,7 @@ impl Driver<'_> {
     ///
     /// [`Clock::step_from`]: super::driver::Clock::step_from
     /// [`max_step_halvings`]: super::SolverOptions::max_step_halvings
+    #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "a NaN must compare false")]
     pub fn step<P: Policy, O: Observer>(&mut self, policy: &P, observer: &mut O, base: f64) {
         let max_halvings = self.options.max_step_halvings;
         let mut halvings = 0;
