@@ -1,6 +1,7 @@
 //! One run of each paper preset (both contact models), peaks only and with
 //! the full history, with Newmark's default options and with the exact
-//! method (peaks only: with and without its energy quadrature).
+//! method (peaks only: with and without its energy quadrature); and set 1
+//! without pounding.
 //! `cargo bench --bench run`. The default spectrum is in `benches/spectrum.rs`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -39,6 +40,14 @@ fn runs(c: &mut Criterion) {
             });
         }
     }
+    // No pounding (Π_d = ∞): every step but the last is the free phase's tight loop.
+    let free = Params {
+        gap: f64::INFINITY,
+        ..SET1
+    };
+    group.bench_function("set1/no-pounding/peaks-only", |b| {
+        b.iter(|| simulate(black_box(&free), &options, &mut ()))
+    });
     group.finish();
 }
 

@@ -5,9 +5,9 @@
 use crate::model::{Method, Params};
 
 use super::exact::{self, ExactOptions};
+use super::newmark::{SolverOptions, simulate};
 use super::observer::Observer;
 use super::result::RunResult;
-use super::simulate::{SolverOptions, simulate};
 
 /// Runs `p` (validated) with its own method, reporting to `observer`, with
 /// the energy balance of SPEC §6.

@@ -5,25 +5,22 @@
 //!
 //! - [`dispatch`]: [`solve`] and [`run`] pick the method a parameter set names;
 //! - [`exact`]: the event-driven method;
-//! - [`newmark`]: one step of the coupled 2-DOF system (exact branch solve out
-//!   of contact, Newton with the consistent tangent in contact);
-//! - [`events`]: locating contact onset and separation inside a step;
-//! - [`simulate`]: the run driver (steps, events, sub-steps in contact, energy);
+//! - [`newmark`]: the Newmark run: one step of the coupled 2-DOF system,
+//!   contact onset and separation located inside a step, and the driver
+//!   (a loop over free and contact phases, one accounting of every step);
 //! - [`observer`]: what gets recorded (nothing, a full history, a decimated one);
 //! - [`result`]: what a run reports (SPEC §6).
 
 pub mod dispatch;
-pub mod events;
 pub mod exact;
 pub mod newmark;
 pub mod observer;
 pub mod result;
-pub mod simulate;
 
 pub use crate::model::Method;
 pub use dispatch::{error_vs_exact, relative_peak_error, run, run_for_sweep, solve};
+pub use newmark::{ContactSubsteps, RunCaps, SolverOptions, simulate};
 pub use observer::{CsvHistory, Decimated, FullHistory, Observer, Sample};
 pub use result::{
     ENERGY_TOLERANCE, EnergyBalance, Impact, RunResult, Stop, StopReason, StructurePeaks,
 };
-pub use simulate::{ContactSubsteps, SolverOptions, simulate};

@@ -25,12 +25,12 @@ use crate::model::{ContactLaw, Excitation, Method, Params};
 
 use super::super::observer::{Observer, Sample};
 use super::super::result::{Impact, RunResult, Stop, StopReason};
-use super::super::simulate::SolverOptions;
 use super::dynamics::{Branch, Structure, contact_series, free_series, step_for};
 use super::energy::Work;
 use super::quiet::Transition;
 use super::roots::{fires_at_start, first_crossing};
 use super::series::{MAX_DEGREE, Series};
+use crate::solver::SolverOptions;
 
 /// Degree of the series out of contact.
 const FREE_DEGREE: usize = 20;

@@ -8,7 +8,7 @@
 //! onset, δ ≤ 0 for a separation), so the phase switch that follows is
 //! consistent with the sign of δ.
 
-use super::newmark::{Phase, State, System};
+use super::step::{Phase, State, System};
 
 /// Relative width of the final bracket, as a fraction of the step.
 const TIME_TOLERANCE: f64 = 1e-12;

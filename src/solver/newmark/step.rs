@@ -233,6 +233,7 @@ impl System {
     }
 
     /// Coupled step in contact: Newton–Raphson from the constant-acceleration predictor.
+    #[inline]
     fn contact_step(&self, s: &State, h: f64, law: &ContactLaw) -> (State, bool) {
         let phasor = self.excitation_after(s, h);
         let g = phasor[0];
