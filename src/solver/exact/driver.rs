@@ -726,11 +726,14 @@ fn bound_on(q: &Series, t1: f64) -> f64 {
 /// Raises `peak` to the maximum of |q| on (0, t1].
 fn raise_abs_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
     *peak = peak.max(q.c[0].abs());
-    if bound_on(q, t1) - q.c[0] + q.c[0].abs() <= *peak {
-        return;
+    // How far q can move on the segment; each sign is searched only if it can reach the peak.
+    let swing = bound_on(q, t1) - q.c[0];
+    if q.c[0] + swing > *peak {
+        raise_max(q, dq, t1, peak);
     }
-    raise_max(q, dq, t1, peak);
-    raise_max(&q.scaled(-1.0), &dq.scaled(-1.0), t1, peak);
+    if -q.c[0] + swing > *peak {
+        raise_max(&q.scaled(-1.0), &dq.scaled(-1.0), t1, peak);
+    }
 }
 
 const _: () = assert!(CONTACT_DEGREE <= MAX_DEGREE && FREE_DEGREE <= MAX_DEGREE);
