@@ -10,6 +10,7 @@
 //!   invariants each must keep;
 //! - [`random`]: a small seeded generator for the random cases.
 
+pub mod figure_spectra;
 pub mod method;
 pub mod plot;
 pub mod random;

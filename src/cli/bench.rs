@@ -26,12 +26,20 @@ pub struct BenchArgs {
     /// Also draw error against time on log–log axes (Braille), one plot per preset and model.
     #[arg(long)]
     pub plot: bool,
+    /// Instead of the table: every point of the ten curves of Figures 7–10
+    /// (5,820 runs) with each method against the reference, and the wall time
+    /// of the ten curves as `pounding spectrum` computes them. Takes a minute.
+    #[arg(long)]
+    pub spectra: bool,
     /// Only this method's rows (newmark: its three schemes; exact) [default: every method].
     #[arg(long, value_parser = ["newmark", "exact"])]
     pub method: Option<String>,
 }
 
 pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
+    if args.spectra {
+        return spectra(args);
+    }
     let names = if args.preset.is_empty() {
         vec!["set1".to_string(), "set2".to_string()]
     } else {
@@ -77,6 +85,58 @@ pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
             text += &plot(group);
         }
     }
+    super::output::print(&text)?;
+    Ok(())
+}
+
+/// The accuracy and the wall time of the paper's ten spectrum curves, per method.
+fn spectra(args: &BenchArgs) -> Result<(), CliError> {
+    use crate::accuracy::figure_spectra::{REFERENCE_TOLERANCE, measure, time_all_curves};
+    use crate::model::Method;
+    let methods: Vec<Method> = match &args.method {
+        Some(m) => vec![m.parse().map_err(CliError::Usage)?],
+        None => Method::ALL.to_vec(),
+    };
+    let mut rows = Vec::new();
+    for method in methods {
+        // Median of three timings; the accuracy pass once.
+        let mut times: Vec<f64> = (0..3).map(|_| time_all_curves(method)).collect();
+        times.sort_by(f64::total_cmp);
+        let accuracy = measure(method);
+        rows.push((accuracy, times[1]));
+    }
+    let text = match args.format {
+        Format::Json => {
+            let list: Vec<_> = rows
+                .iter()
+                .map(|(a, t)| serde_json::json!({ "accuracy": a, "wall_s_ten_curves": t }))
+                .collect();
+            serde_json::json!({ "reference_tolerance": REFERENCE_TOLERANCE, "methods": list })
+                .to_string()
+                + "\n"
+        }
+        Format::Csv | Format::Table => {
+            let mut s = format!(
+                "Figures 7–10, ten curves, with and without pounding, against the reference at tol {REFERENCE_TOLERANCE:e}\n\
+                 {:<8} {:>6} {:>13} {:>9} {:>10} {:>12}  worst point\n",
+                "method", "runs", "max rel err", "> 1e-7", "count diff", "wall s (10)"
+            );
+            for (a, t) in &rows {
+                let _ = writeln!(
+                    s,
+                    "{:<8} {:>6} {:>13.3e} {:>9} {:>10} {:>12.3}  {}",
+                    a.method,
+                    a.runs,
+                    a.max_rel_error,
+                    a.above_1e_7,
+                    a.impact_count_mismatches,
+                    t,
+                    a.worst
+                );
+            }
+            s
+        }
+    };
     super::output::print(&text)?;
     Ok(())
 }
