@@ -93,7 +93,10 @@ impl ParamArgs {
             p.gap = f64::INFINITY;
         }
         p.validate()?;
-        if let Some(w) = p.coarse_dt_warning().filter(|_| p.method == crate::model::Method::Newmark) {
+        if let Some(w) = p
+            .coarse_dt_warning()
+            .filter(|_| p.method == crate::model::Method::Newmark)
+        {
             eprintln!("{w}");
         }
         Ok((preset, p))

@@ -223,6 +223,7 @@ fn json(
         "omega_p": physical.omega_p,
         "mu": mu,
         "levels": level_json,
+        "method": levels.first().map(|l| l.params.method.name()),
         "master": levels.first().map(|l| &l.curve.points),
         "master_curve_spread": spread,
         "elapsed_ms": elapsed_ms,
@@ -234,7 +235,7 @@ fn csv(levels: &[Level]) -> String {
         "ap_m_s2,omega1,omega1_rad_s,left_peak_displacement_m,left_peak_velocity_m_s,right_peak_displacement_m,\
          right_peak_velocity_m_s,free_left_peak_displacement_m,free_left_peak_velocity_m_s,\
          free_right_peak_displacement_m,free_right_peak_velocity_m_s,left_pi_u,left_pi_v,right_pi_u,right_pi_v,\
-         free_left_pi_u,free_left_pi_v,free_right_pi_u,free_right_pi_v,impacts,region\n",
+         free_left_pi_u,free_left_pi_v,free_right_pi_u,free_right_pi_v,impacts,region,method\n",
     );
     for l in levels {
         let (lx, lv) = (l.length_scale(), l.velocity_scale());
@@ -253,7 +254,7 @@ fn csv(levels: &[Level]) -> String {
             for v in pi {
                 let _ = write!(s, ",{v}");
             }
-            let _ = writeln!(s, ",{},{}", p.impacts, p.region.name());
+            let _ = writeln!(s, ",{},{},{}", p.impacts, p.region.name(), l.params.method);
         }
     }
     s
@@ -271,12 +272,13 @@ fn table(
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "{name}: m1 = {} kg, m2 = {} kg, T1 = {:.3} s, T2 = {:.3} s, ω_p = {:.4} rad/s, μ = {mu:.4}",
+        "{name}: m1 = {} kg, m2 = {} kg, T1 = {:.3} s, T2 = {:.3} s, ω_p = {:.4} rad/s, μ = {mu:.4}, {} method",
         physical.mass[0],
         physical.mass[1],
         2.0 * std::f64::consts::PI / physical.omega[0],
         2.0 * std::f64::consts::PI / physical.omega[1],
-        physical.omega_p
+        physical.omega_p,
+        levels.first().map_or("-", |l| l.params.method.name())
     );
     let _ = writeln!(
         s,

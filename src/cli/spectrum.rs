@@ -208,6 +208,7 @@ pub fn json(
         "params": params_json(&plan.params),
         "mu": plan.mu,
         "model": plan.params.model.name(),
+        "method": plan.params.method.name(),
         "omega1_grid": plan.grid.to_string(),
         "curves": curves,
         "baseline_runs": cache.runs,
@@ -226,7 +227,7 @@ pub fn csv(plan: &SpectrumPlan, curves: &[Curve]) -> String {
     s.push_str(
         "mu,omega1,omega2,left_peak_displacement,left_peak_velocity,right_peak_displacement,right_peak_velocity,\
          free_left_peak_displacement,free_left_peak_velocity,free_right_peak_displacement,free_right_peak_velocity,\
-         impacts,region\n",
+         impacts,region,method\n",
     );
     for c in curves {
         for p in &c.points {
@@ -236,13 +237,14 @@ pub fn csv(plan: &SpectrumPlan, curves: &[Curve]) -> String {
             let peaks: Vec<String> = p.peaks().iter().map(|v| v.to_string()).collect();
             let _ = writeln!(
                 s,
-                "{},{},{},{},{},{}",
+                "{},{},{},{},{},{},{}",
                 c.spec.mu,
                 p.omega1,
                 p.omega2,
                 peaks.join(","),
                 p.impacts,
-                p.region.name()
+                p.region.name(),
+                plan.params.method
             );
         }
     }
@@ -254,11 +256,12 @@ fn table(plan: &SpectrumPlan, curves: &[Curve], cache: &BaselineCache, elapsed_m
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "{}: spectrum over Π_ω1 = {} ({} points), {} contact, Π_m = {}, Π_d = {}",
+        "{}: spectrum over Π_ω1 = {} ({} points), {} contact, {} method, Π_m = {}, Π_d = {}",
         plan.preset.name,
         plan.grid,
         plan.grid.len(),
         p.model,
+        p.method,
         num(p.mass_ratio),
         num(p.gap)
     );
