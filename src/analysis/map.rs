@@ -7,7 +7,8 @@
 //!
 //! An axis is any Π key of the parameter table or `mu` = Π_ω2/Π_ω1. As in a
 //! spectrum, Π_ω2 follows Π_ω1 at the frequency ratio μ (the base set's,
-//! unless `mu` is an axis); only an `omega2` axis sets Π_ω2 itself.
+//! unless `mu` is an axis); an `omega2` axis sets Π_ω2 itself, and with
+//! neither axis a frequency Π_ω2 keeps the base's value.
 //!
 //! The cells are computed as the spectrum engine computes points (see
 //! [`super::sweep`]): the pounding runs in parallel, then the baselines
@@ -161,6 +162,47 @@ fn set_number(p: &mut Params, key: &str, v: f64) {
     }
 }
 
+/// `base` with each axis key set to its value. Where Π_ω1 or μ is an axis,
+/// Π_ω2 = μ Π_ω1 (μ = `mu` unless it is an axis); an `omega2` axis sets Π_ω2
+/// itself, and otherwise Π_ω2 keeps the base's value, bit for bit.
+pub fn set_axes(base: &Params, mu: f64, values: &[(&str, f64)]) -> Params {
+    let mut p = *base;
+    let mut mu = mu;
+    let mut follows = false;
+    for &(key, v) in values {
+        match key {
+            MU => {
+                mu = v;
+                follows = true;
+            }
+            "omega1" => {
+                p.omega1 = v;
+                follows = true;
+            }
+            _ => set_number(&mut p, key, v),
+        }
+    }
+    if follows && !values.iter().any(|(k, _)| *k == "omega2") {
+        p.omega2 = mu * p.omega1;
+    }
+    p
+}
+
+/// The parameter sets along one axis from `base` (Π_ω2 = μ Π_ω1 at the
+/// base's μ, as in a map), each validated as a whole.
+pub fn line(base: &Params, axis: &Axis) -> Result<Vec<(f64, Params)>, MapError> {
+    let mu = base.mu();
+    axis.values()
+        .into_iter()
+        .map(|v| {
+            let p = set_axes(base, mu, &[(axis.key, v)]);
+            p.validate().map(|()| (v, p)).map_err(|e: ParamError| {
+                MapError(format!("at {} = {}: {e}", axis.key, echo::number(v)))
+            })
+        })
+        .collect()
+}
+
 /// What a map is asked for: the base parameters, the base frequency ratio
 /// and the two axes.
 #[derive(Debug, Clone, PartialEq)]
@@ -203,8 +245,8 @@ impl MapPlan {
             y,
         };
         if !(plan.mu.is_finite() && plan.mu > 0.0)
+            && keys.contains(&"omega1")
             && !keys.contains(&MU)
-            && !keys.contains(&"omega2")
         {
             return Err(MapError(format!(
                 "omega2/omega1 = {}/{}: the frequency ratio must be finite and > 0; use a mu axis",
@@ -228,21 +270,9 @@ impl MapPlan {
         Ok(plan)
     }
 
-    /// The parameters of the cell (x, y): each axis key set to its value,
-    /// then Π_ω2 = μ Π_ω1 unless `omega2` is an axis.
+    /// The parameters of the cell (x, y).
     pub fn at(&self, x: f64, y: f64) -> Params {
-        let mut p = self.base;
-        let mut mu = self.mu;
-        let mut omega2 = None;
-        for (key, v) in [(self.x.key, x), (self.y.key, y)] {
-            match key {
-                MU => mu = v,
-                "omega2" => omega2 = Some(v),
-                _ => set_number(&mut p, key, v),
-            }
-        }
-        p.omega2 = omega2.unwrap_or(mu * p.omega1);
-        p
+        set_axes(&self.base, self.mu, &[(self.x.key, x), (self.y.key, y)])
     }
 
     /// Number of cells.
@@ -446,6 +476,14 @@ mod tests {
         let plan = MapPlan::new(SET1, x, y).unwrap();
         let p = plan.at(1.0, 0.1);
         assert_eq!((p.omega2, p.gap), (SET1.mu(), 0.1));
+        // Neither frequency an axis: Π_ω2 is the base's, bit for bit.
+        let gap = Axis::parse("--x", "gap=0.1:0.2:0.1").unwrap();
+        let e = Axis::parse("--y", "restitution=0.5:0.6:0.1").unwrap();
+        let p = MapPlan::new(SET1, gap, e).unwrap().at(0.2, 0.6);
+        assert_eq!(
+            (p.omega1, p.omega2, p.gap, p.restitution),
+            (1.05, 2.36, 0.2, 0.6)
+        );
         let bad = MapPlan::new(SET1, x, x).unwrap_err().to_string();
         assert!(bad.contains("different keys"), "{bad}");
     }

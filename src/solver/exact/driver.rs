@@ -343,10 +343,9 @@ impl<'a> Run<'a> {
             swing_x[i] = sx;
             next[i] = t.advance(&inputs, equilibrium);
         }
-        let relative = self.x[0] - self.x[1] + swing_x[0] + swing_x[1];
-        if (self.p.gap.is_finite() && !(relative - self.p.gap < 0.0))
-            || !(relative < self.max_relative_displacement)
-        {
+        // x1 − x2 must stay below the gap (no onset) and its running maximum (SPEC §11).
+        let ceiling = self.p.gap.min(self.max_relative_displacement);
+        if !(self.x[0] - self.x[1] + swing_x[0] + swing_x[1] < ceiling) {
             return false;
         }
         for i in 0..2 {
