@@ -21,6 +21,7 @@ const EXACT_SET1: Params = Params {
 fn plan(x: &str, y: &str) -> MapPlan {
     MapPlan::new(
         EXACT_SET1,
+        EXACT_SET1.mu(),
         Axis::parse("--x", x).unwrap(),
         Axis::parse("--y", y).unwrap(),
     )

@@ -188,10 +188,9 @@ pub fn set_axes(base: &Params, mu: f64, values: &[(&str, f64)]) -> Params {
     p
 }
 
-/// The parameter sets along one axis from `base` (Π_ω2 = μ Π_ω1 at the
-/// base's μ, as in a map), each validated as a whole.
-pub fn line(base: &Params, axis: &Axis) -> Result<Vec<(f64, Params)>, MapError> {
-    let mu = base.mu();
+/// The parameter sets along one axis from `base` (Π_ω2 = μ Π_ω1 where
+/// Π_ω1 is the axis, as in a map), each validated as a whole.
+pub fn line(base: &Params, mu: f64, axis: &Axis) -> Result<Vec<(f64, Params)>, MapError> {
     axis.values()
         .into_iter()
         .map(|v| {
@@ -203,8 +202,8 @@ pub fn line(base: &Params, axis: &Axis) -> Result<Vec<(f64, Params)>, MapError> 
         .collect()
 }
 
-/// What a map is asked for: the base parameters, the base frequency ratio
-/// and the two axes.
+/// What a map is asked for: the base parameters, the frequency ratio μ
+/// (Π_ω2 = μ Π_ω1 where Π_ω1 is an axis and μ is not) and the two axes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MapPlan {
     pub base: Params,
@@ -217,7 +216,7 @@ pub struct MapPlan {
 impl MapPlan {
     /// Checks the axes against each other and every cell's parameters
     /// (validated as a whole, so Δτ resolves the highest frequency).
-    pub fn new(base: Params, x: Axis, y: Axis) -> Result<MapPlan, MapError> {
+    pub fn new(base: Params, mu: f64, x: Axis, y: Axis) -> Result<MapPlan, MapError> {
         if x.key == y.key {
             return Err(MapError(format!(
                 "--x {x} and --y {y}: the two axes must be different keys"
@@ -238,21 +237,10 @@ impl MapPlan {
                 y.len()
             )));
         }
-        let plan = MapPlan {
-            base,
-            mu: base.mu(),
-            x,
-            y,
-        };
-        if !(plan.mu.is_finite() && plan.mu > 0.0)
-            && keys.contains(&"omega1")
-            && !keys.contains(&MU)
-        {
-            return Err(MapError(format!(
-                "omega2/omega1 = {}/{}: the frequency ratio must be finite and > 0; use a mu axis",
-                echo::number(base.omega2),
-                echo::number(base.omega1)
-            )));
+        let plan = MapPlan { base, mu, x, y };
+        if keys.contains(&"omega1") && !keys.contains(&MU) {
+            check_value(MU, mu)
+                .map_err(|allowed| MapError(format!("mu = {}: {allowed}", echo::number(mu))))?;
         }
         for yv in y.values() {
             for xv in x.values() {
@@ -468,23 +456,23 @@ mod tests {
     fn cells_follow_mu() {
         let x = Axis::parse("--x", "omega1=0.5:1:0.5").unwrap();
         let y = Axis::parse("--y", "mu=2:3:1").unwrap();
-        let plan = MapPlan::new(SET1, x, y).unwrap();
+        let plan = MapPlan::new(SET1, SET1.mu(), x, y).unwrap();
         let p = plan.at(0.5, 3.0);
         assert_eq!((p.omega1, p.omega2), (0.5, 1.5));
         // Without a mu axis, the base set's μ holds.
         let y = Axis::parse("--y", "gap=0.1:0.2:0.1").unwrap();
-        let plan = MapPlan::new(SET1, x, y).unwrap();
+        let plan = MapPlan::new(SET1, SET1.mu(), x, y).unwrap();
         let p = plan.at(1.0, 0.1);
         assert_eq!((p.omega2, p.gap), (SET1.mu(), 0.1));
         // Neither frequency an axis: Π_ω2 is the base's, bit for bit.
         let gap = Axis::parse("--x", "gap=0.1:0.2:0.1").unwrap();
         let e = Axis::parse("--y", "restitution=0.5:0.6:0.1").unwrap();
-        let p = MapPlan::new(SET1, gap, e).unwrap().at(0.2, 0.6);
+        let p = MapPlan::new(SET1, SET1.mu(), gap, e).unwrap().at(0.2, 0.6);
         assert_eq!(
             (p.omega1, p.omega2, p.gap, p.restitution),
             (1.05, 2.36, 0.2, 0.6)
         );
-        let bad = MapPlan::new(SET1, x, x).unwrap_err().to_string();
+        let bad = MapPlan::new(SET1, SET1.mu(), x, x).unwrap_err().to_string();
         assert!(bad.contains("different keys"), "{bad}");
     }
 }

@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
-use super::map::{AxisReport, param_cells, param_columns};
+use super::map::{AxisReport, param_cells, param_columns, resolve_mu};
 use super::output::{Format, num, print, render};
 use super::params::ParamArgs;
 use super::progress::Progress;
@@ -27,6 +27,9 @@ pub struct GapArgs {
     /// Sweep one parameter, e.g. omega1=0.1:3.0:0.01 (Π_ω2 follows at the preset's μ) or mu=1:10:0.5.
     #[arg(long, value_name = "KEY=START:STOP:STEP", allow_hyphen_values = true)]
     pub x: Option<String>,
+    /// Frequency ratio μ, Π_ω2 = μ Π_ω1 on an omega1 axis [default: the preset's, else omega2/omega1].
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub mu: Option<String>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
@@ -45,9 +48,13 @@ pub fn execute(args: &GapArgs) -> Result<(), CliError> {
         .map(|t| Axis::parse("--x", t))
         .transpose()
         .map_err(|e| CliError::Usage(e.to_string()))?;
-    let points: Vec<(f64, Params)> = match &axis {
-        Some(a) => line(&p, a).map_err(|e| CliError::Usage(e.to_string()))?,
-        None => vec![(f64::NAN, p)],
+    let mu = match &axis {
+        Some(_) => Some(resolve_mu(&preset, &p, args.mu.as_deref())?),
+        None => None,
+    };
+    let points: Vec<(f64, Params)> = match (&axis, mu) {
+        (Some(a), Some(mu)) => line(&p, mu, a).map_err(|e| CliError::Usage(e.to_string()))?,
+        _ => vec![(f64::NAN, p)],
     };
     let work = Work {
         steps: points.len() as f64 * run_steps(&p),
@@ -62,7 +69,8 @@ pub fn execute(args: &GapArgs) -> Result<(), CliError> {
     };
     let elapsed_ms = t.elapsed().as_secs_f64() * 1e3;
     drop(progress);
-    let report = GapReport::new(&preset.name, &p, axis.as_ref(), &points, &gaps, elapsed_ms);
+    let mut report = GapReport::new(&preset.name, &p, axis.as_ref(), &points, &gaps, elapsed_ms);
+    report.mu = mu;
     print(&render(&report, args.format)?)?;
     match gaps.iter().find(|g| !g.completed) {
         Some(g) => Err(CliError::Failed(format!(
@@ -105,6 +113,9 @@ pub struct GapReport<'a> {
     method: Method,
     #[serde(skip_serializing_if = "Option::is_none")]
     x: Option<AxisReport>,
+    /// μ of a sweep: Π_ω2 = μ Π_ω1 where Π_ω1 is the axis.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mu: Option<f64>,
     points: Vec<GapPoint>,
     elapsed_ms: f64,
 }
@@ -141,6 +152,7 @@ impl<'a> GapReport<'a> {
             params: p,
             method: free_params(p).method,
             x: axis.map(AxisReport::of),
+            mu: None,
             points,
             elapsed_ms,
         }
@@ -198,8 +210,16 @@ impl<'a> GapReport<'a> {
     fn table_sweep(&self, s: &mut String, axis: &AxisReport) {
         let _ = writeln!(
             s,
-            "{}: the gap that prevents pounding over {} = {} ({} points; exact method, no-pounding runs)",
-            self.preset, axis.symbol, axis.grid, axis.points
+            "{}: the gap that prevents pounding over {} = {} ({} points; exact method, \
+             no-pounding runs){}",
+            self.preset,
+            axis.symbol,
+            axis.grid,
+            axis.points,
+            match (axis.key, self.mu) {
+                ("omega1", Some(mu)) => format!(", Π_ω2 = μ Π_ω1 with μ = {}", num(mu)),
+                _ => String::new(),
+            }
         );
         let _ = writeln!(
             s,

@@ -16,8 +16,9 @@ use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::map::{Axis, MapCache, MapCell, MapPlan, compute_rows, row_regions};
 use crate::analysis::spectrum::{REGION_THRESHOLD, Region};
+use crate::analysis::spectrum_spec::{SpectrumSpec, mu_from_text};
 use crate::model::params::{FIELDS, echo};
-use crate::model::{Method, Params};
+use crate::model::{Method, Params, Preset};
 use crate::output::report::Report;
 
 #[derive(Debug, Clone, Default, Args)]
@@ -30,6 +31,9 @@ pub struct MapArgs {
     /// The vertical axis, e.g. mu=1:10:0.1 or gap=0.1:2:0.05.
     #[arg(long, value_name = "KEY=START:STOP:STEP", allow_hyphen_values = true)]
     pub y: String,
+    /// Frequency ratio μ, Π_ω2 = μ Π_ω1 on an omega1 axis [default: the preset's, else omega2/omega1].
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub mu: Option<String>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
@@ -43,7 +47,8 @@ pub fn execute(args: &MapArgs) -> Result<(), CliError> {
     let usage = |e: crate::analysis::map::MapError| CliError::Usage(e.to_string());
     let x = Axis::parse("--x", &args.x).map_err(usage)?;
     let y = Axis::parse("--y", &args.y).map_err(usage)?;
-    let plan = MapPlan::new(p, x, y).map_err(usage)?;
+    let mu = resolve_mu(&preset, &p, args.mu.as_deref())?;
+    let plan = MapPlan::new(p, mu, x, y).map_err(usage)?;
     let work = Work {
         steps: 2.0 * plan.cells() as f64 * run_steps(&p),
         rows: 0.0,
@@ -56,6 +61,20 @@ pub fn execute(args: &MapArgs) -> Result<(), CliError> {
     drop(progress);
     let report = MapReport::new(&preset.name, &plan, &cells, &cache, elapsed_ms);
     print(&render(&report, args.format)?)
+}
+
+/// μ as a spectrum takes it: `--mu`, else the preset's `[spectrum]` μ,
+/// else Π_ω2/Π_ω1 of the parameters.
+pub(super) fn resolve_mu(preset: &Preset, p: &Params, text: Option<&str>) -> Result<f64, CliError> {
+    if let Some(text) = text {
+        return mu_from_text(text).map_err(|e| CliError::Usage(format!("--mu: {e}")));
+    }
+    let spec = match &preset.spectrum {
+        Some(t) => SpectrumSpec::from_table(t)
+            .map_err(|e| CliError::Usage(format!("{}: {e}", preset.name)))?,
+        None => SpectrumSpec::default(),
+    };
+    Ok(spec.mu.unwrap_or(p.mu()))
 }
 
 /// The map, row slice after row slice when a bar is shown (each cell
