@@ -342,7 +342,7 @@ mod tests {
         let text = csv(&report.csv_header(), &report.csv_rows());
         let last = text.lines().nth(1).unwrap();
         assert!(
-            last.ends_with(",newmark,false,energy residual 5.000e-1 exceeds 1e-4"),
+            last.ends_with(",newmark,,false,energy residual 5.000e-1 exceeds 1e-4"),
             "{last}"
         );
         assert!(
