@@ -44,6 +44,8 @@ impl BaselineKey {
 pub struct FreePeaks {
     pub left: StructurePeaks,
     pub right: StructurePeaks,
+    /// max over τ of x1 − x2 (exact method only; SPEC §11).
+    pub max_relative_displacement: Option<f64>,
 }
 
 impl FreePeaks {
@@ -51,6 +53,7 @@ impl FreePeaks {
         FreePeaks {
             left: r.left,
             right: r.right,
+            max_relative_displacement: r.max_relative_displacement,
         }
     }
 
@@ -59,6 +62,7 @@ impl FreePeaks {
         RunResult {
             left: self.left,
             right: self.right,
+            max_relative_displacement: self.max_relative_displacement,
             completed: true,
             ..RunResult::default()
         }

@@ -7,10 +7,14 @@
 //!   preset's `[spectrum]` table is checked when the preset is read);
 //! - [`baseline`]: the no-pounding baseline and its cache;
 //! - [`sweep`]: the engine that computes every curve in parallel;
+//! - [`map`]: region maps over two parameters (any Π key or μ);
+//! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
 //! - [`physical`]: physical units to Π-groups and back (SPEC §8);
 //! - [`similarity`]: spectra at several excitation levels and their master curve.
 
 pub mod baseline;
+pub mod gap;
+pub mod map;
 pub mod similarity;
 pub mod spectrum;
 pub mod sweep;

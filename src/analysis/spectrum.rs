@@ -119,7 +119,8 @@ pub fn point(p: &Params, omega1: f64, mu: f64) -> SpectrumPoint {
     combine(&q, &with, &without)
 }
 
-/// A run of consecutive grid points in the same region: Π_ω1 from `from` to `to`.
+/// A run of consecutive grid points in the same region: the swept value
+/// (Π_ω1 in a spectrum) from `from` to `to`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct RegionRange {
     pub region: Region,
@@ -132,17 +133,23 @@ pub struct RegionRange {
 /// The left structure's regions along a curve, as maximal runs of
 /// consecutive points (SPEC §7).
 pub fn region_ranges(points: &[SpectrumPoint]) -> Vec<RegionRange> {
+    region_runs(points.iter().map(|p| (p.omega1, p.region)))
+}
+
+/// Maximal runs of consecutive equal regions along any swept value
+/// (`(value, region)` in grid order): a spectrum, or one row of a map.
+pub fn region_runs(points: impl IntoIterator<Item = (f64, Region)>) -> Vec<RegionRange> {
     let mut ranges: Vec<RegionRange> = Vec::new();
-    for pt in points {
+    for (value, region) in points {
         match ranges.last_mut() {
-            Some(r) if r.region == pt.region => {
-                r.to = pt.omega1;
+            Some(r) if r.region == region => {
+                r.to = value;
                 r.points += 1;
             }
             _ => ranges.push(RegionRange {
-                region: pt.region,
-                from: pt.omega1,
-                to: pt.omega1,
+                region,
+                from: value,
+                to: value,
                 points: 1,
             }),
         }

@@ -13,6 +13,8 @@
 pub mod bench;
 pub mod budget;
 pub mod figure;
+pub mod gap;
+pub mod map;
 pub mod output;
 pub mod params;
 pub mod progress;
@@ -89,6 +91,10 @@ pub enum Command {
     Run(run::RunArgs),
     /// Response spectra: peak response against Π_ω1 with and without pounding (SPEC §7).
     Spectrum(spectrum::SpectrumArgs),
+    /// Region map of the left structure over two parameters (any Π key or mu), SPEC §7.
+    Map(map::MapArgs),
+    /// The smallest gap that prevents pounding, beside the code rules ABS, SRSS, DDC (SPEC §11).
+    Gap(gap::GapArgs),
     /// Physical units in and out, and the self-similarity of SPEC §8.
     Similarity(similarity::SimilarityArgs),
     /// Open the terminal explorer (the default without a command).
@@ -125,6 +131,8 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
     let outcome = match cli.command {
         Some(Command::Run(args)) => run::execute(&args),
         Some(Command::Spectrum(args)) => spectrum::execute(&args),
+        Some(Command::Map(args)) => map::execute(&args),
+        Some(Command::Gap(args)) => gap::execute(&args),
         Some(Command::Similarity(args)) => similarity::execute(&args),
         Some(Command::Tui(args)) => tui::execute(&args),
         Some(Command::Bench(args)) => bench::execute(&args),

@@ -66,6 +66,11 @@ pub struct RunResult {
     pub max_force: f64,
     /// Smallest pounding force: below 0 means the element pulled (tension).
     pub min_force: f64,
+    /// max over τ of x1 − x2, the left structure's largest excursion towards
+    /// the right one. In a run without contact the smallest gap that
+    /// prevents pounding is Π_d,min = max(0, this) (SPEC §11). Tracked on
+    /// the motion's own series by the exact method; `None` from Newmark.
+    pub max_relative_displacement: Option<f64>,
     pub energy: EnergyBalance,
     /// τ reached (τ_end unless stopped early).
     pub tau_end: f64,

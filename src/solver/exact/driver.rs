@@ -141,6 +141,8 @@ struct Run<'a> {
     max_events: usize,
     max_segments: usize,
     work: Work,
+    /// max over τ of x1 − x2 so far (SPEC §11).
+    max_relative_displacement: f64,
     /// Unit responses over one free segment, per structure and branch kind
     /// (elastic, yielded); `None` where the excitation is not a sine.
     transitions: Option<[[Transition; 2]; 2]>,
@@ -179,6 +181,7 @@ impl<'a> Run<'a> {
             // Free segments needed, times a margin for events and contact segments.
             max_segments: 1_000_000 + (100.0 * tau_end / free_step).min(1e9) as usize,
             work: Work::default(),
+            max_relative_displacement: x1 - x2,
             transitions: matches!(options.excitation, Excitation::Sine | Excitation::None).then(
                 || {
                     structures.map(|s| {
@@ -340,9 +343,9 @@ impl<'a> Run<'a> {
             swing_x[i] = sx;
             next[i] = t.advance(&inputs, equilibrium);
         }
-        if self.p.gap.is_finite()
-            && !(self.x[0] - self.x[1] - self.p.gap + swing_x[0] + swing_x[1] < 0.0)
-        {
+        // x1 − x2 must stay below the gap (no onset) and its running maximum (SPEC §11).
+        let ceiling = self.p.gap.min(self.max_relative_displacement);
+        if !(self.x[0] - self.x[1] + swing_x[0] + swing_x[1] < ceiling) {
             return false;
         }
         for i in 0..2 {
@@ -446,6 +449,19 @@ impl<'a> Run<'a> {
                 let a = segment.v[i].derivative();
                 raise_abs_max(&segment.v[i], &a, length, &mut peaks.peak_velocity);
             }
+        }
+        // x1 − x2 can rise above its running maximum only where its bound does.
+        if self.x[0] - self.x[1] + segment.swing[0] + segment.swing[1]
+            > self.max_relative_displacement
+        {
+            let relative = segment.x[0].minus(&segment.x[1]);
+            let rate = relative.derivative();
+            raise_max(
+                &relative,
+                &rate,
+                length,
+                &mut self.max_relative_displacement,
+            );
         }
         if let (Some(force), Some(k)) = (&segment.force, self.open_impact) {
             let delta = segment.x[0].minus(&segment.x[1]).shifted(self.p.gap);
@@ -603,6 +619,7 @@ impl<'a> Run<'a> {
         }
         self.result.tau_end = self.tau;
         self.result.steps = self.segments;
+        self.result.max_relative_displacement = Some(self.max_relative_displacement);
         self.result
     }
 }

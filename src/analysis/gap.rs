@@ -1,0 +1,176 @@
+//! The gap that prevents pounding, and the rules building codes use for it
+//! (SPEC §11).
+//!
+//! Contact begins when δ = x1 − x2 − Π_d turns positive (SPEC §4). In a run
+//! without contact (Π_d = ∞) the two structures move independently, and the
+//! smallest gap for which they never touch is
+//!
+//! ```text
+//! Π_d,min = max(0, max over τ of (x1(τ) − x2(τ)))
+//! ```
+//!
+//! exact for the run's excitation and duration. The exact method tracks the
+//! maximum on its own series ([`RunResult::max_relative_displacement`]), so
+//! Π_d,min costs one no-pounding run.
+//!
+//! Codes instead combine the two separate peaks Π_u1, Π_u2 of that run:
+//! - absolute sum (ABS): Π_u1 + Π_u2, never below Π_d,min (x1 − x2 ≤ |x1| + |x2|);
+//! - square root of the sum of squares (SRSS): √(Π_u1² + Π_u2²);
+//! - double difference (DDC): √(Π_u1² + Π_u2² − 2ρ Π_u1 Π_u2), with the
+//!   equal-damping correlation coefficient ρ of [`correlation`].
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::model::{Method, Params};
+use crate::solver::{RunResult, StructurePeaks, run_for_sweep};
+
+/// The correlation coefficient of the double-difference rule for two
+/// oscillators with the same damping ratio ξ (SPEC §11):
+///
+/// ```text
+/// ρ = 8ξ²(1 + r) r^{3/2} / ((1 − r²)² + 4ξ² r (1 + r)²),   r = ω_low/ω_high ≤ 1.
+/// ```
+///
+/// ρ = 1 for equal frequencies (both structures move in phase) and falls
+/// towards 0 as they part; ρ = 0 without damping unless r = 1.
+pub fn correlation(omega1: f64, omega2: f64, damping: f64) -> f64 {
+    let (low, high) = if omega1 <= omega2 {
+        (omega1, omega2)
+    } else {
+        (omega2, omega1)
+    };
+    if low == high {
+        return 1.0;
+    }
+    let r = low / high;
+    let xi2 = damping * damping;
+    8.0 * xi2 * (1.0 + r) * r.powf(1.5)
+        / ((1.0 - r * r).powi(2) + 4.0 * xi2 * r * (1.0 + r).powi(2))
+}
+
+/// The three code estimates of the gap from the separate peaks (SPEC §11).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CodeRules {
+    /// ABS: Π_u1 + Π_u2.
+    pub absolute_sum: f64,
+    /// SRSS: √(Π_u1² + Π_u2²).
+    pub srss: f64,
+    /// DDC: √(Π_u1² + Π_u2² − 2ρ Π_u1 Π_u2).
+    pub double_difference: f64,
+    /// ρ of the double-difference rule ([`correlation`]).
+    pub correlation: f64,
+}
+
+impl CodeRules {
+    /// The rules for peaks `u1`, `u2` of structures with frequencies
+    /// Π_ω1, Π_ω2 and damping ratio Π_ξ.
+    pub fn of(u1: f64, u2: f64, omega1: f64, omega2: f64, damping: f64) -> CodeRules {
+        let rho = correlation(omega1, omega2, damping);
+        CodeRules {
+            absolute_sum: u1 + u2,
+            srss: u1.hypot(u2),
+            // ρ ≤ 1 keeps the radicand ≥ (u1 − u2)² ≥ 0 but for round-off.
+            double_difference: (u1 * u1 + u2 * u2 - 2.0 * rho * u1 * u2).max(0.0).sqrt(),
+            correlation: rho,
+        }
+    }
+
+    /// The rules in report order, with their short names.
+    pub fn named(&self) -> [(&'static str, f64); 3] {
+        [
+            ("ABS", self.absolute_sum),
+            ("SRSS", self.srss),
+            ("DDC", self.double_difference),
+        ]
+    }
+}
+
+/// Π_d,min from the largest x1 − x2 of a run without contact.
+pub fn from_max_relative(max_relative_displacement: f64) -> f64 {
+    max_relative_displacement.max(0.0)
+}
+
+/// The exact minimum gap of one parameter set beside the code rules.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct MinimumGap {
+    pub omega1: f64,
+    pub omega2: f64,
+    /// Peaks of the no-pounding run.
+    pub free_left: StructurePeaks,
+    pub free_right: StructurePeaks,
+    /// Π_d,min = max(0, max over τ of x1 − x2).
+    pub exact: f64,
+    pub rules: CodeRules,
+    /// False when the no-pounding run stopped before τ_end: `exact` then
+    /// covers only the part that was run.
+    pub completed: bool,
+}
+
+impl MinimumGap {
+    /// From the no-pounding run `r` of `p`; `None` if the run did not track
+    /// x1 − x2 (a Newmark run).
+    pub fn from_free_run(p: &Params, r: &RunResult) -> Option<MinimumGap> {
+        let top = r.max_relative_displacement?;
+        let (u1, u2) = (r.left.peak_displacement, r.right.peak_displacement);
+        Some(MinimumGap {
+            omega1: p.omega1,
+            omega2: p.omega2,
+            free_left: r.left,
+            free_right: r.right,
+            exact: from_max_relative(top),
+            rules: CodeRules::of(u1, u2, p.omega1, p.omega2, p.damping),
+            completed: r.completed,
+        })
+    }
+
+    /// Each rule over the exact minimum gap (above 1: conservative; below 1:
+    /// the structures would pound); `None` where Π_d,min = 0.
+    pub fn ratios(&self) -> [Option<f64>; 3] {
+        self.rules
+            .named()
+            .map(|(_, v)| (self.exact > 0.0).then(|| v / self.exact))
+    }
+}
+
+/// The no-pounding twin of `p`, run by the exact method.
+pub fn free_params(p: &Params) -> Params {
+    Params {
+        gap: f64::INFINITY,
+        method: Method::Exact,
+        ..*p
+    }
+}
+
+/// The minimum gap of `p` (validated): one exact no-pounding run.
+pub fn minimum_gap(p: &Params) -> MinimumGap {
+    let q = free_params(p);
+    MinimumGap::from_free_run(&q, &run_for_sweep(&q)).expect("the exact method tracks x1 − x2")
+}
+
+/// [`minimum_gap`] of every parameter set, in parallel.
+pub fn minimum_gaps(points: &[Params]) -> Vec<MinimumGap> {
+    points.par_iter().map(minimum_gap).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn correlation_limits() {
+        assert_eq!(correlation(1.0, 1.0, 0.05), 1.0);
+        assert_eq!(correlation(1.0, 2.0, 0.05), correlation(2.0, 1.0, 0.05));
+        assert_eq!(correlation(1.0, 2.0, 0.0), 0.0);
+        // Far apart: ρ → 0.
+        assert!(correlation(0.01, 100.0, 0.05) < 1e-5);
+    }
+
+    #[test]
+    fn rules_order() {
+        let r = CodeRules::of(2.0, 1.0, 1.0, 2.0, 0.05);
+        assert_eq!(r.absolute_sum, 3.0);
+        assert!((r.srss - 5f64.sqrt()).abs() < 1e-15);
+        assert!(r.double_difference < r.srss && r.double_difference >= 1.0);
+    }
+}

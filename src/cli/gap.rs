@@ -1,0 +1,331 @@
+//! `pounding gap`: the smallest gap that prevents pounding (SPEC §11), exact
+//! from one no-pounding run of the exact method, beside the code rules ABS,
+//! SRSS and DDC and their ratio to it; with `--x KEY=START:STOP:STEP`, the
+//! same along one parameter (a gap spectrum over Π_ω1, or any Π key or μ).
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use clap::Args;
+use serde::Serialize;
+
+use super::CliError;
+use super::budget::{Work, run_steps};
+use super::map::{AxisReport, param_cells, param_columns, resolve_mu};
+use super::output::{Format, num, print, render};
+use super::params::ParamArgs;
+use super::progress::Progress;
+use crate::analysis::gap::{MinimumGap, free_params, minimum_gap, minimum_gaps};
+use crate::analysis::map::{Axis, line};
+use crate::model::{Method, Params};
+use crate::output::report::Report;
+
+#[derive(Debug, Clone, Default, Args)]
+pub struct GapArgs {
+    #[command(flatten)]
+    pub params: ParamArgs,
+    /// Sweep one parameter, e.g. omega1=0.1:3.0:0.01 (Π_ω2 follows at the preset's μ) or mu=1:10:0.5.
+    #[arg(long, value_name = "KEY=START:STOP:STEP", allow_hyphen_values = true)]
+    pub x: Option<String>,
+    /// Frequency ratio μ, Π_ω2 = μ Π_ω1 on an omega1 axis [default: the preset's, else omega2/omega1].
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub mu: Option<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
+    #[arg(long)]
+    pub allow_long: bool,
+}
+
+pub fn execute(args: &GapArgs) -> Result<(), CliError> {
+    let (preset, mut p) = args.params.resolve()?;
+    // Π_d,min is taken on the exact method's own series, whatever --method says.
+    p.method = free_params(&p).method;
+    let axis = args
+        .x
+        .as_deref()
+        .map(|t| Axis::parse("--x", t))
+        .transpose()
+        .map_err(|e| CliError::Usage(e.to_string()))?;
+    let mu = match &axis {
+        Some(_) => Some(resolve_mu(&preset, &p, args.mu.as_deref())?),
+        None => None,
+    };
+    let points: Vec<(f64, Params)> = match (&axis, mu) {
+        (Some(a), Some(mu)) => line(&p, mu, a).map_err(|e| CliError::Usage(e.to_string()))?,
+        _ => vec![(f64::NAN, p)],
+    };
+    let work = Work {
+        steps: points.len() as f64 * run_steps(&p),
+        rows: 0.0,
+    };
+    work.check("gap", args.allow_long, true)?;
+    let progress = Progress::start(&work);
+    let t = Instant::now();
+    let gaps = match &axis {
+        Some(_) => minimum_gaps(&points.iter().map(|(_, q)| *q).collect::<Vec<_>>()),
+        None => vec![minimum_gap(&p)],
+    };
+    let elapsed_ms = t.elapsed().as_secs_f64() * 1e3;
+    drop(progress);
+    let mut report = GapReport::new(&preset.name, &p, axis.as_ref(), &points, &gaps, elapsed_ms);
+    report.mu = mu;
+    print(&render(&report, args.format)?)?;
+    match gaps.iter().find(|g| !g.completed) {
+        Some(g) => Err(CliError::Failed(format!(
+            "the no-pounding run at omega1 = {}, omega2 = {} stopped before τ_end; \
+             its minimum gap covers only the part that was run",
+            num(g.omega1),
+            num(g.omega2)
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// One point: the axis value (absent without `--x`), the minimum gap and
+/// each rule's ratio to it.
+#[derive(Debug, Serialize)]
+struct GapPoint {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    x: Option<f64>,
+    #[serde(flatten)]
+    gap: MinimumGap,
+    /// ABS, SRSS, DDC over the exact gap (above 1: conservative); null where it is 0.
+    ratio_absolute_sum: Option<f64>,
+    ratio_srss: Option<f64>,
+    ratio_double_difference: Option<f64>,
+    /// Whether the parameter set's own Π_d is below the exact minimum (it pounds).
+    pounds_at_set_gap: bool,
+    #[serde(skip)]
+    params: Params,
+}
+
+/// The minimum gaps, in every format.
+#[derive(Debug, Serialize)]
+pub struct GapReport<'a> {
+    version: &'static str,
+    preset: &'a str,
+    units: &'static str,
+    /// The parameters (the axis key is set per point); their gap is the set's own.
+    params: &'a Params,
+    /// The no-pounding runs are always made by the exact method.
+    method: Method,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    x: Option<AxisReport>,
+    /// μ of a sweep: Π_ω2 = μ Π_ω1 where Π_ω1 is the axis.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mu: Option<f64>,
+    points: Vec<GapPoint>,
+    elapsed_ms: f64,
+}
+
+impl<'a> GapReport<'a> {
+    fn new(
+        preset: &'a str,
+        p: &'a Params,
+        axis: Option<&Axis>,
+        points: &[(f64, Params)],
+        gaps: &[MinimumGap],
+        elapsed_ms: f64,
+    ) -> Self {
+        let points = points
+            .iter()
+            .zip(gaps)
+            .map(|((x, q), g)| {
+                let [abs, srss, ddc] = g.ratios();
+                GapPoint {
+                    x: axis.map(|_| *x),
+                    gap: *g,
+                    ratio_absolute_sum: abs,
+                    ratio_srss: srss,
+                    ratio_double_difference: ddc,
+                    pounds_at_set_gap: q.gap < g.exact,
+                    params: *q,
+                }
+            })
+            .collect();
+        GapReport {
+            version: env!("CARGO_PKG_VERSION"),
+            preset,
+            units: "dimensionless (Π-groups of SPEC §1)",
+            params: p,
+            method: free_params(p).method,
+            x: axis.map(AxisReport::of),
+            mu: None,
+            points,
+            elapsed_ms,
+        }
+    }
+
+    fn table_one(&self, s: &mut String, pt: &GapPoint) {
+        let g = &pt.gap;
+        let p = self.params;
+        let _ = writeln!(
+            s,
+            "{}: the gap that prevents pounding (SPEC §11), from one no-pounding run \
+             ({} method, {} cycles)",
+            self.preset, self.method, p.cycles
+        );
+        let _ = writeln!(
+            s,
+            "Π_ω1 = {}, Π_ω2 = {}: Π_u1 = {:.4}, Π_u2 = {:.4} without pounding\n",
+            num(g.omega1),
+            num(g.omega2),
+            g.free_left.peak_displacement,
+            g.free_right.peak_displacement
+        );
+        let _ = writeln!(s, "{:<34} {:>8} {:>9}", "rule", "Π_d", "/ exact");
+        let _ = writeln!(
+            s,
+            "{:<34} {:>8.4} {:>9}",
+            "exact: max over τ of x1 − x2", g.exact, "1"
+        );
+        let labels = [
+            "ABS: Π_u1 + Π_u2".to_string(),
+            "SRSS: √(Π_u1² + Π_u2²)".to_string(),
+            format!("DDC: ρ = {:.4}", g.rules.correlation),
+        ];
+        for ((label, (_, v)), ratio) in labels.iter().zip(g.rules.named()).zip(g.ratios()) {
+            let verdict = match ratio {
+                Some(r) if r >= 1.0 => "  conservative",
+                Some(_) => "  too small: the structures would pound",
+                None => "",
+            };
+            let ratio = ratio.map_or("-".to_string(), |r| format!("{r:.4}"));
+            let _ = writeln!(s, "{label:<34} {v:>8.4} {ratio:>9}{verdict}");
+        }
+        let _ = writeln!(
+            s,
+            "\nthe set's own gap Π_d = {} {}",
+            num(p.gap),
+            if pt.pounds_at_set_gap {
+                "is below the minimum: they pound"
+            } else {
+                "clears the minimum: no pounding"
+            }
+        );
+    }
+
+    fn table_sweep(&self, s: &mut String, axis: &AxisReport) {
+        let _ = writeln!(
+            s,
+            "{}: the gap that prevents pounding over {} = {} ({} points; exact method, \
+             no-pounding runs){}",
+            self.preset,
+            axis.symbol,
+            axis.grid,
+            axis.points,
+            match (axis.key, self.mu) {
+                ("omega1", Some(mu)) => format!(", Π_ω2 = μ Π_ω1 with μ = {}", num(mu)),
+                _ => String::new(),
+            }
+        );
+        let _ = writeln!(
+            s,
+            "{:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7} {:>7} {:>7}",
+            axis.symbol,
+            "Π_u1",
+            "Π_u2",
+            "exact",
+            "ABS",
+            "SRSS",
+            "DDC",
+            "ABS/ex",
+            "SRSS/ex",
+            "DDC/ex"
+        );
+        for pt in &self.points {
+            let g = &pt.gap;
+            let ratios = g
+                .ratios()
+                .map(|r| r.map_or("-".to_string(), |r| format!("{r:.3}")));
+            let _ = writeln!(
+                s,
+                "{:>9} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>7} {:>7} {:>7}",
+                num(pt.x.unwrap_or(f64::NAN)),
+                g.free_left.peak_displacement,
+                g.free_right.peak_displacement,
+                g.exact,
+                g.rules.absolute_sum,
+                g.rules.srss,
+                g.rules.double_difference,
+                ratios[0],
+                ratios[1],
+                ratios[2]
+            );
+        }
+        for (k, name) in ["ABS", "SRSS", "DDC"].iter().enumerate() {
+            let short = self
+                .points
+                .iter()
+                .filter(|pt| pt.gap.ratios()[k].is_some_and(|r| r < 1.0))
+                .count();
+            let _ = writeln!(
+                s,
+                "{name}: below the exact gap (would pound) at {short} of {} points",
+                self.points.len()
+            );
+        }
+    }
+}
+
+impl Report for GapReport<'_> {
+    fn csv_header(&self) -> Vec<&'static str> {
+        let mut h = param_columns();
+        h.extend([
+            "free_left_peak_displacement",
+            "free_right_peak_displacement",
+            "min_gap",
+            "absolute_sum",
+            "srss",
+            "double_difference",
+            "correlation",
+            "ratio_absolute_sum",
+            "ratio_srss",
+            "ratio_double_difference",
+            "pounds_at_set_gap",
+            "completed",
+        ]);
+        h
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        self.points
+            .iter()
+            .map(|pt| {
+                let g = &pt.gap;
+                let mut row = param_cells(&pt.params);
+                row.extend(
+                    [
+                        g.free_left.peak_displacement,
+                        g.free_right.peak_displacement,
+                        g.exact,
+                        g.rules.absolute_sum,
+                        g.rules.srss,
+                        g.rules.double_difference,
+                        g.rules.correlation,
+                    ]
+                    .map(num),
+                );
+                row.extend(g.ratios().map(|r| r.map(num).unwrap_or_default()));
+                row.push(pt.pounds_at_set_gap.to_string());
+                row.push(g.completed.to_string());
+                row
+            })
+            .collect()
+    }
+
+    fn table(&self) -> String {
+        let mut s = String::new();
+        match &self.x {
+            Some(axis) => self.table_sweep(&mut s, axis),
+            None => {
+                if let Some(pt) = self.points.first() {
+                    self.table_one(&mut s, pt);
+                }
+            }
+        }
+        s
+    }
+}

@@ -1,0 +1,367 @@
+//! `pounding map`: the left structure's spectral regions (SPEC §7) over two
+//! parameters, `--x KEY=START:STOP:STEP --y KEY=START:STOP:STEP`, each any
+//! Π key or `mu`, with every cell's peaks, amplification ratios, impacts,
+//! forces and minimum gap, as a table, JSON or CSV.
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use clap::Args;
+use serde::Serialize;
+
+use super::CliError;
+use super::budget::{Work, run_steps};
+use super::output::{Format, num, print, render};
+use super::params::ParamArgs;
+use super::progress::Progress;
+use crate::analysis::map::{Axis, MapCache, MapCell, MapPlan, compute_rows, row_regions};
+use crate::analysis::spectrum::{REGION_THRESHOLD, Region};
+use crate::analysis::spectrum_spec::{SpectrumSpec, mu_from_text};
+use crate::model::params::{FIELDS, echo};
+use crate::model::{Method, Params, Preset};
+use crate::output::report::Report;
+
+#[derive(Debug, Clone, Default, Args)]
+pub struct MapArgs {
+    #[command(flatten)]
+    pub params: ParamArgs,
+    /// The horizontal axis: a Π key or mu over a grid, e.g. omega1=0.1:3.0:0.02.
+    #[arg(long, value_name = "KEY=START:STOP:STEP", allow_hyphen_values = true)]
+    pub x: String,
+    /// The vertical axis, e.g. mu=1:10:0.1 or gap=0.1:2:0.05.
+    #[arg(long, value_name = "KEY=START:STOP:STEP", allow_hyphen_values = true)]
+    pub y: String,
+    /// Frequency ratio μ, Π_ω2 = μ Π_ω1 on an omega1 axis [default: the preset's, else omega2/omega1].
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub mu: Option<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
+    #[arg(long)]
+    pub allow_long: bool,
+}
+
+pub fn execute(args: &MapArgs) -> Result<(), CliError> {
+    let (preset, p) = args.params.resolve_for_many()?;
+    let usage = |e: crate::analysis::map::MapError| CliError::Usage(e.to_string());
+    let x = Axis::parse("--x", &args.x).map_err(usage)?;
+    let y = Axis::parse("--y", &args.y).map_err(usage)?;
+    let mu = resolve_mu(&preset, &p, args.mu.as_deref())?;
+    let plan = MapPlan::new(p, mu, x, y).map_err(usage)?;
+    let work = Work {
+        steps: 2.0 * plan.cells() as f64 * run_steps(&p),
+        rows: 0.0,
+    };
+    work.check("map", args.allow_long, true)?;
+    let progress = Progress::start(&work);
+    let t = Instant::now();
+    let (cells, cache) = compute_with(&plan, &progress);
+    let elapsed_ms = t.elapsed().as_secs_f64() * 1e3;
+    drop(progress);
+    let report = MapReport::new(&preset.name, &plan, &cells, &cache, elapsed_ms);
+    print(&render(&report, args.format)?)
+}
+
+/// μ as a spectrum takes it: `--mu`, else the preset's `[spectrum]` μ,
+/// else Π_ω2/Π_ω1 of the parameters.
+pub(super) fn resolve_mu(preset: &Preset, p: &Params, text: Option<&str>) -> Result<f64, CliError> {
+    if let Some(text) = text {
+        return mu_from_text(text).map_err(|e| CliError::Usage(format!("--mu: {e}")));
+    }
+    let spec = match &preset.spectrum {
+        Some(t) => SpectrumSpec::from_table(t)
+            .map_err(|e| CliError::Usage(format!("{}: {e}", preset.name)))?,
+        None => SpectrumSpec::default(),
+    };
+    Ok(spec.mu.unwrap_or(p.mu()))
+}
+
+/// The map, row slice after row slice when a bar is shown (each cell
+/// depends on its own parameters only, so the cells are the same either way).
+fn compute_with(plan: &MapPlan, progress: &Progress) -> (Vec<MapCell>, MapCache) {
+    let ys = plan.y.values();
+    let row_steps = 2.0 * plan.x.len() as f64 * run_steps(&plan.base);
+    let rows_per_slice = if progress.is_shown() {
+        // About a hundred slices, each with enough cells to keep every thread busy.
+        (ys.len() / 100)
+            .max((8 * rayon::current_num_threads()).div_ceil(plan.x.len()))
+            .max(1)
+    } else {
+        ys.len()
+    };
+    let mut cache = MapCache::default();
+    let mut cells = Vec::with_capacity(plan.cells());
+    for slice in ys.chunks(rows_per_slice) {
+        cells.extend(compute_rows(plan, slice, &mut cache));
+        progress.add(row_steps * slice.len() as f64);
+    }
+    (cells, cache)
+}
+
+/// One axis as reported.
+#[derive(Debug, Serialize)]
+pub(super) struct AxisReport {
+    pub key: &'static str,
+    pub symbol: &'static str,
+    pub grid: String,
+    start: f64,
+    stop: f64,
+    step: f64,
+    pub points: usize,
+}
+
+impl AxisReport {
+    pub fn of(a: &Axis) -> AxisReport {
+        AxisReport {
+            key: a.key,
+            symbol: a.symbol(),
+            grid: a.grid.to_string(),
+            start: a.grid.start,
+            stop: a.grid.stop,
+            step: a.grid.step,
+            points: a.len(),
+        }
+    }
+}
+
+/// A map in every format.
+#[derive(Debug, Serialize)]
+pub struct MapReport<'a> {
+    version: &'static str,
+    preset: &'a str,
+    units: &'static str,
+    /// The fixed parameters (the axis keys are set per cell).
+    params: &'a Params,
+    /// μ of the cells unless `mu` or `omega2` is an axis.
+    mu: f64,
+    model: &'static str,
+    method: Method,
+    /// Relative change of Π_u1 beyond which a cell is amplification or suppression.
+    region_threshold: f64,
+    x: AxisReport,
+    y: AxisReport,
+    layout: &'static str,
+    cells: &'a [MapCell],
+    baseline_runs: usize,
+    baselines_from_pounding_runs: usize,
+    incomplete_cells: usize,
+    elapsed_ms: f64,
+    #[serde(skip)]
+    plan: &'a MapPlan,
+}
+
+impl<'a> MapReport<'a> {
+    pub fn new(
+        preset: &'a str,
+        plan: &'a MapPlan,
+        cells: &'a [MapCell],
+        cache: &MapCache,
+        elapsed_ms: f64,
+    ) -> Self {
+        MapReport {
+            version: env!("CARGO_PKG_VERSION"),
+            preset,
+            units: "dimensionless (Π-groups of SPEC §1)",
+            params: &plan.base,
+            mu: plan.mu,
+            model: plan.base.model.name(),
+            method: plan.base.method,
+            region_threshold: REGION_THRESHOLD,
+            x: AxisReport::of(&plan.x),
+            y: AxisReport::of(&plan.y),
+            layout: "row-major: cells[j * x.points + i] is (x value i, y value j)",
+            cells,
+            baseline_runs: cache.baselines.runs,
+            baselines_from_pounding_runs: cache.baselines.from_pounding,
+            incomplete_cells: cells.iter().filter(|c| !c.completed).count(),
+            elapsed_ms,
+            plan,
+        }
+    }
+
+    /// The cells row by row (one y value each).
+    fn rows(&self) -> std::slice::Chunks<'a, MapCell> {
+        self.cells.chunks(self.plan.x.len().max(1))
+    }
+}
+
+/// A cell's mark in the table: `+` amplification, `−` suppression, `·` none, `?` stopped early.
+fn mark(c: &MapCell) -> char {
+    match (c.completed, c.region) {
+        (false, _) => '?',
+        (true, Region::Amplification) => '+',
+        (true, Region::Suppression) => '−',
+        (true, Region::None) => '·',
+    }
+}
+
+const RESULT_COLUMNS: [&str; 18] = [
+    "left_peak_displacement",
+    "left_peak_velocity",
+    "right_peak_displacement",
+    "right_peak_velocity",
+    "free_left_peak_displacement",
+    "free_left_peak_velocity",
+    "free_right_peak_displacement",
+    "free_right_peak_velocity",
+    "left_amplification",
+    "right_amplification",
+    "region",
+    "impacts",
+    "max_force",
+    "min_force",
+    "min_gap",
+    "left_yielded",
+    "right_yielded",
+    "completed",
+];
+
+/// CSV columns naming a whole parameter set: μ, then every key of the table.
+pub(super) fn param_columns() -> Vec<&'static str> {
+    let mut h = vec!["mu"];
+    h.extend(FIELDS.iter().map(|f| f.key));
+    h
+}
+
+/// The cells of [`param_columns`] for `p`.
+pub(super) fn param_cells(p: &Params) -> Vec<String> {
+    let mut row = vec![num(p.mu())];
+    row.extend(FIELDS.iter().map(|f| f.text(p)));
+    row
+}
+
+impl Report for MapReport<'_> {
+    /// Every row carries the cell's whole parameter set, μ and its results.
+    fn csv_header(&self) -> Vec<&'static str> {
+        let mut h = param_columns();
+        h.extend(RESULT_COLUMNS);
+        h
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        self.cells
+            .iter()
+            .map(|c| {
+                let mut row = param_cells(&self.plan.at(c.x, c.y));
+                row.extend(
+                    [
+                        c.left.peak_displacement,
+                        c.left.peak_velocity,
+                        c.right.peak_displacement,
+                        c.right.peak_velocity,
+                        c.free_left.peak_displacement,
+                        c.free_left.peak_velocity,
+                        c.free_right.peak_displacement,
+                        c.free_right.peak_velocity,
+                        c.left_amplification,
+                        c.right_amplification,
+                    ]
+                    .map(num),
+                );
+                row.push(c.region.name().to_string());
+                row.push(c.impacts.to_string());
+                row.push(num(c.max_force));
+                row.push(num(c.min_force));
+                row.push(c.min_gap.map(num).unwrap_or_default());
+                row.push(c.left.yielded.to_string());
+                row.push(c.right.yielded.to_string());
+                row.push(c.completed.to_string());
+                row
+            })
+            .collect()
+    }
+
+    fn table(&self) -> String {
+        let (p, x, y) = (&self.plan.base, &self.plan.x, &self.plan.y);
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "{}: left-structure regions over x = {} ({}, {} points) and y = {} ({}, {} points)",
+            self.preset,
+            x.symbol(),
+            x.grid,
+            x.len(),
+            y.symbol(),
+            y.grid,
+            y.len()
+        );
+        // The fixed values people look for first; the axes' own keys vary.
+        let fixed: Vec<String> = [
+            ("mass_ratio", "Π_m", p.mass_ratio),
+            ("gap", "Π_d", p.gap),
+            ("mu", "μ", self.mu),
+        ]
+        .iter()
+        .filter(|(key, _, _)| {
+            let varies = |k: &str| [x.key, y.key].contains(&k);
+            let mu_varies = *key == "mu" && varies("omega2");
+            !(varies(key) || mu_varies)
+        })
+        .map(|(_, symbol, v)| format!("{symbol} = {}", echo::g4(*v)))
+        .collect();
+        let _ = writeln!(
+            s,
+            "{} method, {} contact, {}; + amplification, − suppression \
+             (Π_u1 beyond ±{} % of no pounding), · no influence{}",
+            self.method,
+            p.model,
+            fixed.join(", "),
+            num(REGION_THRESHOLD * 100.0),
+            if self.incomplete_cells > 0 {
+                ", ? a run stopped early"
+            } else {
+                ""
+            }
+        );
+        let labels: Vec<String> = y.values().iter().map(|v| num(*v)).collect();
+        let width = labels.iter().map(String::len).max().unwrap_or(1);
+        s.push('\n');
+        for (label, row) in labels.iter().zip(self.rows()).rev() {
+            let marks: String = row.iter().map(mark).collect();
+            let _ = writeln!(s, "{label:>width$} |{marks}");
+        }
+        let _ = writeln!(
+            s,
+            "{:>width$}  {} … {}  ({})",
+            y.symbol(),
+            num(x.grid.start),
+            num(x.grid.stop),
+            x.symbol()
+        );
+        let count = |r: Region| self.cells.iter().filter(|c| c.region == r).count();
+        let _ = writeln!(
+            s,
+            "\ncells: {} amplification, {} suppression, {} no influence; {} with impacts",
+            count(Region::Amplification),
+            count(Region::Suppression),
+            count(Region::None),
+            self.cells.iter().filter(|c| c.impacts > 0).count()
+        );
+        let _ = writeln!(s, "\nregions along {} per row:", x.symbol());
+        for (label, row) in labels.iter().zip(self.rows()) {
+            let bands: Vec<String> = row_regions(row)
+                .iter()
+                .map(|r| match r.points {
+                    1 => format!("{} {}", r.region.name(), num(r.from)),
+                    _ => format!("{} {}–{}", r.region.name(), num(r.from), num(r.to)),
+                })
+                .collect();
+            let _ = writeln!(s, "{} = {label}: {}", y.symbol(), bands.join(", "));
+        }
+        let _ = writeln!(
+            s,
+            "\n{} cells, {} baseline runs ({} baselines taken from impact-free pounding runs){}, {:.0} ms",
+            self.cells.len(),
+            self.baseline_runs,
+            self.baselines_from_pounding_runs,
+            if self.incomplete_cells > 0 {
+                format!(", {} cells with a run stopped early", self.incomplete_cells)
+            } else {
+                String::new()
+            },
+            self.elapsed_ms
+        );
+        s
+    }
+}
