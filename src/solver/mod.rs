@@ -21,7 +21,9 @@ pub mod result;
 pub mod simulate;
 
 pub use crate::model::Method;
-pub use dispatch::{error_vs_exact, relative_peak_error, run, run_for_sweep, solve};
+pub use dispatch::{
+    error_vs_exact, exact_options, newmark_options, relative_peak_error, run, run_for_sweep, solve,
+};
 pub use observer::{CsvHistory, Decimated, FullHistory, Observer, Sample};
 pub use result::{
     ENERGY_TOLERANCE, EnergyBalance, Impact, RunResult, Stop, StopReason, StructurePeaks,
