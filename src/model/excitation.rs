@@ -114,16 +114,13 @@ impl RecordMotion {
         k.min(last)
     }
 
-    /// (g, dg/dτ) at τ: linear between samples, zero after the last one.
+    /// (g, dg/dτ) at τ: linear on [τ_k, τ_{k+1}), zero from the last sample on.
     #[inline]
     fn value_slope(&self, tau: f64) -> [f64; 2] {
         let a = &self.record.acceleration;
         let k = self.interval(tau);
+        // From the last sample on, g = 0 (the formula of [τ_{N−1}, ∞)).
         if tau < 0.0 || k + 1 >= a.len() {
-            // At exactly the last sample the record still holds its value.
-            if k + 1 == a.len() && tau == self.end() {
-                return [a[k] / self.amplitude, 0.0];
-            }
             return [0.0, 0.0];
         }
         let h = self.spacing();

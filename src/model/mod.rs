@@ -12,6 +12,7 @@ pub mod physical;
 pub mod preset;
 pub mod record;
 pub mod spectrum_spec;
+pub mod synthetic;
 
 pub use contact::{ContactLaw, ContactModel};
 pub use excitation::{Excitation, Pulse, RecordMotion, Rotation};
