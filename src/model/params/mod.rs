@@ -328,7 +328,8 @@ mod tests {
         assert!(p.set("gap", "-1").is_err());
         assert!(p.set("bogus", "1").is_err());
         assert!(p.set("cycles", "0").is_err());
-        assert!(p.set("model", "hertz").is_err());
+        assert!(p.set("model", "hertz-mindlin").is_err());
+        assert!(p.set("excitation", "pulse-d").is_err());
         assert_eq!(p, SET1);
         p.set("gap", "inf").unwrap();
         assert!(!p.pounding());
@@ -390,7 +391,9 @@ mod tests {
     fn display_shows_every_key() {
         let text = SET1.to_string();
         assert!(text.starts_with("Π_m=0.5 Π_ω1=1.05 "), "{text}");
-        assert!(text.contains(" model=improved-kelvin method=newmark cycles=8 Δτ=0.001"));
+        assert!(text.contains(
+            " model=improved-kelvin g(τ)=sine a_p=0 ω_p=0 method=newmark cycles=8 Δτ=0.001"
+        ));
         assert_eq!(text.split(' ').count(), FIELDS.len());
     }
 }
