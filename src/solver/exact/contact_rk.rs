@@ -76,6 +76,7 @@ impl ContactSystem<'_> {
     /// One accepted step from (x, v), at most `h_max` long, starting from the
     /// suggestion `h_try` and shrinking it until the error is within
     /// `tolerance` of the scales (`delta_scale` for x, `velocity_scale` for ẋ).
+    #[allow(clippy::too_many_arguments)]
     pub fn step(
         &self,
         x: [f64; 2],
@@ -175,6 +176,7 @@ pub fn hermite_quintic([x0, v0, a0]: [f64; 3], [x1, v1, a1]: [f64; 3], h: f64) -
 
 /// The quintic through `values` at t = 0, h/5, …, h: Newton's forward
 /// differences in s = 5t/h, expanded into powers of t.
+#[allow(clippy::needless_range_loop)]
 pub fn equispaced_quintic(values: &[f64; 6], h: f64) -> Series {
     // Forward differences Δᵏ y₀.
     let mut d = *values;
