@@ -147,8 +147,8 @@ fn bad_input_is_a_clear_error() {
         (&["run", "--cycles", "0"], &["`cycles` = 0", "[1, 100000]"]),
         (&["run", "--cycles", "2.5"], &["`cycles` = 2.5"]),
         (
-            &["run", "--set", "model=hertz"],
-            &["`model` = hertz", "kelvin"],
+            &["run", "--set", "model=hertz-mindlin"],
+            &["`model` = hertz-mindlin", "kelvin"],
         ),
         (&["run", "--set", "gap"], &["KEY=VALUE"]),
         (

@@ -43,6 +43,7 @@ fn params() -> impl Strategy<Value = Params> {
                 cycles,
                 dt: 0.001,
                 min_impact_velocity: 1e-3,
+                ..pounding::model::SET1
             },
         )
 }

@@ -47,7 +47,7 @@ impl Method {
         match *self {
             Method::NewmarkPlain => newmark(SolverOptions::plain()),
             Method::NewmarkLocated => newmark(SolverOptions::located()),
-            Method::NewmarkSubstepped => newmark(SolverOptions::default()),
+            Method::NewmarkSubstepped => newmark(crate::solver::newmark_options(p)),
             Method::Exact(tol) => exact::simulate(
                 p,
                 &ExactOptions {

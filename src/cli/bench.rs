@@ -46,7 +46,7 @@ pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
         args.preset.clone()
     };
     let models: Vec<ContactModel> = if args.model.is_empty() {
-        ContactModel::ALL.to_vec()
+        ContactModel::PAPER.to_vec()
     } else {
         args.model.iter().filter_map(|m| m.parse().ok()).collect()
     };

@@ -6,7 +6,8 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::CliError;
-use crate::model::{Params, Preset};
+use crate::model::excitation::ExcitationError;
+use crate::model::{Excitation, Params, Preset};
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct ParamArgs {
@@ -16,9 +17,13 @@ pub struct ParamArgs {
     /// Override one parameter, e.g. --set gap=0.5 (repeatable; keys as in presets).
     #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
     pub overrides: Vec<String>,
-    /// Contact model.
-    #[arg(long, value_parser = ["kelvin", "improved-kelvin"])]
+    /// Contact law (SPEC §4, §10).
+    #[arg(long, value_parser = ["kelvin", "improved-kelvin", "hertz", "hertzdamp", "jankowski", "hunt-crossley"])]
     pub model: Option<String>,
+    /// Ground motion (SPEC §9): sine, pulse-a, pulse-b, pulse-c1, pulse-c2, or
+    /// record:PATH for a PEER NGA .AT2 file.
+    #[arg(long, value_name = "NAME|record:PATH")]
+    pub excitation: Option<String>,
     /// Integrator: newmark (the paper's, default of `run`) or exact (event-driven;
     /// default of the commands that run many cases).
     #[arg(long, value_parser = ["newmark", "exact"])]
@@ -50,6 +55,19 @@ pub fn user_preset_dir(explicit: Option<&PathBuf>) -> Option<PathBuf> {
     Some(base.join("pounding").join("presets"))
 }
 
+/// Sets the excitation, with a record's own message (file and line) when
+/// `record:PATH` cannot be read.
+fn set_excitation(p: &mut Params, text: &str) -> Result<(), CliError> {
+    match Excitation::parse(text) {
+        Ok(e) => {
+            p.excitation = e;
+            Ok(())
+        }
+        Err(ExcitationError::Record(e)) => Err(CliError::Usage(e.to_string())),
+        Err(ExcitationError::Unknown) => Ok(p.set("excitation", text)?),
+    }
+}
+
 impl ParamArgs {
     /// The preset, with every override applied and validated. A `dt` too
     /// coarse for the contact is a warning on stderr, not an error.
@@ -75,7 +93,14 @@ impl ParamArgs {
                     crate::model::params::echo::text(kv)
                 ))
             })?;
-            p.set(key.trim(), value)?;
+            if key.trim() == "excitation" {
+                set_excitation(&mut p, value)?;
+            } else {
+                p.set(key.trim(), value)?;
+            }
+        }
+        if let Some(e) = &self.excitation {
+            set_excitation(&mut p, e)?;
         }
         if let Some(m) = &self.model {
             p.set("model", m)?;

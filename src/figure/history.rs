@@ -89,6 +89,7 @@ fn law_label(m: ContactModel) -> &'static str {
     match m {
         ContactModel::Kelvin => "Kelvin",
         ContactModel::ImprovedKelvin => "improved Kelvin",
+        other => other.name(),
     }
 }
 

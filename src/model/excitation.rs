@@ -1,4 +1,134 @@
-//! Ground acceleration g(τ) of SPEC §2, per unit amplitude a_p.
+//! Ground acceleration g(τ) per unit amplitude a_p (SPEC §2, §9): the
+//! paper's sine, the cycloidal pulses of Makris and co-workers, and recorded
+//! accelerograms, linear between samples.
+
+use std::f64::consts::PI;
+use std::fmt;
+use std::str::FromStr;
+
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+use super::record::{self, Record, RecordError};
+
+/// A cycloidal pulse (SPEC §9): one or a few sine pieces, then g = 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Pulse {
+    /// Type A: g = sin τ on [0, 2π]; the ground velocity 1 − cos τ is one-sided.
+    A,
+    /// Type B: g = −sin τ on [0, 2π]; the ground starts with velocity V_p, so
+    /// in relative coordinates both structures start with ẋ_i(0) = −1.
+    B,
+    /// Type Cn: g = cos(τ + φ) on [0, (2n+1)π − 2φ], with φ the phase that
+    /// brings the ground displacement back to zero at the pulse's end.
+    C { n: u32, phase: f64 },
+}
+
+impl Pulse {
+    /// The type Cn pulse, its phase solved from
+    /// 2 cos φ = sin φ · ((2n+1)π − 2φ) (SPEC §9) by Newton's method from
+    /// φ = 0.2; φ ≈ 0.21898 for n = 1, 0.12873 for n = 2.
+    pub fn c(n: u32) -> Pulse {
+        let big = (2 * n + 1) as f64 * PI;
+        let mut phi: f64 = 0.2;
+        for _ in 0..50 {
+            let (s, c) = phi.sin_cos();
+            let f = 2.0 * c - s * (big - 2.0 * phi);
+            let df = -2.0 * s - c * (big - 2.0 * phi) + 2.0 * s;
+            let step = f / df;
+            phi -= step;
+            if step.abs() < 1e-17 {
+                break;
+            }
+        }
+        Pulse::C { n, phase: phi }
+    }
+
+    /// End of the pulse in τ: 2π for A and B, (2n+1)π − 2φ for Cn.
+    pub fn end(self) -> f64 {
+        match self {
+            Pulse::A | Pulse::B => 2.0 * PI,
+            Pulse::C { n, phase } => (2 * n + 1) as f64 * PI - 2.0 * phase,
+        }
+    }
+
+    /// The pulse's sinusoid g = A sin(τ + θ) written as (amplitude, phase θ):
+    /// A: (1, 0); B: (−1, 0); Cn: cos(τ + φ) = sin(τ + φ + π/2).
+    fn sinusoid(self) -> (f64, f64) {
+        match self {
+            Pulse::A => (1.0, 0.0),
+            Pulse::B => (-1.0, 0.0),
+            Pulse::C { phase, .. } => (1.0, phase + 0.5 * PI),
+        }
+    }
+}
+
+/// A recorded accelerogram scaled into Π form (SPEC §9): g(τ) = a(τ/ω_p)/a_p.
+#[derive(Debug, Clone, Copy)]
+pub struct RecordMotion {
+    pub record: &'static Record,
+    /// a_p in m/s² (default: the record's peak |a|).
+    pub amplitude: f64,
+    /// ω_p in rad/s (default: the frequency of its largest Fourier amplitude).
+    pub omega: f64,
+}
+
+impl PartialEq for RecordMotion {
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::eq(self.record, other.record)
+            && self.amplitude == other.amplitude
+            && self.omega == other.omega
+    }
+}
+
+impl RecordMotion {
+    /// The record at its defaults: a_p = peak |a|, ω_p = dominant frequency.
+    pub fn new(record: &'static Record) -> Self {
+        RecordMotion {
+            record,
+            amplitude: if record.peak > 0.0 { record.peak } else { 1.0 },
+            omega: record.dominant_omega,
+        }
+    }
+
+    /// Sample spacing in τ: DT·ω_p.
+    #[inline]
+    fn spacing(&self) -> f64 {
+        self.record.dt * self.omega
+    }
+
+    /// End of the samples in τ: (N − 1)·DT·ω_p.
+    pub fn end(&self) -> f64 {
+        self.record.duration() * self.omega
+    }
+
+    /// The sample interval [k, k+1] holding τ (k = N − 1 past the end),
+    /// chosen so that (k + 1)·spacing > τ.
+    #[inline]
+    fn interval(&self, tau: f64) -> usize {
+        let last = self.record.acceleration.len() - 1;
+        let h = self.spacing();
+        let mut k = (tau / h).floor().max(0.0) as usize;
+        while k < last && (k + 1) as f64 * h <= tau {
+            k += 1;
+        }
+        k.min(last)
+    }
+
+    /// (g, dg/dτ) at τ: linear on [τ_k, τ_{k+1}), zero from the last sample on.
+    #[inline]
+    fn value_slope(&self, tau: f64) -> [f64; 2] {
+        let a = &self.record.acceleration;
+        let k = self.interval(tau);
+        // From the last sample on, g = 0 (the formula of [τ_{N−1}, ∞)).
+        if tau < 0.0 || k + 1 >= a.len() {
+            return [0.0, 0.0];
+        }
+        let h = self.spacing();
+        let slope = (a[k + 1] - a[k]) / (h * self.amplitude);
+        let g = a[k] / self.amplitude + slope * (tau - k as f64 * h);
+        [g, slope]
+    }
+}
 
 /// The excitation a run is driven by.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -8,27 +138,203 @@ pub enum Excitation {
     Sine,
     /// g(τ) = 0: free motion from the initial state (isolated impacts, tests).
     None,
+    /// A cycloidal pulse, then free vibration.
+    Pulse(Pulse),
+    /// A recorded accelerogram, then free vibration.
+    Record(RecordMotion),
 }
 
+/// The names `--excitation`, presets and `--set` take (a record is `record:PATH`).
+pub const NAMES: [&str; 6] = [
+    "sine",
+    "pulse-a",
+    "pulse-b",
+    "pulse-c1",
+    "pulse-c2",
+    "record:PATH",
+];
+
 impl Excitation {
+    /// Parses a name of [`NAMES`]; `record:PATH` reads the file (once per path).
+    pub fn parse(text: &str) -> Result<Excitation, ExcitationError> {
+        let t = text.trim();
+        if let Some(path) = t.strip_prefix("record:") {
+            return record::load(path)
+                .map(|r| Excitation::Record(RecordMotion::new(r)))
+                .map_err(ExcitationError::Record);
+        }
+        Ok(match t {
+            "sine" => Excitation::Sine,
+            "none" => Excitation::None,
+            "pulse-a" => Excitation::Pulse(Pulse::A),
+            "pulse-b" => Excitation::Pulse(Pulse::B),
+            "pulse-c1" => Excitation::Pulse(Pulse::c(1)),
+            "pulse-c2" => Excitation::Pulse(Pulse::c(2)),
+            _ => return Err(ExcitationError::Unknown),
+        })
+    }
+
+    /// The name, as [`Excitation::parse`] reads it.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Excitation::Sine => "sine",
+            Excitation::None => "none",
+            Excitation::Pulse(Pulse::A) => "pulse-a",
+            Excitation::Pulse(Pulse::B) => "pulse-b",
+            Excitation::Pulse(Pulse::C { n: 1, .. }) => "pulse-c1",
+            Excitation::Pulse(Pulse::C { .. }) => "pulse-c2",
+            Excitation::Record(m) => &m.record.spec,
+        }
+    }
+
+    /// Whether (g, dg/dτ) advance by a rotation ([`Rotation`]): the sine and zero only.
+    #[inline]
+    pub fn rotates(&self) -> bool {
+        matches!(self, Excitation::Sine | Excitation::None)
+    }
+
+    /// ẋ_i(0) the excitation imposes in relative coordinates: −1 for the
+    /// type B pulse, whose ground starts with velocity V_p (SPEC §9); else 0.
+    pub fn initial_velocity(&self) -> [f64; 2] {
+        match self {
+            Excitation::Pulse(Pulse::B) => [-1.0; 2],
+            _ => [0.0; 2],
+        }
+    }
+
+    /// Where the excitation stops (g = 0 after): the pulse's or the
+    /// record's end; infinite for the sine.
+    pub fn end(&self) -> f64 {
+        match self {
+            Excitation::Sine => f64::INFINITY,
+            Excitation::None => 0.0,
+            Excitation::Pulse(p) => p.end(),
+            Excitation::Record(m) => m.end(),
+        }
+    }
+
     /// g(τ).
     #[inline]
-    pub fn at(self, tau: f64) -> f64 {
+    pub fn at(&self, tau: f64) -> f64 {
         self.phasor(tau)[0]
     }
 
     /// (g(τ), dg/dτ): for the sine, (sin τ, cos τ). Carried along a run so the
     /// next value can be had by a rotation instead of a new `sin` (see
-    /// [`Rotation`]).
+    /// [`Rotation`]) where [`Excitation::rotates`]. A pulse is its sinusoid
+    /// on [0, end) and zero from its end on; a record is linear between samples.
     #[inline]
-    pub fn phasor(self, tau: f64) -> [f64; 2] {
+    pub fn phasor(&self, tau: f64) -> [f64; 2] {
         match self {
             Excitation::Sine => {
                 let (s, c) = tau.sin_cos();
                 [s, c]
             }
             Excitation::None => [0.0, 0.0],
+            Excitation::Pulse(p) => {
+                if (0.0..p.end()).contains(&tau) {
+                    let (amp, theta) = p.sinusoid();
+                    let (s, c) = (tau + theta).sin_cos();
+                    [amp * s, amp * c]
+                } else {
+                    [0.0, 0.0]
+                }
+            }
+            Excitation::Record(m) => m.value_slope(tau),
         }
+    }
+
+    /// The ground motion at τ in Π form: (g, u̇_g ω_p/a_p, u_g ω_p²/a_p), the
+    /// acceleration, velocity and displacement of the ground (SPEC §9), from
+    /// rest at τ = 0 except for the type B pulse, whose ground velocity starts at 1.
+    pub fn ground(&self, tau: f64) -> [f64; 3] {
+        let g = self.at(tau);
+        match self {
+            Excitation::Sine => [g, 1.0 - tau.cos(), tau - tau.sin()],
+            Excitation::None => [0.0; 3],
+            Excitation::Pulse(p) => {
+                let end = p.end();
+                let t = tau.min(end);
+                let (vel, disp) = match p {
+                    // u̇ = 1 − cos τ, u = τ − sin τ.
+                    Pulse::A => (1.0 - t.cos(), t - t.sin()),
+                    // u̇ = cos τ, u = sin τ.
+                    Pulse::B => (t.cos(), t.sin()),
+                    // u̇ = sin(τ+φ) − sin φ, u = cos φ − cos(τ+φ) − τ sin φ.
+                    Pulse::C { phase, .. } => {
+                        let (s0, c0) = phase.sin_cos();
+                        ((t + phase).sin() - s0, c0 - (t + phase).cos() - t * s0)
+                    }
+                };
+                [g, vel, disp + vel * (tau - t)]
+            }
+            Excitation::Record(m) => {
+                let r = m.record;
+                let scale_v = m.omega / m.amplitude;
+                let scale_u = m.omega * m.omega / m.amplitude;
+                let t = (tau / m.omega).clamp(0.0, r.duration());
+                let k = m.interval(t * m.omega);
+                let s = t - k as f64 * r.dt;
+                let a0 = r.acceleration[k];
+                let slope = if k + 1 < r.acceleration.len() {
+                    (r.acceleration[k + 1] - a0) / r.dt
+                } else {
+                    0.0
+                };
+                let vel = r.velocity[k] + a0 * s + 0.5 * slope * s * s;
+                let disp = r.displacement[k]
+                    + r.velocity[k] * s
+                    + 0.5 * a0 * s * s
+                    + slope * s * s * s / 6.0;
+                let rest = (tau / m.omega - t).max(0.0);
+                [g, vel * scale_v, (disp + vel * rest) * scale_u]
+            }
+        }
+    }
+}
+
+/// Why an excitation name was refused.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExcitationError {
+    /// None of [`NAMES`].
+    Unknown,
+    /// `record:PATH` named a file that could not be read.
+    Record(RecordError),
+}
+
+impl fmt::Display for ExcitationError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ExcitationError::Unknown => write!(f, "must be one of: {}", NAMES.join(", ")),
+            ExcitationError::Record(e) => e.fmt(f),
+        }
+    }
+}
+
+impl FromStr for Excitation {
+    type Err = ExcitationError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Excitation::parse(s)
+    }
+}
+
+impl fmt::Display for Excitation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl Serialize for Excitation {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
+impl<'de> Deserialize<'de> for Excitation {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let text = String::deserialize(d)?;
+        Excitation::parse(&text)
+            .map_err(|e| serde::de::Error::custom(format!("excitation `{text}`: {e}")))
     }
 }
 
@@ -50,27 +356,67 @@ impl Excitation {
     /// expands the ground motion this way on each segment.
     pub fn taylor(self, tau: f64, out: &mut [f64]) {
         match self {
-            Excitation::Sine => {
-                let (s, c) = tau.sin_cos();
-                let cycle = [s, c, -s, -c];
-                let mut inv_factorial = 1.0;
-                for (k, o) in out.iter_mut().enumerate() {
-                    if k > 0 {
-                        inv_factorial *= RECIPROCALS[k.min(RECIPROCALS.len() - 1)];
-                    }
-                    *o = cycle[k % 4] * inv_factorial;
+            Excitation::Sine => sinusoid_taylor(1.0, tau, out),
+            Excitation::None => out.iter_mut().for_each(|o| *o = 0.0),
+            Excitation::Pulse(p) => {
+                if (0.0..p.end()).contains(&tau) {
+                    let (amp, theta) = p.sinusoid();
+                    sinusoid_taylor(amp, tau + theta, out);
+                } else {
+                    out.iter_mut().for_each(|o| *o = 0.0);
                 }
             }
-            Excitation::None => out.iter_mut().for_each(|o| *o = 0.0),
+            Excitation::Record(m) => {
+                out.iter_mut().for_each(|o| *o = 0.0);
+                let [g, slope] = m.value_slope(tau);
+                if let Some(o) = out.get_mut(0) {
+                    *o = g;
+                }
+                if let Some(o) = out.get_mut(1) {
+                    *o = slope;
+                }
+            }
         }
     }
 
     /// The first τ after `tau` at which g changes formula (a kink or jump),
     /// where a segment of the event-driven method must end: never, for the
-    /// sine. Pulses (pieces of sinusoids) and records (piecewise linear) end
-    /// their pieces here.
-    pub fn next_break(self, _tau: f64) -> f64 {
-        f64::INFINITY
+    /// sine; the pulse's end; the next sample of a record (its last sample,
+    /// after which g = 0). Always > `tau`, so a segment never has zero length.
+    pub fn next_break(self, tau: f64) -> f64 {
+        match self {
+            Excitation::Sine | Excitation::None => f64::INFINITY,
+            Excitation::Pulse(p) => {
+                if tau < p.end() {
+                    p.end()
+                } else {
+                    f64::INFINITY
+                }
+            }
+            Excitation::Record(m) => {
+                let k = m.interval(tau);
+                let next = (k + 1) as f64 * m.spacing();
+                if k + 1 < m.record.acceleration.len() && next > tau {
+                    next
+                } else {
+                    f64::INFINITY
+                }
+            }
+        }
+    }
+}
+
+/// Taylor coefficients of a sin(θ + t) about t = 0: the derivatives cycle
+/// through a(sin θ, cos θ, −sin θ, −cos θ), divided by k!.
+fn sinusoid_taylor(amplitude: f64, theta: f64, out: &mut [f64]) {
+    let (s, c) = theta.sin_cos();
+    let cycle = [s, c, -s, -c].map(|v| amplitude * v);
+    let mut inv_factorial = 1.0;
+    for (k, o) in out.iter_mut().enumerate() {
+        if k > 0 {
+            inv_factorial *= RECIPROCALS[k.min(RECIPROCALS.len() - 1)];
+        }
+        *o = cycle[k % 4] * inv_factorial;
     }
 }
 

@@ -1,5 +1,5 @@
 //! The physical model: parameters (SPEC §1), bilinear springs (§3), contact
-//! laws (§4), the excitation (§2) and presets.
+//! laws (§4, §10), the excitation (§2, §9), recorded ground motions and presets.
 
 pub mod contact;
 pub mod excitation;
@@ -10,10 +10,12 @@ pub mod method;
 pub mod params;
 pub mod physical;
 pub mod preset;
+pub mod record;
 pub mod spectrum_spec;
+pub mod synthetic;
 
 pub use contact::{ContactLaw, ContactModel};
-pub use excitation::{Excitation, Rotation};
+pub use excitation::{Excitation, Pulse, RecordMotion, Rotation};
 pub use hysteresis::{Bilinear, SpringState};
 pub use method::Method;
 pub use params::{ParamError, Params, SET1, SET2};

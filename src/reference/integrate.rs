@@ -50,6 +50,18 @@ impl Default for ReferenceOptions {
 }
 
 impl ReferenceOptions {
+    /// The set's own ground motion ([`Params::ground`]) and the initial
+    /// velocity it imposes (the type B pulse's ẋ_i(0) = −1, SPEC §9).
+    pub fn for_params(p: &Params, tolerance: f64) -> Self {
+        let excitation = p.ground();
+        ReferenceOptions {
+            tolerance,
+            excitation,
+            initial_velocity: excitation.initial_velocity(),
+            ..Self::default()
+        }
+    }
+
     pub fn with_tolerance(tolerance: f64) -> Self {
         ReferenceOptions {
             tolerance,
@@ -171,8 +183,11 @@ impl<'a> Run<'a> {
                 self.result.completed = false;
                 break;
             }
-            let last = tau_end - self.tau <= h * (1.0 + 1e-12);
-            let hs = if last { tau_end - self.tau } else { h };
+            // A step ends where g changes formula (a pulse's end, a record's
+            // sample), so that the right-hand side is smooth inside it.
+            let stop = tau_end.min(self.system.excitation.next_break(self.tau));
+            let last = stop - self.tau <= h * (1.0 + 1e-12);
+            let hs = if last { stop - self.tau } else { h };
             let y0 = self.y;
             let step = dopri5::step(&self.rhs(), self.tau, &y0, &f0, hs);
             let err = step.error_norm(&y0, tol);
@@ -190,9 +205,14 @@ impl<'a> Run<'a> {
             match self.first_event(&step) {
                 None => {
                     self.track_inside(&step, 1.0, &f0);
-                    self.tau = if last { tau_end } else { self.tau + hs };
+                    self.tau = if last { stop } else { self.tau + hs };
                     self.y = step.y1;
-                    f0 = step.f1;
+                    // g may jump at a break: the next step starts from f there.
+                    f0 = if last && stop < tau_end {
+                        self.rhs()(self.tau, &self.y)
+                    } else {
+                        step.f1
+                    };
                     self.fresh = false;
                     self.track_point(&self.y.clone());
                 }
@@ -208,7 +228,9 @@ impl<'a> Run<'a> {
                     f0 = self.rhs()(self.tau, &self.y);
                 }
             }
-            h = (hs * factor).min(self.options.max_step);
+            h = (hs * factor)
+                .min(self.options.max_step)
+                .max(if last { h } else { 0.0 });
             if last && self.tau >= tau_end {
                 break;
             }

@@ -22,12 +22,21 @@ pub enum Branch {
     Yielded { sign: f64 },
 }
 
-/// The pounding force law of one contact phase: f_p = k̄δ + cδ̇ + hδδ̇ (SPEC §4).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The pounding force law of one contact phase (SPEC §4, §10), every law as
+/// one sum whose unused terms are zero:
+///
+/// f_p = k̄δ + cδ̇ + hδδ̇ + K δ^{3/2} + K λ δ^{3/2} δ̇ + c_J δ^{1/4} max(δ̇, 0).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Contact {
     pub stiffness: f64,
     pub dashpot: f64,
     pub penetration_dashpot: f64,
+    /// K of the Hertz-type laws.
+    pub hertz: f64,
+    /// K λ: the δ^{3/2} δ̇ term (Muthukumar–DesRoches, Hunt–Crossley).
+    pub hertz_dashpot: f64,
+    /// 2 ζ_J √(K m̄): Jankowski's approach-only damping, c = this · δ^{1/4}.
+    pub approach_dashpot: f64,
 }
 
 /// Which pieces are active between two events.
@@ -107,6 +116,8 @@ impl Structures {
         let m_bar = p.mass_ratio / (1.0 + p.mass_ratio);
         let stiffness = m_bar * p.contact_omega * p.contact_omega;
         let e = p.restitution;
+        let v0 = approach.max(p.min_impact_velocity);
+        let k = p.hertz_stiffness();
         match p.model {
             ContactModel::Kelvin => {
                 let log_e = e.ln();
@@ -114,15 +125,41 @@ impl Structures {
                 Contact {
                     stiffness,
                     dashpot: 2.0 * zeta * m_bar * p.contact_omega,
-                    penetration_dashpot: 0.0,
+                    ..Contact::default()
                 }
             }
-            ContactModel::ImprovedKelvin => {
-                let v0 = approach.max(p.min_impact_velocity);
+            ContactModel::ImprovedKelvin => Contact {
+                stiffness,
+                penetration_dashpot: stiffness * 1.5 * (1.0 - e) / (e * v0),
+                ..Contact::default()
+            },
+            // SPEC §10: K δ^{3/2}.
+            ContactModel::Hertz => Contact {
+                hertz: k,
+                ..Contact::default()
+            },
+            // K δ^{3/2} (1 + 3(1 − e²)/(4 v₀) δ̇).
+            ContactModel::HertzDamp => Contact {
+                hertz: k,
+                hertz_dashpot: k * 0.75 * (1.0 - e * e) / v0,
+                ..Contact::default()
+            },
+            // K δ^{3/2} (1 + 3(1 − e)/(2 v₀) δ̇).
+            ContactModel::HuntCrossley => Contact {
+                hertz: k,
+                hertz_dashpot: k * 1.5 * (1.0 - e) / v0,
+                ..Contact::default()
+            },
+            // K δ^{3/2} + 2ζ_J √(K m̄ √δ) δ̇ while δ̇ > 0,
+            // ζ_J = 9√5 (1 − e²) / (2e (e(9π − 16) + 16)).
+            ContactModel::Jankowski => {
+                let pi = std::f64::consts::PI;
+                let zeta =
+                    9.0 * 5f64.sqrt() * (1.0 - e * e) / (2.0 * e * (e * (9.0 * pi - 16.0) + 16.0));
                 Contact {
-                    stiffness,
-                    dashpot: 0.0,
-                    penetration_dashpot: stiffness * 1.5 * (1.0 - e) / (e * v0),
+                    hertz: k,
+                    approach_dashpot: 2.0 * zeta * (k * m_bar).sqrt(),
+                    ..Contact::default()
                 }
             }
         }
@@ -136,7 +173,18 @@ impl Structures {
             Some(c) => {
                 let d = self.penetration(y);
                 let r = self.penetration_rate(y);
-                c.stiffness * d + c.dashpot * r + c.penetration_dashpot * d * r
+                let linear = c.stiffness * d + c.dashpot * r + c.penetration_dashpot * d * r;
+                if c.hertz == 0.0 {
+                    return linear;
+                }
+                let dp = d.max(0.0);
+                let d32 = dp * dp.sqrt();
+                let approach = if r > 0.0 {
+                    c.approach_dashpot * dp.sqrt().sqrt() * r
+                } else {
+                    0.0
+                };
+                linear + c.hertz * d32 + c.hertz_dashpot * d32 * r + approach
             }
         }
     }

@@ -13,8 +13,29 @@ use super::result::RunResult;
 /// the energy balance of SPEC §6.
 pub fn solve<O: Observer>(p: &Params, observer: &mut O) -> RunResult {
     match p.method {
-        Method::Newmark => simulate(p, &SolverOptions::default(), observer),
-        Method::Exact => exact::simulate(p, &ExactOptions::default(), observer),
+        Method::Newmark => simulate(p, &newmark_options(p), observer),
+        Method::Exact => exact::simulate(p, &exact_options(p), observer),
+    }
+}
+
+/// Newmark's production options with the set's ground motion and the
+/// initial velocity it imposes (SPEC §9: ẋ_i(0) = −1 under the type B pulse).
+pub fn newmark_options(p: &Params) -> SolverOptions {
+    let excitation = p.ground();
+    SolverOptions {
+        excitation,
+        initial_velocity: excitation.initial_velocity(),
+        ..SolverOptions::default()
+    }
+}
+
+/// The exact method's options for the set, as [`newmark_options`].
+pub fn exact_options(p: &Params) -> ExactOptions {
+    let excitation = p.ground();
+    ExactOptions {
+        excitation,
+        initial_velocity: excitation.initial_velocity(),
+        ..ExactOptions::default()
     }
 }
 
@@ -28,12 +49,12 @@ pub fn run(p: &Params) -> RunResult {
 /// costs nothing extra and is kept).
 pub fn run_for_sweep(p: &Params) -> RunResult {
     match p.method {
-        Method::Newmark => simulate(p, &SolverOptions::default(), &mut ()),
+        Method::Newmark => simulate(p, &newmark_options(p), &mut ()),
         Method::Exact => exact::simulate(
             p,
             &ExactOptions {
                 energy: false,
-                ..ExactOptions::default()
+                ..exact_options(p)
             },
             &mut (),
         ),

@@ -18,7 +18,9 @@ pub mod observer;
 pub mod result;
 
 pub use crate::model::Method;
-pub use dispatch::{error_vs_exact, relative_peak_error, run, run_for_sweep, solve};
+pub use dispatch::{
+    error_vs_exact, exact_options, newmark_options, relative_peak_error, run, run_for_sweep, solve,
+};
 pub use newmark::{ContactSubsteps, RunCaps, SolverOptions, simulate};
 pub use observer::{CsvHistory, Decimated, FullHistory, Observer, Sample};
 pub use result::{

@@ -6,7 +6,7 @@ use std::path::Path;
 
 use crate::model::Params;
 use crate::output::{OutputError, Target};
-use crate::solver::{CsvHistory, SolverOptions, simulate};
+use crate::solver::CsvHistory;
 
 /// Runs `params`, streaming its history to `path`; the status message.
 pub fn write(params: &Params, path: &Path) -> String {
@@ -19,7 +19,8 @@ pub fn write(params: &Params, path: &Path) -> String {
 fn stream(params: &Params, path: &Path) -> Result<u64, OutputError> {
     let target = Target::open(path)?;
     let mut csv = CsvHistory::new(target);
-    simulate(params, &SolverOptions::default(), &mut csv);
+    // The set's own method and excitation, as in the explorer's run.
+    crate::solver::solve(params, &mut csv);
     match csv.finish() {
         Ok((target, rows)) => target.commit().map(|()| rows),
         Err((target, e)) => Err(target.error(&e)),

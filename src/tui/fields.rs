@@ -90,12 +90,12 @@ mod tests {
     #[test]
     fn choices_cycle() {
         let mut p = SET1;
-        for (key, expect) in [("model", "kelvin"), ("method", "exact")] {
+        for (key, expect) in [("model", "hertz"), ("method", "exact")] {
             let text = nudged_text(&p, row(key), 1.0, StepSize::Normal).unwrap();
             assert_eq!(text, expect);
             p.set(key, &text).unwrap();
         }
-        assert_eq!((p.model, p.method), (ContactModel::Kelvin, Method::Exact));
+        assert_eq!((p.model, p.method), (ContactModel::Hertz, Method::Exact));
         assert_eq!(value_text(&p, row("method")), "exact");
     }
 }

@@ -13,6 +13,7 @@ use std::f64::consts::TAU;
 use std::fmt;
 
 use super::contact::ContactModel;
+use super::excitation::Excitation;
 use super::method::Method;
 
 pub mod echo;
@@ -48,8 +49,21 @@ pub struct Params {
     /// Π_d = d ω_p²/a_p, initial separation (`inf`: no pounding).
     #[serde(with = "float_or_inf")]
     pub gap: f64,
-    /// Contact element (SPEC §4).
+    /// Π_K = β √l_e/(m2 ω_p²), stiffness of the Hertz-type laws (SPEC §10);
+    /// 0: derived from Π_ωcon ([`crate::model::contact::matched_hertz_stiffness`]).
+    #[serde(default)]
+    pub hertz_stiffness: f64,
+    /// Contact element (SPEC §4, §10).
     pub model: ContactModel,
+    /// Ground motion g(τ) (SPEC §2, §9).
+    #[serde(default)]
+    pub excitation: Excitation,
+    /// a_p of a recorded excitation in m/s² (0: the record's peak |a|).
+    #[serde(default)]
+    pub record_amplitude: f64,
+    /// ω_p of a recorded excitation in rad/s (0: its dominant frequency).
+    #[serde(default)]
+    pub record_omega: f64,
     /// Time integrator (Newmark-β at Δτ, or event-driven exact).
     #[serde(default)]
     pub method: Method,
@@ -73,7 +87,11 @@ pub const SET1: Params = Params {
     contact_omega: 50.0,
     restitution: 0.4,
     gap: 0.2,
+    hertz_stiffness: 0.0,
     model: ContactModel::ImprovedKelvin,
+    excitation: Excitation::Sine,
+    record_amplitude: 0.0,
+    record_omega: 0.0,
     method: Method::Newmark,
     cycles: 8,
     dt: 0.001,
@@ -175,9 +193,41 @@ impl Params {
         TAU / (table::STEPS_PER_PERIOD * self.omega1.max(self.omega2).max(1.0))
     }
 
-    /// End of the run, τ_end = 2π · cycles (SPEC §2).
+    /// End of the run: τ_end = 2π · cycles (SPEC §2); under a record, the
+    /// record's length ω_p·(N−1)·DT plus a free-vibration tail of `cycles`
+    /// periods 2π (SPEC §9).
     pub fn tau_end(&self) -> f64 {
-        2.0 * std::f64::consts::PI * self.cycles as f64
+        let cycles = 2.0 * std::f64::consts::PI * self.cycles as f64;
+        match self.ground() {
+            Excitation::Record(m) => m.end() + cycles,
+            _ => cycles,
+        }
+    }
+
+    /// The excitation as the solvers take it: a record scaled by the set's
+    /// a_p and ω_p where they are given (SPEC §9), otherwise as named.
+    pub fn ground(&self) -> Excitation {
+        match self.excitation {
+            Excitation::Record(mut m) => {
+                if self.record_amplitude > 0.0 {
+                    m.amplitude = self.record_amplitude;
+                }
+                if self.record_omega > 0.0 {
+                    m.omega = self.record_omega;
+                }
+                Excitation::Record(m)
+            }
+            e => e,
+        }
+    }
+
+    /// Π_K of the Hertz-type laws: the set's own, or derived from Π_ωcon (SPEC §10).
+    pub fn hertz_stiffness(&self) -> f64 {
+        if self.hertz_stiffness > 0.0 {
+            self.hertz_stiffness
+        } else {
+            super::contact::matched_hertz_stiffness(self.mass_ratio, self.contact_omega)
+        }
     }
 
     /// Frequency ratio μ = Π_ω2/Π_ω1 (SPEC §1).
@@ -278,7 +328,8 @@ mod tests {
         assert!(p.set("gap", "-1").is_err());
         assert!(p.set("bogus", "1").is_err());
         assert!(p.set("cycles", "0").is_err());
-        assert!(p.set("model", "hertz").is_err());
+        assert!(p.set("model", "hertz-mindlin").is_err());
+        assert!(p.set("excitation", "pulse-d").is_err());
         assert_eq!(p, SET1);
         p.set("gap", "inf").unwrap();
         assert!(!p.pounding());
@@ -340,7 +391,9 @@ mod tests {
     fn display_shows_every_key() {
         let text = SET1.to_string();
         assert!(text.starts_with("Π_m=0.5 Π_ω1=1.05 "), "{text}");
-        assert!(text.contains(" model=improved-kelvin method=newmark cycles=8 Δτ=0.001"));
+        assert!(text.contains(
+            " model=improved-kelvin g(τ)=sine a_p=0 ω_p=0 method=newmark cycles=8 Δτ=0.001"
+        ));
         assert_eq!(text.split(' ').count(), FIELDS.len());
     }
 }

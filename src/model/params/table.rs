@@ -11,6 +11,7 @@
 use std::f64::consts::TAU;
 
 use super::field::{Field, Group, Kind};
+use crate::model::excitation::{Excitation, NAMES as EXCITATIONS};
 use crate::model::{ContactModel, Method};
 
 /// Δτ's own upper bound: 20 steps per excitation period 2π. Together with
@@ -211,7 +212,26 @@ pub const FIELDS: &[Field] = &[
         },
         step: 0.05,
     },
-    // The contact element of SPEC §4.
+    // Π_K = β√l_e/(m2 ω_p²) of the Hertz-type laws (SPEC §10); 0 derives it
+    // from Π_ωcon so that a contact at v₀ = 1 lasts π/Π_ωcon, as the linear
+    // element's does. Matched values run from 3e-4 (Π_ωcon = 1, Π_m = 1e-3)
+    // to 4e14 (Π_ωcon = 1e6, Π_m = 1e3); 1e16 leaves room above.
+    Field {
+        key: "hertz_stiffness",
+        symbol: "Π_K",
+        ascii: "Pi_K",
+        meaning: "Hertz stiffness (0: from Π_ωcon)",
+        group: Group::Pi,
+        kind: Kind::Number {
+            min: 0.0,
+            max: 1e16,
+            inf: false,
+            get: |p| p.hertz_stiffness,
+            set: |p, v| p.hertz_stiffness = v,
+        },
+        step: 100.0,
+    },
+    // The contact element of SPEC §4 and §10.
     Field {
         key: "model",
         symbol: "model",
@@ -219,11 +239,65 @@ pub const FIELDS: &[Field] = &[
         meaning: "contact element",
         group: Group::Setting,
         kind: Kind::Choice {
-            names: &["kelvin", "improved-kelvin"],
+            names: &[
+                "kelvin",
+                "improved-kelvin",
+                "hertz",
+                "hertzdamp",
+                "jankowski",
+                "hunt-crossley",
+            ],
             get: |p| p.model.name(),
             set: |p, t| t.parse::<ContactModel>().map(|m| p.model = m).is_ok(),
         },
         step: 1.0,
+    },
+    // The ground motion of SPEC §9; `record:PATH` reads a PEER `.AT2` file.
+    Field {
+        key: "excitation",
+        symbol: "g(τ)",
+        ascii: "g",
+        meaning: "ground motion",
+        group: Group::Setting,
+        kind: Kind::Choice {
+            names: &EXCITATIONS,
+            get: |p| p.excitation.name(),
+            set: |p, t| Excitation::parse(t).map(|e| p.excitation = e).is_ok(),
+        },
+        step: 1.0,
+    },
+    // a_p of a record (m/s²): 0 is its peak |a|; 1e3 m/s² is 100 g.
+    Field {
+        key: "record_amplitude",
+        symbol: "a_p",
+        ascii: "a_p",
+        meaning: "record a_p in m/s² (0: peak)",
+        group: Group::Setting,
+        kind: Kind::Number {
+            min: 0.0,
+            max: 1e3,
+            inf: false,
+            get: |p| p.record_amplitude,
+            set: |p, v| p.record_amplitude = v,
+        },
+        step: 0.5,
+    },
+    // ω_p of a record (rad/s): 0 is its dominant frequency; 1e3 rad/s is
+    // 160 Hz, above any structural band.
+    Field {
+        key: "record_omega",
+        symbol: "ω_p",
+        ascii: "w_p",
+        meaning: "record ω_p in rad/s (0: dominant)",
+        group: Group::Setting,
+        kind: Kind::Number {
+            min: 0.0,
+            max: 1e3,
+            inf: false,
+            get: |p| p.record_omega,
+            set: |p, v| p.record_omega = v,
+        },
+        step: 0.5,
     },
     // The time integrator: Newmark-β at Δτ, or event-driven exact.
     Field {

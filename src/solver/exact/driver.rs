@@ -21,10 +21,12 @@
 //! segments and events turn a runaway (chatter, a Zeno cascade of impacts)
 //! into a reported stop.
 
+use crate::model::contact::ContactConstants;
 use crate::model::{ContactLaw, Excitation, Method, Params};
 
 use super::super::observer::{Observer, Sample};
 use super::super::result::{Impact, RunResult, Stop, StopReason};
+use super::contact_rk::ContactSystem;
 use super::dynamics::{Branch, Structure, contact_series, free_series, step_for};
 use super::energy::Work;
 use super::quiet::Transition;
@@ -146,6 +148,8 @@ struct Run<'a> {
     /// Unit responses over one free segment, per structure and branch kind
     /// (elastic, yielded); `None` where the excitation is not a sine.
     transitions: Option<[[Transition; 2]; 2]>,
+    /// Next step of a Hertz-type contact phase (0: not yet chosen).
+    rk_step: std::cell::Cell<f64>,
     result: RunResult,
 }
 
@@ -191,6 +195,7 @@ impl<'a> Run<'a> {
                     })
                 },
             ),
+            rk_step: std::cell::Cell::new(0.0),
             result: RunResult {
                 completed: true,
                 method: Method::Exact,
@@ -381,6 +386,9 @@ impl<'a> Run<'a> {
 
     /// Both structures coupled through the contact law.
     fn contact_segment(&self, law: &ContactLaw, ground: &Series, reach: f64) -> Segment {
+        if !law.is_analytic() {
+            return self.contact_rk_segment(law, ground, reach);
+        }
         let s = contact_series(
             &self.structures,
             self.branch,
@@ -401,6 +409,41 @@ impl<'a> Run<'a> {
             .min(self.free_step)
             .min(reach);
         let mut segment = Segment::new(s.x, Some(s.force), h);
+        let separation = segment.x[1].minus(&segment.x[0]).shifted(-self.p.gap);
+        segment.consider(&separation, Event::Separation);
+        self.spring_events(&mut segment);
+        segment
+    }
+
+    /// A Hertz-type contact: one Runge–Kutta step ([`super::contact_rk`]).
+    fn contact_rk_segment(&self, law: &ContactLaw, ground: &Series, reach: f64) -> Segment {
+        let impact = &self.result.impacts[self.open_impact.expect("contact has an impact")];
+        let v0 = impact
+            .approach_velocity
+            .abs()
+            .max(self.p.min_impact_velocity);
+        let system = ContactSystem {
+            structures: &self.structures,
+            branch: self.branch,
+            gap: self.p.gap,
+            law,
+            ground,
+        };
+        let guess = match self.rk_step.get() {
+            h if h > 0.0 => h,
+            _ => 0.01 / self.p.contact_omega,
+        };
+        let piece = system.step(
+            self.x,
+            self.v,
+            guess,
+            self.free_step.min(reach),
+            self.options.contact_tolerance,
+            v0 / self.p.contact_omega,
+            v0,
+        );
+        self.rk_step.set(piece.next);
+        let mut segment = Segment::new(piece.x, Some(piece.force), piece.h);
         let separation = segment.x[1].minus(&segment.x[0]).shifted(-self.p.gap);
         segment.consider(&separation, Event::Separation);
         self.spring_events(&mut segment);
@@ -548,15 +591,9 @@ impl<'a> Run<'a> {
     fn begin_contact(&mut self) {
         let p = self.p;
         let rate = self.v[0] - self.v[1];
-        let law = ContactLaw::new(
-            p.model,
-            p.mass_ratio,
-            p.contact_omega,
-            p.restitution,
-            rate,
-            p.min_impact_velocity,
-        );
+        let law = ContactConstants::of(p).law(rate);
         self.contact = Some(law);
+        self.rk_step.set(0.0);
         let delta = self.x[0] - self.x[1] - p.gap;
         let force = law.force(delta.max(0.0), rate).force;
         self.result.impacts.push(Impact {

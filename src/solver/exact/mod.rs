@@ -9,6 +9,10 @@
 //! coefficients added, integrates the short contact phases to a tolerance
 //! set on the contact's own scale.
 //!
+//! The Hertz-type laws (SPEC §10) are not analytic at contact onset; their
+//! contact phases are stepped by an embedded Runge–Kutta pair instead
+//! ([`contact_rk`]), each step handed on as a polynomial segment.
+//!
 //! Everything that changes the equations is an event located on the series
 //! to round-off ([`roots`]): contact onset and separation, yield, unloading.
 //! Peaks are the true maxima, located at the zeros of the rates. The loop and
@@ -28,6 +32,7 @@
 //! assert_eq!(r.impacts.len(), 9);
 //! ```
 
+pub mod contact_rk;
 pub mod driver;
 pub mod dynamics;
 pub mod energy;

@@ -65,14 +65,7 @@ pub struct Located;
 
 /// The contact law of an onset with approach velocity v₀ (SPEC §4).
 pub fn contact_law(p: &Params, approach_velocity: f64) -> ContactLaw {
-    ContactLaw::new(
-        p.model,
-        p.mass_ratio,
-        p.contact_omega,
-        p.restitution,
-        approach_velocity,
-        p.min_impact_velocity,
-    )
+    crate::model::contact::ContactConstants::of(p).law(approach_velocity)
 }
 
 impl Policy for Plain {

@@ -108,12 +108,15 @@ impl System {
     }
 
     /// (g, dg/dτ) at τ + h from the state's phasor: a rotation for the usual
-    /// step sizes, a fresh evaluation otherwise.
+    /// step sizes under the sine, a fresh evaluation otherwise (pulses and
+    /// records are not rotations: a pulse stops, a record is piecewise linear).
     #[inline]
     fn excitation_after(&self, s: &State, h: f64) -> [f64; 2] {
-        for r in &self.rotations {
-            if r.step == h {
-                return r.advance([s.g, s.g_rate]);
+        if self.excitation.rotates() {
+            for r in &self.rotations {
+                if r.step == h {
+                    return r.advance([s.g, s.g_rate]);
+                }
             }
         }
         self.excitation.phasor(s.tau + h)
