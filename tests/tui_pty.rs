@@ -135,6 +135,9 @@ impl Session {
         cmd.env("TERM", "xterm-256color");
         cmd.env("LANG", "C.UTF-8");
         cmd.env("XDG_CONFIG_HOME", config);
+        if let Ok(v) = std::env::var("POUNDING_PTY_NO_COLOR") {
+            cmd.env("NO_COLOR", v);
+        }
         cmd.cwd(cwd);
         let child = pty.slave.spawn_command(cmd).unwrap();
         drop(pty.slave);

@@ -85,7 +85,9 @@ pub fn run(effect: Effect, user_dir: Option<&Path>) -> Vec<Done> {
             params,
             path,
             history,
-        } => vec![Done::Status(export::write(&params, &path, &history))],
+        } => vec![Done::Status(export::write_history(
+            &params, &path, &history,
+        ))],
         Effect::Figure {
             name,
             title,

@@ -36,8 +36,13 @@ pub fn size_text(bytes: f64) -> String {
     }
 }
 
+/// Writes the full history of `params` to `path`; the status message.
+pub fn write(params: &Params, path: &Path) -> String {
+    write_history(params, path, &History::Full)
+}
+
 /// Writes the chosen history to `path`; the status message.
-pub fn write(params: &Params, path: &Path, history: &History) -> String {
+pub fn write_history(params: &Params, path: &Path, history: &History) -> String {
     let result = match history {
         History::Full => stream(params, path),
         History::Shown(trace) => shown(trace, path),
