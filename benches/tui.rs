@@ -34,7 +34,7 @@ fn keypress_to_redraw(c: &mut Criterion) {
             b.iter(|| {
                 let code = if up { KeyCode::Right } else { KeyCode::Left };
                 up = !up;
-                app.results.clear();
+                app.jobs.results.clear();
                 app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
                 app.compute_blocking();
                 term.draw(|f| ui::render(&app, f)).unwrap();

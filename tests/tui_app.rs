@@ -1,12 +1,16 @@
-//! The explorer driven by keys on a TestBackend: layouts at 80×24 and
-//! 120×40 (insta snapshots), a scripted edit that changes the summary,
-//! invalid input, resizing to 1×1, the worker's latest-wins behaviour.
+//! The explorer driven by keys on a TestBackend: every scene at 60×20,
+//! 80×24 and 120×40 (insta snapshots, and no label touching another), the
+//! traps of typed entry, Esc, quitting, the picker, export and the wheel;
+//! the cursor, zoom, impact table, physical view and the worker.
 
-use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use crossterm::event::{KeyCode, KeyEvent, KeyModifiers, MouseEvent, MouseEventKind};
 use pounding::model::preset::builtin;
-use pounding::tui::app::{App, Look, Mode, Scene};
+use pounding::tui::app::{App, Look, Mode};
+use pounding::tui::effects::{self, Effect, History};
+use pounding::tui::scene::Scene;
 use pounding::tui::ui;
 use pounding::tui::views::summary;
+use pounding::tui::views::units::PI_UNITS;
 use pounding::tui::worker::{Job, Output, Pending, RunSpec, Slot, SpectrumSpec, Worker};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
@@ -30,7 +34,7 @@ fn app(size: (u16, u16)) -> App {
 /// Computes what the scene needs, with compute times zeroed so screens are reproducible.
 fn settle(a: &mut App) {
     a.compute_blocking();
-    for r in &mut a.results {
+    for r in &mut a.jobs.results {
         r.elapsed_ms = 0.0;
     }
 }
@@ -49,25 +53,120 @@ fn screen(a: &App) -> String {
     s
 }
 
-fn key(a: &mut App, code: KeyCode) {
-    a.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+fn key(a: &mut App, code: KeyCode) -> Option<Effect> {
+    a.on_key(KeyEvent::new(code, KeyModifiers::NONE))
+}
+
+fn typed(a: &mut App, text: &str) {
+    for c in text.chars() {
+        key(a, KeyCode::Char(c));
+    }
+}
+
+/// Runs an effect as the main loop would and hands back what came of it.
+fn run(a: &mut App, e: Option<Effect>) {
+    if let Some(e) = e {
+        let dir = a.user_dir.clone();
+        for done in effects::run(e, dir.as_deref()) {
+            a.on_done(done);
+        }
+    }
+}
+
+/// Places where two labels touch: a digit directly against a letter of
+/// another label (`x-2.93`, `0.05-1.96`, `40f_p`), or a number cut short
+/// (`6.3e-`, `-7.`).
+fn touching(screen: &str) -> Vec<String> {
+    let mut bad = Vec::new();
+    for line in screen.lines() {
+        let c: Vec<char> = line.chars().collect();
+        for i in 0..c.len() {
+            let next = |k: usize| c.get(i + k).copied().unwrap_or(' ');
+            let prev = if i > 0 { c[i - 1] } else { ' ' };
+            let exponent = c[i] == 'e' && prev.is_ascii_digit();
+            let glued = c[i].is_ascii_digit()
+                && next(1).is_alphabetic()
+                && next(1) != 'π'
+                && !(next(1) == 'e' && (next(2).is_ascii_digit() || next(2) == '-'));
+            let dash = (c[i].is_alphabetic() && !exponent || c[i].is_ascii_digit())
+                && next(1) == '-'
+                && next(2).is_ascii_digit();
+            let cut = c[i].is_ascii_digit()
+                && (next(1) == '.' && next(2) == ' '
+                    || next(1) == 'e' && (next(2) == ' ' || next(2) == '-' && next(3) == ' '));
+            if glued || dash || cut {
+                let from = i.saturating_sub(8);
+                let to = (i + 8).min(c.len());
+                bad.push(c[from..to].iter().collect());
+            }
+        }
+    }
+    bad
+}
+
+fn scene_screens(size: (u16, u16)) -> Vec<(String, String)> {
+    let mut a = app(size);
+    let mut out = Vec::new();
+    for (name, keys) in [
+        ("time", "t"),
+        ("loops", "f"),
+        ("kelvin", "v"),
+        ("sets", "c"),
+        ("overlay", "o"),
+        ("spectrum", "w"),
+        ("impacts", "i"),
+    ] {
+        if name == "overlay" {
+            key(&mut a, KeyCode::Char('o'));
+        } else {
+            if a.view.overlay {
+                key(&mut a, KeyCode::Char('o'));
+            }
+            typed(&mut a, keys);
+        }
+        settle(&mut a);
+        out.push((name.to_string(), screen(&a)));
+    }
+    // The cursor on the third impact, zoomed, and the physical view of two-buildings.
+    key(&mut a, KeyCode::Char('t'));
+    for _ in 0..3 {
+        key(&mut a, KeyCode::Char('n'));
+    }
+    key(&mut a, KeyCode::Char('z'));
+    settle(&mut a);
+    out.push(("cursor".into(), screen(&a)));
+    let mut b = app(size);
+    let two = b
+        .presets
+        .iter()
+        .position(|p| p.name == "two-buildings")
+        .unwrap();
+    b.recall(two);
+    key(&mut b, KeyCode::Char('u'));
+    settle(&mut b);
+    out.push(("physical".into(), screen(&b)));
+    out
 }
 
 #[test]
-fn layout_80x24() {
-    let mut a = app((80, 24));
-    settle(&mut a);
-    insta::assert_snapshot!("history_80x24", screen(&a));
+fn every_scene_at_three_sizes_has_no_touching_labels() {
+    for size in [(60, 20), (80, 24), (120, 40)] {
+        for (name, s) in scene_screens(size) {
+            let bad = touching(&s);
+            assert!(bad.is_empty(), "{name} at {size:?}: {bad:?}\n{s}");
+            insta::assert_snapshot!(format!("{name}_{}x{}", size.0, size.1), s);
+        }
+    }
 }
 
 #[test]
-fn layout_120x40() {
-    let mut a = app((120, 40));
-    settle(&mut a);
-    insta::assert_snapshot!("history_120x40", screen(&a));
-    key(&mut a, KeyCode::Char('v'));
-    settle(&mut a);
-    insta::assert_snapshot!("kelvin_120x40", screen(&a));
+fn the_label_check_finds_what_it_should() {
+    for bad in ["step 0.05-1.96 ", "x-2.93 ", " 6.3e- ", " min f_p -7. "] {
+        assert!(!touching(bad).is_empty(), "{bad}");
+    }
+    for good in ["x1 x2+Π_d 1e-3 -2.5e-4 f_p 0..39.225 set 1: Π_u 3.222/0.479"] {
+        assert!(touching(good).is_empty(), "{good}: {:?}", touching(good));
+    }
 }
 
 #[test]
@@ -77,25 +176,52 @@ fn ascii_layout_has_no_other_characters() {
     settle(&mut a);
     let s = screen(&a);
     assert!(s.is_ascii(), "{s}");
-    assert!(s.contains("P_w1"), "{s}");
+    assert!(s.contains("Pi_w1"), "{s}");
+    assert!(s.contains("xdot [a_p/w_p]"), "{s}");
+    key(&mut a, KeyCode::Down);
+    a.on_resize(120, 40);
+    assert!(screen(&a).contains("mu = Pi_w2/Pi_w1"), "{}", screen(&a));
+    for _ in 0..4 {
+        key(&mut a, KeyCode::Down);
+    }
+    assert!(screen(&a).contains("Pi_xi"));
+}
+
+#[test]
+fn overlays_use_markers_in_the_legend_without_colour() {
+    let mut a = app((120, 40));
+    typed(&mut a, "co");
+    settle(&mut a);
+    let s = screen(&a);
+    assert!(s.contains("** set 1 x1  ++ set 2 x1"), "{s}");
 }
 
 #[test]
 fn nudging_a_field_changes_the_summary() {
     let mut a = app((120, 40));
     settle(&mut a);
-    let before = summary::line("set 1", a.shown(Slot::Set(0)).unwrap());
+    let line = |a: &App| {
+        summary::line(
+            "set 1",
+            a.shown(Slot::Set(0)).unwrap(),
+            &PI_UNITS,
+            true,
+            200,
+        )
+    };
+    let before = line(&a);
     // Set 1 with improved Kelvin: 9 impacts, Π_u1 ≈ 3.2224 (the core's check).
     assert!(before.contains("impacts 9"), "{before}");
-    assert!(before.contains("Π_u 3.22/"), "{before}");
+    assert!(before.contains("Π_u 3.222/"), "{before}");
     key(&mut a, KeyCode::Char('j')); // Π_ω1
     key(&mut a, KeyCode::Char('l')); // +0.05
     assert_eq!(a.sets[0].params.omega1, 1.1);
     assert_eq!(a.sets[1].params.omega1, 1.5, "only the active set moves");
     settle(&mut a);
-    let after = summary::line("set 1", a.shown(Slot::Set(0)).unwrap());
+    let after = line(&a);
     assert_ne!(before, after);
-    assert!(screen(&a).contains(&after));
+    let shown = line(&a);
+    assert!(screen(&a).contains(&shown[..60]), "{shown}");
     // Shift is ×10, ',' a tenth.
     a.on_key(KeyEvent::new(KeyCode::Right, KeyModifiers::SHIFT));
     assert!((a.sets[0].params.omega1 - 1.6).abs() < 1e-12);
@@ -117,16 +243,15 @@ fn typed_value_is_checked_and_old_value_stays() {
         key(&mut a, KeyCode::Down); // Π_d
     }
     key(&mut a, KeyCode::Enter);
-    for _ in 0..5 {
-        key(&mut a, KeyCode::Backspace);
-    }
+    // Typing replaces the pre-filled value.
     key(&mut a, KeyCode::Char('-'));
     key(&mut a, KeyCode::Char('1'));
     key(&mut a, KeyCode::Enter);
     match &a.mode {
-        Mode::Editing { error: Some(e), .. } => {
-            assert_eq!(e, "`gap` = -1: must be a number in [0, 1e6], or inf")
-        }
+        Mode::Editing(field) => assert_eq!(
+            field.error.as_deref(),
+            Some("`gap` = -1: must be a number in [0, 1e6], or inf")
+        ),
         m => panic!("expected an edit error, got {m:?}"),
     }
     assert_eq!(a.sets[0].params.gap, 0.2);
@@ -156,18 +281,15 @@ fn presets_recall_and_save_never_overwrites_a_builtin() {
     key(&mut a, KeyCode::Char(char::from(b'1' + set1 as u8))); // set1 into set 2
     assert_eq!(a.sets[1].preset.name, "set1");
     key(&mut a, KeyCode::Char('s'));
-    for c in "set2".chars() {
-        key(&mut a, KeyCode::Char(c));
-    }
+    typed(&mut a, "set2");
     key(&mut a, KeyCode::Enter);
-    assert!(matches!(&a.mode, Mode::SaveName { error: Some(e), .. } if e.contains("built-in")));
-    for _ in 0..4 {
-        key(&mut a, KeyCode::Backspace);
-    }
-    for c in "mine".chars() {
-        key(&mut a, KeyCode::Char(c));
-    }
-    key(&mut a, KeyCode::Enter);
+    assert!(
+        matches!(&a.mode, Mode::SaveName(f) if f.error.as_deref().is_some_and(|e| e.contains("built-in")))
+    );
+    a.on_key(KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL));
+    typed(&mut a, "mine");
+    let e = key(&mut a, KeyCode::Enter);
+    run(&mut a, e);
     let saved = dir.join("mine.toml");
     assert!(saved.is_file(), "{:?}", a.status);
     assert!(a.presets.iter().any(|p| p.name == "mine"));
@@ -191,7 +313,7 @@ fn resizing_to_1x1_and_back_does_not_panic() {
     settle(&mut a);
     let mut t = Terminal::new(TestBackend::new(120, 40)).unwrap();
     for scene in Scene::ALL {
-        a.scene = scene;
+        a.view.scene = scene;
         a.mode = Mode::Help;
         for (w, h) in [
             (1, 1),
@@ -227,8 +349,11 @@ fn stale_results_are_dropped() {
         generation: first.generation,
         output: Box::new(old),
     });
-    assert!(a.results.is_empty(), "a superseded run must not be shown");
-    assert!(a.computing);
+    assert!(
+        a.jobs.results.is_empty(),
+        "a superseded run must not be shown"
+    );
+    assert!(a.jobs.computing);
 }
 
 #[test]
@@ -272,6 +397,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
             slot: Slot::Set(0),
             params: p,
             buckets: 100,
+            window: [0.0, p.tau_end()],
         }],
         spectrum: None,
     };
@@ -305,4 +431,250 @@ fn worker_latest_wins_and_cancels_the_running_job() {
     assert_eq!(done[0], (1, true), "{done:?}");
     assert!(done.len() <= 3, "{done:?}");
     assert!(done.iter().filter(|d| d.0 < 4).all(|d| d.1), "{done:?}");
+}
+
+#[test]
+fn esc_never_quits_and_ctrl_letters_do_nothing() {
+    let mut a = app((80, 24));
+    assert_eq!(key(&mut a, KeyCode::Esc), None);
+    assert_eq!(a.mode, Mode::Normal);
+    for c in ['e', 'q', 's', 'w'] {
+        assert_eq!(
+            a.on_key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::CONTROL)),
+            None
+        );
+        assert_eq!(a.mode, Mode::Normal, "Ctrl-{c}");
+    }
+    assert_eq!(
+        a.on_key(KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL)),
+        Some(Effect::Quit)
+    );
+    // Unchanged sets quit at once; a changed one asks, and says so in the key bar.
+    assert_eq!(key(&mut a, KeyCode::Char('q')), Some(Effect::Quit));
+    key(&mut a, KeyCode::Char('l'));
+    assert!(screen(&a).contains("q quit (unsaved)"), "{}", screen(&a));
+    assert_eq!(key(&mut a, KeyCode::Char('q')), None);
+    assert_eq!(a.mode, Mode::ConfirmQuit);
+    assert!(screen(&a).contains("set 1 differs from its preset"));
+    assert_eq!(key(&mut a, KeyCode::Esc), None);
+    assert_eq!(a.mode, Mode::Normal);
+    key(&mut a, KeyCode::Char('q'));
+    assert_eq!(key(&mut a, KeyCode::Char('y')), Some(Effect::Quit));
+}
+
+#[test]
+fn the_key_bar_always_ends_with_help_and_quit() {
+    for w in [60, 80, 120] {
+        let a = app((w, 24));
+        let bar = ui::key_bar(&a, (w - 12) as usize);
+        assert!(bar.ends_with("? help  q quit"), "{w}: {bar}");
+        assert!(bar.chars().count() <= (w - 12) as usize);
+    }
+}
+
+#[test]
+fn typed_entry_edits_in_place() {
+    let mut a = app((80, 24));
+    key(&mut a, KeyCode::Enter); // Π_m = 0.5, selected
+    typed(&mut a, "0.3");
+    key(&mut a, KeyCode::Home);
+    key(&mut a, KeyCode::Delete);
+    typed(&mut a, "1");
+    key(&mut a, KeyCode::End);
+    a.on_key(KeyEvent::new(KeyCode::Char('w'), KeyModifiers::CONTROL));
+    typed(&mut a, "0.25");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.sets[0].params.mass_ratio, 0.25);
+}
+
+#[test]
+fn a_coarse_time_step_is_refused_or_warned_as_the_cli_does() {
+    let mut a = app((80, 24));
+    let dt = pounding::model::params::FIELDS
+        .iter()
+        .position(|f| f.key == "dt")
+        .unwrap();
+    a.selected = dt;
+    for (text, ok) in [("3000", false), ("0.5", false), ("0.02", true)] {
+        key(&mut a, KeyCode::Enter);
+        typed(&mut a, text);
+        key(&mut a, KeyCode::Enter);
+        assert_eq!(a.mode == Mode::Normal, ok, "{text}: {:?}", a.mode);
+        if !ok {
+            key(&mut a, KeyCode::Esc);
+        }
+    }
+    assert_eq!(a.sets[0].params.dt, 0.02);
+    assert!(
+        a.status
+            .as_deref()
+            .unwrap()
+            .contains("steps per contact period")
+    );
+    assert!(screen(&a).contains("steps per contact period"));
+}
+
+#[test]
+fn the_picker_scrolls_to_its_last_entry() {
+    let dir = std::env::temp_dir().join(format!("pounding-picker-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut p = builtin("set1").unwrap();
+    for name in ["alpha", "beta", "gamma", "delta", "zeta"] {
+        p.name = name.into();
+        p.save(&dir.join(format!("{name}.toml"))).unwrap();
+    }
+    let mut a = app((80, 24));
+    a.user_dir = Some(dir.clone());
+    let e = key(&mut a, KeyCode::Char('p'));
+    run(&mut a, e);
+    let n = a.presets.len();
+    assert!(n >= 12, "{n}");
+    for _ in 0..n - 1 {
+        key(&mut a, KeyCode::Down);
+    }
+    let s = screen(&a);
+    let last = a.presets[n - 1].name.clone();
+    assert!(s.contains(&format!("{last} ")), "{s}");
+    assert!(s.contains(&format!("({n}/{n}")), "{s}");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.sets[0].preset.name, last);
+    // A preset saved by another process joins at the end; the others keep their digits.
+    let before: Vec<String> = a.presets.iter().map(|p| p.name.clone()).collect();
+    p.name = "aaa".into();
+    p.save(&dir.join("aaa.toml")).unwrap();
+    let e = key(&mut a, KeyCode::Char('p'));
+    run(&mut a, e);
+    let after: Vec<String> = a.presets.iter().map(|p| p.name.clone()).collect();
+    assert_eq!(after[..before.len()], before[..]);
+    assert_eq!(after.last().unwrap(), "aaa");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn export_asks_for_a_path_and_offers_the_on_screen_history() {
+    let dir = std::env::temp_dir().join(format!("pounding-export-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut a = app((80, 24));
+    a.export_dir = dir.clone();
+    settle(&mut a);
+    assert_eq!(key(&mut a, KeyCode::Char('e')), None);
+    let s = screen(&a);
+    assert!(s.contains("pounding-set1-time.csv"), "{s}");
+    assert!(s.contains("full history: 50266 rows"), "{s}");
+    key(&mut a, KeyCode::Tab);
+    a.on_key(KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL));
+    let path = dir.join("screen.csv");
+    typed(&mut a, path.to_str().unwrap());
+    let e = key(&mut a, KeyCode::Enter);
+    assert!(
+        matches!(
+            &e,
+            Some(Effect::Export {
+                history: History::Shown(_),
+                ..
+            })
+        ),
+        "{e:?}"
+    );
+    run(&mut a, e);
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.starts_with("tau,x1_min,x1_max,"), "{text}");
+    assert!(text.lines().count() > 50);
+    // A run of 100 cycles is large: Enter once shows its size, twice writes.
+    a.sets[0].params.cycles = 100;
+    key(&mut a, KeyCode::Char('e'));
+    assert_eq!(key(&mut a, KeyCode::Enter), None);
+    assert!(screen(&a).contains("MB"), "{}", screen(&a));
+    assert!(matches!(
+        key(&mut a, KeyCode::Enter),
+        Some(Effect::Export {
+            history: History::Full,
+            ..
+        })
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_wheel_nudges_only_over_the_panes() {
+    let mut a = app((80, 24));
+    let wheel = |column, row| MouseEvent {
+        kind: MouseEventKind::ScrollUp,
+        column,
+        row,
+        modifiers: KeyModifiers::NONE,
+    };
+    a.on_mouse(wheel(60, 10));
+    assert_eq!(a.sets[0].params, a.sets[0].preset.params);
+    a.on_mouse(wheel(12, 3)); // Π_m of set 1
+    assert_eq!(a.sets[0].params.mass_ratio, 0.55);
+}
+
+#[test]
+fn cursor_reads_out_and_zoom_shows_detail() {
+    let mut a = app((80, 24));
+    settle(&mut a);
+    let impacts = a.shown(Slot::Set(0)).unwrap().result.impacts.clone();
+    key(&mut a, KeyCode::Char('n'));
+    key(&mut a, KeyCode::Char('n'));
+    assert_eq!(a.view.cursor, Some(impacts[1].start));
+    let s = screen(&a);
+    assert!(s.contains("cursor τ"), "{s}");
+    // Zoomed onto the impact, the buckets cover the window only.
+    key(&mut a, KeyCode::Char('i'));
+    key(&mut a, KeyCode::Char('z'));
+    assert_eq!(a.view.scene, Scene::History);
+    settle(&mut a);
+    let run = a.shown(Slot::Set(0)).unwrap();
+    let [t0, t1] = run.history.window;
+    assert!(t0 < impacts[1].start && t1 > impacts[1].end && t1 - t0 < 1.0);
+    let filled = run.history.filled().count();
+    assert!(
+        filled > 80 && (t1 - t0) / (filled as f64) < 0.01,
+        "{filled}"
+    );
+    // The readout at the impact's start is the sample there, at its τ.
+    let (tau, v) = run.history.at(impacts[1].start).unwrap();
+    let bucket = (t1 - t0) / run.history.slices.len() as f64;
+    assert!(
+        tau >= impacts[1].start - 1e-3 && tau <= impacts[1].start + bucket,
+        "{tau}"
+    );
+    assert!(v[0].is_finite());
+    key(&mut a, KeyCode::Char('Z'));
+    key(&mut a, KeyCode::Char('Z'));
+    key(&mut a, KeyCode::Char('Z'));
+    assert_eq!(a.view.zoom, None);
+}
+
+#[test]
+fn physical_view_edits_metres_and_the_groups_follow() {
+    let mut a = app((120, 40));
+    let two = a
+        .presets
+        .iter()
+        .position(|p| p.name == "two-buildings")
+        .unwrap();
+    a.recall(two);
+    key(&mut a, KeyCode::Char('u'));
+    assert!(a.physical_view());
+    let gap = pounding::tui::physical::ROWS
+        .iter()
+        .position(|r| r.label == "d")
+        .unwrap();
+    a.selected = gap;
+    let before = a.sets[0].params.gap;
+    key(&mut a, KeyCode::Enter);
+    typed(&mut a, "50");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.mode, Mode::Normal);
+    assert!((a.sets[0].params.gap / before - 2.0).abs() < 1e-9);
+    let s = screen(&a);
+    assert!(s.contains("d mm"), "{s}");
+    assert!(s.contains("[set 1]*"), "{s}");
+    assert!(s.contains("two-buildings* (Π_d)"), "{s}");
+    settle(&mut a);
+    assert!(screen(&a).contains("t [s]"));
 }

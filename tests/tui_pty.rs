@@ -1,5 +1,9 @@
 //! End to end: the real binary in a pseudo-terminal (read back through a
-//! vt100 screen), and its refusal to start without a terminal.
+//! vt100 screen): keys, Esc and a split escape sequence that must not quit,
+//! the picker scrolling, typed entry, the export prompt, exit statuses on
+//! signals, no temporary file left after SIGKILL during saves, and the
+//! bytes sent per nudge and per scene switch; and its refusal to start
+//! without a terminal.
 
 use std::io::{Read, Write};
 use std::sync::{Arc, Mutex};
@@ -67,7 +71,11 @@ fn explorer_in_a_pty_takes_keys_and_quits_cleanly() {
     assert!(text.contains("[set 1]"), "{text}");
     writer.write_all(b"?").unwrap();
     wait_for(&screen, "this help");
+    // Set 1 was changed: q asks first, y quits.
     writer.write_all(b"xq").unwrap();
+    writer.flush().unwrap();
+    wait_for(&screen, "Quit anyway");
+    writer.write_all(b"y").unwrap();
     writer.flush().unwrap();
     let start = Instant::now();
     let status = loop {
@@ -102,4 +110,262 @@ fn without_a_terminal_it_points_to_pounding_run() {
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
+}
+
+/// The explorer in a pty of `cols`×`rows`, its screen, its writer and a byte counter.
+struct Session {
+    child: Box<dyn portable_pty::Child + Send + Sync>,
+    screen: Arc<Mutex<vt100::Parser>>,
+    bytes: Arc<Mutex<usize>>,
+    writer: Box<dyn Write + Send>,
+    _master: Box<dyn portable_pty::MasterPty + Send>,
+}
+
+impl Session {
+    fn start(cols: u16, rows: u16, config: &std::path::Path, cwd: &std::path::Path) -> Session {
+        let pty = native_pty_system()
+            .openpty(PtySize {
+                rows,
+                cols,
+                pixel_width: 0,
+                pixel_height: 0,
+            })
+            .unwrap();
+        let mut cmd = CommandBuilder::new(BIN);
+        cmd.env("TERM", "xterm-256color");
+        cmd.env("LANG", "C.UTF-8");
+        cmd.env("XDG_CONFIG_HOME", config);
+        if let Ok(v) = std::env::var("POUNDING_PTY_NO_COLOR") {
+            cmd.env("NO_COLOR", v);
+        }
+        cmd.cwd(cwd);
+        let child = pty.slave.spawn_command(cmd).unwrap();
+        drop(pty.slave);
+        let mut reader = pty.master.try_clone_reader().unwrap();
+        let writer = pty.master.take_writer().unwrap();
+        let screen = Arc::new(Mutex::new(vt100::Parser::new(
+            rows.try_into().unwrap(),
+            cols.try_into().unwrap(),
+            0,
+        )));
+        let bytes = Arc::new(Mutex::new(0));
+        let (sink, count) = (Arc::clone(&screen), Arc::clone(&bytes));
+        std::thread::spawn(move || {
+            let mut buf = [0u8; 4096];
+            while let Ok(n) = reader.read(&mut buf) {
+                if n == 0 {
+                    break;
+                }
+                *count.lock().unwrap() += n;
+                sink.lock().unwrap().process(&buf[..n]);
+            }
+        });
+        Session {
+            child,
+            screen,
+            bytes,
+            writer,
+            _master: pty.master,
+        }
+    }
+
+    fn send(&mut self, keys: &[u8]) {
+        self.writer.write_all(keys).unwrap();
+        self.writer.flush().unwrap();
+    }
+
+    fn wait_for(&self, what: &str) -> String {
+        wait_for(&self.screen, what)
+    }
+
+    fn alive(&mut self) -> bool {
+        self.child.try_wait().unwrap().is_none()
+    }
+
+    /// Waits until nothing has arrived for `quiet`, returns the bytes since `from`.
+    fn settle(&self, from: usize, quiet: Duration) -> usize {
+        let mut last = *self.bytes.lock().unwrap();
+        let mut since = Instant::now();
+        loop {
+            std::thread::sleep(Duration::from_millis(20));
+            let now = *self.bytes.lock().unwrap();
+            if now != last {
+                last = now;
+                since = Instant::now();
+            } else if since.elapsed() > quiet {
+                return now - from;
+            }
+        }
+    }
+
+    fn exit_status(&mut self) -> portable_pty::ExitStatus {
+        let start = Instant::now();
+        loop {
+            if let Some(s) = self.child.try_wait().unwrap() {
+                return s;
+            }
+            assert!(start.elapsed() < Duration::from_secs(10), "did not quit");
+            std::thread::sleep(Duration::from_millis(20));
+        }
+    }
+}
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("pounding-pty-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn esc_and_a_split_escape_sequence_do_not_quit() {
+    let dir = scratch("esc");
+    let mut s = Session::start(80, 24, &dir, &dir);
+    s.wait_for("impacts 9");
+    s.send(b"\x1b");
+    std::thread::sleep(Duration::from_millis(300));
+    assert!(s.alive(), "Esc quit the explorer");
+    // ↓ as ESC, then `[B` in a later read.
+    s.send(b"\x1b");
+    std::thread::sleep(Duration::from_millis(60));
+    s.send(b"[B");
+    std::thread::sleep(Duration::from_millis(300));
+    assert!(s.alive(), "a split escape sequence quit the explorer");
+    s.send(b"q");
+    assert!(s.exit_status().success());
+}
+
+#[test]
+fn picker_scrolls_typed_entry_replaces_and_export_asks_where() {
+    let config = scratch("keys");
+    let presets = config.join("pounding/presets");
+    std::fs::create_dir_all(&presets).unwrap();
+    let mut p = pounding::model::preset::builtin("set1").unwrap();
+    for name in ["aa", "bb", "cc", "dd", "zz-last"] {
+        p.name = name.into();
+        p.save(&presets.join(format!("{name}.toml"))).unwrap();
+    }
+    let mut s = Session::start(80, 24, &config, &config);
+    s.wait_for("impacts 9");
+    // The picker: End goes to the last entry, which is on screen.
+    s.send(b"p");
+    s.wait_for("preset for set 1");
+    s.send(b"\x1b[F");
+    s.wait_for("zz-last");
+    s.send(b"\r");
+    s.wait_for("set 1: zz-last");
+    // Typed entry: Enter on Π_m selects 0.5; typing 0.3 replaces it.
+    s.send(b"\r0.3\r");
+    let text = s.wait_for("0.3 ");
+    assert!(!text.contains("0.50.3"), "{text}");
+    // Export: the prompt proposes a path in the working folder; typing replaces it.
+    s.send(b"e");
+    let text = s.wait_for("export the active run");
+    assert!(text.contains("pounding-zz-last-time.csv"), "{text}");
+    let out = config.join("mine.csv");
+    s.send(b"\t");
+    s.send(out.to_str().unwrap().as_bytes());
+    s.send(b"\r");
+    s.wait_for("exported");
+    assert!(out.is_file());
+    s.send(b"q");
+    s.wait_for("Quit anyway");
+    s.send(b"y");
+    assert!(s.exit_status().success());
+}
+
+#[test]
+fn signals_end_with_128_plus_their_number() {
+    let dir = scratch("signals");
+    for (signal, code) in [(libc_sig::TERM, 143), (libc_sig::HUP, 129)] {
+        let mut s = Session::start(80, 24, &dir, &dir);
+        s.wait_for("impacts 9");
+        let pid = s.child.process_id().unwrap();
+        std::process::Command::new("kill")
+            .args([format!("-{signal}"), pid.to_string()])
+            .status()
+            .unwrap();
+        let status = s.exit_status();
+        assert_eq!(status.exit_code(), code, "{signal}");
+    }
+}
+
+mod libc_sig {
+    pub const TERM: &str = "TERM";
+    pub const HUP: &str = "HUP";
+}
+
+fn temporary_files(dir: &std::path::Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .map(|rd| {
+            rd.filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .filter(|n| n.ends_with(".tmp"))
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+#[test]
+fn saves_killed_with_sigkill_leave_no_temporary_file_after_the_next_start() {
+    let config = scratch("kill");
+    let presets = config.join("pounding/presets");
+    std::fs::create_dir_all(&presets).unwrap();
+    // One left as a killed save leaves it: a process id that no longer runs.
+    let dead = {
+        let mut c = std::process::Command::new("true").spawn().unwrap();
+        let id = c.id();
+        c.wait().unwrap();
+        id
+    };
+    std::fs::write(presets.join(format!(".pounding-{dead}-abcdef.tmp")), "x").unwrap();
+    for round in 0..8u64 {
+        let mut s = Session::start(80, 24, &config, &config);
+        s.wait_for("impacts 9");
+        s.send(format!("l s{}\r", "k".repeat(1 + round as usize)).as_bytes());
+        std::thread::sleep(Duration::from_millis(round * 3));
+        let pid = s.child.process_id().unwrap();
+        std::process::Command::new("kill")
+            .args(["-KILL", &pid.to_string()])
+            .status()
+            .unwrap();
+        s.exit_status();
+    }
+    let mut s = Session::start(80, 24, &config, &config);
+    s.wait_for("impacts 9");
+    assert_eq!(temporary_files(&presets), Vec::<String>::new());
+    assert_eq!(temporary_files(&config), Vec::<String>::new());
+    s.send(b"\x03");
+    s.exit_status();
+}
+
+/// Bytes the explorer sends at 80×24 for one nudge and for one scene
+/// switch, printed for the record (`cargo test --release --test tui_pty
+/// bytes -- --nocapture`), and bounded so a regression shows.
+#[test]
+fn bytes_per_nudge_and_per_scene_switch_at_80x24() {
+    let dir = scratch("bytes");
+    let mut s = Session::start(80, 24, &dir, &dir);
+    s.wait_for("impacts 9");
+    s.send(b"j");
+    s.settle(0, Duration::from_millis(400));
+    let mut nudges = Vec::new();
+    for k in 0..6 {
+        let from = *s.bytes.lock().unwrap();
+        s.send(if k % 2 == 0 { b"l" } else { b"h" });
+        nudges.push(s.settle(from, Duration::from_millis(400)));
+    }
+    let mut switches = Vec::new();
+    for key in [b"f", b"v", b"c", b"w", b"i", b"t"] {
+        let from = *s.bytes.lock().unwrap();
+        s.send(key);
+        switches.push(s.settle(from, Duration::from_millis(600)));
+    }
+    eprintln!("bytes per nudge: {nudges:?}");
+    eprintln!("bytes per scene switch (f v c w i t): {switches:?}");
+    let mean = |v: &[usize]| v.iter().sum::<usize>() / v.len();
+    assert!(mean(&nudges) < 4000, "{nudges:?}");
+    assert!(switches.iter().all(|&b| b < 12000), "{switches:?}");
+    s.send(b"\x03");
+    s.exit_status();
 }

@@ -83,6 +83,9 @@ impl From<crate::model::PresetError> for CliError {
 pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// The explorer's flags, also without the `tui` command.
+    #[command(flatten)]
+    pub tui: tui::TuiArgs,
 }
 
 #[derive(Debug, Subcommand)]
@@ -138,7 +141,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
         Some(Command::Bench(args)) => bench::execute(&args),
         Some(Command::Stress(args)) => stress::execute(&args),
         Some(Command::Figure(args)) => figure::execute(&args),
-        None => tui::execute(&tui::TuiArgs::default()),
+        None => tui::execute(&cli.tui),
     };
     crate::output::temp::remove_live();
     match outcome {

@@ -1,14 +1,15 @@
-//! `pounding tui` (and `pounding` without a command): open the terminal explorer.
+//! `pounding tui` (and `pounding` without a command, with the same flags):
+//! open the terminal explorer.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::Args;
 
 use super::CliError;
 use super::params::user_preset_dir;
 use crate::model::Preset;
-use crate::tui::app::{App, Look};
-use crate::tui::{explorer, terminal};
+use crate::tui::app::{App, Exit, Look};
+use crate::tui::{explorer, presets, terminal};
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct TuiArgs {
@@ -26,6 +27,24 @@ pub struct TuiArgs {
     pub presets: Option<PathBuf>,
 }
 
+/// Where exports and figures are proposed: the current directory when it
+/// is a writable one other than `/`, else the home directory, else the
+/// temporary directory.
+fn export_dir() -> PathBuf {
+    let writable = |d: &Path| {
+        std::fs::metadata(d).is_ok_and(|m| m.is_dir() && !m.permissions().readonly())
+            && tempfile::tempfile_in(d).is_ok()
+    };
+    let cwd = std::env::current_dir().ok();
+    cwd.filter(|d| d != Path::new("/") && writable(d))
+        .or_else(|| {
+            std::env::var_os("HOME")
+                .map(PathBuf::from)
+                .filter(|d| writable(d))
+        })
+        .unwrap_or_else(std::env::temp_dir)
+}
+
 /// Builds the explorer's starting state from the arguments and the environment.
 pub fn app(args: &TuiArgs) -> Result<App, CliError> {
     let dir = user_preset_dir(args.presets.as_ref());
@@ -36,8 +55,10 @@ pub fn app(args: &TuiArgs) -> Result<App, CliError> {
         ascii: args.ascii || !terminal::utf8_locale(),
         color: terminal::color_allowed(),
     };
-    let presets = App::load_presets(dir.as_ref());
-    Ok(App::new(left, right, presets, dir, look))
+    let list = presets::load(dir.as_deref());
+    let mut app = App::new(left, right, list, dir, look);
+    app.export_dir = export_dir();
+    Ok(app)
 }
 
 pub fn execute(args: &TuiArgs) -> Result<(), CliError> {
@@ -45,5 +66,13 @@ pub fn execute(args: &TuiArgs) -> Result<(), CliError> {
         return Err(CliError::Usage(why));
     }
     let app = app(args)?;
-    explorer::run(app).map_err(|e| CliError::Failed(format!("terminal: {e}")))
+    match explorer::run(app) {
+        Ok(Exit::Quit) => Ok(()),
+        // Ended by a signal: the status a shell expects, 128 + its number.
+        Ok(Exit::Signal(signal)) => {
+            crate::output::temp::remove_live();
+            std::process::exit(128 + signal)
+        }
+        Err(e) => Err(CliError::Failed(format!("terminal: {e}"))),
+    }
 }

@@ -1,143 +1,116 @@
-//! The explorer's state and what each key does to it. Pure: no terminal, no
-//! threads. The main loop feeds it events, asks [`App::job`] what to compute,
-//! and runs the [`Effect`]s it returns.
+//! The explorer's dispatcher: it routes each key, click and result to the
+//! part of the state it concerns and returns the [`Effect`] to run, if any.
+//! Pure: no terminal, no threads, no files. The parts live beside it:
+//! the scene and its reading aids in [`super::scene`], text entry in
+//! [`super::text_field`], the computations in [`super::jobs`], the I/O in
+//! [`super::effects`].
 
 use std::path::PathBuf;
 
-use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseEvent, MouseEventKind};
+use crossterm::event::{
+    KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
+};
 
+use super::effects::{Done, Effect, History};
+use super::export;
 use super::fields::{FIELDS, StepSize, nudged_text};
+use super::jobs::{Jobs, Need};
+use super::layout;
+use super::physical::{self, Base};
+use super::presets;
+use super::scene::{Scene, View};
+use super::text_field::{FieldKey, TextField};
 use super::worker::{Job, Output, RunOutput, RunSpec, Slot, SpectrumSpec};
-use crate::analysis::spectrum::SpectrumPoint;
+use crate::figure::FigureName;
 use crate::model::preset::{self, Preset};
 use crate::model::{ContactModel, Params};
 
-/// The scenes, each with the key that shows it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Scene {
-    /// Time histories of the active set.
-    History,
-    /// Force–drift loops (x_i, f_s,i) of both structures (SPEC §3).
-    Loops,
-    /// The active set under Kelvin and improved Kelvin (SPEC §4).
-    Kelvin,
-    /// Set 1 against set 2.
-    Sets,
-    /// Π_u, Π_v against Π_ω1 with and without pounding (SPEC §7).
-    Spectrum,
-}
+pub use super::look::Look;
 
-impl Scene {
-    pub const ALL: [Scene; 5] = [
-        Scene::History,
-        Scene::Loops,
-        Scene::Kelvin,
-        Scene::Sets,
-        Scene::Spectrum,
-    ];
-
-    pub fn key(self) -> char {
-        match self {
-            Scene::History => 't',
-            Scene::Loops => 'f',
-            Scene::Kelvin => 'v',
-            Scene::Sets => 'c',
-            Scene::Spectrum => 'w',
-        }
-    }
-
-    pub fn title(self) -> &'static str {
-        match self {
-            Scene::History => "time",
-            Scene::Loops => "force-drift",
-            Scene::Kelvin => "kelvin vs improved",
-            Scene::Sets => "set 1 vs 2",
-            Scene::Spectrum => "spectrum",
-        }
-    }
-}
-
-/// One parameter pane: the values being explored and the preset they came from.
+/// One parameter pane: the values being explored, the preset they came
+/// from, and the physical base when the preset has a `[physical]` table.
 #[derive(Debug, Clone)]
 pub struct SetState {
     pub preset: Preset,
     pub params: Params,
+    pub base: Option<Base>,
 }
 
 impl SetState {
     pub fn new(preset: Preset) -> Self {
         SetState {
             params: preset.params,
+            base: Base::of(&preset),
             preset,
         }
     }
+
+    /// The keys whose value differs from the preset's, in table order.
+    pub fn modified(&self) -> Vec<&'static str> {
+        FIELDS
+            .iter()
+            .filter(|f| f.text(&self.params) != f.text(&self.preset.params))
+            .map(|f| f.key)
+            .collect()
+    }
 }
+
+/// Longest preset name.
+pub const NAME_MAX: usize = 64;
+/// Longest typed value.
+const VALUE_MAX: usize = 32;
+/// Longest path typed for an export or a figure.
+const PATH_MAX: usize = 1024;
+/// A full export above this many bytes asks once more, naming its size.
+pub const LARGE_EXPORT: f64 = 5e6;
 
 /// What the keyboard currently drives.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Mode {
     Normal,
-    /// Typing an exact value into the selected field; `error` is the last rejection.
-    Editing {
-        text: String,
-        error: Option<String>,
-    },
+    /// Typing an exact value into the selected row.
+    Editing(TextField),
     Help,
     /// Choosing a preset for the active set.
     Picker {
         selected: usize,
     },
     /// Typing a name to save the active set under.
-    SaveName {
-        text: String,
-        error: Option<String>,
-    },
+    SaveName(TextField),
     /// A user preset of that name exists: y overwrites it.
     ConfirmOverwrite {
         name: String,
     },
-}
-
-/// Work for the main loop, outside the pure state.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Effect {
-    Quit,
-    /// Write the full history of a run as CSV to `path`.
+    /// A set has changes that are not saved: y quits anyway.
+    ConfirmQuit,
+    /// Where to export, and which history; `confirmed` once a large size was shown.
     Export {
-        params: Params,
-        path: PathBuf,
+        path: TextField,
+        full: bool,
+        confirmed: bool,
+    },
+    /// Where to write the scene as SVG.
+    Figure {
+        path: TextField,
     },
 }
 
-/// How the screen may be drawn.
+/// How the process should end (the exit status follows the signal).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Look {
-    /// Plain ASCII characters only (`--ascii`, or a locale that is not UTF-8).
-    pub ascii: bool,
-    /// Colours allowed (off with NO_COLOR).
-    pub color: bool,
+pub enum Exit {
+    Quit,
+    /// SIGTERM, SIGHUP or SIGINT: 128 + the signal number.
+    Signal(i32),
 }
-
-/// Progressive spectrum: the grid and the points computed so far.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SpectrumState {
-    pub spec: SpectrumSpec,
-    pub points: Vec<Option<SpectrumPoint>>,
-}
-
-impl SpectrumState {
-    pub fn done(&self) -> usize {
-        self.points.iter().filter(|p| p.is_some()).count()
-    }
-}
-
-/// Results kept for reuse (switching scenes or sets back does not recompute).
-const CACHE: usize = 12;
 
 /// Π_ω1 grid of the spectrum scene.
 pub fn spectrum_grid() -> Vec<f64> {
     (0..=56).map(|i| 0.2 + 0.05 * i as f64).collect()
 }
+
+/// History buckets of the force–drift scene: fine enough that the trace
+/// through each bucket's last sample follows the loop (SPEC §3).
+pub const LOOP_BUCKETS: usize = 2048;
 
 /// The whole explorer state.
 #[derive(Debug)]
@@ -145,28 +118,24 @@ pub struct App {
     pub sets: [SetState; 2],
     /// Index of the active set (0 or 1).
     pub active: usize,
-    /// Selected row of the panes, an index into [`FIELDS`].
+    /// Selected row of the panes: an index into [`FIELDS`], or into
+    /// [`physical::ROWS`] in the physical view.
     pub selected: usize,
-    pub scene: Scene,
+    pub view: View,
     pub mode: Mode,
-    /// Built-in presets, then the user's.
+    /// Built-in presets, then the user's, in stable slots.
     pub presets: Vec<Preset>,
     pub user_dir: Option<PathBuf>,
+    /// Where exports and figures go unless the user types another path.
+    pub export_dir: PathBuf,
     /// A one-line message (saved, exported, an error).
     pub status: Option<String>,
     /// Terminal size (columns, rows).
     pub size: (u16, u16),
     pub look: Look,
-    /// Generation of the newest job; older outputs are dropped.
-    pub generation: u64,
-    /// What the newest job was asked for (the whole need, cached parts included).
-    requested: Option<(Vec<RunSpec>, Option<SpectrumSpec>)>,
-    /// Whether the newest job is still running.
-    pub computing: bool,
-    /// Finished runs, newest last.
-    pub results: Vec<RunOutput>,
-    pub spectrum: Option<SpectrumState>,
-    pub quit: bool,
+    pub jobs: Jobs,
+    /// Whether mouse buttons are captured.
+    pub mouse: bool,
 }
 
 impl App {
@@ -181,61 +150,82 @@ impl App {
             sets: [SetState::new(left), SetState::new(right)],
             active: 0,
             selected: 0,
-            scene: Scene::History,
+            view: View::default(),
             mode: Mode::Normal,
             presets,
             user_dir,
+            export_dir: PathBuf::from("."),
             status: None,
             size: (80, 24),
             look,
-            generation: 0,
-            requested: None,
-            computing: false,
-            results: Vec::new(),
-            spectrum: None,
-            quit: false,
+            jobs: Jobs::default(),
+            mouse: true,
         }
     }
 
     /// The built-in presets followed by the user's own in `dir`.
     pub fn load_presets(dir: Option<&PathBuf>) -> Vec<Preset> {
-        let mut all = preset::builtins();
-        if let Some(d) = dir {
-            for name in preset::user_preset_names(d) {
-                if preset::is_builtin(&name) {
-                    continue;
-                }
-                if let Ok(p) = Preset::load(&d.join(format!("{name}.toml"))) {
-                    all.push(p);
-                }
-            }
-        }
-        all
+        presets::load(dir.map(|d| d.as_path()))
     }
 
     pub fn active_params(&self) -> &Params {
         &self.sets[self.active].params
     }
 
-    // ----- what to compute -----
-
-    /// History buckets for the current layout: the time chart's width in Braille dots.
-    fn history_buckets(&self) -> usize {
-        let columns = super::ui::chart_columns(self.size);
-        (columns as usize * 2).max(16)
+    /// The contact model of the active set.
+    pub fn model(&self) -> ContactModel {
+        self.active_params().model
     }
 
+    /// The scene shown.
+    pub fn scene(&self) -> Scene {
+        self.view.scene
+    }
+
+    /// Whether the panes show physical quantities (the view is on and the
+    /// active set has a `[physical]` table).
+    pub fn physical_view(&self) -> bool {
+        self.view.physical && self.sets[self.active].base.is_some()
+    }
+
+    /// Rows of the panes.
+    pub fn pane_rows(&self) -> usize {
+        if self.physical_view() {
+            physical::ROWS.len()
+        } else {
+            FIELDS.len()
+        }
+    }
+
+    /// The active run's end τ.
+    fn tau_end(&self) -> f64 {
+        self.active_params().tau_end()
+    }
+
+    /// Whether a set differs from its preset (what quitting would lose).
+    pub fn unsaved(&self) -> Vec<usize> {
+        (0..2)
+            .filter(|&i| self.sets[i].params != self.sets[i].preset.params)
+            .collect()
+    }
+
+    // ----- what to compute -----
+
     /// The runs and spectrum the visible scene needs.
-    pub fn needed(&self) -> (Vec<RunSpec>, Option<SpectrumSpec>) {
-        let buckets = self.history_buckets();
-        let set = |i: usize, buckets: usize| RunSpec {
-            slot: Slot::Set(i),
-            params: self.sets[i].params,
-            buckets,
+    pub fn needed(&self) -> Need {
+        let buckets = (layout::chart_columns(self.size) as usize * 2).max(16);
+        let set = |i: usize, buckets: usize| {
+            let params = self.sets[i].params;
+            RunSpec {
+                slot: Slot::Set(i),
+                params,
+                buckets,
+                window: self.view.window(params.tau_end()),
+            }
         };
         let active = set(self.active, buckets);
-        match self.scene {
-            Scene::History => (vec![active], None),
+        match self.view.scene {
+            Scene::History | Scene::Impacts => (vec![active], None),
             Scene::Loops => (vec![set(self.active, LOOP_BUCKETS)], None),
             Scene::Kelvin => {
                 let mut twin = active;
@@ -261,81 +251,34 @@ impl App {
         }
     }
 
-    /// A new job when what the scene needs changed since the last request;
-    /// parts already computed are left out. Bumps the generation.
+    /// A new job when what the scene needs changed since the last request.
     pub fn job(&mut self) -> Option<Job> {
         let need = self.needed();
-        if self.requested.as_ref() == Some(&need) {
-            return None;
-        }
-        self.generation += 1;
-        self.requested = Some(need.clone());
-        let (runs, spectrum) = need;
-        let runs: Vec<RunSpec> = runs
-            .into_iter()
-            .filter(|s| self.cached(s).is_none())
-            .collect();
-        let spectrum = spectrum.filter(|s| {
-            let complete = self
-                .spectrum
-                .as_ref()
-                .is_some_and(|st| st.spec == *s && st.done() == st.points.len());
-            !complete
-        });
-        if let Some(s) = &spectrum {
-            if self.spectrum.as_ref().is_none_or(|st| st.spec != *s) {
-                self.spectrum = Some(SpectrumState {
-                    spec: s.clone(),
-                    points: vec![None; s.grid.len()],
-                });
-            } else if let Some(st) = &mut self.spectrum {
-                st.points.iter_mut().for_each(|p| *p = None);
-            }
-        }
-        self.computing = !runs.is_empty() || spectrum.is_some();
-        if !self.computing {
-            return None;
-        }
-        Some(Job {
-            generation: self.generation,
-            runs,
-            spectrum,
-        })
+        self.jobs.job(need)
     }
 
-    fn cached(&self, spec: &RunSpec) -> Option<&RunOutput> {
-        self.results.iter().rev().find(|o| o.spec == *spec)
-    }
-
-    /// The run to show for a slot: the exact one if computed, else the latest
-    /// of that slot (shown while the new one computes).
+    /// The run to show for a slot (the previous one while a new one computes).
     pub fn shown(&self, slot: Slot) -> Option<&RunOutput> {
-        let (runs, _) = self.requested.clone().unwrap_or_default();
-        runs.iter()
-            .find(|s| s.slot == slot)
-            .and_then(|s| self.cached(s))
-            .or_else(|| self.results.iter().rev().find(|o| o.spec.slot == slot))
+        self.jobs.shown(slot)
     }
 
-    /// Takes a worker output; those of an older generation are dropped.
     pub fn on_output(&mut self, out: Output) {
-        if out.generation() != self.generation {
-            return;
-        }
-        match out {
-            Output::Run { output, .. } => {
-                self.results.retain(|o| o.spec != output.spec);
-                self.results.push(*output);
-                if self.results.len() > CACHE {
-                    self.results.remove(0);
-                }
+        self.jobs.on_output(out);
+    }
+
+    /// What came of an effect.
+    pub fn on_done(&mut self, done: Done) {
+        match done {
+            Done::Status(s) => self.status = Some(s),
+            Done::Saved {
+                set,
+                preset,
+                message,
+            } => {
+                self.sets[set].preset = *preset;
+                self.status = Some(message);
             }
-            Output::Point { index, point, .. } => {
-                if let Some(p) = self.spectrum.as_mut().and_then(|s| s.points.get_mut(index)) {
-                    *p = Some(point);
-                }
-            }
-            Output::Done { .. } => self.computing = false,
+            Done::Presets(user) => self.presets = presets::merge(&self.presets, user),
         }
     }
 
@@ -345,17 +288,32 @@ impl App {
         self.size = (columns, rows);
     }
 
+    /// A click selects a pane row or puts the cursor on the time axis; the
+    /// wheel nudges only over the panes.
     pub fn on_mouse(&mut self, m: MouseEvent) {
         if self.mode != Mode::Normal {
             return;
         }
+        let pane = layout::pane_hit(self.size, self.pane_rows(), self.selected, m.column, m.row);
         match m.kind {
-            MouseEventKind::ScrollUp => self.nudge(1.0, StepSize::Normal),
-            MouseEventKind::ScrollDown => self.nudge(-1.0, StepSize::Normal),
-            MouseEventKind::Down(_) => {
-                if let Some((set, row)) = super::ui::pane_hit(self.size, m.column, m.row) {
+            MouseEventKind::ScrollUp | MouseEventKind::ScrollDown => {
+                if let Some((set, row)) = pane {
                     self.active = set;
                     self.selected = row;
+                    let up = m.kind == MouseEventKind::ScrollUp;
+                    self.nudge(if up { 1.0 } else { -1.0 }, StepSize::Normal);
+                }
+            }
+            MouseEventKind::Down(MouseButton::Left) => {
+                if let Some((set, row)) = pane {
+                    self.active = set;
+                    self.selected = row;
+                } else if self.view.scene.timed()
+                    && self.view.scene != Scene::Loops
+                    && let Some(f) = layout::time_fraction(self.size, m.column, m.row)
+                {
+                    let [a, b] = self.view.window(self.tau_end());
+                    self.view.cursor = Some(a + f * (b - a));
                 }
             }
             _ => {}
@@ -369,23 +327,32 @@ impl App {
         }
         let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
         if ctrl && key.code == KeyCode::Char('c') {
-            self.quit = true;
             return Some(Effect::Quit);
         }
-        match self.mode.clone() {
+        match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal => return self.on_normal_key(key),
-            Mode::Help => self.mode = Mode::Normal,
-            Mode::Editing { text, .. } => self.on_edit_key(key, text),
+            Mode::Help => {}
+            Mode::Editing(field) => self.on_edit_key(key, field),
             Mode::Picker { selected } => self.on_picker_key(key, selected),
-            Mode::SaveName { text, .. } => self.on_save_key(key, text),
+            Mode::SaveName(field) => return self.on_save_key(key, field),
             Mode::ConfirmOverwrite { name } => {
-                self.mode = Mode::Normal;
-                if matches!(key.code, KeyCode::Char('y') | KeyCode::Char('Y')) {
-                    self.save(&name);
-                } else {
-                    self.status = Some(format!("not saved: `{name}` kept as it was"));
+                if matches!(key.code, KeyCode::Char('y' | 'Y')) {
+                    return self.save(&name);
                 }
+                self.status = Some(format!("not saved: `{name}` kept as it was"));
             }
+            Mode::ConfirmQuit => {
+                if matches!(key.code, KeyCode::Char('y' | 'Y' | 'q')) {
+                    return Some(Effect::Quit);
+                }
+                self.status = Some("not quitting".into());
+            }
+            Mode::Export {
+                path,
+                full,
+                confirmed,
+            } => return self.on_export_key(key, path, full, confirmed),
+            Mode::Figure { path } => return self.on_figure_key(key, path),
         }
         None
     }
@@ -400,12 +367,22 @@ impl App {
         } else {
             StepSize::Normal
         };
+        // Ctrl with a letter means nothing here (Ctrl-E is not `e`).
+        if ctrl && matches!(key.code, KeyCode::Char(_)) {
+            return None;
+        }
         self.status = None;
+        let tau_end = self.tau_end();
+        let columns = layout::chart_columns(self.size);
         match key.code {
-            KeyCode::Char('q') | KeyCode::Esc => {
-                self.quit = true;
-                return Some(Effect::Quit);
+            KeyCode::Char('q') => {
+                if self.unsaved().is_empty() {
+                    return Some(Effect::Quit);
+                }
+                self.mode = Mode::ConfirmQuit;
             }
+            // Esc never quits: it hides the cursor.
+            KeyCode::Esc => self.view.cursor = None,
             KeyCode::Up | KeyCode::Char('k') => self.select(-1),
             KeyCode::Down | KeyCode::Char('j') => self.select(1),
             KeyCode::Left | KeyCode::Char('h') | KeyCode::Char('-') => self.nudge(-1.0, size),
@@ -417,10 +394,13 @@ impl App {
             KeyCode::Char(',') => self.nudge(-1.0, StepSize::Fine),
             KeyCode::Char('.') => self.nudge(1.0, StepSize::Fine),
             KeyCode::Enter => {
-                let text = super::fields::value_text(self.active_params(), &FIELDS[self.selected]);
-                self.mode = Mode::Editing { text, error: None };
+                let text = self.row_text(self.active, self.selected);
+                self.mode = Mode::Editing(TextField::new(&text, VALUE_MAX));
             }
-            KeyCode::Tab | KeyCode::BackTab => self.active = 1 - self.active,
+            KeyCode::Tab | KeyCode::BackTab => {
+                self.active = 1 - self.active;
+                self.selected = self.selected.min(self.pane_rows() - 1);
+            }
             KeyCode::Char('m') => {
                 let p = &mut self.sets[self.active].params;
                 p.model = p.model.toggled();
@@ -428,25 +408,94 @@ impl App {
             KeyCode::Char('r') => {
                 let s = &mut self.sets[self.active];
                 s.params = s.preset.params;
+                s.base = Base::of(&s.preset);
                 self.status = Some(format!(
                     "set {} reset to preset `{}`",
                     self.active + 1,
                     s.preset.name
                 ));
             }
+            KeyCode::Char('p') => {
+                self.mode = Mode::Picker { selected: 0 };
+                return Some(Effect::ReloadPresets);
+            }
+            KeyCode::Char('s') => self.mode = Mode::SaveName(TextField::new("", NAME_MAX)),
+            KeyCode::Char('e') => {
+                let path = self.default_path("csv");
+                self.mode = Mode::Export {
+                    path: TextField::new(&path, PATH_MAX),
+                    full: true,
+                    confirmed: false,
+                };
+            }
+            KeyCode::Char('g') => {
+                let path = self.default_path("svg");
+                self.mode = Mode::Figure {
+                    path: TextField::new(&path, PATH_MAX),
+                };
+            }
             KeyCode::Char('?') => self.mode = Mode::Help,
-            KeyCode::Char('p') => self.mode = Mode::Picker { selected: 0 },
-            KeyCode::Char('s') => {
-                self.mode = Mode::SaveName {
-                    text: String::new(),
-                    error: None,
+            KeyCode::Char('o') => {
+                self.view.overlay = !self.view.overlay;
+                self.view.scene = Scene::Sets;
+            }
+            KeyCode::Char('u') => {
+                if self.sets.iter().all(|s| s.base.is_none()) {
+                    self.status = Some(
+                        "physical units: neither set's preset has a [physical] table \
+                         (try preset two-buildings)"
+                            .into(),
+                    );
+                } else {
+                    self.view.physical = !self.view.physical;
+                    self.selected = 0;
                 }
             }
-            KeyCode::Char('e') => return Some(self.export()),
+            KeyCode::Char('M') => {
+                self.mouse = !self.mouse;
+                self.status = Some(if self.mouse {
+                    "mouse on: click selects, wheel nudges a pane row".into()
+                } else {
+                    "mouse off: the terminal selects text (M turns it back on)".into()
+                });
+                return Some(Effect::Mouse(self.mouse));
+            }
+            KeyCode::Char('[') => self.view.move_cursor(-1.0, columns, tau_end),
+            KeyCode::Char(']') => self.view.move_cursor(1.0, columns, tau_end),
+            KeyCode::Char('{') => self.view.move_cursor(-10.0, columns, tau_end),
+            KeyCode::Char('}') => self.view.move_cursor(10.0, columns, tau_end),
+            KeyCode::Char('n') | KeyCode::Char('N') => {
+                let forward = key.code == KeyCode::Char('n');
+                let found = self
+                    .shown(Slot::Set(self.active))
+                    .map(|r| r.result.impacts.clone())
+                    .and_then(|impacts| self.view.jump_impact(&impacts, forward, tau_end));
+                if found.is_none() {
+                    let which = if forward { "after" } else { "before" };
+                    self.status = Some(format!("no impact {which} the cursor"));
+                }
+            }
+            KeyCode::Char('z') => {
+                let impact = (self.view.scene == Scene::Impacts)
+                    .then(|| self.shown(Slot::Set(self.active)))
+                    .flatten()
+                    .and_then(|r| {
+                        let i = self.view.selected_impact(&r.result.impacts)?;
+                        r.result.impacts.get(i).copied()
+                    });
+                match impact {
+                    Some(i) => {
+                        self.view.zoom_impact(&i, tau_end);
+                        self.view.scene = Scene::History;
+                    }
+                    None => self.view.zoom_in(tau_end),
+                }
+            }
+            KeyCode::Char('Z') => self.view.zoom_out(tau_end),
             KeyCode::Char(c @ '1'..='9') => self.recall(c as usize - '1' as usize),
             KeyCode::Char(c) => {
                 if let Some(s) = Scene::ALL.iter().find(|s| s.key() == c) {
-                    self.scene = *s;
+                    self.view.scene = *s;
                 }
             }
             _ => {}
@@ -454,16 +503,63 @@ impl App {
         None
     }
 
+    /// `DIR/pounding-PRESET-SCENE.EXT` in the export folder.
+    fn default_path(&self, extension: &str) -> String {
+        let name = format!(
+            "pounding-{}-{}.{extension}",
+            self.sets[self.active].preset.name,
+            self.view.scene.title().replace(' ', "-")
+        );
+        self.export_dir.join(name).display().to_string()
+    }
+
     fn select(&mut self, delta: isize) {
-        let n = FIELDS.len() as isize;
+        let n = self.pane_rows() as isize;
         self.selected = (self.selected as isize + delta).rem_euclid(n) as usize;
     }
 
-    /// Moves the selected field of the active set by one step of `size`.
+    /// The text of a pane row of set `i`.
+    pub fn row_text(&self, i: usize, row: usize) -> String {
+        let s = &self.sets[i];
+        match (&s.base, self.physical_view()) {
+            (Some(base), true) => physical::value_text(base, &s.params, &physical::ROWS[row]),
+            (None, true) => "-".into(),
+            (_, false) => FIELDS[row].text(&s.params),
+        }
+    }
+
+    /// Takes new parameters for the active set; warns when Δτ cannot
+    /// resolve a contact (the rule `pounding run` applies).
+    fn accept(&mut self, next: Params) {
+        self.sets[self.active].params = next;
+        if let Some(w) = next.coarse_dt_warning() {
+            self.status = Some(w);
+        }
+    }
+
+    /// Moves the selected row of the active set by one step of `size`.
     pub fn nudge(&mut self, direction: f64, size: StepSize) {
+        if self.physical_view() {
+            let steps = direction
+                * match size {
+                    StepSize::Fine => 0.2,
+                    StepSize::Normal => 1.0,
+                    StepSize::Coarse => 10.0,
+                };
+            let s = &self.sets[self.active];
+            let base = s.base.expect("physical view has a base");
+            match physical::nudged(&base, &s.params, self.selected, steps) {
+                Ok((next, base)) => {
+                    self.sets[self.active].base = Some(base);
+                    self.accept(next);
+                }
+                Err(e) => self.status = Some(e),
+            }
+            return;
+        }
         let field = &FIELDS[self.selected];
-        let params = &mut self.sets[self.active].params;
-        match nudged_text(params, field, direction, size) {
+        let params = self.sets[self.active].params;
+        match nudged_text(&params, field, direction, size) {
             None => {
                 self.status = Some(format!(
                     "`{}` is inf: press Enter to type a finite value",
@@ -471,69 +567,62 @@ impl App {
                 ))
             }
             Some(text) => {
-                let mut next = *params;
+                let mut next = params;
                 match next.set(field.key, &text).and_then(|_| next.validate()) {
-                    Ok(()) => *params = next,
+                    Ok(()) => self.accept(next),
                     Err(e) => self.status = Some(e.to_string()),
                 }
             }
         }
     }
 
-    fn on_edit_key(&mut self, key: KeyEvent, mut text: String) {
-        match key.code {
-            KeyCode::Esc => self.mode = Mode::Normal,
-            KeyCode::Enter => {
-                let field = &FIELDS[self.selected];
-                let mut next = self.sets[self.active].params;
-                match next.set(field.key, &text).and_then(|_| next.validate()) {
-                    Ok(()) => {
-                        self.sets[self.active].params = next;
-                        self.mode = Mode::Normal;
-                    }
-                    Err(e) => {
-                        self.mode = Mode::Editing {
-                            text,
-                            error: Some(e.to_string()),
-                        }
-                    }
-                }
+    fn on_edit_key(&mut self, key: KeyEvent, mut field: TextField) {
+        match field.on_key(key) {
+            FieldKey::Cancel => return,
+            FieldKey::Submit => {}
+            FieldKey::Edited | FieldKey::Other => {
+                self.mode = Mode::Editing(field);
+                return;
             }
-            KeyCode::Backspace => {
-                text.pop();
-                self.mode = Mode::Editing { text, error: None };
+        }
+        let text = field.text();
+        let s = &self.sets[self.active];
+        let outcome = if self.physical_view() {
+            let base = s.base.expect("physical view has a base");
+            physical::apply(&base, &s.params, self.selected, &text).map(|(p, b)| (p, Some(b)))
+        } else {
+            let mut next = s.params;
+            next.set(FIELDS[self.selected].key, &text)
+                .and_then(|_| next.validate())
+                .map(|()| (next, s.base))
+                .map_err(|e| e.to_string())
+        };
+        match outcome {
+            Ok((next, base)) => {
+                self.sets[self.active].base = base;
+                self.accept(next);
             }
-            KeyCode::Char(c) if text.chars().count() < 32 => {
-                text.push(c);
-                self.mode = Mode::Editing { text, error: None };
+            Err(e) => {
+                field.error = Some(e);
+                self.mode = Mode::Editing(field);
             }
-            _ => {}
         }
     }
 
     fn on_picker_key(&mut self, key: KeyEvent, selected: usize) {
         let n = self.presets.len().max(1);
-        match key.code {
-            KeyCode::Up | KeyCode::Char('k') => {
-                self.mode = Mode::Picker {
-                    selected: (selected + n - 1) % n,
-                }
-            }
-            KeyCode::Down | KeyCode::Char('j') => {
-                self.mode = Mode::Picker {
-                    selected: (selected + 1) % n,
-                }
-            }
-            KeyCode::Enter => {
-                self.mode = Mode::Normal;
-                self.recall(selected);
-            }
-            KeyCode::Char(c @ '1'..='9') => {
-                self.mode = Mode::Normal;
-                self.recall(c as usize - '1' as usize);
-            }
-            _ => self.mode = Mode::Normal,
-        }
+        let next = match key.code {
+            KeyCode::Up | KeyCode::Char('k') => (selected + n - 1) % n,
+            KeyCode::Down | KeyCode::Char('j') => (selected + 1) % n,
+            KeyCode::Home => 0,
+            KeyCode::End => n - 1,
+            KeyCode::PageUp => selected.saturating_sub(5),
+            KeyCode::PageDown => (selected + 5).min(n - 1),
+            KeyCode::Enter => return self.recall(selected),
+            KeyCode::Char(c @ '1'..='9') => return self.recall(c as usize - '1' as usize),
+            _ => return,
+        };
+        self.mode = Mode::Picker { selected: next };
     }
 
     /// Loads preset number `index` (0-based) into the active set.
@@ -553,31 +642,28 @@ impl App {
         }
     }
 
-    fn on_save_key(&mut self, key: KeyEvent, mut text: String) {
-        match key.code {
-            KeyCode::Esc => self.mode = Mode::Normal,
-            KeyCode::Enter => match self.check_save_name(&text) {
-                Err(error) => {
-                    self.mode = Mode::SaveName {
-                        text,
-                        error: Some(error),
+    fn on_save_key(&mut self, key: KeyEvent, mut field: TextField) -> Option<Effect> {
+        match field.on_key(key) {
+            FieldKey::Cancel => None,
+            FieldKey::Submit => {
+                let name = field.text();
+                match self.check_save_name(&name) {
+                    Err(error) => {
+                        field.error = Some(error);
+                        self.mode = Mode::SaveName(field);
+                        None
                     }
+                    Ok(path) if path.is_file() => {
+                        self.mode = Mode::ConfirmOverwrite { name };
+                        None
+                    }
+                    Ok(_) => self.save(&name),
                 }
-                Ok(path) if path.is_file() => self.mode = Mode::ConfirmOverwrite { name: text },
-                Ok(_) => {
-                    self.mode = Mode::Normal;
-                    self.save(&text);
-                }
-            },
-            KeyCode::Backspace => {
-                text.pop();
-                self.mode = Mode::SaveName { text, error: None };
             }
-            KeyCode::Char(c) if text.chars().count() < 40 => {
-                text.push(c);
-                self.mode = Mode::SaveName { text, error: None };
+            _ => {
+                self.mode = Mode::SaveName(field);
+                None
             }
-            _ => {}
         }
     }
 
@@ -602,57 +688,124 @@ impl App {
         Ok(dir.join(format!("{name}.toml")))
     }
 
-    /// Saves the active set as user preset `name` (atomically) and makes it the set's preset.
-    fn save(&mut self, name: &str) {
+    /// The effect that saves the active set as user preset `name`.
+    fn save(&mut self, name: &str) -> Option<Effect> {
         let path = match self.check_save_name(name) {
             Ok(p) => p,
             Err(e) => {
                 self.status = Some(e);
-                return;
+                return None;
             }
         };
-        let base = &self.sets[self.active].preset;
+        let s = &self.sets[self.active];
         let preset = Preset {
             name: name.to_string(),
-            description: format!("saved from the explorer, based on {}", base.name),
-            params: self.sets[self.active].params,
-            spectrum: base.spectrum.clone(),
-            physical: base.physical.clone(),
+            description: format!("saved from the explorer, based on {}", s.preset.name),
+            params: s.params,
+            spectrum: s.preset.spectrum.clone(),
+            physical: s.base.map(|b| physical::table(&b, &s.params)),
             path: Some(path.clone()),
             lines: Default::default(),
         };
-        match preset.save(&path) {
-            Ok(()) => {
-                self.status = Some(format!("saved {}", path.display()));
-                self.sets[self.active].preset = preset;
-                self.presets = App::load_presets(self.user_dir.as_ref());
-            }
-            Err(e) => self.status = Some(format!("could not save {}: {e}", path.display())),
-        }
-    }
-
-    fn export(&mut self) -> Effect {
-        let set = &self.sets[self.active];
-        let stamp = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map_or(0, |d| d.as_secs());
-        let path = PathBuf::from(format!("pounding-{}-{stamp}.csv", set.preset.name));
-        self.status = Some(format!("exporting {} ...", path.display()));
-        Effect::Export {
-            params: set.params,
+        self.status = Some(format!("saving {} ...", crate::output::shown(&path)));
+        Some(Effect::Save {
+            set: self.active,
+            preset: Box::new(preset),
             path,
+        })
+    }
+
+    fn on_export_key(
+        &mut self,
+        key: KeyEvent,
+        mut path: TextField,
+        mut full: bool,
+        mut confirmed: bool,
+    ) -> Option<Effect> {
+        match path.on_key(key) {
+            FieldKey::Cancel => return None,
+            FieldKey::Other if key.code == KeyCode::Tab || key.code == KeyCode::BackTab => {
+                full = !full;
+                confirmed = false;
+            }
+            FieldKey::Submit => {
+                let params = *self.active_params();
+                let bytes = export::full_bytes(&params);
+                if full && bytes > LARGE_EXPORT && !confirmed {
+                    path.error = Some(format!(
+                        "the full history is about {}: Enter again writes it, Tab picks the on-screen one",
+                        export::size_text(bytes)
+                    ));
+                    self.mode = Mode::Export {
+                        path,
+                        full,
+                        confirmed: true,
+                    };
+                    return None;
+                }
+                let history = if full {
+                    History::Full
+                } else {
+                    match self.shown(Slot::Set(self.active)) {
+                        Some(r) => History::Shown(Box::new(r.history.clone())),
+                        None => {
+                            self.status = Some("nothing on screen yet to export".into());
+                            return None;
+                        }
+                    }
+                };
+                let target = PathBuf::from(path.text());
+                self.status = Some(format!("exporting {} ...", crate::output::shown(&target)));
+                return Some(Effect::Export {
+                    params,
+                    path: target,
+                    history,
+                });
+            }
+            _ => {}
+        }
+        self.mode = Mode::Export {
+            path,
+            full,
+            confirmed,
+        };
+        None
+    }
+
+    fn on_figure_key(&mut self, key: KeyEvent, path: TextField) -> Option<Effect> {
+        let mut path = path;
+        match path.on_key(key) {
+            FieldKey::Cancel => None,
+            FieldKey::Submit => {
+                let (name, params) = self.figure_of_scene();
+                let target = PathBuf::from(path.text());
+                self.status = Some(format!("drawing {} ...", crate::output::shown(&target)));
+                Some(Effect::Figure {
+                    name,
+                    title: self.sets[self.active].preset.name.clone(),
+                    params,
+                    path: target,
+                })
+            }
+            _ => {
+                self.mode = Mode::Figure { path };
+                None
+            }
         }
     }
 
-    /// The contact model of the active set.
-    pub fn model(&self) -> ContactModel {
-        self.active_params().model
+    /// The figure of the visible scene: the same quantities as the screen.
+    pub fn figure_of_scene(&self) -> (FigureName, Params) {
+        let p = *self.active_params();
+        let name = match self.view.scene {
+            Scene::History | Scene::Sets | Scene::Impacts => FigureName::History,
+            Scene::Loops => FigureName::Loops,
+            Scene::Kelvin => FigureName::ContactLaws,
+            Scene::Spectrum => FigureName::Spectrum,
+        };
+        (name, p)
     }
 }
-
-/// History buckets of the force–drift scene: fine enough that a bucket's
-/// midpoint traces the loop (SPEC §3).
-pub const LOOP_BUCKETS: usize = 2048;
 
 impl App {
     /// Computes what the visible scene needs on the calling thread (tests,

@@ -1,12 +1,13 @@
 //! Everything the main loop reacts to arrives on one channel: terminal input
-//! (a thread blocked in `crossterm::event::read`), worker results, export
-//! reports and termination signals. The loop blocks on the channel, so an
-//! idle explorer uses no CPU and redraws nothing.
+//! (a thread blocked in `crossterm::event::read`), worker results, what came
+//! of file effects, and termination signals. The loop blocks on the channel,
+//! so an idle explorer uses no CPU and redraws nothing.
 
 use std::sync::mpsc::Sender;
 
 use crossterm::event::{Event, KeyEvent, MouseEvent};
 
+use super::effects::Done;
 use super::worker::Output;
 
 /// An input of the main loop.
@@ -17,10 +18,10 @@ pub enum AppEvent {
     Resize(u16, u16),
     /// A result of the solver thread.
     Worker(Output),
-    /// A message for the status line (from an export thread).
-    Status(String),
-    /// SIGTERM, SIGHUP or SIGINT: restore the terminal and leave.
-    Terminate,
+    /// What came of a file effect.
+    Done(Done),
+    /// SIGTERM, SIGHUP or SIGINT (its number): restore the terminal and leave.
+    Terminate(i32),
 }
 
 /// Turns a crossterm event into the app's own, if it matters.
@@ -55,8 +56,8 @@ pub fn spawn_signals(tx: Sender<AppEvent>) -> std::io::Result<()> {
     std::thread::Builder::new()
         .name("pounding-signals".into())
         .spawn(move || {
-            for _ in signals.forever() {
-                if tx.send(AppEvent::Terminate).is_err() {
+            for signal in signals.forever() {
+                if tx.send(AppEvent::Terminate(signal)).is_err() {
                     return;
                 }
             }

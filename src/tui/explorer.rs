@@ -1,16 +1,23 @@
-//! The main loop: wait for an event, let the app take it, start the job the
-//! visible scene now needs, redraw once for a burst of events.
+//! The main loop: wait for an event, let the app take it, run the effect it
+//! returns, start the job the visible scene now needs, redraw once for a
+//! burst of events. All I/O of the explorer happens here or on threads
+//! started here.
 
 use std::sync::mpsc;
 
-use super::app::{App, Effect};
+use super::app::{App, Exit};
+use super::effects::{self, Effect};
 use super::event::{self, AppEvent};
 use super::worker::Worker;
-use super::{export, terminal, ui};
+use super::{terminal, ui};
 
 /// Runs the explorer until the user quits or a signal arrives; the terminal
-/// is restored whatever happens.
-pub fn run(mut app: App) -> std::io::Result<()> {
+/// is restored whatever happens. Temporary files left in the preset and
+/// export folders by an earlier process that was killed are removed first.
+pub fn run(mut app: App) -> std::io::Result<Exit> {
+    for dir in app.user_dir.iter().chain(std::iter::once(&app.export_dir)) {
+        crate::output::temp::remove_stale(dir);
+    }
     let (tx, rx) = mpsc::channel();
     let worker_tx = tx.clone();
     let worker = Worker::start(move |out| {
@@ -18,7 +25,7 @@ pub fn run(mut app: App) -> std::io::Result<()> {
     });
     event::spawn_signals(tx.clone())?;
     let mut tty = terminal::setup()?;
-    let outcome = (|| -> std::io::Result<()> {
+    let outcome = (|| -> std::io::Result<Exit> {
         let size = tty.size()?;
         app.on_resize(size.width, size.height);
         event::spawn_input(tx.clone());
@@ -27,33 +34,52 @@ pub fn run(mut app: App) -> std::io::Result<()> {
                 worker.submit(job);
             }
             terminal::draw(&mut tty, |f| ui::render(&app, f))?;
-            let Ok(first) = rx.recv() else { return Ok(()) };
+            let Ok(first) = rx.recv() else {
+                return Ok(Exit::Quit);
+            };
             // Take the whole burst before drawing again.
             for ev in std::iter::once(first).chain(rx.try_iter()) {
-                match ev {
-                    AppEvent::Key(k) => match app.on_key(k) {
-                        Some(Effect::Quit) => return Ok(()),
-                        Some(Effect::Export { params, path }) => {
-                            let tx = tx.clone();
-                            std::thread::spawn(move || {
-                                let _ = tx.send(AppEvent::Status(export::write(&params, &path)));
-                            });
-                        }
-                        None => {}
-                    },
-                    AppEvent::Mouse(m) => app.on_mouse(m),
+                let effect = match ev {
+                    AppEvent::Key(k) => app.on_key(k),
+                    AppEvent::Mouse(m) => {
+                        app.on_mouse(m);
+                        None
+                    }
                     AppEvent::Resize(w, h) => {
                         app.on_resize(w, h);
                         tty.autoresize()?;
+                        None
                     }
-                    AppEvent::Worker(out) => app.on_output(out),
-                    AppEvent::Status(s) => app.status = Some(s),
-                    AppEvent::Terminate => return Ok(()),
+                    AppEvent::Worker(out) => {
+                        app.on_output(out);
+                        None
+                    }
+                    AppEvent::Done(done) => {
+                        app.on_done(done);
+                        None
+                    }
+                    AppEvent::Terminate(signal) => return Ok(Exit::Signal(signal)),
+                };
+                match effect {
+                    None => {}
+                    Some(Effect::Quit) => return Ok(Exit::Quit),
+                    Some(Effect::Mouse(on)) => terminal::set_mouse(on)?,
+                    Some(e) => {
+                        let tx = tx.clone();
+                        let dir = app.user_dir.clone();
+                        std::thread::spawn(move || {
+                            for done in effects::run(e, dir.as_deref()) {
+                                let _ = tx.send(AppEvent::Done(done));
+                            }
+                        });
+                    }
                 }
             }
         }
     })();
     drop(worker);
     let restored = terminal::restore();
-    outcome.and(restored)
+    crate::output::temp::remove_live();
+    let exit = outcome?;
+    restored.map(|()| exit)
 }

@@ -1,22 +1,38 @@
 //! The terminal explorer (`pounding`, `pounding tui`): two parameter panes,
-//! live charts of the runs they describe, Kelvin against improved Kelvin,
-//! spectra, and preset recall.
+//! live charts of the runs they describe with a time cursor and zoom, Kelvin
+//! against improved Kelvin, set 1 against set 2, spectra, the impact table,
+//! physical units and preset recall.
 //!
-//! - [`app`]: the state and what a key does to it (pure);
-//! - [`fields`]: the rows of a parameter pane and their nudge steps;
-//! - [`event`]: terminal input, worker results and signals as one channel;
-//! - [`worker`]: the solver on a background thread, latest wins;
-//! - [`ui`] and [`views`]: drawing, a pure function of the state;
-//! - [`terminal`]: setup, restore (on quit, panic, SIGTERM), synchronized frames;
-//! - [`explorer`]: the main loop wiring them;
-//! - [`export`]: the active run as CSV.
+//! After the ratatui templates: state and input apart from drawing, all I/O
+//! as effects run by the main loop.
+//!
+//! - [`app`]: the dispatcher, what each key does (pure);
+//! - [`scene`]: the scene, cursor, zoom and overlay;
+//! - [`text_field`]: the one text-entry type;
+//! - [`jobs`] and [`worker`]: what to compute, on a background thread, latest wins;
+//! - [`trace`]: the history decimated to the visible window;
+//! - [`effects`], [`export`], [`presets`]: saving, exporting, figures, the preset list;
+//! - [`fields`], [`physical`]: the pane rows in Π-groups or physical units;
+//! - [`event`]: terminal input, results and signals as one channel;
+//! - [`layout`], [`ui`], [`views`], [`look`]: drawing, a pure function of the state;
+//! - [`terminal`]: set-up and restore, synchronized frames;
+//! - [`explorer`]: the main loop wiring them.
 
 pub mod app;
+pub mod effects;
 pub mod event;
 pub mod explorer;
 pub mod export;
 pub mod fields;
+pub mod jobs;
+pub mod layout;
+pub mod look;
+pub mod physical;
+pub mod presets;
+pub mod scene;
 pub mod terminal;
+pub mod text_field;
+pub mod trace;
 pub mod ui;
 pub mod views;
 pub mod worker;

@@ -1,20 +1,16 @@
-//! The terminal: checks that there is one, enters raw mode and the alternate
-//! screen, and restores it on quit, on panic (a hook) and on SIGTERM (via the
-//! event loop). Every frame is wrapped in a synchronized update so a slow
-//! link never shows a half-drawn screen.
+//! The terminal: checks that there is one, sets it up with ratatui's own
+//! `init` (raw mode, alternate screen, a panic hook that restores first),
+//! captures mouse buttons only (no motion reports, so moving the mouse costs
+//! nothing), and restores it all on the way out. Every frame is wrapped in a
+//! synchronized update so a slow link never shows a half-drawn screen.
 
-use std::io::{self, IsTerminal, Stdout, Write};
+use std::io::{self, IsTerminal, Write};
 
-use crossterm::event::{DisableMouseCapture, EnableMouseCapture};
-use crossterm::terminal::{
-    BeginSynchronizedUpdate, EndSynchronizedUpdate, EnterAlternateScreen, LeaveAlternateScreen,
-    disable_raw_mode, enable_raw_mode,
-};
-use crossterm::{cursor, execute, queue};
-use ratatui::backend::CrosstermBackend;
-use ratatui::{Frame, Terminal};
+use crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
+use crossterm::{execute, queue};
+use ratatui::{DefaultTerminal, Frame};
 
-pub type Tty = Terminal<CrosstermBackend<Stdout>>;
+pub type Tty = DefaultTerminal;
 
 /// Why the explorer cannot start here, if it cannot.
 pub fn unusable() -> Option<String> {
@@ -46,25 +42,32 @@ pub fn color_allowed() -> bool {
     std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
 }
 
-/// Raw mode, alternate screen, mouse; a panic hook that restores first.
+/// Raw mode and the alternate screen (ratatui's `init`), mouse buttons on.
 pub fn setup() -> io::Result<Tty> {
-    let previous = std::panic::take_hook();
-    std::panic::set_hook(Box::new(move |info| {
-        let _ = restore();
-        previous(info);
-    }));
-    enable_raw_mode()?;
-    let mut out = io::stdout();
-    execute!(out, EnterAlternateScreen, EnableMouseCapture, cursor::Hide)?;
-    Terminal::new(CrosstermBackend::new(out))
+    let tty = ratatui::try_init()?;
+    set_mouse(true)?;
+    Ok(tty)
 }
 
-/// Leaves raw mode and the alternate screen, shows the cursor.
-pub fn restore() -> io::Result<()> {
+/// Mouse reporting of button presses and the wheel only (xterm mode 1000,
+/// SGR coordinates 1006): no motion events. Off leaves the mouse to the
+/// terminal, so text can be selected.
+pub fn set_mouse(on: bool) -> io::Result<()> {
     let mut out = io::stdout();
-    let r = execute!(out, DisableMouseCapture, LeaveAlternateScreen, cursor::Show);
-    disable_raw_mode()?;
-    r
+    let text: &[u8] = if on {
+        b"\x1b[?1000h\x1b[?1006h"
+    } else {
+        b"\x1b[?1006l\x1b[?1000l"
+    };
+    out.write_all(text)?;
+    out.flush()
+}
+
+/// Mouse off, then ratatui's `restore` (raw mode off, main screen, cursor shown).
+pub fn restore() -> io::Result<()> {
+    let mouse = set_mouse(false);
+    ratatui::try_restore()?;
+    mouse
 }
 
 /// Draws one frame inside a synchronized update.

@@ -9,10 +9,11 @@ use std::sync::{Arc, Condvar, Mutex};
 use std::thread::JoinHandle;
 use std::time::Instant;
 
+use super::trace::Trace;
 use crate::analysis::spectrum::{SpectrumPoint, point};
 use crate::model::Method;
 use crate::model::Params;
-use crate::solver::{Decimated, Observer, RunResult, Sample, error_vs_exact, solve};
+use crate::solver::{Observer, RunResult, Sample, error_vs_exact, solve};
 
 /// Which run of the explorer a result belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -23,13 +24,15 @@ pub enum Slot {
     Twin,
 }
 
-/// One run to compute: its parameters and how many history buckets to keep.
+/// One run to compute: its parameters and the history to keep.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RunSpec {
     pub slot: Slot,
     pub params: Params,
     /// Time buckets of the decimated history (chart width × 2 Braille dots).
     pub buckets: usize,
+    /// The time window [τ0, τ1] the history covers (the whole run unless zoomed).
+    pub window: [f64; 2],
 }
 
 /// A spectrum to compute point by point (SPEC §7).
@@ -56,7 +59,7 @@ pub struct Job {
 pub struct RunOutput {
     pub spec: RunSpec,
     pub result: RunResult,
-    pub history: Decimated,
+    pub history: Trace,
     /// Wall time of the run in milliseconds.
     pub elapsed_ms: f64,
     /// Newmark's largest relative peak error against the exact method on the
@@ -221,7 +224,7 @@ pub fn run_job(job: &Job, current: &dyn Fn() -> bool, send: &dyn Fn(Output)) -> 
 
 /// A decimated history that stops when its job is superseded.
 struct Cancellable<'a> {
-    history: Decimated,
+    history: Trace,
     current: &'a dyn Fn() -> bool,
 }
 
@@ -239,7 +242,7 @@ impl Observer for Cancellable<'_> {
 pub fn compute_run(spec: &RunSpec, current: &dyn Fn() -> bool) -> RunOutput {
     let start = Instant::now();
     let mut observer = Cancellable {
-        history: Decimated::new(spec.buckets, spec.params.tau_end()),
+        history: Trace::new(spec.buckets, spec.window),
         current,
     };
     let result = solve(&spec.params, &mut observer);

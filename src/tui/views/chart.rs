@@ -1,168 +1,532 @@
-//! Chart building blocks shared by the scenes: decimated histories as
-//! min/max spans (so peaks stay visible), bounds, labelled axes, a legend,
-//! Braille markers (or plain ones with `--ascii`).
+//! The explorer's line chart, drawn cell by cell so that every label has its
+//! place and none touches another:
+//!
+//! ```text
+//! title [scaling] ×1eN        ── x1  ── x2      <- header: title left, legend right
+//!    4┤      ⡠⠊⠉⠢⡀                               <- y labels in a 5-column gutter
+//!    0┼┄┄┄┄┄⡜┄┄┄┄┄⢣┄┄┄┄                             zero line where the data is not
+//!   -4┤⠊         ⠑                                 cursor: a vertical line
+//!     0    10    20    30        τ [2π = 1 cycle]  <- x labels (last chart only), title right
+//! ```
+//!
+//! Ticks are round ([`super::ticks`]). Lines are Braille when colours tell
+//! series apart (or there is one series); otherwise each series has its own
+//! character marker, shown in the legend, so overlays stay readable under
+//! NO_COLOR and `--ascii`. The legend sits in the header row, never over data.
 
-use ratatui::Frame;
+use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
-use ratatui::symbols::Marker;
-use ratatui::text::Span;
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, LegendPosition};
 
-use crate::solver::Decimated;
-use crate::tui::app::Look;
+use super::ticks::{self, LABEL_WIDTH};
+use crate::tui::look::{Look, palette};
 
-/// Columns reserved for the y-axis labels.
-pub const Y_LABEL_WIDTH: u16 = 7;
+/// Columns left of the plot: the tick labels and the axis line.
+pub const GUTTER: u16 = LABEL_WIDTH as u16 + 1;
 
-/// Channel indices of `Sample::channels`.
-pub const X1: usize = 0;
-pub const V1: usize = 1;
-pub const X2: usize = 3;
-pub const V2: usize = 4;
-pub const FS1: usize = 6;
-pub const FS2: usize = 7;
-pub const FP: usize = 8;
+/// Markers of the series when colours cannot tell them apart.
+const MARKERS: [char; 5] = ['*', '+', 'o', '#', 'x'];
 
-/// One line of a chart.
+/// How a series is drawn.
+#[derive(Debug, Clone)]
+enum Shape {
+    /// A polyline through the points.
+    Line(Vec<(f64, f64)>),
+    /// A vertical span (x, lo, hi) per time bucket, each joined to the next.
+    Spans(Vec<(f64, f64, f64)>),
+}
+
+/// One named series of a chart, in its quantity's fixed colour.
+#[derive(Debug, Clone)]
 pub struct Series {
     pub name: String,
-    pub points: Vec<(f64, f64)>,
+    pub color: Color,
+    shape: Shape,
 }
 
 impl Series {
-    pub fn new(name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+    pub fn line(name: impl Into<String>, color: Color, points: Vec<(f64, f64)>) -> Series {
         Series {
             name: name.into(),
-            points,
+            color,
+            shape: Shape::Line(points),
+        }
+    }
+
+    pub fn spans(name: impl Into<String>, color: Color, spans: Vec<(f64, f64, f64)>) -> Series {
+        Series {
+            name: name.into(),
+            color,
+            shape: Shape::Spans(spans),
+        }
+    }
+
+    fn values(&self) -> Box<dyn Iterator<Item = (f64, f64)> + '_> {
+        match &self.shape {
+            Shape::Line(p) => Box::new(p.iter().copied()),
+            Shape::Spans(s) => Box::new(s.iter().flat_map(|&(x, a, b)| [(x, a), (x, b)])),
         }
     }
 }
 
-/// A channel over time as a vertical span per bucket: (τ, min), (τ, max).
-pub fn spans(h: &Decimated, channel: usize, offset: f64) -> Vec<(f64, f64)> {
-    h.filled()
-        .flat_map(|b| {
-            [
-                (b.tau, b.min[channel] + offset),
-                (b.tau, b.max[channel] + offset),
-            ]
-        })
-        .filter(|(_, y)| y.is_finite())
-        .collect()
-}
-
-/// Two channels against each other through each bucket's midpoint (the
-/// force–drift loop needs pairs; buckets are fine enough to trace it).
-pub fn pairs(h: &Decimated, cx: usize, cy: usize) -> Vec<(f64, f64)> {
-    let mid = |b: &crate::solver::observer::Bucket, c: usize| 0.5 * (b.min[c] + b.max[c]);
-    h.filled()
-        .map(|b| (mid(b, cx), mid(b, cy)))
-        .filter(|(x, y)| x.is_finite() && y.is_finite())
-        .collect()
-}
-
-/// Bounds of every point, widened a little; [0, 1] when there are none.
-pub fn bounds(series: &[Series], pick: impl Fn(&(f64, f64)) -> f64) -> [f64; 2] {
+/// The range of `pick` over all finite points; `None` without any.
+pub fn data_range(series: &[Series], pick: impl Fn((f64, f64)) -> f64) -> Option<[f64; 2]> {
     let (lo, hi) = series
         .iter()
-        .flat_map(|s| s.points.iter().map(&pick))
+        .flat_map(|s| s.values())
+        .map(pick)
         .filter(|v| v.is_finite())
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
             (a.min(v), b.max(v))
         });
-    if !lo.is_finite() {
-        return [0.0, 1.0];
-    }
-    let pad = ((hi - lo) * 0.05).max(1e-9);
-    [lo - pad, hi + pad]
+    lo.is_finite().then_some([lo, hi])
 }
 
-/// A short number for an axis label.
-pub fn short(v: f64) -> String {
-    let a = v.abs();
-    if a != 0.0 && !(1e-2..1e4).contains(&a) {
-        format!("{v:.1e}")
-    } else if a >= 100.0 {
-        format!("{v:.0}")
-    } else {
-        format!("{v:.2}")
-    }
-}
-
-fn labels(b: [f64; 2]) -> Vec<Span<'static>> {
-    vec![
-        Span::raw(short(b[0])),
-        Span::raw(short(0.5 * (b[0] + b[1]))),
-        Span::raw(short(b[1])),
-    ]
-}
-
-const COLORS: [Color; 5] = [
-    Color::Cyan,
-    Color::Yellow,
-    Color::Magenta,
-    Color::Green,
-    Color::Red,
-];
-const ASCII_MARKERS: [char; 5] = ['*', '+', 'o', '#', 'x'];
-
-/// What a chart shows besides its lines.
-pub struct ChartSpec<'a> {
-    pub title: &'a str,
-    pub x_title: &'a str,
-    /// x bounds; `None` fits the data.
+/// What a chart shows besides its series.
+#[derive(Debug, Clone, Default)]
+pub struct ChartSpec {
+    /// The quantity and its scaling, e.g. `x [a_p/ω_p²]`.
+    pub title: String,
+    /// The x axis name and scaling, drawn right of the x labels.
+    pub x_title: String,
+    /// x range; `None` fits the data.
     pub x_bounds: Option<[f64; 2]>,
-    /// Whether to draw the x labels (off for stacked charts but the last).
+    /// y range before snapping to round ticks; `None` fits the data (a
+    /// common scale passes the same range to several charts).
+    pub y_range: Option<[f64; 2]>,
+    /// Whether this chart draws the x labels (the last of a stack does).
     pub x_labels: bool,
+    /// A vertical line at this x (the cursor, or the current Π_ω1).
+    pub cursor: Option<f64>,
 }
 
-/// Draws `series` as a line chart with axes, labels and a legend.
-pub fn draw(frame: &mut Frame, area: Rect, look: Look, spec: &ChartSpec, series: &[Series]) {
-    let xb = spec.x_bounds.unwrap_or_else(|| bounds(series, |p| p.0));
-    let yb = bounds(series, |p| p.1);
-    let datasets: Vec<Dataset> = series
-        .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let marker = if look.ascii {
-                Marker::Custom(ASCII_MARKERS[i % ASCII_MARKERS.len()])
+/// Rows a chart needs at least: header, two plot rows, x labels.
+pub const MIN_ROWS: u16 = 4;
+
+/// The plot's cells in `area` (for mouse hits and the history's width).
+pub fn plot_area(area: Rect, x_labels: bool) -> Rect {
+    let labels = u16::from(x_labels);
+    Rect {
+        x: area.x + GUTTER.min(area.width),
+        y: area.y + 1.min(area.height),
+        width: area.width.saturating_sub(GUTTER),
+        height: area.height.saturating_sub(1 + labels),
+    }
+}
+
+fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style, right: u16) -> u16 {
+    let mut col = x;
+    for c in text.chars() {
+        if col >= right {
+            break;
+        }
+        let mut tmp = [0u8; 4];
+        buf[(col, y)]
+            .set_symbol(c.encode_utf8(&mut tmp))
+            .set_style(style);
+        col += 1;
+    }
+    col
+}
+
+fn width(s: &str) -> u16 {
+    s.chars().count() as u16
+}
+
+/// Pixel grid of the plot: Braille (2×4 dots per cell) or one cell per dot.
+struct Raster {
+    cols: usize,
+    rows: usize,
+    /// Dots per cell across and down.
+    dx: usize,
+    dy: usize,
+    bits: Vec<u8>,
+    owner: Vec<Option<usize>>,
+    x: [f64; 2],
+    y: [f64; 2],
+}
+
+impl Raster {
+    fn new(plot: Rect, braille: bool, x: [f64; 2], y: [f64; 2]) -> Raster {
+        let (dx, dy) = if braille { (2, 4) } else { (1, 1) };
+        let n = plot.width as usize * plot.height as usize;
+        Raster {
+            cols: plot.width as usize,
+            rows: plot.height as usize,
+            dx,
+            dy,
+            bits: vec![0; n],
+            owner: vec![None; n],
+            x,
+            y,
+        }
+    }
+
+    fn px(&self, x: f64) -> f64 {
+        (x - self.x[0]) / (self.x[1] - self.x[0]) * ((self.cols * self.dx) as f64 - 1.0)
+    }
+
+    fn py(&self, y: f64) -> f64 {
+        (self.y[1] - y) / (self.y[1] - self.y[0]) * ((self.rows * self.dy) as f64 - 1.0)
+    }
+
+    /// The cell row of a value (for labels and the zero line).
+    fn row(&self, y: f64) -> usize {
+        ((self.py(y).round().max(0.0) as usize) / self.dy).min(self.rows.saturating_sub(1))
+    }
+
+    fn col(&self, x: f64) -> usize {
+        ((self.px(x).round().max(0.0) as usize) / self.dx).min(self.cols.saturating_sub(1))
+    }
+
+    fn dot(&mut self, px: i64, py: i64, series: usize) {
+        let (w, h) = ((self.cols * self.dx) as i64, (self.rows * self.dy) as i64);
+        if px < 0 || py < 0 || px >= w || py >= h {
+            return;
+        }
+        let (cx, cy) = (px as usize / self.dx, py as usize / self.dy);
+        let i = cy * self.cols + cx;
+        let bit = if self.dx == 2 {
+            const DOTS: [[u8; 4]; 2] = [[0x01, 0x02, 0x04, 0x40], [0x08, 0x10, 0x20, 0x80]];
+            DOTS[px as usize % 2][py as usize % 4]
+        } else {
+            1
+        };
+        self.bits[i] |= bit;
+        self.owner[i] = Some(series);
+    }
+
+    fn segment(&mut self, a: (f64, f64), b: (f64, f64), series: usize) {
+        if !(a.0.is_finite() && a.1.is_finite() && b.0.is_finite() && b.1.is_finite()) {
+            return;
+        }
+        let lim = |v: f64, n: usize| v.clamp(-(n as f64), 2.0 * n as f64);
+        let (w, h) = (self.cols * self.dx, self.rows * self.dy);
+        let (x0, y0) = (lim(self.px(a.0), w), lim(self.py(a.1), h));
+        let (x1, y1) = (lim(self.px(b.0), w), lim(self.py(b.1), h));
+        let n = (x1 - x0).abs().max((y1 - y0).abs()).ceil().max(1.0) as usize;
+        for k in 0..=n {
+            let t = k as f64 / n as f64;
+            let x = (x0 + (x1 - x0) * t).round() as i64;
+            let y = (y0 + (y1 - y0) * t).round() as i64;
+            self.dot(x, y, series);
+        }
+    }
+
+    fn draw(&mut self, s: &Series, index: usize) {
+        match &s.shape {
+            Shape::Line(points) => {
+                if points.len() == 1 {
+                    self.segment(points[0], points[0], index);
+                }
+                for w in points.windows(2) {
+                    self.segment(w[0], w[1], index);
+                }
+            }
+            Shape::Spans(spans) => {
+                let mut previous: Option<(f64, f64, f64)> = None;
+                for &(x, lo, hi) in spans {
+                    // Join to the previous bucket so the trace is continuous.
+                    let (a, b) = match previous {
+                        Some((_, plo, phi)) => (lo.min(phi), hi.max(plo)),
+                        None => (lo, hi),
+                    };
+                    self.segment((x, a), (x, b), index);
+                    previous = Some((x, lo, hi));
+                }
+            }
+        }
+    }
+}
+
+/// Draws `series` into `area` with the labels laid out by the rules above.
+pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: &[Series]) {
+    let area = area.intersection(buf.area);
+    if area.height == 0 || area.width == 0 {
+        return;
+    }
+    let braille = !look.ascii && (look.color || series.len() <= 1);
+    let plot = plot_area(area, spec.x_labels);
+    let axis = if look.color {
+        Style::new().fg(palette::AXIS)
+    } else {
+        Style::new()
+    };
+    let x_range = spec
+        .x_bounds
+        .or_else(|| data_range(series, |p| p.0))
+        .unwrap_or([0.0, 1.0]);
+    let x_range = if x_range[1] > x_range[0] {
+        x_range
+    } else {
+        [x_range[0] - 0.5, x_range[0] + 0.5]
+    };
+    let y_data = spec
+        .y_range
+        .or_else(|| data_range(series, |p| p.1))
+        .unwrap_or([0.0, 1.0]);
+    let y_count = (plot.height as usize / 2).max(1);
+    let yt = ticks::ticks(y_data[0], y_data[1], y_count, true);
+    let xt = ticks::ticks(
+        x_range[0],
+        x_range[1],
+        (plot.width as usize / 9).max(1),
+        false,
+    );
+
+    let title = look.text(&format!("{}{}", spec.title, ticks::scale_note(yt.exponent)));
+    let rows = header(buf, area, &title, &legend(look, series, braille));
+    let mut plot = plot;
+    if rows == 2 {
+        plot.y += 1;
+        plot.height = plot.height.saturating_sub(1);
+    }
+    if plot.width < 2 || plot.height < 1 {
+        return;
+    }
+
+    let mut raster = Raster::new(plot, braille, x_range, yt.bounds);
+    for (i, s) in series.iter().enumerate() {
+        raster.draw(s, i);
+    }
+    // Data cells.
+    for r in 0..raster.rows {
+        for c in 0..raster.cols {
+            let i = r * raster.cols + c;
+            let Some(owner) = raster.owner[i] else {
+                continue;
+            };
+            let symbol = if braille {
+                char::from_u32(0x2800 + raster.bits[i] as u32).unwrap_or('*')
             } else {
-                Marker::Braille
+                MARKERS[owner % MARKERS.len()]
             };
             let style = if look.color {
-                Style::new().fg(COLORS[i % COLORS.len()])
+                Style::new().fg(series[owner].color)
             } else {
                 Style::new()
             };
-            Dataset::default()
-                .name(s.name.clone())
-                .marker(marker)
-                .graph_type(GraphType::Line)
-                .style(style)
-                .data(&s.points)
-        })
-        .collect();
-    let mut x_axis = Axis::default().bounds(xb);
-    if spec.x_labels {
-        x_axis = x_axis.labels(labels(xb)).title(spec.x_title.to_string());
+            let mut tmp = [0u8; 4];
+            buf[(plot.x + c as u16, plot.y + r as u16)]
+                .set_symbol(symbol.encode_utf8(&mut tmp))
+                .set_style(style);
+        }
     }
-    // A legend box needs room; in a short chart the names go in the title instead.
-    let roomy = area.height >= 12;
-    let title = if roomy {
-        spec.title.to_string()
+    let empty = |raster: &Raster, r: usize, c: usize| raster.owner[r * raster.cols + c].is_none();
+    // The zero line, where there is no data.
+    let zero_row = (yt.bounds[0] < 0.0 && yt.bounds[1] > 0.0).then(|| raster.row(0.0));
+    if let Some(r) = zero_row {
+        for c in 0..raster.cols {
+            if empty(&raster, r, c) {
+                buf[(plot.x + c as u16, plot.y + r as u16)]
+                    .set_symbol("┄")
+                    .set_style(axis);
+            }
+        }
+    }
+    // The cursor.
+    if let Some(x) = spec
+        .cursor
+        .filter(|x| (x_range[0]..=x_range[1]).contains(x))
+    {
+        let c = raster.col(x);
+        let style = if look.color {
+            Style::new().fg(palette::CURSOR)
+        } else {
+            Style::new()
+        };
+        for r in 0..raster.rows {
+            let cell = &mut buf[(plot.x + c as u16, plot.y + r as u16)];
+            if empty(&raster, r, c) || Some(r) == zero_row && cell.symbol() == "┄" {
+                cell.set_symbol("│").set_style(style);
+            } else if look.color {
+                cell.set_bg(Color::DarkGray);
+            }
+        }
+    }
+    // The y axis and its labels, one label per row at most.
+    let axis_x = area.x + GUTTER - 1;
+    if axis_x < area.right() {
+        for r in 0..plot.height {
+            buf[(axis_x, plot.y + r)].set_symbol("│").set_style(axis);
+        }
+    }
+    let mut used = None;
+    for (v, label) in yt.values.iter().zip(&yt.labels) {
+        let r = raster.row(*v);
+        if used == Some(r) {
+            continue;
+        }
+        used = Some(r);
+        let y = plot.y + r as u16;
+        let mark = if Some(r) == zero_row { "┼" } else { "┤" };
+        if axis_x < area.right() {
+            buf[(axis_x, y)].set_symbol(mark).set_style(axis);
+        }
+        let w = width(label).min(LABEL_WIDTH as u16);
+        let x = (area.x + LABEL_WIDTH as u16).saturating_sub(w);
+        put(buf, x, y, label, Style::new(), axis_x);
+    }
+    if spec.x_labels {
+        x_labels(buf, area, plot, look, spec, &xt, &raster);
+    }
+}
+
+/// The right end of text in `area`: one blank column is kept before a
+/// neighbour (a chart to the right), so labels of two charts never touch.
+fn margin(buf: &Buffer, area: Rect) -> u16 {
+    if area.right() < buf.area.right() {
+        area.right() - 1
     } else {
-        let names: Vec<&str> = series.iter().map(|s| s.name.as_str()).collect();
-        format!("{} [{}]", spec.title, names.join(", "))
+        area.right()
+    }
+}
+
+/// The legend entries: a marker sample in the series' colour and the name.
+fn legend(look: Look, series: &[Series], braille: bool) -> Vec<(String, String, Style)> {
+    series
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let sample = if braille {
+                "──".to_string()
+            } else {
+                MARKERS[i % MARKERS.len()].to_string().repeat(2)
+            };
+            let style = if look.color {
+                Style::new().fg(s.color)
+            } else {
+                Style::new()
+            };
+            (sample, format!(" {}", look.text(&s.name)), style)
+        })
+        .collect()
+}
+
+fn legend_width(entries: &[(String, String, Style)]) -> u16 {
+    let w: u16 = entries.iter().map(|(a, b, _)| width(a) + width(b)).sum();
+    w + 2 * entries.len().saturating_sub(1) as u16
+}
+
+/// The header: the title left and the legend right on one row, or the
+/// legend on a second row when both do not fit and the chart is tall
+/// enough; entries that still do not fit are left out rather than drawn
+/// over each other. Returns the rows used.
+fn header(buf: &mut Buffer, area: Rect, title: &str, entries: &[(String, String, Style)]) -> u16 {
+    let right = margin(buf, area);
+    let end = put(buf, area.x, area.y, title, Style::new(), right);
+    let one_row = end + 2 + legend_width(entries) <= right;
+    let (row, left) = if one_row || area.height < 7 {
+        (area.y, end + 2)
+    } else {
+        (area.y + 1, area.x + GUTTER)
     };
-    let chart = Chart::new(datasets)
-        .block(Block::new().title(title))
-        .x_axis(x_axis)
-        .y_axis(Axis::default().bounds(yb).labels(labels(yb)))
-        .legend_position(roomy.then_some(LegendPosition::TopRight))
-        .hidden_legend_constraints((
-            ratatui::layout::Constraint::Percentage(60),
-            ratatui::layout::Constraint::Percentage(90),
-        ));
-    frame.render_widget(chart, area);
+    let mut fitting = 0;
+    while fitting < entries.len() && left + legend_width(&entries[..=fitting]) <= right {
+        fitting += 1;
+    }
+    let mut x = right - legend_width(&entries[..fitting]);
+    for (k, (sample, name, style)) in entries[..fitting].iter().enumerate() {
+        if k > 0 {
+            x += 2;
+        }
+        x = put(buf, x, row, sample, *style, right);
+        x = put(buf, x, row, name, Style::new(), right);
+    }
+    if row == area.y { 1 } else { 2 }
+}
+
+fn x_labels(
+    buf: &mut Buffer,
+    area: Rect,
+    plot: Rect,
+    look: Look,
+    spec: &ChartSpec,
+    xt: &ticks::Ticks,
+    raster: &Raster,
+) {
+    let y = area.bottom() - 1;
+    let right = margin(buf, area);
+    let title = look.text(&format!(
+        "{}{}",
+        spec.x_title,
+        ticks::scale_note(xt.exponent)
+    ));
+    let tw = width(&title);
+    // The labels that fit left of `limit`, at least two spaces apart.
+    let place = |limit: u16| {
+        let mut placed = Vec::new();
+        let mut next_free = area.x;
+        for (v, label) in xt.values.iter().zip(&xt.labels) {
+            let w = width(label);
+            let center = plot.x + raster.col(*v) as u16;
+            let start = center.saturating_sub(w / 2).max(area.x);
+            if start < next_free || start + w > limit {
+                continue;
+            }
+            placed.push((start, label.clone()));
+            next_free = start + w + 2;
+        }
+        placed
+    };
+    // The axis title goes right of the labels when a label still fits
+    // beside it; otherwise the labels alone.
+    let with_title = (tw + 2 < right.saturating_sub(area.x))
+        .then(|| place(right - tw - 2))
+        .filter(|p| !p.is_empty());
+    let placed = match with_title {
+        Some(p) => {
+            put(buf, right - tw, y, &title, Style::new(), right);
+            p
+        }
+        None => place(right),
+    };
+    for (start, label) in placed {
+        put(buf, start, y, &label, Style::new(), right);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn text(buf: &Buffer) -> String {
+        let mut s = String::new();
+        for y in 0..buf.area.height {
+            for x in 0..buf.area.width {
+                s.push_str(buf[(x, y)].symbol());
+            }
+            s.push('\n');
+        }
+        s
+    }
+
+    #[test]
+    fn labels_legend_and_zero_line_have_their_places() {
+        let area = Rect::new(0, 0, 40, 8);
+        let mut buf = Buffer::empty(area);
+        let look = Look {
+            ascii: false,
+            color: false,
+        };
+        let s = [
+            Series::line("x1", Color::Cyan, vec![(0.0, -2.93), (50.0, 3.2)]),
+            Series::line("x2", Color::Yellow, vec![(0.0, 1.0), (50.0, -1.0)]),
+        ];
+        let spec = ChartSpec {
+            title: "x [l]".into(),
+            x_title: "τ".into(),
+            x_bounds: Some([0.0, 50.0]),
+            x_labels: true,
+            ..Default::default()
+        };
+        draw(&mut buf, area, look, &spec, &s);
+        let t = text(&buf);
+        let lines: Vec<&str> = t.lines().collect();
+        assert!(lines[0].starts_with("x [l]"), "{t}");
+        assert!(lines[0].ends_with("** x1  ++ x2"), "{t}");
+        assert!(t.contains("0┼"), "{t}");
+        assert!(lines[7].starts_with("      0"), "{t}");
+        assert!(lines[7].ends_with("τ"), "{t}");
+    }
 }

@@ -2,6 +2,7 @@
 
 pub mod chart;
 pub mod history;
+pub mod impacts;
 pub mod kelvin;
 pub mod loops;
 pub mod overlay;
@@ -9,3 +10,5 @@ pub mod params;
 pub mod sets;
 pub mod spectrum;
 pub mod summary;
+pub mod ticks;
+pub mod units;

@@ -1,36 +1,50 @@
 //! Boxes drawn over the scene: the help listing every key, the preset
-//! picker, the save prompt and the overwrite question.
+//! picker (a list that scrolls to its selection), the save and path
+//! prompts, and the overwrite and quit questions.
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Flex, Layout, Rect};
 use ratatui::style::{Modifier, Style};
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Clear, Paragraph, Wrap};
+use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap};
 
-use crate::tui::app::{App, Scene};
+use crate::tui::app::{App, LARGE_EXPORT};
+use crate::tui::export;
+use crate::tui::text_field::TextField;
+use crate::tui::worker::Slot;
 
 /// Every key, as the help overlay and the README list them.
-pub const KEYS: [(&str, &str); 21] = [
+pub const KEYS: [(&str, &str); 31] = [
     ("↑/↓, k/j", "select a parameter"),
     ("←/→, h/l, -/+", "nudge it by one step"),
     ("Shift+←/→, H/L", "nudge by ten steps"),
     (", / .  (Ctrl+←/→)", "nudge by a tenth of a step"),
-    ("Enter", "type an exact value (Esc cancels)"),
+    ("Enter", "type an exact value (typing replaces it)"),
     ("Tab", "switch the active set"),
     ("m", "toggle Kelvin / improved Kelvin"),
     ("r", "reset the active set to its preset"),
     ("1-9", "recall preset 1-9 into the active set"),
     ("p", "preset picker"),
     ("s", "save the active set as a user preset"),
-    ("e", "export the active run as CSV"),
+    ("e", "export a history as CSV (asks where)"),
+    ("g", "write the scene as an SVG figure"),
     ("t", "scene: time histories"),
     ("f", "scene: force-drift loops"),
     ("v", "scene: Kelvin vs improved Kelvin"),
-    ("c", "scene: set 1 vs set 2"),
+    ("c", "scene: set 1 vs set 2 (o overlays them)"),
     ("w", "scene: spectrum against Π_ω1"),
-    ("mouse", "click selects, wheel nudges"),
+    ("i", "scene: impact table and energy terms"),
+    ("u", "physical units (presets with [physical])"),
+    ("[ / ]", "move the time cursor ({ } by ten)"),
+    ("n / N", "cursor to the next / previous impact"),
+    ("z / Z", "zoom in around the cursor / out"),
+    ("Esc", "hide the cursor (never quits)"),
+    ("mouse", "click selects or sets the cursor"),
+    ("", "wheel over the panes nudges"),
+    ("M", "mouse on/off (off: select text)"),
     ("?", "this help"),
-    ("q, Esc, Ctrl-C", "quit"),
+    ("q", "quit (asks if a set is unsaved)"),
+    ("Ctrl-C", "quit at once"),
     ("", "any key closes this help"),
 ];
 
@@ -44,28 +58,43 @@ fn centered(area: Rect, width: u16, height: u16) -> Rect {
     h
 }
 
-fn boxed(frame: &mut Frame, area: Rect, title: &str, lines: Vec<Line>, width: u16) {
+fn boxed(app: &App, frame: &mut Frame, area: Rect, title: &str, lines: Vec<String>, width: u16) {
     let r = centered(area, width, lines.len() as u16 + 2);
     frame.render_widget(Clear, r);
+    let lines: Vec<Line> = lines
+        .into_iter()
+        .map(|l| Line::from(app.look.text(&l)))
+        .collect();
     frame.render_widget(
         Paragraph::new(lines)
             .wrap(Wrap { trim: false })
-            .block(Block::bordered().title(format!(" {title} "))),
+            .block(Block::bordered().title(app.look.text(&format!(" {title} ")))),
         r,
     );
 }
 
-pub fn help(frame: &mut Frame, area: Rect) {
-    debug_assert_eq!(Scene::ALL.len(), 5);
-    let lines = KEYS
+pub fn help(app: &App, frame: &mut Frame, area: Rect) {
+    let lines: Vec<String> = KEYS
         .iter()
-        .map(|(k, what)| Line::from(format!("{k:>18}  {what}")))
+        .map(|(k, what)| format!("{k:>18}  {what}"))
         .collect();
-    boxed(frame, area, "keys", lines, 60);
+    // Taller than the screen: two columns side by side when wide enough.
+    let rows = area.height.saturating_sub(2) as usize;
+    if lines.len() > rows && area.width >= 124 {
+        let half = lines.len().div_ceil(2);
+        let joined = (0..half)
+            .map(|i| {
+                let right = lines.get(half + i).cloned().unwrap_or_default();
+                format!("{:<60}{right}", lines[i])
+            })
+            .collect();
+        return boxed(app, frame, area, "keys", joined, 122);
+    }
+    boxed(app, frame, area, "keys", lines, 62);
 }
 
 pub fn picker(app: &App, selected: usize, frame: &mut Frame, area: Rect) {
-    let lines = app
+    let items: Vec<ListItem> = app
         .presets
         .iter()
         .enumerate()
@@ -80,48 +109,111 @@ pub fn picker(app: &App, selected: usize, frame: &mut Frame, area: Rect) {
             } else {
                 "built-in"
             };
-            let text = format!("{number} {:<12} {kind:<8} {}", p.name, p.description);
-            let style = if i == selected {
-                Style::new().add_modifier(Modifier::REVERSED)
-            } else {
-                Style::new()
-            };
-            Line::styled(text, style)
+            ListItem::new(app.look.text(&format!(
+                "{number} {:<14} {kind:<8} {}",
+                p.name, p.description
+            )))
         })
         .collect();
-    boxed(
-        frame,
-        area,
-        &format!(
-            "preset for set {} (Enter loads, Esc closes)",
-            app.active + 1
-        ),
-        lines,
-        area.width.saturating_sub(4),
-    );
+    let height = (items.len() as u16 + 2).min(area.height.saturating_sub(2));
+    let r = centered(area, area.width.saturating_sub(4), height);
+    frame.render_widget(Clear, r);
+    let list = List::new(items)
+        .block(Block::bordered().title(format!(
+            " preset for set {} ({}/{}, Enter loads, Esc closes) ",
+            app.active + 1,
+            selected + 1,
+            app.presets.len()
+        )))
+        .highlight_style(Style::new().add_modifier(Modifier::REVERSED));
+    // A fresh state each frame: the list scrolls so the selection shows.
+    let mut state = ListState::default().with_selected(Some(selected));
+    frame.render_stateful_widget(list, r, &mut state);
 }
 
-pub fn save_name(app: &App, text: &str, error: Option<&str>, frame: &mut Frame, area: Rect) {
-    let mut lines = vec![Line::from(format!("name: {text}_"))];
-    if let Some(e) = error {
-        lines.push(Line::styled(
-            e.to_string(),
-            Style::new().add_modifier(Modifier::BOLD),
-        ));
+fn prompt_lines(field: &TextField, label: &str, width: u16) -> Vec<String> {
+    let room = (width as usize).saturating_sub(4 + label.len());
+    let mut lines = vec![format!("{label}{}", field.shown(room))];
+    if let Some(e) = &field.error {
+        lines.push(e.clone());
     }
-    lines.push(Line::from("Enter saves, Esc cancels"));
+    lines
+}
+
+pub fn save_name(app: &App, field: &TextField, frame: &mut Frame, area: Rect) {
+    let width = 60.min(area.width);
+    let mut lines = prompt_lines(field, "name: ", width);
+    lines.push("Enter saves, Esc cancels; Ctrl-U clears".into());
     boxed(
+        app,
         frame,
         area,
         &format!("save set {} as a user preset", app.active + 1),
         lines,
-        56,
+        width,
     );
 }
 
-pub fn confirm(name: &str, frame: &mut Frame, area: Rect) {
-    let lines = vec![Line::from(format!(
-        "user preset `{name}` exists: overwrite it? (y/n)"
-    ))];
-    boxed(frame, area, "overwrite?", lines, 56);
+pub fn export(app: &App, field: &TextField, full: bool, frame: &mut Frame, area: Rect) {
+    let width = 72.min(area.width);
+    let p = app.active_params();
+    let bytes = export::full_bytes(p);
+    let shown_rows = app
+        .shown(Slot::Set(app.active))
+        .map_or(0, |r| r.history.filled().count());
+    let mark = |on: bool| if on { "(x)" } else { "( )" };
+    let mut lines = prompt_lines(field, "path: ", width);
+    lines.push(format!(
+        "{} full history: {} rows, about {}{}",
+        mark(full),
+        export::full_rows(p),
+        export::size_text(bytes),
+        if bytes > LARGE_EXPORT { " (large)" } else { "" }
+    ));
+    lines.push(format!(
+        "{} on-screen history: {shown_rows} rows (min/max per bucket)",
+        mark(!full)
+    ));
+    lines.push("Tab switches, Enter writes, Esc cancels; Ctrl-U clears".into());
+    boxed(
+        app,
+        frame,
+        area,
+        "export the active run as CSV",
+        lines,
+        width,
+    );
+}
+
+pub fn figure(app: &App, field: &TextField, frame: &mut Frame, area: Rect) {
+    let width = 72.min(area.width);
+    let (name, _) = app.figure_of_scene();
+    let mut lines = prompt_lines(field, "path: ", width);
+    lines.push(format!(
+        "figure `{name}` of set {}, SVG 1200×900",
+        app.active + 1
+    ));
+    lines.push("Enter writes, Esc cancels; Ctrl-U clears".into());
+    boxed(app, frame, area, "write the scene as SVG", lines, width);
+}
+
+pub fn confirm(app: &App, name: &str, frame: &mut Frame, area: Rect) {
+    let lines = vec![format!("user preset `{name}` exists: overwrite it? (y/n)")];
+    boxed(app, frame, area, "overwrite?", lines, 60);
+}
+
+pub fn confirm_quit(app: &App, frame: &mut Frame, area: Rect) {
+    let sets: Vec<String> = app
+        .unsaved()
+        .iter()
+        .map(|i| format!("set {}", i + 1))
+        .collect();
+    let lines = vec![
+        format!(
+            "{} differs from its preset and is not saved.",
+            sets.join(" and ")
+        ),
+        "Quit anyway? y quits, any other key stays (s saves)".into(),
+    ];
+    boxed(app, frame, area, "quit?", lines, 60);
 }

@@ -1,7 +1,10 @@
-//! The two parameter panes, side by side: one row per field (symbol,
-//! meaning on wide terminals, the value in set 1 and set 2), the active
-//! set's column marked, the selected row highlighted; and the info box under
-//! them (presets, the selected field, an edit error).
+//! The two parameter panes, side by side: one row per field of the
+//! parameter table (symbol, meaning on wide terminals, the value in set 1
+//! and set 2), or in the physical view one row per physical quantity; the
+//! active set's column marked, the selected row highlighted, values that
+//! differ from the preset in bold and the set marked `*`. Under them the
+//! info box: presets and what differs, the selected row's range and step,
+//! μ, a Δτ warning, and in the physical view the Π-groups that follow.
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Rect};
@@ -9,12 +12,14 @@ use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Cell, Paragraph, Row, Table, Wrap};
 
+use crate::model::params::echo;
 use crate::tui::app::{App, Mode};
-use crate::tui::fields::{FIELDS, value_text};
+use crate::tui::fields::FIELDS;
+use crate::tui::physical::ROWS;
 
-const SYMBOL: u16 = 7;
+const SYMBOL: u16 = 9;
 const MEANING: u16 = 24;
-const VALUE: u16 = 10;
+const VALUE: u16 = 9;
 
 fn widths(wide: bool) -> Vec<Constraint> {
     let mut w = vec![Constraint::Length(SYMBOL)];
@@ -25,22 +30,6 @@ fn widths(wide: bool) -> Vec<Constraint> {
     w
 }
 
-/// The (set, row) of the cell at a screen position, for mouse clicks.
-pub fn hit(panes: Rect, wide: bool, column: u16, row: u16) -> Option<(usize, usize)> {
-    let first = panes.y + 2; // border, header
-    let index = row.checked_sub(first)? as usize;
-    if index >= FIELDS.len() || column <= panes.x || column >= panes.right() {
-        return None;
-    }
-    let values_start = panes.x + 1 + SYMBOL + 1 + if wide { MEANING + 1 } else { 0 };
-    let set = if column < values_start + VALUE + 1 {
-        0
-    } else {
-        1
-    };
-    Some((set, index))
-}
-
 fn short_value(text: String) -> String {
     match text.as_str() {
         "improved-kelvin" => "improved".into(),
@@ -48,14 +37,34 @@ fn short_value(text: String) -> String {
     }
 }
 
+/// The symbol and meaning of pane row `r`.
+fn row_names(app: &App, r: usize) -> (String, String) {
+    if app.physical_view() {
+        let row = &ROWS[r];
+        (
+            format!("{} {}", row.label, row.unit),
+            format!("moves {}", row.moves),
+        )
+    } else {
+        let f = &FIELDS[r];
+        let symbol = if app.look.ascii { f.ascii } else { f.symbol };
+        (symbol.to_string(), f.meaning.to_string())
+    }
+}
+
 pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     let wide = area.width >= 50;
     let selected = Style::new().add_modifier(Modifier::REVERSED);
     let heading = |i: usize| {
-        let text = if i == app.active {
-            format!("[set {}]", i + 1)
+        let mark = if app.sets[i].modified().is_empty() {
+            ""
         } else {
-            format!(" set {}", i + 1)
+            "*"
+        };
+        let text = if i == app.active {
+            format!("[set {}]{mark}", i + 1)
+        } else {
+            format!(" set {}{mark}", i + 1)
         };
         let style = if i == app.active {
             Style::new().add_modifier(Modifier::BOLD)
@@ -69,56 +78,107 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         head.push(Cell::from("meaning"));
     }
     head.extend([heading(0), heading(1)]);
-    let rows = FIELDS.iter().enumerate().map(|(r, f)| {
-        let mut cells = vec![Cell::from(f.symbol)];
+    let visible = crate::tui::layout::visible_rows(area.height);
+    let offset = crate::tui::layout::pane_offset(visible, app.selected);
+    let rows = (offset..app.pane_rows()).take(visible).map(|r| {
+        let (symbol, meaning) = row_names(app, r);
+        let mut cells = vec![Cell::from(app.look.text(&symbol))];
         if wide {
-            cells.push(Cell::from(f.meaning));
+            cells.push(Cell::from(app.look.text(&meaning)));
         }
         for i in 0..2 {
-            let mut text = short_value(value_text(&app.sets[i].params, f));
+            let mut text = short_value(app.row_text(i, r));
             let mut style = Style::new();
             if i == app.active && r == app.selected {
-                if let Mode::Editing { text: typed, error } = &app.mode {
-                    text = format!("{typed}_");
-                    if error.is_some() && app.look.color {
+                if let Mode::Editing(field) = &app.mode {
+                    text = field.shown(VALUE as usize);
+                    if field.error.is_some() && app.look.color {
                         style = style.fg(Color::Red);
                     }
                     style = style.add_modifier(Modifier::UNDERLINED);
                 } else {
                     style = selected;
                 }
-            } else if app.sets[i].params.get(f.key) != app.sets[i].preset.params.get(f.key) {
-                style = style.add_modifier(Modifier::BOLD);
+            } else if !app.physical_view() {
+                let f = &FIELDS[r];
+                if f.text(&app.sets[i].params) != f.text(&app.sets[i].preset.params) {
+                    style = style.add_modifier(Modifier::BOLD);
+                }
             }
             cells.push(Cell::from(text).style(style));
         }
         Row::new(cells)
     });
+    let title = if app.physical_view() {
+        " physical units (u: Π-groups) "
+    } else {
+        " parameters (Tab switches set) "
+    };
     let table = Table::new(rows, widths(wide))
         .header(Row::new(head).style(Style::new().add_modifier(Modifier::UNDERLINED)))
-        .block(Block::bordered().title(" parameters (Tab switches set) "));
+        .block(Block::bordered().title(title));
     frame.render_widget(table, area);
 }
 
-/// The info box: presets of both sets, the selected field, an edit error.
+/// The info box.
 pub fn render_info(app: &App, frame: &mut Frame, area: Rect) {
-    let f = &FIELDS[app.selected];
     let p = app.active_params();
-    let mut lines = vec![
-        Line::from(format!(
-            "set 1: {}   set 2: {}",
-            app.sets[0].preset.name, app.sets[1].preset.name
-        )),
-        Line::from(format!("{} {}, step {}", f.symbol, f.meaning, f.step)),
-        Line::from(format!("μ = Π_ω2/Π_ω1 = {:.4}", p.mu())),
-    ];
-    if let Mode::Editing { error: Some(e), .. } = &app.mode {
+    let mut lines = Vec::new();
+    if let Mode::Editing(field) = &app.mode
+        && let Some(e) = &field.error
+    {
         let style = if app.look.color {
             Style::new().fg(Color::Red)
         } else {
             Style::new().add_modifier(Modifier::BOLD)
         };
-        lines.insert(0, Line::styled(format!("rejected: {e}"), style));
+        lines.push(Line::styled(format!("rejected: {e}"), style));
     }
+    let mut presets = Vec::new();
+    for (i, s) in app.sets.iter().enumerate() {
+        let modified = s.modified();
+        let text = if modified.is_empty() {
+            format!("set {}: {}", i + 1, s.preset.name)
+        } else {
+            let symbols: Vec<&str> = modified
+                .iter()
+                .filter_map(|k| crate::model::params::field(k))
+                .map(|f| if app.look.ascii { f.ascii } else { f.symbol })
+                .collect();
+            format!("set {}: {}* ({})", i + 1, s.preset.name, symbols.join(", "))
+        };
+        presets.push(text);
+    }
+    lines.push(Line::from(presets.join("  ")));
+    if app.physical_view() {
+        let groups: Vec<String> = FIELDS
+            .iter()
+            .filter(|f| crate::model::params::is_pi(f.key))
+            .map(|f| format!("{} {}", f.symbol, echo::g4(f.number(p))))
+            .collect();
+        lines.push(Line::from(format!("→ {}", groups.join("  "))));
+    } else {
+        let f = &FIELDS[app.selected];
+        lines.push(Line::from(format!(
+            "{} {} {}, step {}",
+            f.symbol,
+            f.meaning,
+            f.range(),
+            echo::g4(f.step)
+        )));
+        lines.push(Line::from(format!("μ = Π_ω2/Π_ω1 = {:.4}", p.mu())));
+    }
+    if let Some(w) = p.coarse_dt_warning() {
+        let style = Style::new().add_modifier(Modifier::BOLD);
+        lines.push(Line::styled(w.replace("warning: ", "⚠ "), style));
+    }
+    let lines: Vec<Line> = lines
+        .into_iter()
+        .map(|l| {
+            let style = l.style;
+            let text: String = l.spans.iter().map(|s| s.content.as_ref()).collect();
+            Line::styled(app.look.text(&text), style)
+        })
+        .collect();
     frame.render_widget(Paragraph::new(lines).wrap(Wrap { trim: true }), area);
 }

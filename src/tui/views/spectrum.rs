@@ -1,4 +1,4 @@
-//! Scene (e): the spectrum of the active set (SPEC §7): Π_u and Π_v of the
+//! Scene (w): the spectrum of the active set (SPEC §7): Π_u and Π_v of the
 //! left structure against Π_ω1 with and without pounding, Π_ω2 = μ Π_ω1, the
 //! current Π_ω1 as a cursor, and a strip marking each point's region
 //! (+ amplification, − suppression, · none). Filled in as points arrive.
@@ -7,10 +7,11 @@ use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::Line;
 
-use super::chart::{self, ChartSpec, Series};
+use super::chart::{self, ChartSpec, GUTTER, Series};
 use crate::analysis::spectrum::{Region, SpectrumPoint};
 use crate::solver::StructurePeaks;
 use crate::tui::app::App;
+use crate::tui::look::palette;
 
 fn curve(
     points: &[Option<SpectrumPoint>],
@@ -27,7 +28,7 @@ fn curve(
 pub fn mark(region: Region) -> char {
     match region {
         Region::Amplification => '+',
-        Region::Suppression => '−',
+        Region::Suppression => '-',
         Region::None => '·',
     }
 }
@@ -52,8 +53,8 @@ pub fn strip(
 }
 
 pub fn render(app: &App, frame: &mut Frame, area: Rect) {
-    let Some(s) = &app.spectrum else {
-        frame.render_widget("spectrum: μ undefined (Π_ω1 = 0)", area);
+    let Some(s) = &app.jobs.spectrum else {
+        frame.render_widget(app.look.text("spectrum: μ undefined (Π_ω1 = 0)"), area);
         return;
     };
     let grid = &s.spec.grid;
@@ -67,53 +68,51 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     .areas(area);
     let peaks = |pick: fn(&StructurePeaks) -> f64| -> [Series; 2] {
         [
-            Series::new("pounding", curve(&s.points, |p| pick(&p.left))),
-            Series::new("no pounding", curve(&s.points, |p| pick(&p.free_left))),
+            Series::line(
+                "pounding",
+                palette::LEFT,
+                curve(&s.points, |p| pick(&p.left)),
+            ),
+            Series::line(
+                "free",
+                palette::FREE,
+                curve(&s.points, |p| pick(&p.free_left)),
+            ),
         ]
     };
-    let progress = format!(
-        "{}/{} points, μ = {:.3}",
-        s.done(),
-        s.points.len(),
-        s.spec.mu
-    );
+    let progress = if s.done() < s.points.len() {
+        format!(" {}/{}", s.done(), s.points.len())
+    } else {
+        String::new()
+    };
+    let buf = frame.buffer_mut();
     for (area, title, series, x_labels) in [
         (
             u_area,
-            format!("Π_u1 against Π_ω1 · {progress}"),
+            format!("Π_u1 μ={:.2}{progress}", s.spec.mu),
             peaks(|p| p.peak_displacement),
             false,
         ),
-        (
-            v_area,
-            "Π_v1 against Π_ω1".to_string(),
-            peaks(|p| p.peak_velocity),
-            true,
-        ),
+        (v_area, "Π_v1".to_string(), peaks(|p| p.peak_velocity), true),
     ] {
-        let yb = chart::bounds(&series, |p| p.1);
-        let mut all: Vec<Series> = series.into_iter().collect();
-        if (xb[0]..=xb[1]).contains(&omega1) {
-            all.push(Series::new(
-                "Π_ω1 now",
-                vec![(omega1, yb[0]), (omega1, yb[1])],
-            ));
-        }
         let spec = ChartSpec {
-            title: &title,
-            x_title: "Π_ω1",
+            title,
+            x_title: "Π_ω1".into(),
             x_bounds: Some(xb),
             x_labels,
+            cursor: Some(omega1),
+            ..Default::default()
         };
-        chart::draw(frame, area, app.look, &spec, &all);
+        chart::draw(buf, area, app.look, &spec, &series);
     }
-    let pad = chart::Y_LABEL_WIDTH as usize + 1;
+    let pad = GUTTER as usize;
     let width = (strip_area.width as usize).saturating_sub(pad);
+    let label = if pad >= 6 { "+-·  " } else { "" };
     let text = format!(
         "{:>pad$}{}",
-        "region ",
+        label,
         strip(&s.points, grid, xb, width),
         pad = pad
     );
-    frame.render_widget(Line::from(text), strip_area);
+    frame.render_widget(Line::from(app.look.text(&text)), strip_area);
 }

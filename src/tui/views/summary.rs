@@ -1,43 +1,85 @@
-//! The summary lines: one per run the scene shows, with Π_u and Π_v of both
-//! structures (SPEC §6), impacts, max and min pounding force, the energy
-//! residual and the compute time.
+//! The two summary lines: per run the scene shows, Π_u and Π_v of both
+//! structures (SPEC §6), impacts, the force range, the accuracy and the
+//! compute time, parts left out from the end when the line is narrow; a
+//! run being recomputed says so. With the cursor shown, they read out the
+//! active run at the cursor instead.
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
-use super::chart::short;
-use crate::tui::app::{App, Scene};
+use super::history::{FP, FS1, FS2, V1, V2, X1, X2};
+use super::impacts::num;
+use super::units::Units;
+use crate::tui::app::App;
+use crate::tui::scene::Scene;
 use crate::tui::worker::{RunOutput, Slot};
 
-/// One run in one line.
-pub fn line(label: &str, run: &RunOutput) -> String {
+/// Joins `parts` with spaces, as many as fit in `width`.
+fn fit(parts: &[String], width: usize) -> String {
+    let mut out = String::new();
+    for p in parts {
+        let extra = p.chars().count() + usize::from(!out.is_empty());
+        if out.chars().count() + extra > width {
+            break;
+        }
+        if !out.is_empty() {
+            out.push(' ');
+        }
+        out.push_str(p);
+    }
+    out
+}
+
+/// One run in one line of at most `width` characters.
+pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize) -> String {
     let r = &run.result;
     // Newmark's actual error against the exact method; an exact run says so.
     let accuracy = match run.error_vs_exact {
         Some(e) => format!("err {e:.0e}"),
         None => r.method.name().to_string(),
     };
-    format!(
-        "{label}: Π_u {}/{} Π_v {}/{} impacts {} f_p {}..{} {accuracy} res {:.0e} {:.1} ms",
-        short(r.left.peak_displacement),
-        short(r.right.peak_displacement),
-        short(r.left.peak_velocity),
-        short(r.right.peak_velocity),
-        r.impacts.len(),
-        short(r.min_force),
-        short(r.max_force),
-        r.energy.residual,
-        run.elapsed_ms,
-    )
+    let label = if current {
+        format!("{label}:")
+    } else {
+        format!("{label} computing…, was:")
+    };
+    let (peak_u, peak_v) = if u.physical {
+        ("u_max", "v_max")
+    } else {
+        ("Π_u", "Π_v")
+    };
+    let parts = [
+        label,
+        format!(
+            "{peak_u} {}/{}",
+            num(r.left.peak_displacement * u.length),
+            num(r.right.peak_displacement * u.length)
+        ),
+        format!(
+            "{peak_v} {}/{}",
+            num(r.left.peak_velocity * u.velocity),
+            num(r.right.peak_velocity * u.velocity)
+        ),
+        format!("impacts {}", r.impacts.len()),
+        format!(
+            "f_p {}..{}",
+            num(r.min_force * u.force),
+            num(r.max_force * u.force)
+        ),
+        accuracy,
+        format!("res {:.0e}", r.energy.residual),
+        format!("{:.1} ms", run.elapsed_ms),
+    ];
+    fit(&parts, width)
 }
 
 fn slots(app: &App) -> Vec<(String, Slot)> {
     let active = Slot::Set(app.active);
     let set = |i: usize| (format!("set {}", i + 1), Slot::Set(i));
-    match app.scene {
-        Scene::History | Scene::Loops | Scene::Spectrum => vec![set(app.active)],
+    match app.view.scene {
+        Scene::History | Scene::Loops | Scene::Spectrum | Scene::Impacts => vec![set(app.active)],
         Scene::Sets => vec![set(0), set(1)],
         Scene::Kelvin => vec![
             (app.model().name().to_string(), active),
@@ -46,12 +88,53 @@ fn slots(app: &App) -> Vec<(String, Slot)> {
     }
 }
 
+/// The readout of the active run at the cursor, in two lines.
+pub fn readout(app: &App, run: &RunOutput, tau: f64, width: usize) -> Option<[String; 2]> {
+    let (at, v) = run.history.at(tau)?;
+    let u = Units::active(app);
+    let time = if u.physical {
+        format!("t {} s", num(at * u.time))
+    } else {
+        format!("τ {} ({} cyc)", num(at), num(at / std::f64::consts::TAU))
+    };
+    let first = [
+        format!("cursor {time}"),
+        format!("x1 {}", num(v[X1] * u.length)),
+        format!("x2 {}", num(v[X2] * u.length)),
+        format!("f_p {}", num(v[FP] * u.force)),
+    ];
+    let second = [
+        format!("ẋ1 {}", num(v[V1] * u.velocity)),
+        format!("ẋ2 {}", num(v[V2] * u.velocity)),
+        format!("f_s1 {}", num(v[FS1] * u.force)),
+        format!("f_s2 {}", num(v[FS2] * u.force)),
+    ];
+    Some([fit(&first, width), fit(&second, width)])
+}
+
 pub fn render(app: &App, frame: &mut Frame, area: Rect) {
+    let width = area.width as usize;
+    let active = app.shown(Slot::Set(app.active));
+    let cursor = app.view.cursor.filter(|_| app.view.scene.timed());
+    if let (Some(tau), Some(run)) = (cursor, active)
+        && let Some(lines) = readout(app, run, tau, width)
+    {
+        let lines: Vec<Line> = lines.iter().map(|l| Line::from(app.look.text(l))).collect();
+        frame.render_widget(Paragraph::new(lines), area);
+        return;
+    }
     let lines: Vec<Line> = slots(app)
         .into_iter()
-        .map(|(label, slot)| match app.shown(slot) {
-            Some(run) => Line::from(line(&label, run)),
-            None => Line::from(format!("{label}: computing…")),
+        .map(|(label, slot)| {
+            let u = match slot {
+                Slot::Set(i) => Units::of(app, i),
+                Slot::Twin => Units::active(app),
+            };
+            let text = match app.shown(slot) {
+                Some(run) => line(&label, run, &u, app.jobs.is_current(slot), width),
+                None => format!("{label}: computing…"),
+            };
+            Line::from(app.look.text(&text))
         })
         .collect();
     frame.render_widget(Paragraph::new(lines), area);

@@ -1,0 +1,151 @@
+//! The history a chart shows: the run decimated to the visible time window
+//! [τ0, τ1] in equal buckets (two per plot column, as Braille has two dots
+//! per cell), keeping per bucket the minimum and maximum of every channel
+//! (so peaks survive) and the last sample (for the cursor readout and the
+//! force–drift trace). Zoomed in, the same buckets cover a shorter window,
+//! so detail appears; outside the window nothing is kept.
+
+use crate::solver::Observer;
+use crate::solver::observer::{CHANNELS, Sample};
+
+/// One time bucket.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Slice {
+    /// Start of the bucket in τ.
+    pub tau: f64,
+    pub min: [f64; CHANNELS],
+    pub max: [f64; CHANNELS],
+    /// The last sample that fell in the bucket, and its τ.
+    pub last: [f64; CHANNELS],
+    pub last_tau: f64,
+    pub filled: bool,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trace {
+    pub window: [f64; 2],
+    pub slices: Vec<Slice>,
+}
+
+impl Trace {
+    pub fn new(buckets: usize, window: [f64; 2]) -> Trace {
+        let n = buckets.max(1);
+        let width = (window[1] - window[0]) / n as f64;
+        Trace {
+            window,
+            slices: (0..n)
+                .map(|i| Slice {
+                    tau: window[0] + i as f64 * width,
+                    min: [f64::INFINITY; CHANNELS],
+                    max: [f64::NEG_INFINITY; CHANNELS],
+                    last: [f64::NAN; CHANNELS],
+                    last_tau: f64::NAN,
+                    filled: false,
+                })
+                .collect(),
+        }
+    }
+
+    pub fn filled(&self) -> impl Iterator<Item = &Slice> {
+        self.slices.iter().filter(|s| s.filled)
+    }
+
+    /// A channel as (τ, min, max) spans, plus `offset`.
+    pub fn spans(&self, channel: usize, offset: f64) -> Vec<(f64, f64, f64)> {
+        self.filled()
+            .map(|s| (s.tau, s.min[channel] + offset, s.max[channel] + offset))
+            .filter(|(_, a, b)| a.is_finite() && b.is_finite())
+            .collect()
+    }
+
+    /// Two channels against each other through each bucket's last sample.
+    pub fn pairs(&self, cx: usize, cy: usize) -> Vec<(f64, f64)> {
+        self.filled()
+            .map(|s| (s.last[cx], s.last[cy]))
+            .filter(|(x, y)| x.is_finite() && y.is_finite())
+            .collect()
+    }
+
+    /// The sample recorded nearest before τ (its τ and channels), if any.
+    pub fn at(&self, tau: f64) -> Option<(f64, [f64; CHANNELS])> {
+        let n = self.slices.len();
+        let span = self.window[1] - self.window[0];
+        if span.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
+            || tau < self.window[0]
+            || tau > self.window[1]
+        {
+            return None;
+        }
+        let i = (((tau - self.window[0]) / span) * n as f64) as usize;
+        self.slices[..=i.min(n - 1)]
+            .iter()
+            .rev()
+            .find(|s| s.filled)
+            .map(|s| (s.last_tau, s.last))
+    }
+}
+
+impl Observer for Trace {
+    #[inline]
+    fn record(&mut self, s: &Sample) {
+        let [t0, t1] = self.window;
+        if s.tau < t0 || s.tau > t1 {
+            return;
+        }
+        let n = self.slices.len();
+        let i = if t1 > t0 {
+            (((s.tau - t0) / (t1 - t0)) * n as f64) as usize
+        } else {
+            0
+        };
+        let b = &mut self.slices[i.min(n - 1)];
+        b.filled = true;
+        let values = s.channels();
+        for (k, v) in values.into_iter().enumerate() {
+            b.min[k] = b.min[k].min(v);
+            b.max[k] = b.max[k].max(v);
+        }
+        b.last = values;
+        b.last_tau = s.tau;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sine(trace: &mut Trace) {
+        for i in 0..=10_000 {
+            let tau = i as f64 * 1e-3;
+            trace.record(&Sample {
+                tau,
+                x: [(3.0 * tau).sin(), 0.0],
+                ..Default::default()
+            });
+        }
+    }
+
+    #[test]
+    fn a_window_keeps_only_its_samples_and_reads_out_exactly() {
+        let mut t = Trace::new(20, [2.0, 3.0]);
+        sine(&mut t);
+        assert!(t.slices.iter().all(|s| s.filled));
+        assert!(
+            t.slices
+                .iter()
+                .all(|s| s.last_tau >= 2.0 && s.last_tau <= 3.0)
+        );
+        let (tau, v) = t.at(2.5).unwrap();
+        assert!((tau - 2.5).abs() <= 0.05 + 1e-12, "{tau}");
+        assert!((v[0] - (3.0 * tau).sin()).abs() < 1e-12);
+        assert_eq!(t.at(3.5), None);
+    }
+
+    #[test]
+    fn peaks_survive_decimation() {
+        let mut t = Trace::new(4, [0.0, 10.0]);
+        sine(&mut t);
+        let max = t.spans(0, 0.0).iter().fold(f64::MIN, |m, s| m.max(s.2));
+        assert!(max > 0.99999, "{max}");
+    }
+}

@@ -1,0 +1,154 @@
+//! Scene (i): the impacts of the active run, as `pounding run` prints them
+//! (start, end, approach velocity v₀, separation velocity, achieved e, peak
+//! force, penetration), the one at the cursor selected (n/N walk them, z
+//! zooms the time scene onto it); under it the energy terms of SPEC §6 as
+//! bars against the input.
+
+use ratatui::Frame;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Modifier, Style};
+use ratatui::text::Line;
+use ratatui::widgets::{Cell, Paragraph, Row, Table, TableState};
+
+use super::units::Units;
+use crate::solver::EnergyBalance;
+use crate::tui::app::App;
+use crate::tui::worker::Slot;
+
+/// A number in at most 6 characters.
+pub fn num(v: f64) -> String {
+    let a = v.abs();
+    if v == 0.0 {
+        "0".into()
+    } else if !v.is_finite() {
+        format!("{v}")
+    } else if !(1e-3..1e5).contains(&a) {
+        format!("{v:.0e}")
+    } else if a >= 1000.0 {
+        format!("{v:.0}")
+    } else if a >= 100.0 {
+        format!("{v:.1}")
+    } else if a >= 10.0 {
+        format!("{v:.2}")
+    } else {
+        format!("{v:.3}")
+    }
+}
+
+pub fn render(app: &App, frame: &mut Frame, area: Rect) {
+    let Some(run) = app.shown(Slot::Set(app.active)) else {
+        frame.render_widget("computing…", area);
+        return;
+    };
+    let u = Units::active(app);
+    let r = &run.result;
+    let energy_rows = 7u16.min(area.height / 2);
+    let [table_area, energy_area] =
+        Layout::vertical([Constraint::Min(3), Constraint::Length(energy_rows)]).areas(area);
+    let t = if u.physical { "t s" } else { "τ" };
+    let head = [
+        "#".to_string(),
+        t.to_string(),
+        "end".into(),
+        "v₀".into(),
+        "v_sep".into(),
+        "e".into(),
+        "f_max".into(),
+        "δ_max".into(),
+    ];
+    let rows = r.impacts.iter().enumerate().map(|(i, im)| {
+        vec![
+            Cell::from(format!("{}", i + 1)),
+            Cell::from(num(im.start * u.time)),
+            Cell::from(num(im.end * u.time)),
+            Cell::from(num(im.approach_velocity * u.velocity)),
+            Cell::from(num(im.separation_velocity * u.velocity)),
+            Cell::from(num(im.restitution)),
+            Cell::from(num(im.peak_force * u.force)),
+            Cell::from(num(im.max_penetration * u.length)),
+        ]
+    });
+    // Columns by priority (#, start, v₀, f_max, e, v_sep, δ_max, end),
+    // as many as the width holds.
+    const WIDTHS: [u16; 8] = [3, 7, 7, 6, 6, 5, 7, 6];
+    const PRIORITY: [usize; 8] = [0, 1, 3, 6, 5, 4, 7, 2];
+    let mut kept = [false; 8];
+    let mut used = 0;
+    for i in PRIORITY {
+        if used + WIDTHS[i] < area.width {
+            used += WIDTHS[i] + 1;
+            kept[i] = true;
+        }
+    }
+    let keep = |i: usize| kept[i];
+    let widths: Vec<Constraint> = WIDTHS
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| keep(*i))
+        .map(|(_, w)| Constraint::Length(w))
+        .collect();
+    let rows = rows.map(|row: Vec<Cell<'static>>| {
+        Row::new(
+            row.into_iter()
+                .enumerate()
+                .filter(|(i, _)| keep(*i))
+                .map(|(_, c)| c),
+        )
+    });
+    let title = if r.impacts.is_empty() {
+        "no impacts".to_string()
+    } else {
+        format!(
+            "{} impacts [{} {} {}]",
+            r.impacts.len(),
+            u.velocity_unit,
+            u.force_unit,
+            u.length_unit
+        )
+    };
+    let head: Vec<String> = head
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| keep(*i))
+        .map(|(_, h)| h)
+        .collect();
+    let header = Row::new(head.into_iter().map(|h| Cell::from(app.look.text(&h))))
+        .style(Style::new().add_modifier(Modifier::UNDERLINED));
+    let table = Table::new(rows, widths)
+        .column_spacing(1)
+        .header(header)
+        .block(ratatui::widgets::Block::new().title(app.look.text(&title)))
+        .row_highlight_style(Style::new().add_modifier(Modifier::REVERSED));
+    let mut state = TableState::default().with_selected(app.view.selected_impact(&r.impacts));
+    frame.render_stateful_widget(table, table_area, &mut state);
+    energy(app, &r.energy, &u, frame, energy_area);
+}
+
+/// The energy terms as bars scaled to the largest.
+fn energy(app: &App, e: &EnergyBalance, u: &Units, frame: &mut Frame, area: Rect) {
+    if area.height == 0 {
+        return;
+    }
+    let terms = [
+        ("input", e.input),
+        ("kinetic", e.kinetic),
+        ("damping", e.damping),
+        ("hysteretic", e.spring),
+        ("contact", e.contact),
+    ];
+    let biggest = terms.iter().fold(0f64, |m, t| m.max(t.1.abs())).max(1e-300);
+    let bar_width = area.width.saturating_sub(11 + 9) as f64;
+    let mut lines = vec![Line::from(app.look.text(&format!(
+        "energy [{}], residual {:.0e}",
+        u.energy_unit, e.residual
+    )))];
+    for (name, v) in terms {
+        let n = ((v.abs() / biggest) * bar_width).round() as usize;
+        let bar = if app.look.ascii { "#" } else { "█" }.repeat(n);
+        lines.push(Line::from(format!(
+            "{name:>10} {:>8} {bar}",
+            num(v * u.energy)
+        )));
+    }
+    frame.render_widget(Paragraph::new(lines), area);
+}
