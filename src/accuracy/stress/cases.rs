@@ -129,6 +129,52 @@ pub fn corner_cases() -> Vec<Case> {
         )
     });
     out.extend(grazing_cases());
+    out.extend(range_limit_cases());
+    out
+}
+
+/// Every bound of the parameter table, at its limit (each case runs with
+/// both methods, see `checks`): the ends of the accepted ranges must give
+/// finite, balanced, agreeing results.
+fn range_limit_cases() -> Vec<Case> {
+    let mut out = Vec::new();
+    for model in MODELS {
+        for (key, value) in [
+            ("contact_omega", 1e5),
+            ("contact_omega", 1e6),
+            ("restitution", 1e-3),
+            ("mass_ratio", 1e-3),
+            ("mass_ratio", 1e3),
+        ] {
+            out.push(case(
+                format!("limit {key}={value} {model}"),
+                Params {
+                    model,
+                    ..with(key, value)
+                },
+            ));
+        }
+    }
+    for (key, value) in [
+        ("damping", 1.0),
+        ("gap", 1e6),
+        ("yield1", 1e6),
+        ("min_impact_velocity", 1e-6),
+        ("min_impact_velocity", 0.1),
+    ] {
+        out.push(case(format!("limit {key}={value}"), with(key, value)));
+    }
+    // The fastest structures the table accepts, with the largest Δτ it allows for them.
+    let mut stiff = SET1;
+    for (key, value) in [
+        ("omega1", "1000"),
+        ("omega2", "1000"),
+        ("dt", "6e-6"),
+        ("cycles", "1"),
+    ] {
+        stiff.set(key, value).expect("limit values are valid");
+    }
+    out.push(case("limit omega1=omega2=1000, dt=6e-6", stiff));
     out
 }
 
