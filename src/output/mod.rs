@@ -85,12 +85,9 @@ pub fn reason(e: &io::Error) -> String {
     }
 }
 
-/// A path for a one-line message: control characters escaped, long paths cut in the middle.
-pub fn shown(path: &Path) -> String {
-    const MAX: usize = 160;
-    let text: String = path
-        .to_string_lossy()
-        .chars()
+/// `chars` with every control character escaped (`\n`), so a message stays on one line.
+pub fn escape_controls(chars: impl Iterator<Item = char>) -> String {
+    chars
         .flat_map(|c| {
             if c.is_control() {
                 c.escape_default().collect::<Vec<_>>()
@@ -98,7 +95,13 @@ pub fn shown(path: &Path) -> String {
                 vec![c]
             }
         })
-        .collect();
+        .collect()
+}
+
+/// A path for a one-line message: control characters escaped, long paths cut in the middle.
+pub fn shown(path: &Path) -> String {
+    const MAX: usize = 160;
+    let text = escape_controls(path.to_string_lossy().chars());
     let count = text.chars().count();
     if count <= MAX {
         return text;

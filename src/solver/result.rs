@@ -32,6 +32,22 @@ pub struct Impact {
     pub ended: bool,
 }
 
+impl Impact {
+    /// Closes the contact at τ with penetration rate δ̇ = `rate` (negative at
+    /// separation): separation velocity −δ̇ and the achieved restitution,
+    /// separation over approach velocity.
+    pub fn close(&mut self, tau: f64, rate: f64) {
+        self.end = tau;
+        self.separation_velocity = -rate;
+        self.restitution = if self.approach_velocity > 0.0 {
+            self.separation_velocity / self.approach_velocity
+        } else {
+            0.0
+        };
+        self.ended = true;
+    }
+}
+
 /// Energy balance of SPEC §6, in units of m2 a_p²/ω_p².
 ///
 /// Every work term is accumulated per Newmark step as the mean of its force

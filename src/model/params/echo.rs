@@ -53,17 +53,7 @@ pub fn g4(v: f64) -> String {
 /// [`MAX_ECHO`] characters with the full length stated.
 pub fn text(s: &str) -> String {
     let count = s.chars().count();
-    let mut out: String = s
-        .chars()
-        .take(MAX_ECHO)
-        .flat_map(|c| {
-            if c.is_control() {
-                c.escape_default().collect::<Vec<_>>()
-            } else {
-                vec![c]
-            }
-        })
-        .collect();
+    let mut out = crate::output::escape_controls(s.chars().take(MAX_ECHO));
     if count > MAX_ECHO {
         out += &format!("… ({count} characters)");
     }

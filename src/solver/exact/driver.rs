@@ -561,15 +561,7 @@ impl<'a> Run<'a> {
             Event::Separation => {
                 self.contact = None;
                 if let Some(k) = self.open_impact.take() {
-                    let imp = &mut self.result.impacts[k];
-                    imp.end = self.tau;
-                    imp.separation_velocity = -(self.v[0] - self.v[1]);
-                    imp.restitution = if imp.approach_velocity > 0.0 {
-                        imp.separation_velocity / imp.approach_velocity
-                    } else {
-                        0.0
-                    };
-                    imp.ended = true;
+                    self.result.impacts[k].close(self.tau, self.v[0] - self.v[1]);
                 }
             }
             Event::Yield(i, sign) => {

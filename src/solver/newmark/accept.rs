@@ -95,15 +95,7 @@ impl Driver<'_> {
     fn close_impact(&mut self) {
         if let Some(i) = self.open_impact.take() {
             let s = &self.state;
-            let imp = &mut self.result.impacts[i];
-            imp.end = s.tau;
-            imp.separation_velocity = -(s.v[0] - s.v[1]);
-            imp.restitution = if imp.approach_velocity > 0.0 {
-                imp.separation_velocity / imp.approach_velocity
-            } else {
-                0.0
-            };
-            imp.ended = true;
+            self.result.impacts[i].close(s.tau, s.v[0] - s.v[1]);
         }
     }
 
