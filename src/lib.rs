@@ -6,6 +6,7 @@
 //! from the bottom up (no module imports one above it):
 //! - [`output`]: writing files and streams by one set of rules (atomic
 //!   replacement, streaming to devices, broken pipes), and number formats;
+//! - [`numerics`]: generic integrators (the DOPRI5 pair), knowing no physics;
 //! - [`model`]: the ten Π-groups and run settings ([`model::Params`], one
 //!   parameter table), the bilinear spring, the contact laws, the excitation
 //!   and presets;
@@ -35,6 +36,7 @@ pub mod analysis;
 pub mod cli;
 pub mod figure;
 pub mod model;
+pub mod numerics;
 pub mod output;
 pub mod reference;
 pub mod solver;

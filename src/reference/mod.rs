@@ -15,7 +15,7 @@
 //! ```
 
 pub mod closed_form;
-pub mod dopri5;
+pub use crate::numerics::dopri5;
 pub mod events;
 pub mod integrate;
 pub mod system;

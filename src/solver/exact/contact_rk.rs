@@ -21,7 +21,7 @@
 //! on polynomials by the method's own machinery.
 
 use crate::model::ContactLaw;
-use crate::reference::dopri5::{self, Vector};
+use crate::numerics::dopri5::{self, Vector};
 
 use super::dynamics::{Branch, Structure};
 use super::series::Series;
