@@ -176,3 +176,28 @@ fn spectrum_scene_with_a_family() {
     // Two members, the gap = inf one dashed (its own baseline).
     check(FigureName::Spectrum, &o, 4, 2, 2);
 }
+
+#[test]
+fn map_scene_shades_the_regions_of_each_cell() {
+    let o = Options {
+        grid: Some("0.5:1.5:0.25".parse().unwrap()),
+        ..Options::default()
+    };
+    // One panel, the set's marker, both regions shaded.
+    let fig = check(FigureName::Map, &o, 1, 1, 2);
+    let panel = &fig.panels[0];
+    // The μ row of the set itself (2.25) agrees with the spectrum there.
+    let p = figure::Scene::default().params;
+    let row: Vec<_> = panel
+        .cells
+        .iter()
+        .filter(|c| ((c.y.0 + c.y.1) / 2.0 - 2.25).abs() < 1e-9)
+        .collect();
+    assert!(row.len() >= 3, "{} shaded cells at μ = 2.25", row.len());
+    for cell in row {
+        let omega1 = (cell.x.0 + cell.x.1) / 2.0;
+        let point = pounding::analysis::spectrum::point(&p, omega1, 2.25);
+        assert_eq!(point.region, cell.region, "Π_ω1 = {omega1}");
+    }
+    assert!(fig.caption.contains("5 × 37 cells"), "{}", fig.caption);
+}

@@ -19,6 +19,7 @@
 pub mod caption;
 pub mod font;
 pub mod history;
+pub mod map;
 pub mod render;
 pub mod runs;
 pub mod spec;
@@ -61,6 +62,7 @@ pub enum FigureName {
     Loops,
     ContactLaws,
     Spectrum,
+    Map,
 }
 
 impl FigureName {
@@ -76,11 +78,12 @@ impl FigureName {
         FigureName::Fig10,
     ];
     /// The scenes, drawn for any parameter set.
-    pub const SCENES: [FigureName; 4] = [
+    pub const SCENES: [FigureName; 5] = [
         FigureName::History,
         FigureName::Loops,
         FigureName::ContactLaws,
         FigureName::Spectrum,
+        FigureName::Map,
     ];
 
     pub fn name(self) -> &'static str {
@@ -97,6 +100,7 @@ impl FigureName {
             FigureName::Loops => "loops",
             FigureName::ContactLaws => "contact-laws",
             FigureName::Spectrum => "spectrum",
+            FigureName::Map => "map",
         }
     }
 
@@ -113,6 +117,7 @@ impl FigureName {
                 | FigureName::Fig9
                 | FigureName::Fig10
                 | FigureName::Spectrum
+                | FigureName::Map
         )
     }
 
@@ -235,6 +240,7 @@ pub fn build(name: FigureName, options: &Options) -> Result<Figure, FigureError>
             });
             spectra::family_figure(&format!("{}: response spectra", input.name), &input, m)
         }
+        FigureName::Map => map::map_scene(&scene.name, &scene.params, options.grid, m),
     }
 }
 

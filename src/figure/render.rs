@@ -269,6 +269,9 @@ fn draw_legend_entry<DB: DrawingBackend>(
 /// The x range (fixed or the data's) and a y range padded by 6 % (from 0
 /// when every value is positive and the smallest is near 0).
 fn ranges(panel: &Panel) -> ((f64, f64), (f64, f64)) {
+    if let (Some(x), Some(y)) = (panel.x_range, panel.y_range) {
+        return (x, y);
+    }
     let all = || panel.series.iter().flat_map(|s| s.points.iter().copied());
     let (x0, x1) = panel.x_range.unwrap_or_else(|| {
         all().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (x, _)| {
@@ -328,6 +331,12 @@ fn draw_panel<DB: DrawingBackend>(area: &Area<DB>, panel: &Panel, look: &Look) -
             .iter()
             .map(|b| Rectangle::new([(b.from, y0), (b.to, y1)], region_color(b.region).filled())),
     )?;
+    chart.draw_series(panel.cells.iter().map(|c| {
+        Rectangle::new(
+            [(c.x.0, c.y.0), (c.x.1, c.y.1)],
+            region_color(c.region).filled(),
+        )
+    }))?;
     let width = look.px(2.0).max(1) as u32;
     for s in &panel.series {
         let style = series_color(s.color, s.stroke).stroke_width(width);

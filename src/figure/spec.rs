@@ -54,6 +54,14 @@ pub struct Band {
     pub to: f64,
 }
 
+/// One cell of a region map: a rectangle of the (x, y) plane in one region.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cell {
+    pub x: (f64, f64),
+    pub y: (f64, f64),
+    pub region: Region,
+}
+
 /// One panel: "(a)" to "(d)", its title, axis labels and content.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Panel {
@@ -64,8 +72,12 @@ pub struct Panel {
     pub y_label: String,
     pub series: Vec<Series>,
     pub bands: Vec<Band>,
+    /// Region-map cells, drawn under the series.
+    pub cells: Vec<Cell>,
     /// A fixed x range; `None` spans the data.
     pub x_range: Option<(f64, f64)>,
+    /// A fixed y range; `None` spans the data.
+    pub y_range: Option<(f64, f64)>,
 }
 
 impl Panel {
@@ -77,7 +89,9 @@ impl Panel {
             y_label: y_label.to_string(),
             series: Vec::new(),
             bands: Vec::new(),
+            cells: Vec::new(),
             x_range: None,
+            y_range: None,
         }
     }
 }
@@ -138,11 +152,9 @@ impl Figure {
             }
         }
         for r in [Region::Amplification, Region::Suppression] {
-            if self
-                .panels
-                .iter()
-                .any(|p| p.bands.iter().any(|b| b.region == r))
-            {
+            if self.panels.iter().any(|p| {
+                p.bands.iter().any(|b| b.region == r) || p.cells.iter().any(|c| c.region == r)
+            }) {
                 entries.push(LegendEntry::Region(r));
             }
         }
