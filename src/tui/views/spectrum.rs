@@ -161,7 +161,6 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
                 let most = s.points.iter().flatten().map(|p| p.impacts).max();
                 [0.0, most.unwrap_or(1).max(1) as f64]
             }),
-            ..Default::default()
         };
         chart::draw(buf, area, app.look, &spec, &series);
     }
