@@ -381,7 +381,8 @@ fn worker_latest_wins_and_cancels_the_running_job() {
         spectrum: Some(SpectrumSpec {
             params: p,
             mu: p.mu(),
-            grid: (0..200).map(|i| 0.2 + 0.02 * i as f64).collect(),
+            // Seconds of work: the grid swept over 250 times.
+            grid: (0..50_000).map(|i| 0.2 + 0.02 * (i % 200) as f64).collect(),
         }),
     };
     w.submit(spectrum(1));
@@ -427,7 +428,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
     }
     assert_eq!(done.last(), Some(&(4, false)), "{done:?}");
     assert_eq!(runs_of_4, 1);
-    // Job 1 (200 points, seconds of work) was stopped, not finished; of 2 and 3 at most one ran, cancelled.
+    // Job 1 (50 000 points, seconds of work) was stopped, not finished; of 2 and 3 at most one ran, cancelled.
     assert_eq!(done[0], (1, true), "{done:?}");
     assert!(done.len() <= 3, "{done:?}");
     assert!(done.iter().filter(|d| d.0 < 4).all(|d| d.1), "{done:?}");

@@ -364,8 +364,8 @@ fn bytes_per_nudge_and_per_scene_switch_at_80x24() {
     eprintln!("bytes per nudge: {nudges:?}");
     eprintln!("bytes per scene switch (f v c w i t): {switches:?}");
     let mean = |v: &[usize]| v.iter().sum::<usize>() / v.len();
-    assert!(mean(&nudges) < 4000, "{nudges:?}");
-    assert!(switches.iter().all(|&b| b < 12000), "{switches:?}");
+    assert!(mean(&nudges) < 2700, "{nudges:?}");
+    assert!(switches.iter().all(|&b| b < 4600), "{switches:?}");
     s.send(b"\x03");
     s.exit_status();
 }

@@ -103,9 +103,10 @@ pub enum Exit {
     Signal(i32),
 }
 
-/// Π_ω1 grid of the spectrum scene.
+/// Π_ω1 grid of the spectrum scene: the CLI's default, 0.10…3.00 by 0.01
+/// (291 points), each value rounded to its two decimals.
 pub fn spectrum_grid() -> Vec<f64> {
-    (0..=56).map(|i| 0.2 + 0.05 * i as f64).collect()
+    (10..=300).map(|i| i as f64 / 100.0).collect()
 }
 
 /// History buckets of the force–drift scene: fine enough that the trace
@@ -435,6 +436,9 @@ impl App {
                 };
             }
             KeyCode::Char('?') => self.mode = Mode::Help,
+            KeyCode::Char('o') if self.view.scene == Scene::Spectrum => {
+                self.view.velocity = !self.view.velocity;
+            }
             KeyCode::Char('o') => {
                 self.view.overlay = !self.view.overlay;
                 self.view.scene = Scene::Sets;

@@ -115,9 +115,11 @@ impl Jobs {
                     self.results.remove(0);
                 }
             }
-            Output::Point { index, point, .. } => {
-                if let Some(p) = self.spectrum.as_mut().and_then(|s| s.points.get_mut(index)) {
-                    *p = Some(point);
+            Output::Points { start, points, .. } => {
+                if let Some(s) = self.spectrum.as_mut() {
+                    for (slot, p) in s.points.iter_mut().skip(start).zip(points) {
+                        *slot = Some(p);
+                    }
                 }
             }
             Output::Done { .. } => self.computing = false,

@@ -44,10 +44,6 @@ pub mod palette {
     pub const SETS: [Color; 2] = [Color::LightBlue, Color::LightRed];
     /// A response without pounding.
     pub const FREE: Color = Color::Gray;
-    /// The cursor and the current Π_ω1.
-    pub const CURSOR: Color = Color::White;
-    /// Zero lines and axes.
-    pub const AXIS: Color = Color::DarkGray;
 }
 
 /// The colour of a contact model, fixed whatever the active set.

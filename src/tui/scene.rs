@@ -74,6 +74,8 @@ pub struct View {
     pub overlay: bool,
     /// Physical units instead of Π-groups (for a set with a `[physical]` table).
     pub physical: bool,
+    /// The spectrum shows peak velocities Π_v instead of displacements Π_u.
+    pub velocity: bool,
 }
 
 /// Zoom factor of one `z`.
@@ -87,6 +89,7 @@ impl Default for View {
             zoom: None,
             overlay: false,
             physical: false,
+            velocity: false,
         }
     }
 }

@@ -7,7 +7,9 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Condvar, Mutex};
 use std::thread::JoinHandle;
-use std::time::Instant;
+use std::time::{Duration, Instant};
+
+use rayon::prelude::*;
 
 use super::trace::Trace;
 use crate::analysis::spectrum::{SpectrumPoint, point};
@@ -67,6 +69,12 @@ pub struct RunOutput {
     pub error_vs_exact: Option<f64>,
 }
 
+/// Spectrum points computed between two cancellation checks.
+const SPECTRUM_CHUNK: usize = 32;
+
+/// The longest a filling spectrum waits before its points are shown.
+const BATCH_INTERVAL: Duration = Duration::from_millis(200);
+
 /// What the worker reports.
 #[derive(Debug, Clone)]
 pub enum Output {
@@ -74,10 +82,11 @@ pub enum Output {
         generation: u64,
         output: Box<RunOutput>,
     },
-    Point {
+    /// Consecutive spectrum points from grid index `start` on.
+    Points {
         generation: u64,
-        index: usize,
-        point: SpectrumPoint,
+        start: usize,
+        points: Vec<SpectrumPoint>,
     },
     /// The job ended, complete or cancelled by a newer one.
     Done { generation: u64, cancelled: bool },
@@ -87,7 +96,7 @@ impl Output {
     pub fn generation(&self) -> u64 {
         match self {
             Output::Run { generation, .. }
-            | Output::Point { generation, .. }
+            | Output::Points { generation, .. }
             | Output::Done { generation, .. } => *generation,
         }
     }
@@ -208,15 +217,30 @@ pub fn run_job(job: &Job, current: &dyn Fn() -> bool, send: &dyn Fn(Output)) -> 
             method: Method::Exact,
             ..s.params
         };
-        for (index, &omega1) in s.grid.iter().enumerate() {
+        // Points are computed in parallel, a chunk at a time so that a newer
+        // job cancels within one chunk, and sent in batches a few times per
+        // second (or once, when the whole spectrum is quick), so the screen
+        // is redrawn per batch, not per point.
+        let mut batch_start = 0;
+        let mut batch = Vec::new();
+        let mut sent = Instant::now();
+        for (k, chunk) in s.grid.chunks(SPECTRUM_CHUNK).enumerate() {
             if !current() {
                 return false;
             }
-            send(Output::Point {
-                generation: job.generation,
-                index,
-                point: point(&params, omega1, s.mu),
-            });
+            batch.par_extend(chunk.par_iter().map(|&omega1| point(&params, omega1, s.mu)));
+            let last = (k + 1) * SPECTRUM_CHUNK >= s.grid.len();
+            if last || sent.elapsed() >= BATCH_INTERVAL {
+                let points = std::mem::take(&mut batch);
+                let start = batch_start;
+                batch_start += points.len();
+                sent = Instant::now();
+                send(Output::Points {
+                    generation: job.generation,
+                    start,
+                    points,
+                });
+            }
         }
     }
     true

@@ -19,7 +19,7 @@ use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
 
 use super::ticks::{self, LABEL_WIDTH};
-use crate::tui::look::{Look, palette};
+use crate::tui::look::Look;
 
 /// Columns left of the plot: the tick labels and the axis line.
 pub const GUTTER: u16 = LABEL_WIDTH as u16 + 1;
@@ -247,11 +247,7 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
     }
     let braille = !look.ascii && (look.color || series.len() <= 1);
     let plot = plot_area(area, spec.x_labels);
-    let axis = if look.color {
-        Style::new().fg(palette::AXIS)
-    } else {
-        Style::new()
-    };
+    let axis = Style::new().fg(Color::Reset);
     let x_range = spec
         .x_bounds
         .or_else(|| data_range(series, |p| p.0))
@@ -289,8 +285,15 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
     for (i, s) in series.iter().enumerate() {
         raster.draw(s, i);
     }
-    // Data cells.
+    // Data cells. In colour, a blank between two data cells of a row takes
+    // the colour of the one on its left (invisible on a blank), so that the
+    // terminal changes colour where the series change, not around every gap
+    // in a trace: the bytes per frame follow the data, not its spacing.
+    // Blanks before the first and after the last keep the default, so they
+    // do not change with the data.
+    let plain = Style::new().fg(Color::Reset).bg(Color::Reset);
     for r in 0..raster.rows {
+        let mut last: Option<(usize, Color)> = None;
         for c in 0..raster.cols {
             let i = r * raster.cols + c;
             let Some(owner) = raster.owner[i] else {
@@ -301,46 +304,43 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
             } else {
                 MARKERS[owner % MARKERS.len()]
             };
-            let style = if look.color {
-                Style::new().fg(series[owner].color)
-            } else {
-                Style::new()
-            };
+            let y = plot.y + r as u16;
             let mut tmp = [0u8; 4];
-            buf[(plot.x + c as u16, plot.y + r as u16)]
-                .set_symbol(symbol.encode_utf8(&mut tmp))
-                .set_style(style);
+            buf[(plot.x + c as u16, y)].set_symbol(symbol.encode_utf8(&mut tmp));
+            if look.color {
+                let color = series[owner].color;
+                buf[(plot.x + c as u16, y)].set_fg(color);
+                if let Some((from, left)) = last {
+                    for g in from + 1..c {
+                        buf[(plot.x + g as u16, y)].set_fg(left);
+                    }
+                }
+                last = Some((c, color));
+            }
         }
     }
     let empty = |raster: &Raster, r: usize, c: usize| raster.owner[r * raster.cols + c].is_none();
-    // The zero line, where there is no data.
+    // The zero line, where there is no data, and the cursor, in the
+    // default colour (a colour of their own would cost a change per cell).
     let zero_row = (yt.bounds[0] < 0.0 && yt.bounds[1] > 0.0).then(|| raster.row(0.0));
     if let Some(r) = zero_row {
         for c in 0..raster.cols {
             if empty(&raster, r, c) {
                 buf[(plot.x + c as u16, plot.y + r as u16)]
                     .set_symbol("┄")
-                    .set_style(axis);
+                    .set_style(plain);
             }
         }
     }
-    // The cursor.
     if let Some(x) = spec
         .cursor
         .filter(|x| (x_range[0]..=x_range[1]).contains(x))
     {
         let c = raster.col(x);
-        let style = if look.color {
-            Style::new().fg(palette::CURSOR)
-        } else {
-            Style::new()
-        };
         for r in 0..raster.rows {
             let cell = &mut buf[(plot.x + c as u16, plot.y + r as u16)];
             if empty(&raster, r, c) || Some(r) == zero_row && cell.symbol() == "┄" {
-                cell.set_symbol("│").set_style(style);
-            } else if look.color {
-                cell.set_bg(Color::DarkGray);
+                cell.set_symbol("│").set_style(plain);
             }
         }
     }

@@ -1,7 +1,8 @@
-//! Scene (w): the spectrum of the active set (SPEC §7): Π_u and Π_v of the
-//! left structure against Π_ω1 with and without pounding, Π_ω2 = μ Π_ω1, the
-//! current Π_ω1 as a cursor, and a strip marking each point's region
-//! (+ amplification, − suppression, · none). Filled in as points arrive.
+//! Scene (w): the spectrum of the active set (SPEC §7): Π_u (or Π_v, key o)
+//! of both structures against Π_ω1 with and without pounding, Π_ω2 = μ Π_ω1,
+//! the impact count, the current Π_ω1 as a cursor with its values read out,
+//! and a strip marking each point's region (+ amplification, − suppression,
+//! · none) with its legend. Filled in as batches of points arrive.
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -52,6 +53,37 @@ pub fn strip(
         .collect()
 }
 
+/// The grid point nearest to `omega1`, once computed.
+fn nearest(points: &[Option<SpectrumPoint>], omega1: f64) -> Option<SpectrumPoint> {
+    points
+        .iter()
+        .flatten()
+        .min_by(|a, b| {
+            (a.omega1 - omega1)
+                .abs()
+                .total_cmp(&(b.omega1 - omega1).abs())
+        })
+        .copied()
+}
+
+/// The readout at the cursor (the set's own Π_ω1): both structures with
+/// pounding, then both without.
+pub fn readout(p: &SpectrumPoint, velocity: bool) -> String {
+    let (q, pick): (&str, fn(&StructurePeaks) -> f64) = if velocity {
+        ("v", |s| s.peak_velocity)
+    } else {
+        ("u", |s| s.peak_displacement)
+    };
+    format!(
+        "Π_ω1 {:.2}  Π_{q}1 {:.2}  Π_{q}2 {:.2}  free {:.2} {:.2}",
+        p.omega1,
+        pick(&p.left),
+        pick(&p.right),
+        pick(&p.free_left),
+        pick(&p.free_right),
+    )
+}
+
 pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     let Some(s) = &app.jobs.spectrum else {
         frame.render_widget(app.look.text("spectrum: μ undefined (Π_ω1 = 0)"), area);
@@ -60,24 +92,34 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     let grid = &s.spec.grid;
     let xb = [grid[0], grid[grid.len() - 1]];
     let omega1 = app.active_params().omega1;
-    let [u_area, v_area, strip_area] = Layout::vertical([
-        Constraint::Ratio(1, 2),
-        Constraint::Ratio(1, 2),
+    let velocity = app.view.velocity;
+    let [
+        l_area,
+        r_area,
+        n_area,
+        strip_area,
+        legend_area,
+        readout_area,
+    ] = Layout::vertical([
+        Constraint::Fill(3),
+        Constraint::Fill(3),
+        Constraint::Fill(2),
+        Constraint::Length(1),
+        Constraint::Length(1),
         Constraint::Length(1),
     ])
     .areas(area);
-    let peaks = |pick: fn(&StructurePeaks) -> f64| -> [Series; 2] {
-        [
-            Series::line(
-                "pounding",
-                palette::LEFT,
-                curve(&s.points, |p| pick(&p.left)),
-            ),
-            Series::line(
-                "free",
-                palette::FREE,
-                curve(&s.points, |p| pick(&p.free_left)),
-            ),
+    let (q, pick): (&str, fn(&StructurePeaks) -> f64) = if velocity {
+        ("v", |p| p.peak_velocity)
+    } else {
+        ("u", |p| p.peak_displacement)
+    };
+    let pair = |own: fn(&SpectrumPoint) -> &StructurePeaks,
+                free: fn(&SpectrumPoint) -> &StructurePeaks,
+                color| {
+        vec![
+            Series::line("pounding", color, curve(&s.points, |p| pick(own(p)))),
+            Series::line("free", palette::FREE, curve(&s.points, |p| pick(free(p)))),
         ]
     };
     let progress = if s.done() < s.points.len() {
@@ -86,33 +128,69 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         String::new()
     };
     let buf = frame.buffer_mut();
-    for (area, title, series, x_labels) in [
+    let charts = [
         (
-            u_area,
-            format!("Π_u1 μ={:.2}{progress}", s.spec.mu),
-            peaks(|p| p.peak_displacement),
-            false,
+            l_area,
+            format!("Π_{q}1 μ={:.2}{progress}", s.spec.mu),
+            pair(|p| &p.left, |p| &p.free_left, palette::LEFT),
         ),
-        (v_area, "Π_v1".to_string(), peaks(|p| p.peak_velocity), true),
-    ] {
+        (
+            r_area,
+            format!("Π_{q}2 (o: Π_u/Π_v)"),
+            pair(|p| &p.right, |p| &p.free_right, palette::RIGHT),
+        ),
+        (
+            n_area,
+            "impacts".to_string(),
+            vec![Series::line(
+                "count",
+                palette::FORCE,
+                curve(&s.points, |p| p.impacts as f64),
+            )],
+        ),
+    ];
+    for (k, (area, title, series)) in charts.into_iter().enumerate() {
         let spec = ChartSpec {
             title,
             x_title: "Π_ω1".into(),
             x_bounds: Some(xb),
-            x_labels,
+            x_labels: k == 2,
             cursor: Some(omega1),
-            ..Default::default()
+            // Counts start at zero.
+            y_range: (k == 2).then(|| {
+                let most = s.points.iter().flatten().map(|p| p.impacts).max();
+                [0.0, most.unwrap_or(1).max(1) as f64]
+            }),
         };
         chart::draw(buf, area, app.look, &spec, &series);
     }
     let pad = GUTTER as usize;
     let width = (strip_area.width as usize).saturating_sub(pad);
-    let label = if pad >= 6 { "+-·  " } else { "" };
     let text = format!(
         "{:>pad$}{}",
-        label,
+        "left ",
         strip(&s.points, grid, xb, width),
         pad = pad
     );
     frame.render_widget(Line::from(app.look.text(&text)), strip_area);
+    let here = nearest(&s.points, omega1);
+    let legend = format!(
+        "+ amplified  − suppressed  · none{}",
+        here.map_or_else(String::new, |p| format!("   {} impacts", p.impacts))
+    );
+    frame.render_widget(Line::from(app.look.text(&legend)), legend_area);
+    // Whole items only: the readout is cut at a double space, never inside a number.
+    let full = here.map_or_else(String::new, |p| app.look.text(&readout(&p, velocity)));
+    let mut line = String::new();
+    for item in full.split("  ") {
+        let sep = if line.is_empty() { 0 } else { 2 };
+        if line.chars().count() + sep + item.chars().count() > readout_area.width as usize {
+            break;
+        }
+        if sep > 0 {
+            line.push_str("  ");
+        }
+        line.push_str(item);
+    }
+    frame.render_widget(Line::from(line), readout_area);
 }
