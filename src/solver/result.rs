@@ -85,7 +85,9 @@ pub struct RunResult {
     /// max over τ of x1 − x2, the left structure's largest excursion towards
     /// the right one. In a run without contact the smallest gap that
     /// prevents pounding is Π_d,min = max(0, this) (SPEC §11). Tracked on
-    /// the motion's own series by the exact method; `None` from Newmark.
+    /// the motion's own series by the exact method, in a run that had no
+    /// impact (which is its own no-pounding run); `None` after an impact
+    /// and from Newmark.
     pub max_relative_displacement: Option<f64>,
     pub energy: EnergyBalance,
     /// τ reached (τ_end unless stopped early).

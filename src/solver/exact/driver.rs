@@ -348,8 +348,13 @@ impl<'a> Run<'a> {
             swing_x[i] = sx;
             next[i] = t.advance(&inputs, equilibrium);
         }
-        // x1 − x2 must stay below the gap (no onset) and its running maximum (SPEC §11).
-        let ceiling = self.p.gap.min(self.max_relative_displacement);
+        // x1 − x2 must stay below the gap (no onset) and, until a first
+        // impact, below its running maximum (the minimum gap of SPEC §11).
+        let ceiling = if self.result.impacts.is_empty() {
+            self.p.gap.min(self.max_relative_displacement)
+        } else {
+            self.p.gap
+        };
         if !(self.x[0] - self.x[1] + swing_x[0] + swing_x[1] < ceiling) {
             return false;
         }
@@ -493,9 +498,12 @@ impl<'a> Run<'a> {
                 raise_abs_max(&segment.v[i], &a, length, &mut peaks.peak_velocity);
             }
         }
-        // x1 − x2 can rise above its running maximum only where its bound does.
-        if self.x[0] - self.x[1] + segment.swing[0] + segment.swing[1]
-            > self.max_relative_displacement
+        // Until a first impact the run is the no-pounding run, and the maximum
+        // of x1 − x2 is the gap that would prevent pounding (SPEC §11); it
+        // can rise only where its bound does. After an impact it means nothing.
+        if self.result.impacts.is_empty()
+            && self.x[0] - self.x[1] + segment.swing[0] + segment.swing[1]
+                > self.max_relative_displacement
         {
             let relative = segment.x[0].minus(&segment.x[1]);
             let rate = relative.derivative();
@@ -648,7 +656,11 @@ impl<'a> Run<'a> {
         }
         self.result.tau_end = self.tau;
         self.result.steps = self.segments;
-        self.result.max_relative_displacement = Some(self.max_relative_displacement);
+        self.result.max_relative_displacement = self
+            .result
+            .impacts
+            .is_empty()
+            .then_some(self.max_relative_displacement);
         self.result
     }
 }
