@@ -45,7 +45,7 @@ const FREE_REACH: f64 = 1.0;
 /// few nanoseconds each) that taking several costs less than one series.
 const QUIET_FRACTION: f64 = 0.25;
 /// Degree of the series in contact.
-const CONTACT_DEGREE: usize = 24;
+const CONTACT_DEGREE: usize = 20;
 /// Size of each of the last two terms of a contact series, relative to the
 /// contact scale δ ~ v₀/Π_ωcon. The peaks then agree with the reference to
 /// about 3e-13 on the presets, as at 1e-16, at a third fewer contact segments.
