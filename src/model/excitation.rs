@@ -114,6 +114,24 @@ impl RecordMotion {
         k.min(last)
     }
 
+    /// (g, dg/dτ) at τ as the limit from the left: on a sample τ_k the
+    /// segment [τ_{k−1}, τ_k] ending there (at the last sample, its value
+    /// before g drops to 0); elsewhere [`RecordMotion::value_slope`].
+    #[inline]
+    fn value_slope_before(&self, tau: f64) -> [f64; 2] {
+        let a = &self.record.acceleration;
+        let h = self.spacing();
+        let k = self.interval(tau);
+        if k >= 1 && k as f64 * h >= tau {
+            let slope = (a[k] - a[k - 1]) / (h * self.amplitude);
+            return [
+                a[k - 1] / self.amplitude + slope * (tau - (k - 1) as f64 * h),
+                slope,
+            ];
+        }
+        self.value_slope(tau)
+    }
+
     /// (g, dg/dτ) at τ: linear on [τ_k, τ_{k+1}), zero from the last sample on.
     #[inline]
     fn value_slope(&self, tau: f64) -> [f64; 2] {
@@ -241,6 +259,24 @@ impl Excitation {
                 }
             }
             Excitation::Record(m) => m.value_slope(tau),
+        }
+    }
+
+    /// (g, dg/dτ) at τ as the limit from the left: equal to
+    /// [`Excitation::phasor`] except on a break ([`Excitation::next_break`]),
+    /// where it is the value of the formula that ends there (the pulse's
+    /// last value, a record's last sample). A time step that ends on a break
+    /// integrates the formula before it, so this is its end value.
+    #[inline]
+    pub fn phasor_before(&self, tau: f64) -> [f64; 2] {
+        match self {
+            Excitation::Pulse(p) if tau > 0.0 && tau <= p.end() => {
+                let (amp, theta) = p.sinusoid();
+                let (s, c) = (tau + theta).sin_cos();
+                [amp * s, amp * c]
+            }
+            Excitation::Record(m) => m.value_slope_before(tau),
+            _ => self.phasor(tau),
         }
     }
 
