@@ -27,7 +27,8 @@ pub struct RunArgs {
     /// Output format of the summary.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-    /// Write the history as CSV (tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp), one row per step,
+    /// Write the history as CSV (tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp, then the ground
+    /// motion ag,vg,ug in Π form, SPEC §9), one row per step,
     /// streamed as it is computed. `-` is stdout (the summary then goes to stderr).
     #[arg(long, value_name = "FILE")]
     pub history: Option<PathBuf>,
@@ -80,7 +81,8 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
     if let Some(target) = history {
         history_to_stdout = target.is_stdout();
         let offset = steps * f64::from(args.repeat);
-        let mut csv = Tracked::new(CsvHistory::new(target), &progress, offset, p.dt);
+        let csv = CsvHistory::with_ground(target, p.ground());
+        let mut csv = Tracked::new(csv, &progress, offset, p.dt);
         solve(&p, &mut csv);
         let target = match csv.inner.finish() {
             Ok((target, _rows)) => target,
