@@ -205,6 +205,26 @@ impl Excitation {
         }
     }
 
+    /// What a run's output says about its excitation beyond the name (SPEC §9),
+    /// or nothing for the sine: the type B pulse's initial velocity, the
+    /// scaling of a record (with the scaled excitation of `Params::ground`).
+    pub fn note(&self) -> Option<String> {
+        match self {
+            Excitation::Pulse(Pulse::B) => Some(
+                "the ground starts with velocity V_p: both structures start with ẋ(0) = −1"
+                    .to_string(),
+            ),
+            Excitation::Record(m) => Some(format!(
+                "{} samples at DT = {} s; a_p = {} m/s², ω_p = {} rad/s",
+                m.record.acceleration.len(),
+                m.record.dt,
+                m.amplitude,
+                m.omega,
+            )),
+            _ => None,
+        }
+    }
+
     /// Whether (g, dg/dτ) advance by a rotation ([`Rotation`]): the sine and zero only.
     #[inline]
     pub fn rotates(&self) -> bool {
