@@ -80,7 +80,10 @@ fn history_csv_has_one_row_per_step() {
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let csv = std::fs::read_to_string(&path).unwrap();
     let mut lines = csv.lines();
-    assert_eq!(lines.next().unwrap(), "tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp");
+    assert_eq!(
+        lines.next().unwrap(),
+        "tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp,ag,vg,ug"
+    );
     // One row per accepted step plus the initial state.
     assert_eq!(lines.count() as u64, v["steps"].as_u64().unwrap() + 1);
     std::fs::remove_dir_all(&dir).unwrap();

@@ -145,3 +145,28 @@ fn pulses_are_self_similar() {
         }
     }
 }
+
+/// Newmark's observed order against the exact method: the peaks' error at
+/// Δτ and Δτ/2 under the type C1 pulse, whose g jumps from cos(3π − φ) to 0 at
+/// its end (a step across that jump would be first order; the driver ends a
+/// step on it).
+#[test]
+fn newmark_is_second_order_under_pulse_c1() {
+    let p = linear("pulse-c1".parse().unwrap());
+    let truth = solve(&p, &mut ()).peaks();
+    let err = |dt: f64| {
+        let q = Params { dt, ..p };
+        pounding::solver::relative_peak_error(
+            &simulate(&q, &newmark_options(&q), &mut ()).peaks(),
+            &truth,
+        )
+    };
+    // Δτ chosen so that the pulse's end falls inside a step.
+    let (coarse, fine) = (err(0.0137), err(0.0137 / 2.0));
+    let order = (coarse / fine).log2();
+    eprintln!("pulse-c1: order {order} ({coarse:e}, {fine:e})");
+    assert!(
+        order > 1.8 && order < 2.2,
+        "order {order} ({coarse:e}, {fine:e})"
+    );
+}

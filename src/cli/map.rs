@@ -136,6 +136,10 @@ pub struct MapReport<'a> {
     /// μ of the cells unless `mu` or `omega2` is an axis.
     mu: f64,
     model: &'static str,
+    /// The excitation's name and note (SPEC §9), as `run` gives them.
+    excitation: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    excitation_note: Option<String>,
     method: Method,
     /// Relative change of Π_u1 beyond which a cell is amplification or suppression.
     region_threshold: f64,
@@ -166,6 +170,8 @@ impl<'a> MapReport<'a> {
             params: &plan.base,
             mu: plan.mu,
             model: plan.base.model.name(),
+            excitation: plan.base.excitation.name(),
+            excitation_note: plan.base.ground().note(),
             method: plan.base.method,
             region_threshold: REGION_THRESHOLD,
             x: AxisReport::of(&plan.x),
@@ -302,9 +308,10 @@ impl Report for MapReport<'_> {
         .collect();
         let _ = writeln!(
             s,
-            "{} method, {} contact, {}; + amplification, − suppression \
+            "{} method, {} excitation, {} contact, {}; + amplification, − suppression \
              (Π_u1 beyond ±{} % of no pounding), · no influence{}",
             self.method,
+            self.excitation,
             p.model,
             fixed.join(", "),
             num(REGION_THRESHOLD * 100.0),

@@ -27,7 +27,8 @@ pub struct RunArgs {
     /// Output format of the summary.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-    /// Write the history as CSV (tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp), one row per step,
+    /// Write the history as CSV (tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp, then the ground
+    /// motion ag,vg,ug in Π form, SPEC §9), one row per step,
     /// streamed as it is computed. `-` is stdout (the summary then goes to stderr).
     #[arg(long, value_name = "FILE")]
     pub history: Option<PathBuf>,
@@ -80,7 +81,8 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
     if let Some(target) = history {
         history_to_stdout = target.is_stdout();
         let offset = steps * f64::from(args.repeat);
-        let mut csv = Tracked::new(CsvHistory::new(target), &progress, offset, p.dt);
+        let csv = CsvHistory::with_ground(target, p.ground());
+        let mut csv = Tracked::new(csv, &progress, offset, p.dt);
         solve(&p, &mut csv);
         let target = match csv.inner.finish() {
             Ok((target, _rows)) => target,
@@ -125,6 +127,11 @@ pub struct RunReport<'a> {
     repeat: u32,
     params: &'a Params,
     model: &'static str,
+    /// The excitation's name (SPEC §9), and what the output must say beside
+    /// it: the type B pulse's initial velocity, a record's scaling.
+    excitation: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    excitation_note: Option<String>,
     method: Method,
     dt: f64,
     tau_end: f64,
@@ -164,6 +171,8 @@ impl<'a> RunReport<'a> {
             repeat,
             params: p,
             model: p.model.name(),
+            excitation: p.excitation.name(),
+            excitation_note: p.ground().note(),
             method: r.method,
             dt: p.dt,
             tau_end: r.tau_end,
@@ -205,6 +214,8 @@ impl Report for RunReport<'_> {
             "error_vs_exact",
             "reliable",
             "unreliable_reason",
+            "excitation",
+            "excitation_note",
         ]
     }
 
@@ -227,6 +238,8 @@ impl Report for RunReport<'_> {
             self.error_vs_exact.map(num).unwrap_or_default(),
             self.reliable.to_string(),
             self.unreliable_reason.clone().unwrap_or_default(),
+            self.excitation.to_string(),
+            self.excitation_note.clone().unwrap_or_default(),
         ]]
     }
 
@@ -235,8 +248,9 @@ impl Report for RunReport<'_> {
         let mut s = String::new();
         let _ = writeln!(
             s,
-            "{}: {} contact, {} method, Δτ = {}, {} cycles (τ_end = {:.3}), Π_d = {}",
+            "{}: {} excitation, {} contact, {} method, Δτ = {}, {} cycles (τ_end = {:.3}), Π_d = {}",
             self.preset,
+            self.excitation,
             p.model,
             self.method,
             Num(p.dt),
@@ -244,6 +258,9 @@ impl Report for RunReport<'_> {
             self.tau_end,
             Num(p.gap)
         );
+        if let Some(note) = &self.excitation_note {
+            let _ = writeln!(s, "{}: {note}", self.excitation);
+        }
         let _ = writeln!(
             s,
             "{:<12} {:>12} {:>12}  yielded",
@@ -342,7 +359,7 @@ mod tests {
         let text = csv(&report.csv_header(), &report.csv_rows());
         let last = text.lines().nth(1).unwrap();
         assert!(
-            last.ends_with(",newmark,,false,energy residual 5.000e-1 exceeds 1e-4"),
+            last.ends_with(",newmark,,false,energy residual 5.000e-1 exceeds 1e-4,sine,"),
             "{last}"
         );
         assert!(

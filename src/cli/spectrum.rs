@@ -208,6 +208,8 @@ pub fn json(
         "params": params_json(&plan.params),
         "mu": plan.mu,
         "model": plan.params.model.name(),
+        "excitation": plan.params.excitation.name(),
+        "excitation_note": plan.params.ground().note(),
         "method": plan.params.method.name(),
         "omega1_grid": plan.grid.to_string(),
         "curves": curves,
@@ -256,10 +258,11 @@ fn table(plan: &SpectrumPlan, curves: &[Curve], cache: &BaselineCache, elapsed_m
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "{}: spectrum over Π_ω1 = {} ({} points), {} contact, {} method, Π_m = {}, Π_d = {}",
+        "{}: spectrum over Π_ω1 = {} ({} points), {} excitation, {} contact, {} method, Π_m = {}, Π_d = {}",
         plan.preset.name,
         plan.grid,
         plan.grid.len(),
+        p.excitation.name(),
         p.model,
         p.method,
         num(p.mass_ratio),

@@ -114,6 +114,24 @@ impl RecordMotion {
         k.min(last)
     }
 
+    /// (g, dg/dτ) at τ as the limit from the left: on a sample τ_k the
+    /// segment [τ_{k−1}, τ_k] ending there (at the last sample, its value
+    /// before g drops to 0); elsewhere [`RecordMotion::value_slope`].
+    #[inline]
+    fn value_slope_before(&self, tau: f64) -> [f64; 2] {
+        let a = &self.record.acceleration;
+        let h = self.spacing();
+        let k = self.interval(tau);
+        if k >= 1 && k as f64 * h >= tau {
+            let slope = (a[k] - a[k - 1]) / (h * self.amplitude);
+            return [
+                a[k - 1] / self.amplitude + slope * (tau - (k - 1) as f64 * h),
+                slope,
+            ];
+        }
+        self.value_slope(tau)
+    }
+
     /// (g, dg/dτ) at τ: linear on [τ_k, τ_{k+1}), zero from the last sample on.
     #[inline]
     fn value_slope(&self, tau: f64) -> [f64; 2] {
@@ -187,6 +205,26 @@ impl Excitation {
         }
     }
 
+    /// What a run's output says about its excitation beyond the name (SPEC §9),
+    /// or nothing for the sine: the type B pulse's initial velocity, the
+    /// scaling of a record (with the scaled excitation of `Params::ground`).
+    pub fn note(&self) -> Option<String> {
+        match self {
+            Excitation::Pulse(Pulse::B) => Some(
+                "the ground starts with velocity V_p: both structures start with ẋ(0) = −1"
+                    .to_string(),
+            ),
+            Excitation::Record(m) => Some(format!(
+                "{} samples at DT = {} s; a_p = {} m/s², ω_p = {} rad/s",
+                m.record.acceleration.len(),
+                m.record.dt,
+                m.amplitude,
+                m.omega,
+            )),
+            _ => None,
+        }
+    }
+
     /// Whether (g, dg/dτ) advance by a rotation ([`Rotation`]): the sine and zero only.
     #[inline]
     pub fn rotates(&self) -> bool {
@@ -241,6 +279,24 @@ impl Excitation {
                 }
             }
             Excitation::Record(m) => m.value_slope(tau),
+        }
+    }
+
+    /// (g, dg/dτ) at τ as the limit from the left: equal to
+    /// [`Excitation::phasor`] except on a break ([`Excitation::next_break`]),
+    /// where it is the value of the formula that ends there (the pulse's
+    /// last value, a record's last sample). A time step that ends on a break
+    /// integrates the formula before it, so this is its end value.
+    #[inline]
+    pub fn phasor_before(&self, tau: f64) -> [f64; 2] {
+        match self {
+            Excitation::Pulse(p) if tau > 0.0 && tau <= p.end() => {
+                let (amp, theta) = p.sinusoid();
+                let (s, c) = (tau + theta).sin_cos();
+                [amp * s, amp * c]
+            }
+            Excitation::Record(m) => m.value_slope_before(tau),
+            _ => self.phasor(tau),
         }
     }
 

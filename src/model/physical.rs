@@ -6,6 +6,7 @@
 //! ```text
 //! Π_m = m1/m2,  Π_ωi = ωi/ω_p,  Π_uyi = u_yi/l_e,  Π_d = d/l_e,
 //! Π_ωcon = ω̄/ω_p,  Π_ξ = ξ,  Π_α = α,  Π_e = e,
+//! Π_K = β √l_e / (m2 ω_p²)   (SPEC §10: the Hertz-type laws' f = β δ^{3/2}),
 //! ```
 //!
 //! and results map back as X_max = Π_u l_e, Ẋ_max = Π_v a_p/ω_p.
@@ -25,6 +26,7 @@
 //! alpha = 0.1
 //! contact_omega = 314.16  # rad/s
 //! restitution = 0.4
+//! hertz_beta = 1.0e9    # N/m^{3/2}, optional (default: Π_K derived from contact_omega)
 //! ap = "0.5g"           # m/s² or "…g": the level at which the lengths above hold
 //! omega_p = 6.2832      # rad/s (or period_p in s)
 //! ```
@@ -60,6 +62,9 @@ pub struct Physical {
     /// Contact element frequency ω̄ in rad/s.
     pub contact_omega: f64,
     pub restitution: f64,
+    /// Hertz stiffness β in N/m^{3/2} of the Hertz-type laws (SPEC §10);
+    /// `None`: Π_K is derived from Π_ωcon as the settings say.
+    pub hertz_beta: Option<f64>,
     /// Excitation amplitude a_p in m/s².
     pub ap: f64,
     /// Excitation circular frequency ω_p in rad/s.
@@ -97,7 +102,7 @@ pub fn energy_length(ap: f64, omega_p: f64) -> f64 {
 impl Physical {
     /// Reads a `[physical]` table (keys as in the module docs; unknown keys refused).
     pub fn from_table(t: &toml::Table) -> Result<Physical, PhysicalError> {
-        const KNOWN: [&str; 16] = [
+        const KNOWN: [&str; 17] = [
             "m1",
             "m2",
             "omega1",
@@ -111,6 +116,7 @@ impl Physical {
             "alpha",
             "contact_omega",
             "restitution",
+            "hertz_beta",
             "ap",
             "omega_p",
             "period_p",
@@ -121,7 +127,7 @@ impl Physical {
                 key: super::params::echo::text(k),
                 value: super::params::echo::text(&t[k].to_string()),
                 allowed: "unknown key (known: m1, m2, omega1|period1, omega2|period2, yield1, yield2, \
-                          gap, damping, alpha, contact_omega, restitution, ap, omega_p|period_p)",
+                          gap, damping, alpha, contact_omega, restitution, hertz_beta, ap, omega_p|period_p)",
             });
         }
         let err = |key: &str, allowed| PhysicalError {
@@ -202,15 +208,26 @@ impl Physical {
             restitution: number("restitution")
                 .filter(|v| *v > 0.0 && *v <= 1.0)
                 .ok_or_else(|| err("restitution", "must be in (0, 1]"))?,
+            hertz_beta: match t.contains_key("hertz_beta") {
+                true => {
+                    Some(positive("hertz_beta").map_err(|_| {
+                        err("hertz_beta", "must be a finite number > 0 (N/m^{3/2})")
+                    })?)
+                }
+                false => None,
+            },
             ap,
             omega_p,
         })
     }
 
     /// The physical system whose Π-groups are those of `p`, at excitation
-    /// a_p, ω_p and right-hand mass m2 (the inverse of [`Physical::to_params`]).
+    /// a_p, ω_p and right-hand mass m2 (the inverse of [`Physical::to_params`]);
+    /// β = Π_K m2 ω_p² / √l_e when `p` sets its own Π_K.
     pub fn from_params(p: &Params, ap: f64, omega_p: f64, m2: f64) -> Physical {
         let le = energy_length(ap, omega_p);
+        let hertz_beta = (p.hertz_stiffness > 0.0)
+            .then(|| p.hertz_stiffness * m2 * omega_p * omega_p / le.sqrt());
         Physical {
             mass: [p.mass_ratio * m2, m2],
             omega: [p.omega1 * omega_p, p.omega2 * omega_p],
@@ -220,9 +237,16 @@ impl Physical {
             alpha: p.alpha,
             contact_omega: p.contact_omega * omega_p,
             restitution: p.restitution,
+            hertz_beta,
             ap,
             omega_p,
         }
+    }
+
+    /// Π_K = β √l_e / (m2 ω_p²) (SPEC §10): f = β δ^{3/2} in newtons over
+    /// m2 a_p, with δ = l_e δ̂, is Π_K δ̂^{3/2}.
+    pub fn hertz_stiffness(&self, beta: f64) -> f64 {
+        beta * self.length_scale().sqrt() / (self.mass[1] * self.omega_p * self.omega_p)
     }
 
     /// l_e = a_p/ω_p², metres per unit of Π_u.
@@ -264,6 +288,9 @@ impl Physical {
             contact_omega: self.contact_omega / self.omega_p,
             restitution: self.restitution,
             gap: self.gap / le,
+            hertz_stiffness: self
+                .hertz_beta
+                .map_or(settings.hertz_stiffness, |b| self.hertz_stiffness(b)),
             ..*settings
         };
         p.validate()?;
@@ -272,13 +299,15 @@ impl Physical {
 
     /// The same structures under excitation amplitude `ap`. With `similar`
     /// the yield displacements and the gap scale with a_p, so every Π-group
-    /// is unchanged (the paper's Figure 7); without it they stay put, and
-    /// Π_uy and Π_d fall as a_p grows.
+    /// is unchanged (the paper's Figure 7), β scaling as 1/√(scale) to keep
+    /// Π_K = β √l_e/(m2 ω_p²); without it they stay put, and Π_uy, Π_d fall
+    /// and Π_K grows as a_p grows.
     pub fn at_level(&self, ap: f64, similar: bool) -> Physical {
         let scale = if similar { ap / self.ap } else { 1.0 };
         Physical {
             yield_displacement: self.yield_displacement.map(|u| u * scale),
             gap: self.gap * scale,
+            hertz_beta: self.hertz_beta.map(|b| b / scale.sqrt()),
             ap,
             ..*self
         }
@@ -330,6 +359,48 @@ mod tests {
         let bad = text.replace("period1 = 1.0", "");
         let e = Physical::from_table(&bad.parse().unwrap()).unwrap_err();
         assert!(e.to_string().contains("`omega1` = (missing)"), "{e}");
+    }
+
+    /// β = 1e9 N/m^{3/2}, m2 = 1e6 kg, a_p = 0.5 g, ω_p = 2π rad/s:
+    /// l_e = 4.903325/(4π²) = 0.1242027... m, so Π_K = 1e9 · 0.3524241.../(1e6 · 39.4784176...)
+    /// = 8.92704... (worked by hand from the definitions).
+    #[test]
+    fn hertz_beta_maps_to_pi_k_and_stays_self_similar() {
+        let text = "m1 = 5e5\nm2 = 1e6\nomega1 = 6.6\nomega2 = 14.8\nyield1 = 0.1\nyield2 = 0.1\n\
+                    gap = 0.02\ndamping = 0.05\nalpha = 0.1\ncontact_omega = 314.0\nrestitution = 0.4\n\
+                    hertz_beta = 1e9\nap = \"0.5g\"\nomega_p = 6.283185307179586\n";
+        let phys = Physical::from_table(&text.parse().unwrap()).unwrap();
+        let le: f64 = 0.5 * G / (4.0 * PI * PI);
+        assert!((le - 0.124_202_7).abs() < 1e-7);
+        let by_hand = 1e9 * le.sqrt() / (1e6 * 4.0 * PI * PI);
+        assert!((by_hand - 8.927_04).abs() < 1e-4, "{by_hand}");
+        let p = phys.to_params(&SET1).unwrap();
+        assert!((p.hertz_stiffness - by_hand).abs() < 1e-12 * by_hand);
+        // Back through from_params: the same β.
+        let again = Physical::from_params(&p, phys.ap, phys.omega_p, 1e6);
+        assert!((again.hertz_beta.unwrap() - 1e9).abs() < 1e-3);
+        // Self-similar levels keep Π_K; fixed structures see Π_K grow as √a_p.
+        for level in [0.2, 0.8] {
+            let similar = phys.at_level(level * G, true).to_params(&SET1).unwrap();
+            assert!((similar.hertz_stiffness - by_hand).abs() < 1e-12 * by_hand);
+            let fixed = phys.at_level(level * G, false).to_params(&SET1).unwrap();
+            let grown = by_hand * (level / 0.5_f64).sqrt();
+            assert!((fixed.hertz_stiffness - grown).abs() < 1e-12 * grown);
+        }
+        // Without the key the settings' Π_K (0: derived from Π_ωcon) stands.
+        let none = text.replace("hertz_beta = 1e9\n", "");
+        let q = Physical::from_table(&none.parse().unwrap()).unwrap();
+        assert_eq!(q.hertz_beta, None);
+        assert_eq!(
+            q.to_params(&SET1).unwrap().hertz_stiffness,
+            SET1.hertz_stiffness
+        );
+        let bad = text.replace("hertz_beta = 1e9", "hertz_beta = -1");
+        let e = Physical::from_table(&bad.parse().unwrap()).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "[physical] `hertz_beta` = -1: must be a finite number > 0 (N/m^{3/2})"
+        );
     }
 
     #[test]

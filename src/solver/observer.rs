@@ -5,6 +5,7 @@
 
 use std::io::{self, Write};
 
+use crate::model::Excitation;
 use crate::output::Num;
 
 /// One accepted state of the two-structure system (SPEC §2–4).
@@ -106,35 +107,71 @@ impl Observer for FullHistory {
     }
 }
 
-/// The header of the history CSV: τ, then the channels.
+/// The header of the history CSV without the ground: τ, then the channels.
 pub const CSV_HEADER: &str = "tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp";
 
-/// One row of the history CSV (every value in its shortest round-trip form).
-pub fn write_csv_row(out: &mut impl Write, s: &Sample) -> io::Result<()> {
+/// Names of the ground columns the history CSV appends (SPEC §9, Π form):
+/// the ground acceleration g, velocity u̇_g ω_p/a_p and displacement u_g ω_p²/a_p.
+pub const GROUND_NAMES: [&str; 3] = ["ag", "vg", "ug"];
+
+/// One row of the history CSV (every value in its shortest round-trip form),
+/// with the ground motion at τ appended when `ground` is given.
+pub fn write_csv_row(
+    out: &mut impl Write,
+    s: &Sample,
+    ground: Option<&Excitation>,
+) -> io::Result<()> {
     write!(out, "{}", Num(s.tau))?;
     for v in s.channels() {
         write!(out, ",{}", Num(v))?;
     }
+    if let Some(e) = ground {
+        for v in e.ground(s.tau) {
+            write!(out, ",{}", Num(v))?;
+        }
+    }
     out.write_all(b"\n")
 }
 
-/// The history streamed as CSV ([`CSV_HEADER`], one row per accepted state)
-/// to a writer while the run goes, so memory stays bounded whatever its
-/// length. The first write error stops the run; [`CsvHistory::finish`] returns it.
+/// The history streamed as CSV ([`CSV_HEADER`], then [`GROUND_NAMES`] when
+/// the excitation is given; one row per accepted state) to a writer while
+/// the run goes, so memory stays bounded whatever its length. The first
+/// write error stops the run; [`CsvHistory::finish`] returns it.
 pub struct CsvHistory<W: Write> {
     out: W,
     rows: u64,
     error: Option<io::Error>,
+    /// The run's excitation, whose ground motion each row carries.
+    ground: Option<Excitation>,
 }
 
 impl<W: Write> CsvHistory<W> {
-    /// Writes the header to `out`.
-    pub fn new(mut out: W) -> Self {
-        let error = writeln!(out, "{CSV_HEADER}").err();
+    /// Writes the header (the structures only) to `out`.
+    pub fn new(out: W) -> Self {
+        Self::start(out, None)
+    }
+
+    /// Writes the header to `out`, with the ground columns of `excitation`
+    /// (as the solvers take it: [`crate::model::Params::ground`]).
+    pub fn with_ground(out: W, excitation: Excitation) -> Self {
+        Self::start(out, Some(excitation))
+    }
+
+    fn start(mut out: W, ground: Option<Excitation>) -> Self {
+        let names = if ground.is_some() {
+            GROUND_NAMES.as_slice()
+        } else {
+            &[]
+        };
+        let error = write!(out, "{CSV_HEADER}")
+            .and_then(|()| names.iter().try_for_each(|n| write!(out, ",{n}")))
+            .and_then(|()| writeln!(out))
+            .err();
         CsvHistory {
             out,
             rows: 0,
             error,
+            ground,
         }
     }
 
@@ -151,7 +188,7 @@ impl<W: Write> Observer for CsvHistory<W> {
     #[inline]
     fn record(&mut self, sample: &Sample) {
         if self.error.is_none() {
-            match write_csv_row(&mut self.out, sample) {
+            match write_csv_row(&mut self.out, sample, self.ground.as_ref()) {
                 Ok(()) => self.rows += 1,
                 Err(e) => self.error = Some(e),
             }

@@ -80,6 +80,12 @@ pub struct Driver<'a> {
     pub energy: EnergyBalance,
     /// Per structure, the largest step whose interpolant is trusted for peaks.
     pub resolved_step: [f64; 2],
+    /// The next τ where g changes formula ([`Excitation::next_break`]): a
+    /// step ends there rather than crossing it, since a step across a jump
+    /// of g (a pulse's end, a record's last sample) is first order.
+    ///
+    /// [`Excitation::next_break`]: crate::model::Excitation::next_break
+    pub next_break: f64,
 }
 
 impl<'a> Driver<'a> {
@@ -107,6 +113,7 @@ impl<'a> Driver<'a> {
             },
             energy: EnergyBalance::default(),
             resolved_step: resolved_steps([p.omega1, p.omega2]),
+            next_break: options.excitation.next_break(0.0),
         };
         d.result.impacts.reserve(32);
         // Starting in contact: v₀ is the initial δ̇.
@@ -178,6 +185,40 @@ impl<'a> Driver<'a> {
         }
         self.system.resync(&mut self.state);
         true
+    }
+
+    /// The step `h` from τ, shortened to end exactly on the next break of g
+    /// when it would reach or cross it: break − τ, rounded down until τ + h
+    /// does not pass the break in floating point.
+    #[inline]
+    pub fn to_break(&self, tau: f64, h: f64) -> f64 {
+        if tau + h < self.next_break {
+            return h;
+        }
+        let mut h = self.next_break - tau;
+        // break − τ is exact when τ ≥ break/2; otherwise step down until τ + h ≤ break.
+        while tau + h > self.next_break && h > 0.0 {
+            h = f64::from_bits(h.to_bits() - 1);
+        }
+        h
+    }
+
+    /// At a break of g reached by a step: the state takes g's value after the
+    /// break (the step ended with the one before) and the acceleration of the
+    /// equations of motion with it (SPEC §2: ẍ jumps with g, x and ẋ do not);
+    /// the next break is looked up.
+    #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "a NaN must compare false")]
+    pub fn pass_break(&mut self) {
+        // A step aimed at the break may stop an ulp or so short of it ([`Driver::to_break`]).
+        // (Breaks are at τ > 0; none ahead is an infinite break, never reached.)
+        if !(self.state.tau >= self.next_break * (1.0 - 4.0 * f64::EPSILON)) {
+            return;
+        }
+        let s = &mut self.state;
+        s.tau = self.next_break;
+        self.system.resync(s);
+        s.a = self.system.acceleration(s.g, s.v, s.fs, s.fp);
+        self.next_break = self.options.excitation.next_break(s.tau);
     }
 
     /// Counts a retry at half size; false (and a stop) past the retry cap.

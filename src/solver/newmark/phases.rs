@@ -21,7 +21,9 @@ impl Driver<'_> {
             // and the run's last step is not yet due. The state is carried in
             // `current` (registers) rather than read back from the driver.
             let mut current = self.state;
-            while current.tau + dt <= last {
+            // A step reaching the next break of g goes through `step`, which ends it there.
+            let brk = self.next_break;
+            while current.tau + dt <= last && current.tau + dt < brk {
                 let next = self.system.free_step(&current, dt);
                 if self.system.penetration(next.x) > 0.0 {
                     break;
@@ -63,11 +65,18 @@ impl Driver<'_> {
     /// [`max_step_halvings`]: super::SolverOptions::max_step_halvings
     #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "a NaN must compare false")]
     pub fn step<P: Policy, O: Observer>(&mut self, policy: &P, observer: &mut O, base: f64) {
+        self.step_once(policy, observer, base);
+        self.pass_break();
+    }
+
+    /// [`Driver::step`] before its break handling.
+    #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "a NaN must compare false")]
+    fn step_once<P: Policy, O: Observer>(&mut self, policy: &P, observer: &mut O, base: f64) {
         let max_halvings = self.options.max_step_halvings;
         let mut halvings = 0;
         loop {
             let start = self.state;
-            let h = self.clock.step_from(start.tau, base, halvings);
+            let h = self.to_break(start.tau, self.clock.step_from(start.tau, base, halvings));
             if !(start.tau + h > start.tau) {
                 // The step no longer advances τ: it would run for ever.
                 self.halt(StopReason::StepCap);

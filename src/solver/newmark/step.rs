@@ -110,6 +110,9 @@ impl System {
     /// (g, dg/dτ) at τ + h from the state's phasor: a rotation for the usual
     /// step sizes under the sine, a fresh evaluation otherwise (pulses and
     /// records are not rotations: a pulse stops, a record is piecewise linear).
+    /// The fresh value is the limit from the left: a step that ends on a jump
+    /// of g integrates the formula before it (the driver switches the state
+    /// to the value after, see `Driver::pass_break`).
     #[inline]
     fn excitation_after(&self, s: &State, h: f64) -> [f64; 2] {
         if self.excitation.rotates() {
@@ -119,7 +122,7 @@ impl System {
                 }
             }
         }
-        self.excitation.phasor(s.tau + h)
+        self.excitation.phasor_before(s.tau + h)
     }
 
     /// Re-evaluates the state's phasor from τ (removes the rotations' drift).
