@@ -55,7 +55,7 @@ pub fn write_history(params: &Params, path: &Path, history: &History) -> String 
 
 fn stream(params: &Params, path: &Path) -> Result<u64, OutputError> {
     let target = Target::open(path)?;
-    let mut csv = CsvHistory::new(target);
+    let mut csv = CsvHistory::with_ground(target, params.ground());
     // The set's own method and excitation, as in the explorer's run.
     solve(params, &mut csv);
     match csv.finish() {
