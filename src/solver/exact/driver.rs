@@ -30,7 +30,7 @@ use super::contact_rk::ContactSystem;
 use super::dynamics::{Branch, Structure, contact_series, free_series, step_for};
 use super::energy::Work;
 use super::quiet::Transition;
-use super::roots::{fires_at_start, first_crossing};
+use super::roots::{cleared_from_start, fires_at_start, first_crossing};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
 
@@ -736,34 +736,30 @@ impl Segment {
 }
 
 /// Raises `peak` to the maximum of q on (0, t1], given the series of q and q'.
-/// The maxima of q are the falling zeros of q' (or t1), and between two of
-/// them lies a rising zero (a minimum); the walk goes from one to the next,
-/// and stops as soon as q cannot exceed the peak on what is left.
+/// Most segments are cleared by a bound of q − peak. Otherwise the maxima
+/// of q are at t1 and at the falling zeros of q', with a rising zero (a
+/// minimum) between two of them, and the walk goes from one to the next.
+/// It does not look for where q crosses the peak: near a maximum that only
+/// just fails to beat it, that crossing is a tangency, costly to rule out,
+/// while the zeros of q' stay simple.
 fn raise_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
     *peak = peak.max(q.c[0]);
-    if bound_on(q, t1) <= *peak {
+    if bound_on(q, t1) <= *peak || cleared_from_start(&q.shifted(*peak), t1) {
         return;
     }
-    // Where q first rises above the peak (most segments: nowhere).
-    let Some(mut t) = first_crossing(&q.shifted(*peak), 0.0, t1) else {
-        return;
-    };
     let falling = dq.scaled(-1.0);
+    let mut t = 0.0;
     // A segment of at most about a radian holds one or two maxima; the cap only guards progress.
     for _ in 0..8 {
-        // Ascending from t: the next maximum is at the next falling zero of q'.
+        // The next maximum: the next falling zero of q', else the end.
         let tm = first_crossing(&falling, t, t1).unwrap_or(t1);
         *peak = peak.max(q.value(tm));
         if tm >= t1 {
             return;
         }
-        // Descending from tm: the next rise starts at a minimum (a rising zero of q'),
-        // and matters only if q then climbs above the peak.
-        let Some(tmin) = first_crossing(dq, tm, t1).filter(|&s| s > tm) else {
-            return;
-        };
-        match first_crossing(&q.shifted(*peak), tmin, t1) {
-            Some(tc) => t = tc,
+        // Past the maximum, q falls to a minimum (a rising zero of q') before it can rise again.
+        match first_crossing(dq, tm, t1).filter(|&s| s > tm) {
+            Some(tmin) => t = tmin,
             None => return,
         }
     }

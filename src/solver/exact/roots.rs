@@ -119,6 +119,13 @@ fn decreasing(d1: f64, d2: f64, m: f64, w: f64) -> bool {
     d1 < 0.0 && d1 + w * (2.0 * d2 + 3.0 * m * w) < 0.0
 }
 
+/// Whether e stays ≤ 0 on (0, w] by its cubic majorant at 0 alone (one
+/// evaluation, no search): a cheap test that most segments pass.
+pub fn cleared_from_start(e: &Series, w: f64) -> bool {
+    let [d0, d1, d2, m] = e.cubic_majorant(0.0, w);
+    d0 <= 0.0 && cleared(d0, d1, d2, m, w)
+}
+
 /// As [`search`] on [lo, root), for a root already found at `root`: only a
 /// crossing strictly before it counts.
 fn search_strict(e: &Series, lo: f64, root: f64, depth: u32, budget: &mut u32) -> Option<f64> {
