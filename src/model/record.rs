@@ -114,6 +114,160 @@ impl Record {
     }
 }
 
+/// The unit of a plain file's accelerations, named after `@` in
+/// `record:PATH@UNIT`; g when not named.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Units {
+    G,
+    MetresPerSecondSquared,
+    CentimetresPerSecondSquared,
+}
+
+impl Units {
+    /// The accepted names, for messages.
+    pub const NAMES: &'static str = "g, m/s2, cm/s2";
+
+    pub fn parse(text: &str) -> Option<Units> {
+        match text.trim() {
+            "g" => Some(Units::G),
+            "m/s2" | "m/s^2" => Some(Units::MetresPerSecondSquared),
+            "cm/s2" | "cm/s^2" | "gal" => Some(Units::CentimetresPerSecondSquared),
+            _ => None,
+        }
+    }
+
+    /// One unit in m/s².
+    pub fn in_si(self) -> f64 {
+        match self {
+            Units::G => STANDARD_GRAVITY,
+            Units::MetresPerSecondSquared => 1.0,
+            Units::CentimetresPerSecondSquared => 0.01,
+        }
+    }
+}
+
+/// Reads the record a `record:` spec names: `PATH` or `PATH@UNIT`. An
+/// `.AT2` file is read as PEER's (in g; a unit is refused); any other file
+/// as plain two-column text, time in seconds and acceleration in UNIT,
+/// separated by commas or white space ([`parse_columns`]).
+pub fn read(spec: &str) -> Result<Record, RecordError> {
+    let (path, units) = match spec.rsplit_once('@') {
+        Some((path, unit)) => {
+            let units = Units::parse(unit).ok_or_else(|| RecordError {
+                path: path.to_string(),
+                line: 0,
+                message: format!(
+                    "unknown unit `{}` after `@`: must be one of {}",
+                    cut(unit),
+                    Units::NAMES
+                ),
+            })?;
+            (path, Some(units))
+        }
+        None => (spec, None),
+    };
+    let is_at2 = Path::new(path)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("at2"));
+    if is_at2 {
+        if units.is_some() {
+            return Err(RecordError {
+                path: path.to_string(),
+                line: 0,
+                message: "an .AT2 record is in g by definition; drop the `@UNIT`".into(),
+            });
+        }
+        return Record::read_at2(path);
+    }
+    let bytes = std::fs::read(Path::new(path)).map_err(|e| RecordError {
+        path: path.to_string(),
+        line: 0,
+        message: format!("cannot be read: {e}"),
+    })?;
+    let mut record = parse_columns(
+        path,
+        &String::from_utf8_lossy(&bytes),
+        units.unwrap_or(Units::G),
+    )?;
+    record.spec = format!("record:{spec}");
+    Ok(record)
+}
+
+/// Parses a plain record: one sample a line, `time, acceleration` (commas
+/// or white space), time in seconds from any start, equally spaced;
+/// a first line that is not two numbers is a header, and lines starting
+/// with `#` or `%` are comments.
+pub fn parse_columns(path: &str, text: &str, units: Units) -> Result<Record, RecordError> {
+    let fail = |line: usize, message: String| RecordError {
+        path: path.to_string(),
+        line,
+        message,
+    };
+    let mut samples: Vec<(usize, f64, f64)> = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let t = line.trim();
+        if t.is_empty() || t.starts_with('#') || t.starts_with('%') {
+            continue;
+        }
+        let fields: Vec<&str> = t
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|f| !f.is_empty())
+            .collect();
+        let numbers: Vec<Option<f64>> = fields
+            .iter()
+            .map(|f| f.parse::<f64>().ok().filter(|v| v.is_finite()))
+            .collect();
+        match numbers.as_slice() {
+            [Some(time), Some(a)] => {
+                if samples.len() == MAX_SAMPLES {
+                    return Err(fail(i + 1, format!("more than {MAX_SAMPLES} samples")));
+                }
+                samples.push((i + 1, *time, *a * units.in_si()));
+            }
+            _ if samples.is_empty() && numbers.iter().any(Option::is_none) => {} // a header
+            _ => {
+                return Err(fail(
+                    i + 1,
+                    format!(
+                        "expected two numbers `time, acceleration`, found `{}`",
+                        cut(t)
+                    ),
+                ));
+            }
+        }
+    }
+    if samples.len() < 2 {
+        return Err(fail(
+            text.lines().count().max(1),
+            format!(
+                "{} sample(s): a record needs at least two lines `time, acceleration`",
+                samples.len()
+            ),
+        ));
+    }
+    let (t0, t1) = (samples[0].1, samples[1].1);
+    let dt = t1 - t0;
+    if !(dt.is_finite() && dt > 0.0 && dt <= 10.0) {
+        return Err(fail(
+            samples[1].0,
+            format!("time step {dt}: must be a number of seconds in (0, 10]"),
+        ));
+    }
+    for (k, (line, time, _)) in samples.iter().enumerate() {
+        let expected = t0 + k as f64 * dt;
+        if (time - expected).abs() > 1e-6 * dt.max(expected.abs() * 1e-3) {
+            return Err(fail(
+                *line,
+                format!(
+                    "time {time} s: samples must be equally spaced by {dt} s (expected {expected} s)"
+                ),
+            ));
+        }
+    }
+    let acceleration = samples.into_iter().map(|(_, _, a)| a).collect();
+    Ok(Record::from_samples(path, dt, acceleration))
+}
+
 /// Parses the text of an `.AT2` file named `path` (for messages).
 pub fn parse_at2(path: &str, text: &str) -> Result<Record, RecordError> {
     let fail = |line: usize, message: String| RecordError {
@@ -257,10 +411,11 @@ static REGISTRY: Mutex<Vec<&'static Record>> = Mutex::new(Vec::new());
 /// The record at `path`, read on first use and shared afterwards.
 pub fn load(path: &str) -> Result<&'static Record, RecordError> {
     let mut registry = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
-    if let Some(r) = registry.iter().find(|r| r.path == path) {
+    let spec = format!("record:{path}");
+    if let Some(r) = registry.iter().find(|r| r.spec == spec) {
         return Ok(r);
     }
-    let record: &'static Record = Box::leak(Box::new(Record::read_at2(path)?));
+    let record: &'static Record = Box::leak(Box::new(read(path)?));
     registry.push(record);
     Ok(record)
 }
