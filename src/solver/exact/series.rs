@@ -10,7 +10,7 @@
 
 /// Largest degree kept. Series are truncated where their terms fall below
 /// round-off over the segment (see [`super::dynamics`]), well before this.
-pub const MAX_DEGREE: usize = 24;
+pub const MAX_DEGREE: usize = 20;
 
 /// C(k, 3) = k(k−1)(k−2)/6.
 const BINOMIAL_3: [f64; MAX_DEGREE + 1] = {
@@ -153,7 +153,7 @@ mod tests {
 
     #[test]
     fn horner_and_slope_of_exp() {
-        let s = exp_series(24);
+        let s = exp_series(20);
         let (q, dq) = s.value_slope(0.7);
         assert!((q - 0.7f64.exp()).abs() < 1e-15);
         assert!((dq - 0.7f64.exp()).abs() < 1e-14);
@@ -161,7 +161,7 @@ mod tests {
 
     #[test]
     fn cubic_majorant_bounds_exp() {
-        let s = exp_series(24);
+        let s = exp_series(20);
         let [d0, d1, d2, m] = s.cubic_majorant(0.2, 0.5);
         assert!((d0 - 0.2f64.exp()).abs() < 1e-15 && (d1 - d0).abs() < 1e-14);
         assert!((2.0 * d2 - d0).abs() < 1e-14);
