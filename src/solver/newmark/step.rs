@@ -113,7 +113,7 @@ impl System {
     /// The fresh value is the limit from the left: a step that ends on a jump
     /// of g integrates the formula before it (the driver switches the state
     /// to the value after, see `Driver::pass_break`).
-    #[inline]
+    #[inline(always)]
     fn excitation_after(&self, s: &State, h: f64) -> [f64; 2] {
         if self.excitation.rotates() {
             for r in &self.rotations {
