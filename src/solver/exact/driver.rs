@@ -21,6 +21,9 @@
 //! segments and events turn a runaway (chatter, a Zeno cascade of impacts)
 //! into a reported stop.
 
+// Comparisons are written `!(a < b)` on purpose: a NaN must fail them.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::model::contact::ContactConstants;
 use crate::model::{ContactLaw, Excitation, Method, Params};
 
@@ -358,10 +361,8 @@ impl<'a> Run<'a> {
         if !(self.x[0] - self.x[1] + swing_x[0] + swing_x[1] < ceiling) {
             return false;
         }
-        for i in 0..2 {
-            self.x[i] = next[i][0];
-            self.v[i] = next[i][1];
-        }
+        self.x = next.map(|y| y[0]);
+        self.v = next.map(|y| y[1]);
         self.tau += QUIET_FRACTION * self.free_step;
         true
     }

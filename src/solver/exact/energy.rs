@@ -14,7 +14,9 @@ use super::super::result::EnergyBalance;
 use super::driver::Segment;
 use super::dynamics::{Branch, Structure};
 
-/// Gauss–Legendre nodes and weights on [0, 1], 8 points.
+/// Gauss–Legendre nodes and weights on [0, 1], 8 points (written to 17
+/// digits, one more than f64 holds, as tabulated).
+#[allow(clippy::excessive_precision)]
 const NODES: [f64; 8] = [
     0.019_855_071_751_231_856,
     0.101_666_761_293_186_63,
@@ -25,6 +27,7 @@ const NODES: [f64; 8] = [
     0.898_333_238_706_813_4,
     0.980_144_928_248_768_2,
 ];
+#[allow(clippy::excessive_precision)]
 const WEIGHTS: [f64; 8] = [
     0.050_614_268_145_188_13,
     0.111_190_517_226_687_24,

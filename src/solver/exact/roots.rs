@@ -20,6 +20,9 @@
 //! event only if it is still moving further past zero: a contact that has
 //! just ended must not restart with a negative approach velocity.
 
+// Comparisons are written `!(a < b)` on purpose: a NaN must fail them.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use super::series::Series;
 
 /// Halvings after which an interval that is neither cleared nor bracketed is
