@@ -110,13 +110,16 @@ fn scene_screens(size: (u16, u16)) -> Vec<(String, String)> {
     for (name, keys) in [
         ("time", "t"),
         ("loops", "f"),
-        ("kelvin", "v"),
+        ("laws", "v"),
+        ("laws_all", "b"),
         ("sets", "c"),
         ("overlay", "o"),
         ("spectrum", "w"),
         ("impacts", "i"),
+        ("map", "a"),
+        ("map_ratio", "o"),
     ] {
-        if name == "overlay" {
+        if name == "overlay" || name == "map_ratio" {
             key(&mut a, KeyCode::Char('o'));
         } else {
             if a.view.overlay {
@@ -384,6 +387,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
             // Seconds of work: the grid swept over 250 times.
             grid: (0..50_000).map(|i| 0.2 + 0.02 * (i % 200) as f64).collect(),
         }),
+        map: None,
     };
     w.submit(spectrum(1));
     // Wait until job 1 runs, then ask for 2, 3, 4 at once.
@@ -401,6 +405,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
             window: [0.0, p.tau_end()],
         }],
         spectrum: None,
+        map: None,
     };
     w.submit(last);
     let mut done = Vec::new();

@@ -14,7 +14,7 @@ use crate::tui::text_field::TextField;
 use crate::tui::worker::Slot;
 
 /// Every key, as the help overlay and the README list them.
-pub const KEYS: [(&str, &str); 31] = [
+pub const KEYS: [(&str, &str); 35] = [
     ("↑/↓, k/j", "select a parameter"),
     ("←/→, h/l, -/+", "nudge it by one step"),
     ("Shift+←/→, H/L", "nudge by ten steps"),
@@ -30,10 +30,17 @@ pub const KEYS: [(&str, &str); 31] = [
     ("g", "write the scene as an SVG figure"),
     ("t", "scene: time histories"),
     ("f", "scene: force-drift loops"),
-    ("v", "scene: Kelvin vs improved Kelvin"),
+    (
+        "v",
+        "scene: contact laws (b: paper pair, all six, own vs one)",
+    ),
     ("c", "scene: set 1 vs set 2 (o overlays them)"),
     ("w", "scene: spectrum against Π_ω1"),
     ("i", "scene: impact table and energy terms"),
+    ("a", "scene: region map over Π_ω1 and a parameter"),
+    ("y", "map: next y axis (μ, Π_d, Π_m, Π_e)"),
+    ("o", "map: region / Π_u1/Π_u1,free; spectrum: Π_u / Π_v"),
+    ("[ ] { }", "map: move the cell cursor in x / y"),
     ("u", "physical units (presets with [physical])"),
     ("[ / ]", "move the time cursor ({ } by ten)"),
     ("n / N", "cursor to the next / previous impact"),
