@@ -684,3 +684,59 @@ fn physical_view_edits_metres_and_the_groups_follow() {
     settle(&mut a);
     assert!(screen(&a).contains("t [s]"));
 }
+
+#[test]
+fn the_laws_scene_computes_only_the_laws_it_shows() {
+    let mut a = app((80, 24));
+    typed(&mut a, "v");
+    assert_eq!(a.needed().0.len(), 2);
+    // All six: the set's own run and five others, each law in its own model.
+    key(&mut a, KeyCode::Char('b'));
+    let (runs, _, _) = a.needed();
+    assert_eq!(runs.len(), 6);
+    let mut models: Vec<_> = runs.iter().map(|r| r.params.model.name()).collect();
+    models.sort();
+    models.dedup();
+    assert_eq!(models.len(), 6);
+    // The set's law against one other.
+    key(&mut a, KeyCode::Char('b'));
+    let (runs, _, _) = a.needed();
+    assert_eq!(runs.len(), 2);
+    assert!(runs.iter().any(|r| r.slot == Slot::Set(0)));
+}
+
+#[test]
+fn the_map_scene_matches_the_library_map_cell_for_cell() {
+    let mut a = app((80, 24));
+    typed(&mut a, "a");
+    settle(&mut a);
+    let m = a.jobs.map.as_ref().expect("map state");
+    assert_eq!(m.done(), m.cells.len());
+    let plan = &m.spec.plan;
+    let (cells, _) = pounding::analysis::map::compute(plan);
+    assert_eq!(cells.len(), m.cells.len());
+    for (got, want) in m.cells.iter().zip(&cells) {
+        let got = got.as_ref().unwrap();
+        assert_eq!(got.region, want.region);
+        assert_eq!(
+            got.left_amplification.to_bits(),
+            want.left_amplification.to_bits()
+        );
+    }
+    // The set's own point is on the map, and y cycles through the keys.
+    let s = screen(&a);
+    assert!(s.contains('◆'), "{s}");
+    key(&mut a, KeyCode::Char('y'));
+    assert_eq!(a.map_spec().unwrap().plan.y.key, "gap");
+    key(&mut a, KeyCode::Char(']'));
+    assert!(a.view.map_cursor.is_some());
+}
+
+#[test]
+fn the_map_rows_come_coarse_first_and_each_once() {
+    let order = pounding::tui::worker::row_order(30);
+    assert_eq!(&order[..4], &[0, 8, 16, 24]);
+    let mut sorted = order.clone();
+    sorted.sort();
+    assert_eq!(sorted, (0..30).collect::<Vec<_>>());
+}

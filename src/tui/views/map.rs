@@ -376,13 +376,8 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
 }
 
 fn put(buf: &mut ratatui::buffer::Buffer, x: u16, y: u16, text: &str, right: u16) {
-    let mut col = x;
-    for c in text.chars() {
-        if col >= right {
-            break;
-        }
+    for (col, c) in (x..right).zip(text.chars()) {
         let mut tmp = [0u8; 4];
         buf[(col, y)].set_symbol(c.encode_utf8(&mut tmp));
-        col += 1;
     }
 }
