@@ -171,9 +171,10 @@ mod tests {
     fn the_contact_loop_keeps_samples_past_the_gap_and_breaks_between_contacts() {
         let mut t = Trace::new(4, [0.0, 10.0]).with_contact(0.5);
         sine(&mut t);
-        // x1 = sin 3τ > 0.5 on three arcs in [0, 10]; f_p = 0 in this sample.
+        // x1 = sin 3τ > 0.5 where 3τ ∈ (π/6, 5π/6) + 2πk: five arcs in
+        // [0, 10] (the last ends at τ ≈ 9.25), each closed by a break.
         let breaks = t.contact.iter().filter(|p| p.0.is_nan()).count();
-        assert_eq!(breaks, 3, "{breaks}");
+        assert_eq!(breaks, 5, "{breaks}");
         let top = t.contact.iter().fold(0f64, |m, p| m.max(p.0));
         assert!((top - 0.5).abs() < 1e-5, "{top}");
         assert!(t.contact.iter().all(|p| p.0.is_nan() || p.0 > 0.0));
