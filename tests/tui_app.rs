@@ -110,13 +110,16 @@ fn scene_screens(size: (u16, u16)) -> Vec<(String, String)> {
     for (name, keys) in [
         ("time", "t"),
         ("loops", "f"),
-        ("kelvin", "v"),
+        ("laws", "v"),
+        ("laws_all", "b"),
         ("sets", "c"),
         ("overlay", "o"),
         ("spectrum", "w"),
         ("impacts", "i"),
+        ("map", "a"),
+        ("map_ratio", "o"),
     ] {
-        if name == "overlay" {
+        if name == "overlay" || name == "map_ratio" {
             key(&mut a, KeyCode::Char('o'));
         } else {
             if a.view.overlay {
@@ -384,6 +387,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
             // Seconds of work: the grid swept over 250 times.
             grid: (0..50_000).map(|i| 0.2 + 0.02 * (i % 200) as f64).collect(),
         }),
+        map: None,
     };
     w.submit(spectrum(1));
     // Wait until job 1 runs, then ask for 2, 3, 4 at once.
@@ -401,6 +405,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
             window: [0.0, p.tau_end()],
         }],
         spectrum: None,
+        map: None,
     };
     w.submit(last);
     let mut done = Vec::new();
@@ -678,4 +683,60 @@ fn physical_view_edits_metres_and_the_groups_follow() {
     assert!(s.contains("two-buildings* (Π_d)"), "{s}");
     settle(&mut a);
     assert!(screen(&a).contains("t [s]"));
+}
+
+#[test]
+fn the_laws_scene_computes_only_the_laws_it_shows() {
+    let mut a = app((80, 24));
+    typed(&mut a, "v");
+    assert_eq!(a.needed().0.len(), 2);
+    // All six: the set's own run and five others, each law in its own model.
+    key(&mut a, KeyCode::Char('b'));
+    let (runs, _, _) = a.needed();
+    assert_eq!(runs.len(), 6);
+    let mut models: Vec<_> = runs.iter().map(|r| r.params.model.name()).collect();
+    models.sort();
+    models.dedup();
+    assert_eq!(models.len(), 6);
+    // The set's law against one other.
+    key(&mut a, KeyCode::Char('b'));
+    let (runs, _, _) = a.needed();
+    assert_eq!(runs.len(), 2);
+    assert!(runs.iter().any(|r| r.slot == Slot::Set(0)));
+}
+
+#[test]
+fn the_map_scene_matches_the_library_map_cell_for_cell() {
+    let mut a = app((80, 24));
+    typed(&mut a, "a");
+    settle(&mut a);
+    let m = a.jobs.map.as_ref().expect("map state");
+    assert_eq!(m.done(), m.cells.len());
+    let plan = &m.spec.plan;
+    let (cells, _) = pounding::analysis::map::compute(plan);
+    assert_eq!(cells.len(), m.cells.len());
+    for (got, want) in m.cells.iter().zip(&cells) {
+        let got = got.as_ref().unwrap();
+        assert_eq!(got.region, want.region);
+        assert_eq!(
+            got.left_amplification.to_bits(),
+            want.left_amplification.to_bits()
+        );
+    }
+    // The set's own point is on the map, and y cycles through the keys.
+    let s = screen(&a);
+    assert!(s.contains('◆'), "{s}");
+    key(&mut a, KeyCode::Char('y'));
+    assert_eq!(a.map_spec().unwrap().plan.y.key, "gap");
+    key(&mut a, KeyCode::Char(']'));
+    assert!(a.view.map_cursor.is_some());
+}
+
+#[test]
+fn the_map_rows_come_coarse_first_and_each_once() {
+    let order = pounding::tui::worker::row_order(30);
+    assert_eq!(&order[..4], &[0, 8, 16, 24]);
+    let mut sorted = order.clone();
+    sorted.sort();
+    assert_eq!(sorted, (0..30).collect::<Vec<_>>());
 }

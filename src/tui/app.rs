@@ -18,10 +18,15 @@ use super::jobs::{Jobs, Need};
 use super::layout;
 use super::physical::{self, Base};
 use super::presets;
+use super::scene::MAP_Y;
 use super::scene::{Scene, View};
 use super::text_field::{FieldKey, TextField};
-use super::worker::{Job, Output, RunOutput, RunSpec, Slot, SpectrumSpec};
+use super::views::map as map_view;
+use super::worker::{Job, MapSpec, Output, RunOutput, RunSpec, Slot, SpectrumSpec};
+use crate::analysis::map::{Axis, MapPlan};
 use crate::figure::FigureName;
+use crate::model::Method;
+use crate::model::grid::Grid;
 use crate::model::preset::{self, Preset};
 use crate::model::{ContactModel, Params};
 
@@ -226,15 +231,28 @@ impl App {
         };
         let active = set(self.active, buckets);
         match self.view.scene {
-            Scene::History | Scene::Impacts => (vec![active], None),
-            Scene::Loops => (vec![set(self.active, LOOP_BUCKETS)], None),
-            Scene::Kelvin => {
-                let mut twin = active;
-                twin.slot = Slot::Twin;
-                twin.params.model = twin.params.model.toggled();
-                (vec![active, twin], None)
+            Scene::History | Scene::Impacts => (vec![active], None, None),
+            Scene::Loops => (vec![set(self.active, LOOP_BUCKETS)], None, None),
+            Scene::Laws => {
+                let own = self.model();
+                let runs = self
+                    .view
+                    .laws
+                    .shown(own)
+                    .into_iter()
+                    .map(|law| {
+                        let mut run = active;
+                        if law != own {
+                            run.slot = Slot::Law(law);
+                            run.params.model = law;
+                        }
+                        run
+                    })
+                    .collect();
+                (runs, None, None)
             }
-            Scene::Sets => (vec![set(0, buckets), set(1, buckets)], None),
+            Scene::Sets => (vec![set(0, buckets), set(1, buckets)], None, None),
+            Scene::Map => (vec![], None, self.map_spec()),
             Scene::Spectrum => {
                 let p = self.active_params();
                 let mu = p.mu();
@@ -247,9 +265,43 @@ impl App {
                     mu,
                     grid: spectrum_grid(),
                 };
-                (vec![active], mu.is_finite().then_some(spec))
+                (vec![active], mu.is_finite().then_some(spec), None)
             }
         }
+    }
+
+    /// The map the map scene asks for: Π_ω1 across as many columns as the
+    /// plot has, the chosen parameter down (two rows per terminal row with
+    /// colours), around the active set (exact method).
+    pub fn map_spec(&self) -> Option<MapSpec> {
+        let p = self.active_params();
+        let mu = p.mu();
+        if !mu.is_finite() {
+            return None;
+        }
+        let (columns, rows) = map_view::grid_size(layout::scene(self.size), self.look);
+        let key = MAP_Y[self.view.map_y % MAP_Y.len()];
+        let [lo, hi] = map_view::y_range(key, p);
+        let axis = |key: &'static str, lo: f64, hi: f64, n: usize| Axis {
+            key,
+            grid: Grid {
+                start: lo,
+                stop: hi,
+                step: (hi - lo) / (n.max(2) - 1) as f64,
+            },
+        };
+        let [x0, x1] = map_view::X_RANGE;
+        Some(MapSpec {
+            plan: MapPlan {
+                base: Params {
+                    method: Method::Exact,
+                    ..*p
+                },
+                mu,
+                x: axis("omega1", x0, x1, columns),
+                y: axis(key, lo, hi, rows),
+            },
+        })
     }
 
     /// A new job when what the scene needs changed since the last request.
@@ -436,6 +488,19 @@ impl App {
                 };
             }
             KeyCode::Char('?') => self.mode = Mode::Help,
+            KeyCode::Char('b') if self.view.scene == Scene::Laws => {
+                self.view.laws = self.view.laws.next(self.model());
+            }
+            KeyCode::Char('o') if self.view.scene == Scene::Map => {
+                self.view.map_ratio = !self.view.map_ratio;
+            }
+            KeyCode::Char('y') if self.view.scene == Scene::Map => {
+                self.view.map_y = (self.view.map_y + 1) % MAP_Y.len();
+                self.view.map_cursor = None;
+            }
+            KeyCode::Char(c @ ('[' | ']' | '{' | '}')) if self.view.scene == Scene::Map => {
+                self.move_map_cursor(c);
+            }
             KeyCode::Char('o') if self.view.scene == Scene::Spectrum => {
                 self.view.velocity = !self.view.velocity;
             }
@@ -505,6 +570,25 @@ impl App {
             _ => {}
         }
         None
+    }
+
+    /// Moves the map's cell cursor: `[ ]` along Π_ω1, `{ }` along y (up is `}`).
+    fn move_map_cursor(&mut self, key: char) {
+        let Some(spec) = self.map_spec() else {
+            return;
+        };
+        let (nx, ny) = (spec.columns(), spec.rows());
+        let (c, r) = self
+            .view
+            .map_cursor
+            .unwrap_or_else(|| map_view::own_cell(&spec, self.active_params()));
+        let (c, r) = match key {
+            '[' => (c.saturating_sub(1), r),
+            ']' => ((c + 1).min(nx - 1), r),
+            '{' => (c, r.saturating_sub(1)),
+            _ => (c, (r + 1).min(ny - 1)),
+        };
+        self.view.map_cursor = Some((c, r));
     }
 
     /// `DIR/pounding-PRESET-SCENE.EXT` in the export folder.
@@ -804,7 +888,8 @@ impl App {
         let name = match self.view.scene {
             Scene::History | Scene::Sets | Scene::Impacts => FigureName::History,
             Scene::Loops => FigureName::Loops,
-            Scene::Kelvin => FigureName::ContactLaws,
+            Scene::Laws => FigureName::ContactLaws,
+            Scene::Map => FigureName::Map,
             Scene::Spectrum => FigureName::Spectrum,
         };
         (name, p)

@@ -2,14 +2,46 @@
 //! and spectrum points that came back, a small cache so that switching back
 //! to a scene or set costs nothing, and which results are current.
 
-use super::worker::{Job, Output, RunOutput, RunSpec, Slot, SpectrumSpec};
+use super::worker::{Job, MapSpec, Output, RunOutput, RunSpec, Slot, SpectrumSpec};
+use crate::analysis::map::MapCell;
 use crate::analysis::spectrum::SpectrumPoint;
 
 /// Results kept for reuse (switching scenes or sets back does not recompute).
 const CACHE: usize = 12;
 
-/// The runs and the spectrum a scene needs.
-pub type Need = (Vec<RunSpec>, Option<SpectrumSpec>);
+/// The runs, the spectrum and the map a scene needs.
+pub type Need = (Vec<RunSpec>, Option<SpectrumSpec>, Option<MapSpec>);
+
+/// Progressive map: the cells computed so far, row-major from the lowest y.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MapState {
+    pub spec: MapSpec,
+    pub cells: Vec<Option<MapCell>>,
+    /// Why the map cannot be computed, when it cannot.
+    pub error: Option<String>,
+}
+
+impl MapState {
+    pub fn done(&self) -> usize {
+        self.cells.iter().filter(|c| c.is_some()).count()
+    }
+
+    /// The cell (column, row from the lowest y), or the nearest computed one
+    /// in its column (the coarse picture while the rows between fill in).
+    pub fn cell(&self, col: usize, row: usize) -> Option<&MapCell> {
+        let (nx, ny) = (self.spec.columns(), self.spec.rows());
+        if col >= nx || row >= ny {
+            return None;
+        }
+        (0..ny).find_map(|d| {
+            [row.checked_sub(d), Some(row + d)]
+                .into_iter()
+                .flatten()
+                .filter(|&r| r < ny)
+                .find_map(|r| self.cells[r * nx + col].as_ref())
+        })
+    }
+}
 
 /// Progressive spectrum: the grid and the points computed so far.
 #[derive(Debug, Clone, PartialEq)]
@@ -35,6 +67,7 @@ pub struct Jobs {
     /// Finished runs, newest last.
     pub results: Vec<RunOutput>,
     pub spectrum: Option<SpectrumState>,
+    pub map: Option<MapState>,
 }
 
 impl Jobs {
@@ -46,7 +79,7 @@ impl Jobs {
         }
         self.generation += 1;
         self.requested = Some(need.clone());
-        let (runs, spectrum) = need;
+        let (runs, spectrum, map) = need;
         let runs: Vec<RunSpec> = runs
             .into_iter()
             .filter(|s| self.cached(s).is_none())
@@ -67,7 +100,26 @@ impl Jobs {
                 st.points.iter_mut().for_each(|p| *p = None);
             }
         }
-        self.computing = !runs.is_empty() || spectrum.is_some();
+        let map = map.filter(|m| {
+            !self.map.as_ref().is_some_and(|st| {
+                st.spec == *m && (st.done() == st.cells.len() || st.error.is_some())
+            })
+        });
+        if let Some(m) = &map {
+            let cells = vec![None; m.columns() * m.rows()];
+            match &mut self.map {
+                // The same map again (a cancelled one): keep what is there.
+                Some(st) if st.spec == *m => {}
+                _ => {
+                    self.map = Some(MapState {
+                        spec: m.clone(),
+                        cells,
+                        error: None,
+                    })
+                }
+            }
+        }
+        self.computing = !runs.is_empty() || spectrum.is_some() || map.is_some();
         if !self.computing {
             return None;
         }
@@ -75,6 +127,7 @@ impl Jobs {
             generation: self.generation,
             runs,
             spectrum,
+            map,
         })
     }
 
@@ -85,7 +138,7 @@ impl Jobs {
     fn requested_spec(&self, slot: Slot) -> Option<&RunSpec> {
         self.requested
             .as_ref()
-            .and_then(|(runs, _)| runs.iter().find(|s| s.slot == slot))
+            .and_then(|(runs, _, _)| runs.iter().find(|s| s.slot == slot))
     }
 
     /// The run to show for a slot: the one asked for if computed, else the
@@ -120,6 +173,21 @@ impl Jobs {
                     for (slot, p) in s.points.iter_mut().skip(start).zip(points) {
                         *slot = Some(p);
                     }
+                }
+            }
+            Output::MapRows { rows, .. } => {
+                if let Some(m) = self.map.as_mut() {
+                    let nx = m.spec.columns();
+                    for (r, cells) in rows {
+                        for (slot, c) in m.cells[r * nx..].iter_mut().zip(cells) {
+                            *slot = Some(c);
+                        }
+                    }
+                }
+            }
+            Output::MapError { message, .. } => {
+                if let Some(m) = self.map.as_mut() {
+                    m.error = Some(message);
                 }
             }
             Output::Done { .. } => self.computing = false,

@@ -42,6 +42,8 @@ pub mod palette {
     pub const KELVIN: Color = Color::Red;
     /// Set 1 and set 2 on one chart.
     pub const SETS: [Color; 2] = [Color::LightBlue, Color::LightRed];
+    /// The ground acceleration g(τ).
+    pub const GROUND: Color = Color::Blue;
     /// A response without pounding.
     pub const FREE: Color = Color::Gray;
 }
@@ -56,6 +58,20 @@ pub fn model_color(model: crate::model::ContactModel) -> Color {
         ContactModel::HertzDamp => Color::Magenta,
         ContactModel::Jankowski => Color::Cyan,
         ContactModel::HuntCrossley => Color::LightYellow,
+    }
+}
+
+/// The marker of a contact model where colours cannot tell the laws apart
+/// (NO_COLOR, `--ascii`), fixed like its colour.
+pub fn model_marker(model: crate::model::ContactModel) -> char {
+    use crate::model::ContactModel;
+    match model {
+        ContactModel::ImprovedKelvin => '*',
+        ContactModel::Kelvin => '+',
+        ContactModel::Hertz => 'o',
+        ContactModel::HertzDamp => '#',
+        ContactModel::Jankowski => 'x',
+        ContactModel::HuntCrossley => '%',
     }
 }
 
@@ -126,6 +142,19 @@ fn ascii_char(c: char) -> char {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_law_has_its_own_colour_and_marker() {
+        use crate::model::ContactModel;
+        let all = ContactModel::ALL;
+        for (i, a) in all.iter().enumerate() {
+            for b in &all[i + 1..] {
+                assert_ne!(model_color(*a), model_color(*b), "{a:?} {b:?}");
+                assert_ne!(model_marker(*a), model_marker(*b), "{a:?} {b:?}");
+            }
+            assert!(model_marker(*a).is_ascii());
+        }
+    }
 
     #[test]
     fn ascii_names_do_not_clash_with_other_symbols() {

@@ -2,6 +2,7 @@
 //! window, the set overlay and the units. Pure state with its own moves;
 //! the app's dispatcher calls them.
 
+use crate::model::ContactModel;
 use crate::solver::Impact;
 
 /// The scenes, each with the key that shows it.
@@ -11,34 +12,39 @@ pub enum Scene {
     History,
     /// Force–drift loops (x_i, f_s,i) of both structures (SPEC §3).
     Loops,
-    /// The active set under Kelvin and improved Kelvin (SPEC §4).
-    Kelvin,
+    /// The active set under several contact laws (SPEC §4, §10).
+    Laws,
     /// Set 1 against set 2.
     Sets,
     /// Π_u, Π_v against Π_ω1 with and without pounding (SPEC §7).
     Spectrum,
     /// The impacts of the active run and its energy terms.
     Impacts,
+    /// The left structure's region (or Π_u1/Π_u1,free) over Π_ω1 and a
+    /// second parameter (SPEC §7).
+    Map,
 }
 
 impl Scene {
-    pub const ALL: [Scene; 6] = [
+    pub const ALL: [Scene; 7] = [
         Scene::History,
         Scene::Loops,
-        Scene::Kelvin,
+        Scene::Laws,
         Scene::Sets,
         Scene::Spectrum,
         Scene::Impacts,
+        Scene::Map,
     ];
 
     pub fn key(self) -> char {
         match self {
             Scene::History => 't',
             Scene::Loops => 'f',
-            Scene::Kelvin => 'v',
+            Scene::Laws => 'v',
             Scene::Sets => 'c',
             Scene::Spectrum => 'w',
             Scene::Impacts => 'i',
+            Scene::Map => 'a',
         }
     }
 
@@ -46,10 +52,11 @@ impl Scene {
         match self {
             Scene::History => "time",
             Scene::Loops => "force-drift",
-            Scene::Kelvin => "kelvin",
+            Scene::Laws => "laws",
             Scene::Sets => "set 1 vs 2",
             Scene::Spectrum => "spectrum",
             Scene::Impacts => "impacts",
+            Scene::Map => "map",
         }
     }
 
@@ -57,10 +64,84 @@ impl Scene {
     pub fn timed(self) -> bool {
         matches!(
             self,
-            Scene::History | Scene::Kelvin | Scene::Sets | Scene::Impacts | Scene::Loops
+            Scene::History | Scene::Laws | Scene::Sets | Scene::Impacts | Scene::Loops
         )
     }
 }
+
+/// Which contact laws the laws scene overlays.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Laws {
+    /// The paper's two: Kelvin and improved Kelvin.
+    Paper,
+    /// All six.
+    All,
+    /// The active set's own law against this one.
+    Versus(ContactModel),
+}
+
+impl Laws {
+    /// The laws shown when the set's own law is `own`, in [`ContactModel::ALL`]
+    /// order (so each keeps its place whichever the set's is).
+    pub fn shown(self, own: ContactModel) -> Vec<ContactModel> {
+        let pick: Vec<ContactModel> = match self {
+            Laws::Paper => ContactModel::PAPER.to_vec(),
+            Laws::All => ContactModel::ALL.to_vec(),
+            Laws::Versus(other) if other != own => vec![own, other],
+            Laws::Versus(_) => vec![own, next_other(own, own)],
+        };
+        ContactModel::ALL
+            .into_iter()
+            .filter(|m| pick.contains(m))
+            .collect()
+    }
+
+    /// The next choice: paper pair, all six, then the set's law against
+    /// each other law in turn, and round again.
+    pub fn next(self, own: ContactModel) -> Laws {
+        let first = next_other(own, own);
+        match self {
+            Laws::Paper => Laws::All,
+            Laws::All => Laws::Versus(first),
+            Laws::Versus(m) => {
+                let n = next_other(m, own);
+                if n == first || m == own {
+                    Laws::Paper
+                } else {
+                    Laws::Versus(n)
+                }
+            }
+        }
+    }
+
+    pub fn title(self, own: ContactModel) -> String {
+        match self {
+            Laws::Paper => "paper pair".into(),
+            Laws::All => "all six".into(),
+            Laws::Versus(_) => {
+                let s = self.shown(own);
+                format!(
+                    "{} vs {}",
+                    own.name(),
+                    s.iter().find(|m| **m != own).unwrap_or(&own).name()
+                )
+            }
+        }
+    }
+}
+
+/// The law after `m` in [`ContactModel::ALL`] that is not `own`.
+fn next_other(m: ContactModel, own: ContactModel) -> ContactModel {
+    let all = ContactModel::ALL;
+    let i = all.iter().position(|x| *x == m).unwrap_or(0);
+    (1..=all.len())
+        .map(|k| all[(i + k) % all.len()])
+        .find(|x| *x != own)
+        .unwrap_or(m)
+}
+
+/// The second axis of the map scene: a key of the parameter table or `mu`.
+pub const MAP_Y: [&str; 4] = ["mu", "gap", "mass_ratio", "restitution"];
 
 /// The scene shown and the reading aids on it.
 #[derive(Debug, Clone, PartialEq)]
@@ -76,6 +157,15 @@ pub struct View {
     pub physical: bool,
     /// The spectrum shows peak velocities Π_v instead of displacements Π_u.
     pub velocity: bool,
+    /// The laws the laws scene overlays.
+    pub laws: Laws,
+    /// The map's y axis, an index into [`MAP_Y`].
+    pub map_y: usize,
+    /// The map shows Π_u1/Π_u1,free instead of the region.
+    pub map_ratio: bool,
+    /// The map cell under the cursor (column, row from the top); `None`:
+    /// the set's own point.
+    pub map_cursor: Option<(usize, usize)>,
 }
 
 /// Zoom factor of one `z`.
@@ -90,6 +180,10 @@ impl Default for View {
             overlay: false,
             physical: false,
             velocity: false,
+            laws: Laws::Paper,
+            map_y: 0,
+            map_ratio: false,
+            map_cursor: None,
         }
     }
 }
@@ -222,6 +316,26 @@ mod tests {
             max_penetration: 0.01,
             ended: true,
         }
+    }
+
+    #[test]
+    fn the_law_choice_cycles_through_every_pair_and_back() {
+        use ContactModel::*;
+        let own = ImprovedKelvin;
+        let mut l = Laws::Paper;
+        let mut seen = vec![l.shown(own)];
+        for _ in 0..7 {
+            l = l.next(own);
+            seen.push(l.shown(own));
+        }
+        assert_eq!(seen[0], [Kelvin, ImprovedKelvin]);
+        assert_eq!(seen[1].len(), 6);
+        // Own law against each of the five others, then the paper pair again.
+        assert_eq!(seen[2], [ImprovedKelvin, Hertz]);
+        assert_eq!(seen[6], [Kelvin, ImprovedKelvin]);
+        assert_eq!(seen[7], [Kelvin, ImprovedKelvin]);
+        assert!(seen[2..7].iter().all(|s| s.len() == 2 && s.contains(&own)));
+        assert_eq!(l, Laws::Paper);
     }
 
     #[test]

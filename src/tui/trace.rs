@@ -25,7 +25,15 @@ pub struct Slice {
 pub struct Trace {
     pub window: [f64; 2],
     pub slices: Vec<Slice>,
+    /// The contact gap Π_d whose force–penetration loop is kept (None: none kept).
+    gap: Option<f64>,
+    /// (δ, f_p) of every sample in contact, δ = x1 − x2 − Π_d > 0 (SPEC §4),
+    /// each contact ended by a (NaN, NaN) break; at most [`LOOP_POINTS`].
+    pub contact: Vec<(f64, f64)>,
 }
+
+/// Most samples kept of the force–penetration loop (later contacts are left out).
+pub const LOOP_POINTS: usize = 50_000;
 
 impl Trace {
     pub fn new(buckets: usize, window: [f64; 2]) -> Trace {
@@ -43,7 +51,15 @@ impl Trace {
                     filled: false,
                 })
                 .collect(),
+            gap: None,
+            contact: Vec::new(),
         }
+    }
+
+    /// Also keeps the force–penetration loop of contacts across `gap`.
+    pub fn with_contact(mut self, gap: f64) -> Trace {
+        self.gap = gap.is_finite().then_some(gap);
+        self
     }
 
     pub fn filled(&self) -> impl Iterator<Item = &Slice> {
@@ -107,6 +123,16 @@ impl Observer for Trace {
         }
         b.last = values;
         b.last_tau = s.tau;
+        if let Some(gap) = self.gap {
+            let delta = s.x[0] - s.x[1] - gap;
+            let force = values[8];
+            let in_contact = delta > 0.0 || force != 0.0;
+            if in_contact && self.contact.len() < LOOP_POINTS {
+                self.contact.push((delta.max(0.0), force));
+            } else if !in_contact && self.contact.last().is_some_and(|p| p.0.is_finite()) {
+                self.contact.push((f64::NAN, f64::NAN));
+            }
+        }
     }
 }
 
@@ -139,6 +165,19 @@ mod tests {
         assert!((tau - 2.5).abs() <= 0.05 + 1e-12, "{tau}");
         assert!((v[0] - (3.0 * tau).sin()).abs() < 1e-12);
         assert_eq!(t.at(3.5), None);
+    }
+
+    #[test]
+    fn the_contact_loop_keeps_samples_past_the_gap_and_breaks_between_contacts() {
+        let mut t = Trace::new(4, [0.0, 10.0]).with_contact(0.5);
+        sine(&mut t);
+        // x1 = sin 3τ > 0.5 where 3τ ∈ (π/6, 5π/6) + 2πk: five arcs in
+        // [0, 10] (the last ends at τ ≈ 9.25), each closed by a break.
+        let breaks = t.contact.iter().filter(|p| p.0.is_nan()).count();
+        assert_eq!(breaks, 5, "{breaks}");
+        let top = t.contact.iter().fold(0f64, |m, p| m.max(p.0));
+        assert!((top - 0.5).abs() < 1e-5, "{top}");
+        assert!(t.contact.iter().all(|p| p.0.is_nan() || p.0 > 0.0));
     }
 
     #[test]

@@ -33,10 +33,11 @@ pub fn render(app: &App, frame: &mut Frame) {
         match app.view.scene {
             Scene::History => views::history::render(app, frame, a.scene),
             Scene::Loops => views::loops::render(app, frame, a.scene),
-            Scene::Kelvin => views::kelvin::render(app, frame, a.scene),
+            Scene::Laws => views::laws::render(app, frame, a.scene),
             Scene::Sets => views::sets::render(app, frame, a.scene),
             Scene::Spectrum => views::spectrum::render(app, frame, a.scene),
             Scene::Impacts => views::impacts::render(app, frame, a.scene),
+            Scene::Map => views::map::render(app, frame, a.scene),
         }
         views::summary::render(app, frame, a.summary);
         footer(app, frame, a.footer);
@@ -103,7 +104,7 @@ pub fn key_bar(app: &App, width: usize) -> String {
             "←→ nudge",
             "Enter type",
             "Tab set",
-            "t f v c w i scenes",
+            "t f v c w i a scenes",
             "[ ] cursor",
             "z zoom",
             "p preset",

@@ -12,6 +12,7 @@ use std::time::{Duration, Instant};
 use rayon::prelude::*;
 
 use super::trace::Trace;
+use crate::analysis::map::{MapCache, MapCell, MapPlan, compute_rows};
 use crate::analysis::spectrum::{SpectrumPoint, point};
 use crate::model::Method;
 use crate::model::Params;
@@ -22,8 +23,8 @@ use crate::solver::{Observer, RunResult, Sample, error_vs_exact, solve};
 pub enum Slot {
     /// Parameter set 0 (left pane) or 1 (right pane).
     Set(usize),
-    /// The active set under the other contact model (Kelvin comparison).
-    Twin,
+    /// The active set under another contact law (the laws compared).
+    Law(crate::model::ContactModel),
 }
 
 /// One run to compute: its parameters and the history to keep.
@@ -48,12 +49,46 @@ pub struct SpectrumSpec {
     pub grid: Vec<f64>,
 }
 
+/// A region map to compute row by row (SPEC §7): coarse rows first.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MapSpec {
+    /// The base set (exact method), μ and the axes; checked by the worker.
+    pub plan: MapPlan,
+}
+
+impl MapSpec {
+    pub fn columns(&self) -> usize {
+        self.plan.x.len()
+    }
+    pub fn rows(&self) -> usize {
+        self.plan.y.len()
+    }
+}
+
+/// The order the rows of a map are computed in: every 8th row, then the
+/// rows between them at 4, 2 and 1, so a coarse picture appears at once
+/// and is refined in place.
+pub fn row_order(rows: usize) -> Vec<usize> {
+    let mut order = Vec::with_capacity(rows);
+    let mut done = vec![false; rows];
+    for stride in [8, 4, 2, 1] {
+        for r in (0..rows).step_by(stride) {
+            if !done[r] {
+                done[r] = true;
+                order.push(r);
+            }
+        }
+    }
+    order
+}
+
 /// What the visible scene needs.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Job {
     pub generation: u64,
     pub runs: Vec<RunSpec>,
     pub spectrum: Option<SpectrumSpec>,
+    pub map: Option<MapSpec>,
 }
 
 /// A finished run.
@@ -88,6 +123,13 @@ pub enum Output {
         start: usize,
         points: Vec<SpectrumPoint>,
     },
+    /// Whole map rows: (row index from the lowest y, its cells by x).
+    MapRows {
+        generation: u64,
+        rows: Vec<(usize, Vec<MapCell>)>,
+    },
+    /// The map's parameters are refused (one line naming the value).
+    MapError { generation: u64, message: String },
     /// The job ended, complete or cancelled by a newer one.
     Done { generation: u64, cancelled: bool },
 }
@@ -97,6 +139,8 @@ impl Output {
         match self {
             Output::Run { generation, .. }
             | Output::Points { generation, .. }
+            | Output::MapRows { generation, .. }
+            | Output::MapError { generation, .. }
             | Output::Done { generation, .. } => *generation,
         }
     }
@@ -243,6 +287,60 @@ pub fn run_job(job: &Job, current: &dyn Fn() -> bool, send: &dyn Fn(Output)) -> 
             }
         }
     }
+    if let Some(m) = &job.map {
+        return run_map(job.generation, m, current, send);
+    }
+    true
+}
+
+/// Rows of a map computed between two cancellation checks.
+const MAP_CHUNK: usize = 4;
+
+/// Computes a map's rows in [`row_order`], a few at a time so that a newer
+/// job cancels within one chunk; the first chunk is sent at once (the
+/// coarse picture), the rest in batches a few times per second.
+fn run_map(
+    generation: u64,
+    m: &MapSpec,
+    current: &dyn Fn() -> bool,
+    send: &dyn Fn(Output),
+) -> bool {
+    let p = &m.plan;
+    let plan = match MapPlan::new(p.base, p.mu, p.x, p.y) {
+        Ok(plan) => plan,
+        Err(e) => {
+            send(Output::MapError {
+                generation,
+                message: e.to_string(),
+            });
+            return true;
+        }
+    };
+    let ys = plan.y.values();
+    let nx = plan.x.len();
+    let mut cache = MapCache::default();
+    let mut batch = Vec::new();
+    let mut sent: Option<Instant> = None;
+    let order = row_order(ys.len());
+    let chunks: Vec<&[usize]> = order.chunks(MAP_CHUNK).collect();
+    for (k, chunk) in chunks.iter().enumerate() {
+        if !current() {
+            return false;
+        }
+        let values: Vec<f64> = chunk.iter().map(|&r| ys[r]).collect();
+        let cells = compute_rows(&plan, &values, &mut cache);
+        for (i, &r) in chunk.iter().enumerate() {
+            batch.push((r, cells[i * nx..(i + 1) * nx].to_vec()));
+        }
+        let last = k + 1 == chunks.len();
+        if last || sent.is_none_or(|t| t.elapsed() >= BATCH_INTERVAL) {
+            sent = Some(Instant::now());
+            send(Output::MapRows {
+                generation,
+                rows: std::mem::take(&mut batch),
+            });
+        }
+    }
     true
 }
 
@@ -266,7 +364,7 @@ impl Observer for Cancellable<'_> {
 pub fn compute_run(spec: &RunSpec, current: &dyn Fn() -> bool) -> RunOutput {
     let start = Instant::now();
     let mut observer = Cancellable {
-        history: Trace::new(spec.buckets, spec.window),
+        history: Trace::new(spec.buckets, spec.window).with_contact(spec.params.gap),
         current,
     };
     let result = solve(&spec.params, &mut observer);

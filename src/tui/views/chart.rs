@@ -41,6 +41,8 @@ enum Shape {
 pub struct Series {
     pub name: String,
     pub color: Color,
+    /// Its own marker without colours (else the chart's, by position).
+    marker: Option<char>,
     shape: Shape,
 }
 
@@ -49,14 +51,26 @@ impl Series {
         Series {
             name: name.into(),
             color,
+            marker: None,
             shape: Shape::Line(points),
         }
+    }
+
+    /// The same series with a fixed marker for charts without colours.
+    pub fn marked(mut self, marker: char) -> Series {
+        self.marker = Some(marker);
+        self
+    }
+
+    fn marker(&self, index: usize) -> char {
+        self.marker.unwrap_or(MARKERS[index % MARKERS.len()])
     }
 
     pub fn spans(name: impl Into<String>, color: Color, spans: Vec<(f64, f64, f64)>) -> Series {
         Series {
             name: name.into(),
             color,
+            marker: None,
             shape: Shape::Spans(spans),
         }
     }
@@ -98,6 +112,8 @@ pub struct ChartSpec {
     pub x_labels: bool,
     /// A vertical line at this x (the cursor, or the current Π_ω1).
     pub cursor: Option<f64>,
+    /// No legend in the header (the scene draws one for several charts).
+    pub no_legend: bool,
 }
 
 /// Rows a chart needs at least: header, two plot rows, x labels.
@@ -261,7 +277,9 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
         .y_range
         .or_else(|| data_range(series, |p| p.1))
         .unwrap_or([0.0, 1.0]);
-    let y_count = (plot.height as usize / 2).max(1);
+    // Two intervals at least: one would round the step up to the whole
+    // span, and a short chart would read twice its data's range.
+    let y_count = (plot.height as usize / 2).max(2);
     let yt = ticks::ticks(y_data[0], y_data[1], y_count, true);
     let xt = ticks::ticks(
         x_range[0],
@@ -271,7 +289,12 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
     );
 
     let title = look.text(&format!("{}{}", spec.title, ticks::scale_note(yt.exponent)));
-    let rows = header(buf, area, &title, &legend(look, series, braille));
+    let entries = if spec.no_legend {
+        Vec::new()
+    } else {
+        legend(look, series, braille)
+    };
+    let rows = header(buf, area, &title, &entries);
     let mut plot = plot;
     if rows == 2 {
         plot.y += 1;
@@ -302,7 +325,7 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
             let symbol = if braille {
                 char::from_u32(0x2800 + raster.bits[i] as u32).unwrap_or('*')
             } else {
-                MARKERS[owner % MARKERS.len()]
+                series[owner].marker(owner)
             };
             let y = plot.y + r as u16;
             let mut tmp = [0u8; 4];
@@ -391,7 +414,7 @@ fn legend(look: Look, series: &[Series], braille: bool) -> Vec<(String, String, 
             let sample = if braille {
                 "──".to_string()
             } else {
-                MARKERS[i % MARKERS.len()].to_string().repeat(2)
+                s.marker(i).to_string().repeat(2)
             };
             let style = if look.color {
                 Style::new().fg(s.color)

@@ -1,7 +1,8 @@
 //! Scene (t): time histories of the active set — displacements x1, x2 and
 //! the contact line x2 + Π_d (contact while x1 is above it, SPEC §4),
-//! velocities, and the pounding force f_p — over the visible window, with
-//! the cursor.
+//! velocities, the pounding force f_p, and the ground acceleration g(τ)
+//! that drives them (SPEC §9: sin τ for the sine, the pulse or the record)
+//! — over the visible window, with the cursor.
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -38,8 +39,34 @@ pub fn time_spec(app: &App, u: &Units, tau_end: f64, title: String, x_labels: bo
         x_bounds: Some([a * u.time, b * u.time]),
         y_range: None,
         x_labels,
+        no_legend: false,
         cursor: app.view.cursor.map(|c| c * u.time),
     }
+}
+
+/// Ground acceleration g(τ) over `[a, b]` as one (τ, min, max) span per
+/// bucket, from several samples of each, so that a record's peaks between
+/// two buckets survive.
+pub fn ground_spans(
+    p: &crate::model::Params,
+    [a, b]: [f64; 2],
+    buckets: usize,
+) -> Vec<(f64, f64, f64)> {
+    const SUB: usize = 8;
+    let g = p.ground();
+    let n = buckets.max(1);
+    let width = (b - a) / n as f64;
+    (0..n)
+        .map(|i| {
+            let t0 = a + i as f64 * width;
+            let (lo, hi) = (0..=SUB)
+                .map(|k| g.at(t0 + width * k as f64 / SUB as f64))
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| {
+                    (l.min(v), h.max(v))
+                });
+            (t0, lo, hi)
+        })
+        .collect()
 }
 
 pub fn render(app: &App, frame: &mut Frame, area: Rect) {
@@ -71,10 +98,24 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         palette::FORCE,
         spans(h, FP, 0.0, &u, u.force),
     )];
-    let [a, b, c] = Layout::vertical([
-        Constraint::Ratio(1, 3),
-        Constraint::Ratio(1, 3),
-        Constraint::Ratio(1, 3),
+    let window = app.view.window(tau_end);
+    let ground = [Series::spans(
+        "g",
+        palette::GROUND,
+        Units::scale_spans(
+            ground_spans(&run.spec.params, window, h.slices.len()),
+            u.time,
+            u.acceleration,
+        ),
+    )];
+    // The ground row is the smallest: its header, two plot rows and the
+    // time labels at least.
+    let ground_rows = (area.height * 2 / 11).max(chart::MIN_ROWS);
+    let [a, b, c, d] = Layout::vertical([
+        Constraint::Fill(1),
+        Constraint::Fill(1),
+        Constraint::Fill(1),
+        Constraint::Length(ground_rows),
     ])
     .areas(area);
     let buf = frame.buffer_mut();
@@ -97,7 +138,14 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         buf,
         c,
         app.look,
-        &spec(u.title("f_p", u.force_unit), true),
+        &spec(u.title("f_p", u.force_unit), false),
         &force,
+    );
+    chart::draw(
+        buf,
+        d,
+        app.look,
+        &spec(u.title("g", u.acceleration_unit), true),
+        &ground,
     );
 }

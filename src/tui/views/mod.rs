@@ -3,8 +3,9 @@
 pub mod chart;
 pub mod history;
 pub mod impacts;
-pub mod kelvin;
+pub mod laws;
 pub mod loops;
+pub mod map;
 pub mod overlay;
 pub mod params;
 pub mod sets;

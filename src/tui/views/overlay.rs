@@ -14,7 +14,8 @@ use crate::tui::text_field::TextField;
 use crate::tui::worker::Slot;
 
 /// Every key, as the help overlay and the README list them.
-pub const KEYS: [(&str, &str); 31] = [
+pub const KEYS: [(&str, &str); 30] = [
+    ("?", "this help (any key closes it)"),
     ("↑/↓, k/j", "select a parameter"),
     ("←/→, h/l, -/+", "nudge it by one step"),
     ("Shift+←/→, H/L", "nudge by ten steps"),
@@ -30,22 +31,23 @@ pub const KEYS: [(&str, &str); 31] = [
     ("g", "write the scene as an SVG figure"),
     ("t", "scene: time histories"),
     ("f", "scene: force-drift loops"),
-    ("v", "scene: Kelvin vs improved Kelvin"),
+    (
+        "v",
+        "scene: contact laws (b: paper pair, all six, own vs one)",
+    ),
     ("c", "scene: set 1 vs set 2 (o overlays them)"),
     ("w", "scene: spectrum against Π_ω1"),
     ("i", "scene: impact table and energy terms"),
+    ("a", "scene: map (y axis, o ratio, [ ]{ })"),
     ("u", "physical units (presets with [physical])"),
     ("[ / ]", "move the time cursor ({ } by ten)"),
     ("n / N", "cursor to the next / previous impact"),
     ("z / Z", "zoom in around the cursor / out"),
     ("Esc", "hide the cursor (never quits)"),
-    ("mouse", "click selects or sets the cursor"),
-    ("", "wheel over the panes nudges"),
+    ("mouse", "click: select or cursor; wheel: nudge"),
     ("M", "mouse on/off (off: select text)"),
-    ("?", "this help"),
     ("q", "quit (asks if a set is unsaved)"),
     ("Ctrl-C", "quit at once"),
-    ("", "any key closes this help"),
 ];
 
 fn centered(area: Rect, width: u16, height: u16) -> Rect {

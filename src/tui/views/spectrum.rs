@@ -156,6 +156,7 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
             x_bounds: Some(xb),
             x_labels: k == 2,
             cursor: Some(omega1),
+            no_legend: false,
             // Counts start at zero.
             y_range: (k == 2).then(|| {
                 let most = s.points.iter().flatten().map(|p| p.impacts).max();

@@ -76,15 +76,19 @@ pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize
 }
 
 fn slots(app: &App) -> Vec<(String, Slot)> {
-    let active = Slot::Set(app.active);
     let set = |i: usize| (format!("set {}", i + 1), Slot::Set(i));
     match app.view.scene {
-        Scene::History | Scene::Loops | Scene::Spectrum | Scene::Impacts => vec![set(app.active)],
+        Scene::History | Scene::Loops | Scene::Spectrum | Scene::Impacts | Scene::Map => {
+            vec![set(app.active)]
+        }
         Scene::Sets => vec![set(0), set(1)],
-        Scene::Kelvin => vec![
-            (app.model().name().to_string(), active),
-            (app.model().toggled().name().to_string(), Slot::Twin),
-        ],
+        Scene::Laws => app
+            .view
+            .laws
+            .shown(app.model())
+            .into_iter()
+            .map(|m| (m.name().to_string(), super::laws::slot(app, m)))
+            .collect(),
     }
 }
 
@@ -128,7 +132,7 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         .map(|(label, slot)| {
             let u = match slot {
                 Slot::Set(i) => Units::of(app, i),
-                Slot::Twin => Units::active(app),
+                Slot::Law(_) => Units::active(app),
             };
             let text = match app.shown(slot) {
                 Some(run) => line(&label, run, &u, app.jobs.is_current(slot), width),

@@ -80,8 +80,10 @@ pub fn ticks(lo: f64, hi: f64, count: usize, snap: bool) -> Ticks {
     }
     let step = round_step((hi - lo) / count.max(1) as f64);
     if snap {
-        lo = (lo / step - 1e-9).floor() * step;
-        hi = (hi / step + 1e-9).ceil() * step;
+        // Outward to whole steps; a bound within round-off of a step stays
+        // on it (0 stays 0, so a count axis does not open a step below zero).
+        lo = (lo / step + 1e-9).floor() * step;
+        hi = (hi / step - 1e-9).ceil() * step;
     }
     let first = (lo / step - 1e-9).ceil() as i64;
     let last = (hi / step + 1e-9).floor() as i64;
@@ -155,6 +157,15 @@ mod tests {
         assert!(t.labels.iter().all(|l| l.len() <= LABEL_WIDTH), "{t:?}");
         assert_eq!(t.exponent, -5);
         assert!(t.labels.contains(&"0".to_string()));
+    }
+
+    #[test]
+    fn a_bound_on_a_step_stays_there_even_with_one_tick() {
+        let t = ticks(0.0, 39.0, 1, true);
+        assert_eq!(t.bounds, [0.0, 50.0]);
+        assert_eq!(t.labels, ["0", "50"]);
+        let t = ticks(-20.0, 40.0, 3, true);
+        assert_eq!(t.bounds, [-20.0, 40.0]);
     }
 
     #[test]

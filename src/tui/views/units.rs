@@ -12,12 +12,15 @@ pub struct Units {
     pub velocity: f64,
     pub force: f64,
     pub energy: f64,
+    /// Ground acceleration (a_p in Π form).
+    pub acceleration: f64,
     /// Axis names with their scaling.
     pub time_axis: &'static str,
     pub length_unit: &'static str,
     pub velocity_unit: &'static str,
     pub force_unit: &'static str,
     pub energy_unit: &'static str,
+    pub acceleration_unit: &'static str,
     pub physical: bool,
 }
 
@@ -27,11 +30,13 @@ pub const PI_UNITS: Units = Units {
     velocity: 1.0,
     force: 1.0,
     energy: 1.0,
+    acceleration: 1.0,
     time_axis: "τ [2π = 1 cycle]",
     length_unit: "a_p/ω_p²",
     velocity_unit: "a_p/ω_p",
     force_unit: "m2·a_p",
     energy_unit: "m2·a_p²/ω_p²",
+    acceleration_unit: "a_p",
     physical: false,
 };
 
@@ -45,11 +50,14 @@ impl Units {
                 velocity: b.velocity(),
                 force: b.force() / 1e3,
                 energy: b.force() * b.length() / 1e3,
+                // a_p = (a_p/ω_p²)/(1/ω_p)².
+                acceleration: b.length() / (b.time() * b.time()),
                 time_axis: "t [s]",
                 length_unit: "mm",
                 velocity_unit: "m/s",
                 force_unit: "kN",
                 energy_unit: "kJ",
+                acceleration_unit: "m/s²",
                 physical: true,
             },
             _ => PI_UNITS,
