@@ -98,3 +98,44 @@ fn cli_reports_metres_and_refuses_bad_levels() {
         assert!(err.contains(needle), "{err}");
     }
 }
+
+/// JSON numbers are numbers (the gap of 0.2 g is 0.025 m × 0.2/0.5), the
+/// units and method are named, and every CSV row carries its level and
+/// parameters, with one cell per header column.
+#[test]
+fn json_and_csv_are_self_describing() {
+    let run = |format: &str| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
+            .args([
+                "similarity",
+                "--preset",
+                "two-buildings",
+                "--omega1",
+                "1.0:1.1:0.1",
+                "--format",
+                format,
+            ])
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let v: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
+    let gap = v["levels"][0]["physical"]["gap_m"].as_f64().unwrap();
+    assert!((gap - 0.01).abs() < 1e-15, "{gap}");
+    assert!(v["levels"][0]["physical"]["yield1_m"].is_number());
+    assert_eq!(v["method"], "exact");
+    assert!(v["units"].as_str().unwrap().starts_with("SI"));
+    assert_eq!(v["omega1_grid"], "1:1.1:0.1");
+    let csv = run("csv");
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 1 + 3 * 2);
+    let header: Vec<&str> = lines[0].split(',').collect();
+    assert!(lines.iter().all(|l| l.split(',').count() == header.len()));
+    let row: Vec<&str> = lines[1].split(',').collect();
+    let cell = |key: &str| row[header.iter().position(|h| *h == key).unwrap()];
+    assert_eq!(cell("ap_g"), "0.2");
+    assert_eq!(cell("gap_m"), "0.010000000000000002");
+    assert_eq!(cell("method"), "exact");
+    assert_eq!(cell("omega1"), "1");
+}

@@ -43,6 +43,15 @@ fn json_has_the_issue_shape() {
     assert!(p["impacts"].as_u64().unwrap() > 0);
     assert_eq!(p["region"], "amplification");
     assert!(v["elapsed_ms"].as_f64().unwrap() >= 0.0);
+    // Self-describing: parameters, method, units and grid.
+    assert_eq!(v["method"], "exact");
+    assert_eq!(
+        v["params"]["mass_ratio"],
+        v["params"]["mass_ratio"].as_f64().unwrap()
+    );
+    assert!(v["units"].as_str().unwrap().starts_with("dimensionless"));
+    assert_eq!(v["grid"]["points"], 2);
+    assert_eq!(v["grid"]["step"], 0.1);
     // Without a family.
     let (_, out, _) = pounding(&[
         "spectrum",
@@ -72,10 +81,53 @@ fn csv_has_one_row_per_point() {
     assert_eq!(code, 0);
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines.len(), 1 + 2 * 3);
-    assert!(lines[0].starts_with("mass_ratio,mu,omega1,omega2,left_peak_displacement,"));
+    // Every row carries its family member, the grid and the whole parameter set.
+    assert!(lines[0].starts_with("family,omega1_grid,mu,mass_ratio,omega1,omega2,"));
+    assert!(lines[0].ends_with(",impacts,region,min_gap_no_pounding"));
     let columns = lines[0].split(',').count();
     assert!(lines.iter().all(|l| l.split(',').count() == columns));
-    assert!(lines[4].starts_with("0.9,"));
+    assert!(lines[4].starts_with("mass_ratio=0.9,0.1:0.3:0.1,"));
+    let header: Vec<&str> = lines[0].split(',').collect();
+    let row: Vec<&str> = lines[4].split(',').collect();
+    let cell = |key: &str| row[header.iter().position(|h| *h == key).unwrap()];
+    assert_eq!(cell("mass_ratio"), "0.9");
+    assert_eq!(cell("method"), "exact");
+    assert_eq!(cell("model"), "improved-kelvin");
+    assert_eq!(cell("omega1"), "0.1");
+}
+
+/// Set 1's point Π_ω1 = 1.05 carries the gap `pounding gap` finds there
+/// (2.5736, SPEC §11), in JSON and CSV; Newmark does not track it.
+#[test]
+fn min_gap_no_pounding_matches_the_gap_command() {
+    let (code, out, err) = pounding(&["gap", "--preset", "set1", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let gap: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let want = gap["points"][0]["exact"].as_f64().unwrap();
+    assert!((want - 2.5736).abs() < 5e-5, "{want}");
+    let grid = ["spectrum", "--preset", "set1", "--omega1", "1.05:1.05:0.05"];
+    let (code, out, err) = pounding(&[&grid[..], &["--format", "json"]].concat());
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let got = v["curves"][0]["points"][0]["min_gap_no_pounding"]
+        .as_f64()
+        .unwrap();
+    assert!((got - want).abs() < 1e-9, "{got} vs {want}");
+    let (_, out, _) = pounding(&[&grid[..], &["--format", "csv"]].concat());
+    let last: f64 = out
+        .lines()
+        .nth(1)
+        .unwrap()
+        .rsplit(',')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((last - want).abs() < 1e-9, "{last} vs {want}");
+    let newmark = [&grid[..], &["--method", "newmark", "--format", "json"]].concat();
+    let (_, out, _) = pounding(&newmark);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(v["curves"][0]["points"][0]["min_gap_no_pounding"].is_null());
 }
 
 #[test]

@@ -4,6 +4,7 @@
 
 use serde::Serialize;
 
+use super::gap::from_max_relative;
 use crate::model::Params;
 use crate::solver::{RunResult, StructurePeaks, run_for_sweep as run};
 
@@ -57,6 +58,10 @@ pub struct SpectrumPoint {
     pub free_right: StructurePeaks,
     pub impacts: usize,
     pub region: Region,
+    /// Π_d,min = max(0, max over τ of x1 − x2) of the no-pounding run: the
+    /// smallest gap at which this point never pounds (SPEC §11). Exact
+    /// method only; `None` with Newmark, which does not track it.
+    pub min_gap_no_pounding: Option<f64>,
 }
 
 impl SpectrumPoint {
@@ -104,6 +109,7 @@ pub fn combine(p: &Params, with: &RunResult, without: &RunResult) -> SpectrumPoi
         free_right: without.right,
         impacts: with.impacts.len(),
         region: Region::classify(with.left.peak_displacement, without.left.peak_displacement),
+        min_gap_no_pounding: without.max_relative_displacement.map(from_max_relative),
     }
 }
 

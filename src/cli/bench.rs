@@ -6,11 +6,14 @@ use std::fmt::Write as _;
 use clap::Args;
 
 use super::CliError;
-use super::output::Format;
+use super::output::{Format, num, render};
 use super::params::user_preset_dir;
-use crate::accuracy::plot::{Series, render};
+use crate::accuracy::figure_spectra::SpectraAccuracy;
+use crate::accuracy::plot::{Series, render as plot_render};
 use crate::accuracy::work_precision::{Row, meets_target, rows};
 use crate::model::{ContactModel, Preset};
+use crate::output::report::Report;
+use serde::Serialize;
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct BenchArgs {
@@ -74,13 +77,14 @@ pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
         }
     }
     let all: Vec<&Row> = groups.iter().flatten().collect();
-    let text = match args.format {
-        Format::Json => serde_json::json!({ "rows": all }).to_string() + "\n",
-        Format::Csv => csv(&all),
-        Format::Table => table(&all),
+    let report = BenchReport {
+        version: env!("CARGO_PKG_VERSION"),
+        units: "ms_per_run in milliseconds of wall time; dt, tolerance, max_rel_error and order dimensionless",
+        truth_tolerance: crate::accuracy::work_precision::TRUTH_TOLERANCE,
+        rows: all,
     };
-    let mut text = text;
-    if args.plot {
+    let mut text = render(&report, args.format)?;
+    if args.plot && args.format == Format::Table {
         for group in &groups {
             text += &plot(group);
         }
@@ -105,40 +109,151 @@ fn spectra(args: &BenchArgs) -> Result<(), CliError> {
         let accuracy = measure(method);
         rows.push((accuracy, times[1]));
     }
-    let text = match args.format {
-        Format::Json => {
-            let list: Vec<_> = rows
-                .iter()
-                .map(|(a, t)| serde_json::json!({ "accuracy": a, "wall_s_ten_curves": t }))
-                .collect();
-            serde_json::json!({ "reference_tolerance": REFERENCE_TOLERANCE, "methods": list })
-                .to_string()
-                + "\n"
-        }
-        Format::Csv | Format::Table => {
-            let mut s = format!(
-                "Figures 7–10, ten curves, with and without pounding, against the reference at tol {REFERENCE_TOLERANCE:e}\n\
-                 {:<8} {:>6} {:>13} {:>9} {:>10} {:>12}  worst point\n",
-                "method", "runs", "max rel err", "> 1e-7", "count diff", "wall s (10)"
-            );
-            for (a, t) in &rows {
-                let _ = writeln!(
-                    s,
-                    "{:<8} {:>6} {:>13.3e} {:>9} {:>10} {:>12.3}  {}",
-                    a.method,
-                    a.runs,
-                    a.max_rel_error,
-                    a.above_1e_7,
-                    a.impact_count_mismatches,
-                    t,
-                    a.worst
-                );
-            }
-            s
-        }
+    let report = SpectraReport {
+        version: env!("CARGO_PKG_VERSION"),
+        units: "wall_s_ten_curves in seconds (median of three); errors dimensionless",
+        reference_tolerance: REFERENCE_TOLERANCE,
+        methods: rows
+            .into_iter()
+            .map(|(accuracy, wall_s_ten_curves)| SpectraRow {
+                accuracy,
+                wall_s_ten_curves,
+            })
+            .collect(),
     };
-    super::output::print(&text)?;
-    Ok(())
+    super::output::print(&render(&report, args.format)?)
+}
+
+/// The work-precision table in every format.
+#[derive(Debug, Serialize)]
+struct BenchReport<'a> {
+    version: &'static str,
+    units: &'static str,
+    /// Tolerance of the DOPRI5 reference every error is measured against.
+    truth_tolerance: f64,
+    rows: Vec<&'a Row>,
+}
+
+impl Report for BenchReport<'_> {
+    fn table(&self) -> String {
+        table(&self.rows)
+    }
+
+    fn csv_header(&self) -> Vec<&'static str> {
+        vec![
+            "preset",
+            "model",
+            "method",
+            "dt",
+            "tolerance",
+            "ms_per_run",
+            "max_rel_error",
+            "order",
+            "truth_tolerance",
+        ]
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        let cell = |v: Option<f64>| v.map(num).unwrap_or_default();
+        self.rows
+            .iter()
+            .map(|r| {
+                vec![
+                    r.preset.clone(),
+                    r.model.clone(),
+                    r.method.to_string(),
+                    cell(r.dt),
+                    cell(r.tolerance),
+                    num(r.ms_per_run),
+                    num(r.max_rel_error),
+                    cell(r.order),
+                    num(self.truth_tolerance),
+                ]
+            })
+            .collect()
+    }
+}
+
+/// One method's accuracy over the ten curves, and their wall time.
+#[derive(Debug, Serialize)]
+struct SpectraRow {
+    accuracy: SpectraAccuracy,
+    wall_s_ten_curves: f64,
+}
+
+/// `bench --spectra` in every format.
+#[derive(Debug, Serialize)]
+struct SpectraReport {
+    version: &'static str,
+    units: &'static str,
+    reference_tolerance: f64,
+    methods: Vec<SpectraRow>,
+}
+
+impl Report for SpectraReport {
+    fn table(&self) -> String {
+        let mut s = format!(
+            "Figures 7–10, ten curves, with and without pounding, against the reference at tol {:e}\n\
+             {:<8} {:>6} {:>13} {:>9} {:>10} {:>12}  worst point\n",
+            self.reference_tolerance,
+            "method",
+            "runs",
+            "max rel err",
+            "> 1e-7",
+            "count diff",
+            "wall s (10)"
+        );
+        for SpectraRow {
+            accuracy: a,
+            wall_s_ten_curves: t,
+        } in &self.methods
+        {
+            let _ = writeln!(
+                s,
+                "{:<8} {:>6} {:>13.3e} {:>9} {:>10} {:>12.3}  {}",
+                a.method,
+                a.runs,
+                a.max_rel_error,
+                a.above_1e_7,
+                a.impact_count_mismatches,
+                t,
+                a.worst
+            );
+        }
+        s
+    }
+
+    fn csv_header(&self) -> Vec<&'static str> {
+        vec![
+            "method",
+            "runs",
+            "max_rel_error",
+            "above_1e_7",
+            "impact_count_mismatches",
+            "wall_s_ten_curves",
+            "reference_tolerance",
+            "worst",
+        ]
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        self.methods
+            .iter()
+            .map(|r| {
+                let a = &r.accuracy;
+                vec![
+                    a.method.name().to_string(),
+                    a.runs.to_string(),
+                    num(a.max_rel_error),
+                    a.above_1e_7.to_string(),
+                    a.impact_count_mismatches.to_string(),
+                    num(r.wall_s_ten_curves),
+                    num(self.reference_tolerance),
+                    a.worst.clone(),
+                ]
+            })
+            .collect()
+    }
 }
 
 fn opt(v: Option<f64>, digits: usize) -> String {
@@ -187,26 +302,6 @@ fn table(rows: &[&Row]) -> String {
     s
 }
 
-fn csv(rows: &[&Row]) -> String {
-    let mut s = String::from("preset,model,method,dt,tolerance,ms_per_run,max_rel_error,order\n");
-    let cell = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
-    for r in rows {
-        let _ = writeln!(
-            s,
-            "{},{},{},{},{},{},{},{}",
-            r.preset,
-            r.model,
-            r.method,
-            cell(r.dt),
-            cell(r.tolerance),
-            r.ms_per_run,
-            r.max_rel_error,
-            cell(r.order)
-        );
-    }
-    s
-}
-
 fn plot(group: &[Row]) -> String {
     let Some(first) = group.first() else {
         return String::new();
@@ -236,6 +331,6 @@ fn plot(group: &[Row]) -> String {
         "\n{} {}:\n{}",
         first.preset,
         first.model,
-        render(&series, 60, 16)
+        plot_render(&series, 60, 16)
     )
 }

@@ -9,12 +9,16 @@ use clap::Args;
 
 use super::CliError;
 use super::budget::Work;
-use super::output::{Format, num};
+use super::map::{param_cells, param_columns};
+use super::output::{Format, num, render};
 use super::params::ParamArgs;
 use super::spectrum::SpectrumPlan;
 use crate::analysis::similarity::{Level, master_curve_spread, study};
+use crate::analysis::spectrum::at_omega;
 use crate::analysis::spectrum_spec::SpectrumSpec;
 use crate::model::physical::{G, OMEGA_P, OMEGA_P_ALLOWED, Physical, parse_acceleration};
+use crate::output::report::{Report, float_or_inf};
+use serde::Serialize;
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct SimilarityArgs {
@@ -144,127 +148,310 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
     .map_err(|e| usage(format!("a level gives {e}")))?;
     let elapsed_ms = t.elapsed().as_secs_f64() * 1e3;
     let spread = master_curve_spread(&result);
-    let text = match args.format {
-        Format::Json => json(&physical, mu, &result, spread, elapsed_ms).to_string() + "\n",
-        Format::Csv => csv(&result),
-        Format::Table => table(
-            &plan.preset.name,
-            &physical,
-            mu,
-            &result,
-            spread,
-            elapsed_ms,
-            args.fixed_structure,
-        ),
-    };
-    super::output::print(&text)?;
-    Ok(())
-}
-
-fn peaks_si(level: &Level, p: &crate::solver::StructurePeaks) -> serde_json::Value {
-    serde_json::json!({
-        "peak_displacement_m": p.peak_displacement * level.length_scale(),
-        "peak_velocity_m_s": p.peak_velocity * level.velocity_scale(),
-    })
-}
-
-fn physical_json(p: &Physical) -> serde_json::Value {
-    serde_json::json!({
-        "m1_kg": p.mass[0], "m2_kg": p.mass[1],
-        "omega1_rad_s": p.omega[0], "omega2_rad_s": p.omega[1],
-        "yield1_m": num(p.yield_displacement[0]), "yield2_m": num(p.yield_displacement[1]),
-        "gap_m": num(p.gap), "damping": p.damping, "alpha": p.alpha,
-        "contact_omega_rad_s": p.contact_omega, "restitution": p.restitution,
-        "ap_m_s2": p.ap, "ap_g": p.ap / G, "omega_p_rad_s": p.omega_p,
-    })
-}
-
-fn json(
-    physical: &Physical,
-    mu: f64,
-    levels: &[Level],
-    spread: f64,
-    elapsed_ms: f64,
-) -> serde_json::Value {
-    let level_json: Vec<serde_json::Value> = levels
-        .iter()
-        .map(|l| {
-            let points: Vec<serde_json::Value> = l
-                .curve
-                .points
-                .iter()
-                .map(|p| {
-                    serde_json::json!({
-                        "omega1": p.omega1,
-                        "omega1_rad_s": p.omega1 * l.physical.omega_p,
-                        "period1_s": 2.0 * std::f64::consts::PI / (p.omega1 * l.physical.omega_p),
-                        "left": peaks_si(l, &p.left),
-                        "right": peaks_si(l, &p.right),
-                        "free_left": peaks_si(l, &p.free_left),
-                        "free_right": peaks_si(l, &p.free_right),
-                        "impacts": p.impacts,
-                        "region": p.region,
-                    })
-                })
-                .collect();
-            serde_json::json!({
-                "ap_m_s2": l.physical.ap,
-                "ap_g": l.physical.ap / G,
-                "length_scale_m": l.length_scale(),
-                "velocity_scale_m_s": l.velocity_scale(),
-                "physical": physical_json(&l.physical),
-                "params": super::output::params_json(&l.params),
-                "points": points,
-            })
-        })
-        .collect();
-    serde_json::json!({
-        "physical": physical_json(physical),
-        "omega_p": physical.omega_p,
-        "mu": mu,
-        "levels": level_json,
-        "method": levels.first().map(|l| l.params.method.name()),
-        "master": levels.first().map(|l| &l.curve.points),
-        "master_curve_spread": spread,
-        "elapsed_ms": elapsed_ms,
-    })
-}
-
-fn csv(levels: &[Level]) -> String {
-    let mut s = String::from(
-        "ap_m_s2,omega1,omega1_rad_s,left_peak_displacement_m,left_peak_velocity_m_s,right_peak_displacement_m,\
-         right_peak_velocity_m_s,free_left_peak_displacement_m,free_left_peak_velocity_m_s,\
-         free_right_peak_displacement_m,free_right_peak_velocity_m_s,left_pi_u,left_pi_v,right_pi_u,right_pi_v,\
-         free_left_pi_u,free_left_pi_v,free_right_pi_u,free_right_pi_v,impacts,region,method\n",
+    let report = SimilarityReport::new(
+        &plan.preset.name,
+        &physical,
+        mu,
+        &plan.grid.to_string(),
+        &result,
+        spread,
+        elapsed_ms,
+        args.fixed_structure,
     );
-    for l in levels {
-        let (lx, lv) = (l.length_scale(), l.velocity_scale());
-        for p in &l.curve.points {
-            let pi = p.peaks();
-            let _ = write!(
-                s,
-                "{},{},{}",
-                l.physical.ap,
-                p.omega1,
-                p.omega1 * l.physical.omega_p
-            );
-            for (i, v) in pi.iter().enumerate() {
-                let _ = write!(s, ",{}", v * if i % 2 == 0 { lx } else { lv });
-            }
-            for v in pi {
-                let _ = write!(s, ",{v}");
-            }
-            let _ = writeln!(s, ",{},{},{}", p.impacts, p.region.name(), l.params.method);
+    super::output::print(&render(&report, args.format)?)
+}
+
+/// Peak displacement and velocity of one structure in SI units.
+#[derive(Debug, Serialize)]
+struct PeaksSi {
+    peak_displacement_m: f64,
+    peak_velocity_m_s: f64,
+}
+
+impl PeaksSi {
+    fn of(level: &Level, p: &crate::solver::StructurePeaks) -> PeaksSi {
+        PeaksSi {
+            peak_displacement_m: p.peak_displacement * level.length_scale(),
+            peak_velocity_m_s: p.peak_velocity * level.velocity_scale(),
         }
     }
-    s
+}
+
+/// The physical system in SI units; infinite yield displacements or gap as `"inf"`.
+#[derive(Debug, Serialize)]
+struct PhysicalSi {
+    m1_kg: f64,
+    m2_kg: f64,
+    omega1_rad_s: f64,
+    omega2_rad_s: f64,
+    #[serde(serialize_with = "float_or_inf")]
+    yield1_m: f64,
+    #[serde(serialize_with = "float_or_inf")]
+    yield2_m: f64,
+    #[serde(serialize_with = "float_or_inf")]
+    gap_m: f64,
+    damping: f64,
+    alpha: f64,
+    contact_omega_rad_s: f64,
+    restitution: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    hertz_beta_n_m1_5: Option<f64>,
+    ap_m_s2: f64,
+    ap_g: f64,
+    omega_p_rad_s: f64,
+}
+
+impl PhysicalSi {
+    fn of(p: &Physical) -> PhysicalSi {
+        PhysicalSi {
+            m1_kg: p.mass[0],
+            m2_kg: p.mass[1],
+            omega1_rad_s: p.omega[0],
+            omega2_rad_s: p.omega[1],
+            yield1_m: p.yield_displacement[0],
+            yield2_m: p.yield_displacement[1],
+            gap_m: p.gap,
+            damping: p.damping,
+            alpha: p.alpha,
+            contact_omega_rad_s: p.contact_omega,
+            restitution: p.restitution,
+            hertz_beta_n_m1_5: p.hertz_beta,
+            ap_m_s2: p.ap,
+            ap_g: p.ap / G,
+            omega_p_rad_s: p.omega_p,
+        }
+    }
+}
+
+/// One spectrum point of one level, in SI units beside its Π_ω1.
+#[derive(Debug, Serialize)]
+struct PointSi {
+    omega1: f64,
+    omega1_rad_s: f64,
+    period1_s: f64,
+    left: PeaksSi,
+    right: PeaksSi,
+    free_left: PeaksSi,
+    free_right: PeaksSi,
+    impacts: usize,
+    region: crate::analysis::spectrum::Region,
+    /// The gap that prevents pounding, d_min = Π_d,min l_e (exact method only).
+    min_gap_no_pounding_m: Option<f64>,
+}
+
+/// One excitation level: its scales, physical system, Π-groups and points.
+#[derive(Debug, Serialize)]
+struct LevelReport<'a> {
+    ap_m_s2: f64,
+    ap_g: f64,
+    length_scale_m: f64,
+    velocity_scale_m_s: f64,
+    physical: PhysicalSi,
+    params: &'a crate::model::Params,
+    points: Vec<PointSi>,
+    #[serde(skip)]
+    level: &'a Level,
+}
+
+impl<'a> LevelReport<'a> {
+    fn of(l: &'a Level) -> LevelReport<'a> {
+        let points = l
+            .curve
+            .points
+            .iter()
+            .map(|p| PointSi {
+                omega1: p.omega1,
+                omega1_rad_s: p.omega1 * l.physical.omega_p,
+                period1_s: 2.0 * std::f64::consts::PI / (p.omega1 * l.physical.omega_p),
+                left: PeaksSi::of(l, &p.left),
+                right: PeaksSi::of(l, &p.right),
+                free_left: PeaksSi::of(l, &p.free_left),
+                free_right: PeaksSi::of(l, &p.free_right),
+                impacts: p.impacts,
+                region: p.region,
+                min_gap_no_pounding_m: p.min_gap_no_pounding.map(|g| g * l.length_scale()),
+            })
+            .collect();
+        LevelReport {
+            ap_m_s2: l.physical.ap,
+            ap_g: l.physical.ap / G,
+            length_scale_m: l.length_scale(),
+            velocity_scale_m_s: l.velocity_scale(),
+            physical: PhysicalSi::of(&l.physical),
+            params: &l.params,
+            points,
+            level: l,
+        }
+    }
+}
+
+/// The similarity study in every format: physical runs in SI units, the
+/// master curve in Π-groups.
+#[derive(Debug, Serialize)]
+pub struct SimilarityReport<'a> {
+    version: &'static str,
+    preset: &'a str,
+    units: &'static str,
+    physical: PhysicalSi,
+    omega_p: f64,
+    mu: f64,
+    omega1_grid: String,
+    /// How yield displacements and gap follow a_p.
+    structure: &'static str,
+    method: Option<&'static str>,
+    levels: Vec<LevelReport<'a>>,
+    /// The dimensionless spectrum of the first level.
+    master: Option<&'a [crate::analysis::spectrum::SpectrumPoint]>,
+    master_curve_spread: f64,
+    elapsed_ms: f64,
+    #[serde(skip)]
+    source: &'a Physical,
+    #[serde(skip)]
+    fixed: bool,
+}
+
+impl<'a> SimilarityReport<'a> {
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        preset: &'a str,
+        physical: &'a Physical,
+        mu: f64,
+        grid: &str,
+        levels: &'a [Level],
+        spread: f64,
+        elapsed_ms: f64,
+        fixed: bool,
+    ) -> Self {
+        SimilarityReport {
+            version: env!("CARGO_PKG_VERSION"),
+            preset,
+            units: "SI (m, m/s, rad/s, s, kg, m/s²) for the physical runs; \
+                    omega1, params and master are dimensionless Π-groups (SPEC §1, §8)",
+            physical: PhysicalSi::of(physical),
+            omega_p: physical.omega_p,
+            mu,
+            omega1_grid: grid.to_string(),
+            structure: if fixed {
+                "yield displacements and gap fixed in metres"
+            } else {
+                "yield displacements and gap scale with a_p"
+            },
+            method: levels.first().map(|l| l.params.method.name()),
+            levels: levels.iter().map(LevelReport::of).collect(),
+            master: levels.first().map(|l| l.curve.points.as_slice()),
+            master_curve_spread: spread,
+            elapsed_ms,
+            source: physical,
+            fixed,
+        }
+    }
+}
+
+impl Report for SimilarityReport<'_> {
+    /// Every row is self-contained: the level (a_p, ω_p, scales, yield
+    /// displacements and gap in metres), the Π_ω1 grid, the point's whole
+    /// dimensionless parameter set (model and method among them), then its
+    /// peaks in SI units and as Π-groups.
+    fn csv_header(&self) -> Vec<&'static str> {
+        let mut h = vec![
+            "ap_m_s2",
+            "ap_g",
+            "omega_p_rad_s",
+            "length_scale_m",
+            "velocity_scale_m_s",
+            "m1_kg",
+            "m2_kg",
+            "yield1_m",
+            "yield2_m",
+            "gap_m",
+            "omega1_grid",
+        ];
+        h.extend(param_columns());
+        h.extend([
+            "omega1_rad_s",
+            "period1_s",
+            "left_peak_displacement_m",
+            "left_peak_velocity_m_s",
+            "right_peak_displacement_m",
+            "right_peak_velocity_m_s",
+            "free_left_peak_displacement_m",
+            "free_left_peak_velocity_m_s",
+            "free_right_peak_displacement_m",
+            "free_right_peak_velocity_m_s",
+            "left_pi_u",
+            "left_pi_v",
+            "right_pi_u",
+            "right_pi_v",
+            "free_left_pi_u",
+            "free_left_pi_v",
+            "free_right_pi_u",
+            "free_right_pi_v",
+            "impacts",
+            "region",
+            "min_gap_no_pounding_m",
+        ]);
+        h
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        let mut rows = Vec::new();
+        for lr in &self.levels {
+            let l = lr.level;
+            let ph = &l.physical;
+            let (lx, lv) = (l.length_scale(), l.velocity_scale());
+            for (p, si) in l.curve.points.iter().zip(&lr.points) {
+                let mut row: Vec<String> = [
+                    ph.ap,
+                    ph.ap / G,
+                    ph.omega_p,
+                    lx,
+                    lv,
+                    ph.mass[0],
+                    ph.mass[1],
+                    ph.yield_displacement[0],
+                    ph.yield_displacement[1],
+                    ph.gap,
+                ]
+                .map(num)
+                .to_vec();
+                row.push(self.omega1_grid.clone());
+                row.extend(param_cells(&at_omega(&l.params, p.omega1, self.mu)));
+                row.extend([si.omega1_rad_s, si.period1_s].map(num));
+                let pi = p.peaks();
+                row.extend(
+                    pi.iter()
+                        .enumerate()
+                        .map(|(i, v)| num(v * if i % 2 == 0 { lx } else { lv })),
+                );
+                row.extend(pi.map(num));
+                row.push(p.impacts.to_string());
+                row.push(p.region.name().to_string());
+                row.push(si.min_gap_no_pounding_m.map(num).unwrap_or_default());
+                rows.push(row);
+            }
+        }
+        rows
+    }
+
+    fn table(&self) -> String {
+        let levels: Vec<&Level> = self.levels.iter().map(|l| l.level).collect();
+        table(
+            self.preset,
+            self.source,
+            self.mu,
+            &levels,
+            self.master_curve_spread,
+            self.elapsed_ms,
+            self.fixed,
+        )
+    }
 }
 
 fn table(
     name: &str,
     physical: &Physical,
     mu: f64,
-    levels: &[Level],
+    levels: &[&Level],
     spread: f64,
     elapsed_ms: f64,
     fixed: bool,

@@ -9,17 +9,22 @@ use clap::Args;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
-use super::output::{Format, num, params_json, print};
+use super::map::{param_cells, param_columns};
+use super::output::{Format, num, print, render};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::baseline::BaselineCache;
 use crate::analysis::family::{Family, parse_mu};
 use crate::analysis::grid::Grid;
-use crate::analysis::spectrum::region_ranges;
+use crate::analysis::spectrum::{
+    REGION_THRESHOLD, RegionRange, SpectrumPoint, at_omega, region_ranges,
+};
 use crate::analysis::spectrum_spec::{SpectrumSpec, check_sweep};
 use crate::analysis::sweep::{Curve, CurveSpec, curve_specs, sweep};
 use crate::model::params::echo;
-use crate::model::{Params, Preset};
+use crate::model::{Method, Params, Preset};
+use crate::output::report::Report;
+use serde::Serialize;
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct SpectrumArgs {
@@ -173,140 +178,205 @@ pub fn execute(args: &SpectrumArgs) -> Result<(), CliError> {
     let work = plan.work()?;
     work.check("spectrum", args.allow_long, true)?;
     let (curves, cache, elapsed_ms) = plan.compute_with(&Progress::start(&work))?;
-    let text = match args.format {
-        Format::Json => json(&plan, &curves, &cache, elapsed_ms).to_string() + "\n",
-        Format::Csv => csv(&plan, &curves),
-        Format::Table => table(&plan, &curves, &cache, elapsed_ms),
-    };
-    print(&text)
+    let report = SpectrumReport::new(&plan, &curves, &cache, elapsed_ms);
+    print(&render(&report, args.format)?)
 }
 
-/// The spectrum as the JSON object of issue 3.
-pub fn json(
-    plan: &SpectrumPlan,
-    curves: &[Curve],
-    cache: &BaselineCache,
+/// The Π_ω1 grid as reported.
+#[derive(Debug, Serialize)]
+struct GridReport {
+    start: f64,
+    stop: f64,
+    step: f64,
+    points: usize,
+}
+
+/// One curve: its family member (`{}` without a family), μ, its points and
+/// the left structure's regions along it.
+#[derive(Debug, Serialize)]
+struct CurveReport<'a> {
+    family: serde_json::Map<String, serde_json::Value>,
+    mu: f64,
+    points: &'a [SpectrumPoint],
+    regions: Vec<RegionRange>,
+    #[serde(skip)]
+    curve: &'a Curve,
+}
+
+/// A spectrum in every format. All quantities are Π-groups (dimensionless).
+#[derive(Debug, Serialize)]
+pub struct SpectrumReport<'a> {
+    version: &'static str,
+    preset: &'a str,
+    units: &'static str,
+    /// The fixed parameters (Π_ω1, Π_ω2 and the family key are set per point).
+    params: &'a Params,
+    mu: f64,
+    model: &'static str,
+    excitation: &'static str,
+    excitation_note: Option<String>,
+    method: Method,
+    /// Relative change of Π_u1 beyond which a point is amplification or suppression.
+    region_threshold: f64,
+    omega1_grid: String,
+    grid: GridReport,
+    curves: Vec<CurveReport<'a>>,
+    baseline_runs: usize,
+    baselines_from_pounding_runs: usize,
     elapsed_ms: f64,
-) -> serde_json::Value {
-    let curves: Vec<serde_json::Value> = curves
-        .iter()
-        .map(|c| {
-            let mut family = serde_json::Map::new();
-            if let Some(m) = &c.spec.member {
-                family.insert(m.key.clone(), m.json_value());
-            }
-            serde_json::json!({
-                "family": family,
-                "mu": c.spec.mu,
-                "points": c.points,
-                "regions": region_ranges(&c.points),
-            })
-        })
-        .collect();
-    serde_json::json!({
-        "preset": plan.preset.name,
-        "params": params_json(&plan.params),
-        "mu": plan.mu,
-        "model": plan.params.model.name(),
-        "excitation": plan.params.excitation.name(),
-        "excitation_note": plan.params.ground().note(),
-        "method": plan.params.method.name(),
-        "omega1_grid": plan.grid.to_string(),
-        "curves": curves,
-        "baseline_runs": cache.runs,
-        "baselines_from_pounding_runs": cache.from_pounding,
-        "elapsed_ms": elapsed_ms,
-    })
 }
 
-/// One row per point, one column per value.
-pub fn csv(plan: &SpectrumPlan, curves: &[Curve]) -> String {
-    let family_column = plan.family.as_ref().map(|f| f.key.clone());
-    let mut s = String::new();
-    if let Some(k) = &family_column {
-        let _ = write!(s, "{k},");
-    }
-    s.push_str(
-        "mu,omega1,omega2,left_peak_displacement,left_peak_velocity,right_peak_displacement,right_peak_velocity,\
-         free_left_peak_displacement,free_left_peak_velocity,free_right_peak_displacement,free_right_peak_velocity,\
-         impacts,region,method\n",
-    );
-    for c in curves {
-        for p in &c.points {
-            if let Some(m) = &c.spec.member {
-                let _ = write!(s, "{},", m.text);
-            }
-            let peaks: Vec<String> = p.peaks().iter().map(|v| v.to_string()).collect();
-            let _ = writeln!(
-                s,
-                "{},{},{},{},{},{},{}",
-                c.spec.mu,
-                p.omega1,
-                p.omega2,
-                peaks.join(","),
-                p.impacts,
-                p.region.name(),
-                plan.params.method
-            );
+impl<'a> SpectrumReport<'a> {
+    pub fn new(
+        plan: &'a SpectrumPlan,
+        curves: &'a [Curve],
+        cache: &BaselineCache,
+        elapsed_ms: f64,
+    ) -> Self {
+        let p = &plan.params;
+        SpectrumReport {
+            version: env!("CARGO_PKG_VERSION"),
+            preset: &plan.preset.name,
+            units: "dimensionless (Π-groups of SPEC §1)",
+            params: p,
+            mu: plan.mu,
+            model: p.model.name(),
+            excitation: p.excitation.name(),
+            excitation_note: p.ground().note(),
+            method: p.method,
+            region_threshold: REGION_THRESHOLD,
+            omega1_grid: plan.grid.to_string(),
+            grid: GridReport {
+                start: plan.grid.start,
+                stop: plan.grid.stop,
+                step: plan.grid.step,
+                points: plan.grid.len(),
+            },
+            curves: curves
+                .iter()
+                .map(|c| {
+                    let mut family = serde_json::Map::new();
+                    if let Some(m) = &c.spec.member {
+                        family.insert(m.key.clone(), m.json_value());
+                    }
+                    CurveReport {
+                        family,
+                        mu: c.spec.mu,
+                        points: &c.points,
+                        regions: region_ranges(&c.points),
+                        curve: c,
+                    }
+                })
+                .collect(),
+            baseline_runs: cache.runs,
+            baselines_from_pounding_runs: cache.from_pounding,
+            elapsed_ms,
         }
     }
-    s
 }
 
-fn table(plan: &SpectrumPlan, curves: &[Curve], cache: &BaselineCache, elapsed_ms: f64) -> String {
-    let p = &plan.params;
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "{}: spectrum over Π_ω1 = {} ({} points), {} excitation, {} contact, {} method, Π_m = {}, Π_d = {}",
-        plan.preset.name,
-        plan.grid,
-        plan.grid.len(),
-        p.excitation.name(),
-        p.model,
-        p.method,
-        num(p.mass_ratio),
-        num(p.gap)
-    );
-    for c in curves {
-        let label = c
-            .spec
-            .member
-            .as_ref()
-            .map_or_else(String::new, |m| format!("{m}, "));
-        let _ = writeln!(s, "\n{label}μ = {}   (free = no pounding)", c.spec.mu);
+impl Report for SpectrumReport<'_> {
+    /// Every row is self-contained: the curve's family member (`key=value`,
+    /// empty without a family), the Π_ω1 grid, μ and the point's whole
+    /// parameter set (model, excitation and method among them), then its
+    /// dimensionless results.
+    fn csv_header(&self) -> Vec<&'static str> {
+        let mut h = vec!["family", "omega1_grid"];
+        h.extend(param_columns());
+        h.extend([
+            "left_peak_displacement",
+            "left_peak_velocity",
+            "right_peak_displacement",
+            "right_peak_velocity",
+            "free_left_peak_displacement",
+            "free_left_peak_velocity",
+            "free_right_peak_displacement",
+            "free_right_peak_velocity",
+            "impacts",
+            "region",
+            "min_gap_no_pounding",
+        ]);
+        h
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        let mut rows = Vec::new();
+        for c in &self.curves {
+            let spec = &c.curve.spec;
+            let family = spec
+                .member
+                .as_ref()
+                .map_or(String::new(), |m| format!("{}={}", m.key, m.text.trim()));
+            for pt in c.points {
+                let mut row = vec![family.clone(), self.omega1_grid.clone()];
+                row.extend(param_cells(&at_omega(&spec.params, pt.omega1, spec.mu)));
+                row.extend(pt.peaks().map(num));
+                row.push(pt.impacts.to_string());
+                row.push(pt.region.name().to_string());
+                row.push(pt.min_gap_no_pounding.map(num).unwrap_or_default());
+                rows.push(row);
+            }
+        }
+        rows
+    }
+
+    fn table(&self) -> String {
+        let p = self.params;
+        let mut s = String::new();
         let _ = writeln!(
             s,
-            "{:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7}  region",
-            "Π_ω1", "Π_u1", "free", "Π_v1", "free", "Π_u2", "free", "Π_v2", "free", "impacts"
+            "{}: spectrum over Π_ω1 = {} ({} points), {} excitation, {} contact, {} method, Π_m = {}, Π_d = {}",
+            self.preset,
+            self.omega1_grid,
+            self.grid.points,
+            p.excitation.name(),
+            p.model,
+            p.method,
+            num(p.mass_ratio),
+            num(p.gap)
         );
-        for pt in &c.points {
+        for c in &self.curves {
+            let label = c
+                .curve
+                .spec
+                .member
+                .as_ref()
+                .map_or_else(String::new, |m| format!("{m}, "));
+            let _ = writeln!(s, "\n{label}μ = {}   (free = no pounding)", c.mu);
             let _ = writeln!(
                 s,
-                "{:>7.3} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>7}  {}",
-                pt.omega1,
-                pt.left.peak_displacement,
-                pt.free_left.peak_displacement,
-                pt.left.peak_velocity,
-                pt.free_left.peak_velocity,
-                pt.right.peak_displacement,
-                pt.free_right.peak_displacement,
-                pt.right.peak_velocity,
-                pt.free_right.peak_velocity,
-                pt.impacts,
-                pt.region.name()
+                "{:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7}  region",
+                "Π_ω1", "Π_u1", "free", "Π_v1", "free", "Π_u2", "free", "Π_v2", "free", "impacts"
             );
+            for pt in c.points {
+                let _ = writeln!(
+                    s,
+                    "{:>7.3} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>7}  {}",
+                    pt.omega1,
+                    pt.left.peak_displacement,
+                    pt.free_left.peak_displacement,
+                    pt.left.peak_velocity,
+                    pt.free_left.peak_velocity,
+                    pt.right.peak_displacement,
+                    pt.free_right.peak_displacement,
+                    pt.right.peak_velocity,
+                    pt.free_right.peak_velocity,
+                    pt.impacts,
+                    pt.region.name()
+                );
+            }
+            let ranges: Vec<String> = c
+                .regions
+                .iter()
+                .map(|r| format!("{} {}–{}", r.region.name(), r.from, r.to))
+                .collect();
+            let _ = writeln!(s, "left-structure regions: {}", ranges.join(", "));
         }
-        let ranges: Vec<String> = region_ranges(&c.points)
-            .iter()
-            .map(|r| format!("{} {}–{}", r.region.name(), r.from, r.to))
-            .collect();
-        let _ = writeln!(s, "left-structure regions: {}", ranges.join(", "));
+        let _ = writeln!(
+            s,
+            "\n{} baseline runs ({} baselines taken from impact-free pounding runs), {:.0} ms",
+            self.baseline_runs, self.baselines_from_pounding_runs, self.elapsed_ms
+        );
+        s
     }
-    let _ = writeln!(
-        s,
-        "\n{} baseline runs ({} baselines taken from impact-free pounding runs), {elapsed_ms:.0} ms",
-        cache.runs, cache.from_pounding
-    );
-    s
 }

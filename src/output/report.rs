@@ -19,6 +19,17 @@ pub fn json(report: &impl Serialize) -> Result<String, serde_json::Error> {
     serde_json::to_string(report).map(|s| s + "\n")
 }
 
+/// Serializes a float that may be infinite (an elastic yield displacement,
+/// `gap = inf`) the way parameters are: JSON has no infinity, so it becomes
+/// the string `"inf"` (or `"-inf"`), as in CSV and tables; finite values stay numbers.
+pub fn float_or_inf<S: serde::Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+    if v.is_infinite() {
+        s.serialize_str(if *v > 0.0 { "inf" } else { "-inf" })
+    } else {
+        s.serialize_f64(*v)
+    }
+}
+
 /// A header line, then one line per row (RFC 4180 quoting where needed).
 pub fn csv(header: &[&str], rows: &[Vec<String>]) -> String {
     let mut out = String::new();
@@ -55,5 +66,23 @@ mod tests {
     fn csv_quotes_only_what_needs_it() {
         let rows = vec![vec!["1".to_string(), "a, \"b\"".to_string()]];
         assert_eq!(csv(&["x", "why"], &rows), "x,why\n1,\"a, \"\"b\"\"\"\n");
+    }
+
+    #[test]
+    fn infinity_is_inf_in_json_and_csv() {
+        #[derive(Serialize)]
+        struct Gaps {
+            #[serde(serialize_with = "float_or_inf")]
+            a: f64,
+            #[serde(serialize_with = "float_or_inf")]
+            b: f64,
+        }
+        let j = json(&Gaps {
+            a: f64::INFINITY,
+            b: 0.010000000000000002,
+        })
+        .unwrap();
+        assert_eq!(j, "{\"a\":\"inf\",\"b\":0.010000000000000002}\n");
+        assert_eq!(crate::output::Num(f64::INFINITY).to_string(), "inf");
     }
 }
