@@ -72,11 +72,16 @@ impl ParamArgs {
     /// The preset, with every override applied and validated. A `dt` too
     /// coarse for the contact is a warning on stderr, not an error.
     /// As [`ParamArgs::resolve`], for a command that runs many cases
-    /// (spectra, similarity): without `--method` they use the exact method,
-    /// whatever the preset names.
+    /// (spectra, similarity): unless `--method` or `--set method=` names
+    /// one, they use the exact method, whatever the preset names.
     pub fn resolve_for_many(&self) -> Result<(Preset, Params), CliError> {
         let (preset, mut p) = self.resolve()?;
-        if self.method.is_none() {
+        let named = self.method.is_some()
+            || self.overrides.iter().any(|kv| {
+                kv.split_once('=')
+                    .is_some_and(|(k, _)| k.trim() == "method")
+            });
+        if !named {
             p.method = crate::model::Method::Exact;
         }
         Ok((preset, p))
