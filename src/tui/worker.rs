@@ -12,6 +12,7 @@ use std::time::{Duration, Instant};
 use rayon::prelude::*;
 
 use super::trace::Trace;
+use crate::analysis::gap::{MinimumGap, free_params, minimum_gap};
 use crate::analysis::map::{MapCache, MapCell, MapPlan, compute_rows};
 use crate::analysis::spectrum::{SpectrumPoint, point};
 use crate::model::Method;
@@ -102,6 +103,10 @@ pub struct RunOutput {
     /// Newmark's largest relative peak error against the exact method on the
     /// same parameters (None for an exact run).
     pub error_vs_exact: Option<f64>,
+    /// The gap that prevents pounding for a parameter set's run (SPEC §11):
+    /// Π_d,min = max over τ of x1 − x2 of the no-pounding run, beside the
+    /// code rules. None for the other contact laws' runs.
+    pub min_gap: Option<MinimumGap>,
 }
 
 /// Spectrum points computed between two cancellation checks.
@@ -372,11 +377,44 @@ pub fn compute_run(spec: &RunSpec, current: &dyn Fn() -> bool) -> RunOutput {
     // A few per cent of a Newmark run: its actual error, shown beside it.
     let error_vs_exact = (spec.params.method == Method::Newmark && result.completed)
         .then(|| error_vs_exact(&spec.params, &result));
+    let min_gap = matches!(spec.slot, Slot::Set(_)).then(|| gap_of(&spec.params, &result));
     RunOutput {
         spec: *spec,
         result,
         history: observer.history,
         elapsed_ms,
         error_vs_exact,
+        min_gap,
     }
+}
+
+/// Parameter sets whose minimum gap is kept (both panes, and a few more).
+const GAP_CACHE: usize = 4;
+
+thread_local! {
+    /// Minimum gaps by parameter set, newest last: a zoom or a scene switch
+    /// re-runs the history but not the no-pounding run.
+    static GAPS: std::cell::RefCell<Vec<(Params, MinimumGap)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// The minimum gap of `p` (SPEC §11). An exact run without impacts is its
+/// own no-pounding twin (the contact never acted), and the solver reports
+/// its x1 − x2 peak, which is used as is; otherwise one extra exact run
+/// without contact, cached.
+pub fn gap_of(p: &Params, run: &RunResult) -> MinimumGap {
+    if let Some(g) = MinimumGap::from_free_run(&free_params(p), run) {
+        return g;
+    }
+    GAPS.with_borrow_mut(|cache| {
+        if let Some((_, g)) = cache.iter().find(|(q, _)| q == p) {
+            return *g;
+        }
+        let g = minimum_gap(p);
+        if cache.len() == GAP_CACHE {
+            cache.remove(0);
+        }
+        cache.push((*p, g));
+        g
+    })
 }
