@@ -16,6 +16,7 @@
 //! - [`event`]: terminal input, results and signals as one channel;
 //! - [`layout`], [`ui`], [`views`], [`look`]: drawing, a pure function of the state;
 //! - [`terminal`]: set-up and restore, synchronized frames;
+//! - [`gapfill`]: fewer bytes per frame (unchanged cells for cursor moves);
 //! - [`explorer`]: the main loop wiring them.
 
 pub mod app;
@@ -24,6 +25,7 @@ pub mod event;
 pub mod explorer;
 pub mod export;
 pub mod fields;
+pub mod gapfill;
 pub mod jobs;
 pub mod layout;
 pub mod look;
