@@ -418,3 +418,44 @@ pub fn gap_of(p: &Params, run: &RunResult) -> MinimumGap {
         g
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::preset::builtin;
+
+    fn run_of(params: Params) -> RunOutput {
+        let spec = RunSpec {
+            slot: Slot::Set(0),
+            params,
+            buckets: 100,
+            window: [0.0, params.tau_end()],
+        };
+        compute_run(&spec, &|| true)
+    }
+
+    #[test]
+    fn the_minimum_gap_is_the_librarys_whether_the_set_pounds_or_not() {
+        let set1 = builtin("set1").unwrap().params;
+        let exact = minimum_gap(&set1).exact;
+        // Set 1 pounds (its Π_d is below Π_d,min): one extra run.
+        let pounding = run_of(set1);
+        assert!(!pounding.result.impacts.is_empty());
+        assert!(set1.gap < exact);
+        assert_eq!(pounding.min_gap.unwrap().exact, exact);
+        // A gap a little above Π_d,min, exact method: no impact, and the
+        // run is its own no-pounding twin.
+        let clear = run_of(Params {
+            gap: exact + 1e-6,
+            method: Method::Exact,
+            ..set1
+        });
+        assert!(clear.result.max_relative_displacement.is_some());
+        assert!(clear.result.impacts.is_empty());
+        let own = clear.min_gap.unwrap().exact;
+        assert!(
+            (own - exact).abs() <= 1e-9 * exact.max(1.0),
+            "{own} {exact}"
+        );
+    }
+}
