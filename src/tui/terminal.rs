@@ -3,7 +3,7 @@
 //! captures mouse buttons only (no motion reports, so moving the mouse costs
 //! nothing), and restores it all on the way out. Every frame is wrapped in a
 //! synchronized update so a slow link never shows a half-drawn screen, and
-//! drawn through [`GapFill`] so that it costs fewer bytes.
+//! drawn through [`GapFill`] and [`ShortSgr`] so that it costs fewer bytes.
 
 use std::io::{self, IsTerminal, Write};
 
@@ -13,8 +13,9 @@ use ratatui::backend::CrosstermBackend;
 use ratatui::{Frame, Terminal};
 
 use super::gapfill::GapFill;
+use super::sgr::ShortSgr;
 
-pub type Tty = Terminal<GapFill<CrosstermBackend<io::Stdout>>>;
+pub type Tty = Terminal<GapFill<CrosstermBackend<ShortSgr<io::Stdout>>>>;
 
 /// Why the explorer cannot start here, if it cannot.
 pub fn unusable() -> Option<String> {
@@ -51,7 +52,9 @@ pub fn setup() -> io::Result<Tty> {
     // ratatui's set-up (raw mode, alternate screen, panic hook); its own
     // terminal is replaced by one drawing through the gap filler.
     drop(ratatui::try_init()?);
-    let tty = Terminal::new(GapFill::new(CrosstermBackend::new(io::stdout())))?;
+    let tty = Terminal::new(GapFill::new(CrosstermBackend::new(ShortSgr::new(
+        io::stdout(),
+    ))))?;
     set_mouse(true)?;
     Ok(tty)
 }
