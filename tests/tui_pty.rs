@@ -364,7 +364,7 @@ fn bytes_per_nudge_and_per_scene_switch_at_80x24() {
     eprintln!("bytes per nudge: {nudges:?}");
     eprintln!("bytes per scene switch (f v c w i a t): {switches:?}");
     let mean = |v: &[usize]| v.iter().sum::<usize>() / v.len();
-    assert!(mean(&nudges) < 2700, "{nudges:?}");
+    assert!(mean(&nudges) < 1700, "{nudges:?}");
     // The laws scene draws three charts and the map a full block of cells.
     assert!(switches.iter().all(|&b| b < 7500), "{switches:?}");
     s.send(b"\x03");

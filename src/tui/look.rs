@@ -32,8 +32,10 @@ pub mod palette {
     pub const LEFT: Color = Color::Cyan;
     /// The right structure: x2, ẋ2, f_s2.
     pub const RIGHT: Color = Color::Yellow;
-    /// The contact line x2 + Π_d.
+    /// The contact line: the gap Π_d under x1 − x2.
     pub const CONTACT_LINE: Color = Color::Gray;
+    /// The relative displacement x1 − x2.
+    pub const RELATIVE: Color = Color::LightGreen;
     /// The pounding force f_p.
     pub const FORCE: Color = Color::Magenta;
     /// The improved Kelvin element.

@@ -16,6 +16,8 @@
 //! - [`event`]: terminal input, results and signals as one channel;
 //! - [`layout`], [`ui`], [`views`], [`look`]: drawing, a pure function of the state;
 //! - [`terminal`]: set-up and restore, synchronized frames;
+//! - [`gapfill`], [`sgr`]: fewer bytes per frame (unchanged cells for cursor
+//!   moves, short colour codes);
 //! - [`explorer`]: the main loop wiring them.
 
 pub mod app;
@@ -24,12 +26,14 @@ pub mod event;
 pub mod explorer;
 pub mod export;
 pub mod fields;
+pub mod gapfill;
 pub mod jobs;
 pub mod layout;
 pub mod look;
 pub mod physical;
 pub mod presets;
 pub mod scene;
+pub mod sgr;
 pub mod terminal;
 pub mod text_field;
 pub mod trace;

@@ -2,15 +2,20 @@
 //! `init` (raw mode, alternate screen, a panic hook that restores first),
 //! captures mouse buttons only (no motion reports, so moving the mouse costs
 //! nothing), and restores it all on the way out. Every frame is wrapped in a
-//! synchronized update so a slow link never shows a half-drawn screen.
+//! synchronized update so a slow link never shows a half-drawn screen, and
+//! drawn through [`GapFill`] and [`ShortSgr`] so that it costs fewer bytes.
 
 use std::io::{self, IsTerminal, Write};
 
 use crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
 use crossterm::{execute, queue};
-use ratatui::{DefaultTerminal, Frame};
+use ratatui::backend::CrosstermBackend;
+use ratatui::{Frame, Terminal};
 
-pub type Tty = DefaultTerminal;
+use super::gapfill::GapFill;
+use super::sgr::ShortSgr;
+
+pub type Tty = Terminal<GapFill<CrosstermBackend<ShortSgr<io::Stdout>>>>;
 
 /// Why the explorer cannot start here, if it cannot.
 pub fn unusable() -> Option<String> {
@@ -44,7 +49,12 @@ pub fn color_allowed() -> bool {
 
 /// Raw mode and the alternate screen (ratatui's `init`), mouse buttons on.
 pub fn setup() -> io::Result<Tty> {
-    let tty = ratatui::try_init()?;
+    // ratatui's set-up (raw mode, alternate screen, panic hook); its own
+    // terminal is replaced by one drawing through the gap filler.
+    drop(ratatui::try_init()?);
+    let tty = Terminal::new(GapFill::new(CrosstermBackend::new(ShortSgr::new(
+        io::stdout(),
+    ))))?;
     set_mouse(true)?;
     Ok(tty)
 }
@@ -72,8 +82,8 @@ pub fn restore() -> io::Result<()> {
 
 /// Draws one frame inside a synchronized update.
 pub fn draw(tty: &mut Tty, render: impl FnOnce(&mut Frame)) -> io::Result<()> {
-    queue!(tty.backend_mut(), BeginSynchronizedUpdate)?;
+    queue!(tty.backend_mut().inner_mut(), BeginSynchronizedUpdate)?;
     tty.draw(render)?;
-    execute!(tty.backend_mut(), EndSynchronizedUpdate)?;
-    tty.backend_mut().flush()
+    execute!(tty.backend_mut().inner_mut(), EndSynchronizedUpdate)?;
+    Write::flush(tty.backend_mut().inner_mut())
 }

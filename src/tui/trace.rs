@@ -18,6 +18,9 @@ pub struct Slice {
     /// The last sample that fell in the bucket, and its τ.
     pub last: [f64; CHANNELS],
     pub last_tau: f64,
+    /// Least and greatest x1 − x2 in the bucket (contact while it exceeds
+    /// Π_d, SPEC §4).
+    pub relative: [f64; 2],
     pub filled: bool,
 }
 
@@ -48,6 +51,7 @@ impl Trace {
                     max: [f64::NEG_INFINITY; CHANNELS],
                     last: [f64::NAN; CHANNELS],
                     last_tau: f64::NAN,
+                    relative: [f64::INFINITY, f64::NEG_INFINITY],
                     filled: false,
                 })
                 .collect(),
@@ -70,6 +74,14 @@ impl Trace {
     pub fn spans(&self, channel: usize, offset: f64) -> Vec<(f64, f64, f64)> {
         self.filled()
             .map(|s| (s.tau, s.min[channel] + offset, s.max[channel] + offset))
+            .filter(|(_, a, b)| a.is_finite() && b.is_finite())
+            .collect()
+    }
+
+    /// x1 − x2 as (τ, min, max) spans.
+    pub fn relative_spans(&self) -> Vec<(f64, f64, f64)> {
+        self.filled()
+            .map(|s| (s.tau, s.relative[0], s.relative[1]))
             .filter(|(_, a, b)| a.is_finite() && b.is_finite())
             .collect()
     }
@@ -121,6 +133,8 @@ impl Observer for Trace {
             b.min[k] = b.min[k].min(v);
             b.max[k] = b.max[k].max(v);
         }
+        let relative = s.x[0] - s.x[1];
+        b.relative = [b.relative[0].min(relative), b.relative[1].max(relative)];
         b.last = values;
         b.last_tau = s.tau;
         if let Some(gap) = self.gap {
@@ -186,5 +200,10 @@ mod tests {
         sine(&mut t);
         let max = t.spans(0, 0.0).iter().fold(f64::MIN, |m, s| m.max(s.2));
         assert!(max > 0.99999, "{max}");
+        // x2 = 0 here, so x1 − x2 keeps the same peaks as x1.
+        let rel = t.relative_spans();
+        let top = rel.iter().fold(f64::MIN, |m, s| m.max(s.2));
+        let bottom = rel.iter().fold(f64::MAX, |m, s| m.min(s.1));
+        assert!(top > 0.99999 && bottom < -0.99999, "{top} {bottom}");
     }
 }

@@ -12,6 +12,7 @@ use std::time::{Duration, Instant};
 use rayon::prelude::*;
 
 use super::trace::Trace;
+use crate::analysis::gap::{MinimumGap, free_params, minimum_gap};
 use crate::analysis::map::{MapCache, MapCell, MapPlan, compute_rows};
 use crate::analysis::spectrum::{SpectrumPoint, point};
 use crate::model::Method;
@@ -102,6 +103,10 @@ pub struct RunOutput {
     /// Newmark's largest relative peak error against the exact method on the
     /// same parameters (None for an exact run).
     pub error_vs_exact: Option<f64>,
+    /// The gap that prevents pounding for a parameter set's run (SPEC §11):
+    /// Π_d,min = max over τ of x1 − x2 of the no-pounding run, beside the
+    /// code rules. None for the other contact laws' runs.
+    pub min_gap: Option<MinimumGap>,
 }
 
 /// Spectrum points computed between two cancellation checks.
@@ -372,11 +377,85 @@ pub fn compute_run(spec: &RunSpec, current: &dyn Fn() -> bool) -> RunOutput {
     // A few per cent of a Newmark run: its actual error, shown beside it.
     let error_vs_exact = (spec.params.method == Method::Newmark && result.completed)
         .then(|| error_vs_exact(&spec.params, &result));
+    let min_gap = matches!(spec.slot, Slot::Set(_)).then(|| gap_of(&spec.params, &result));
     RunOutput {
         spec: *spec,
         result,
         history: observer.history,
         elapsed_ms,
         error_vs_exact,
+        min_gap,
+    }
+}
+
+/// Parameter sets whose minimum gap is kept (both panes, and a few more).
+const GAP_CACHE: usize = 4;
+
+thread_local! {
+    /// Minimum gaps by parameter set, newest last: a zoom or a scene switch
+    /// re-runs the history but not the no-pounding run.
+    static GAPS: std::cell::RefCell<Vec<(Params, MinimumGap)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// The minimum gap of `p` (SPEC §11). An exact run without impacts is its
+/// own no-pounding twin (the contact never acted), and the solver reports
+/// its x1 − x2 peak, which is used as is; otherwise one extra exact run
+/// without contact, cached.
+pub fn gap_of(p: &Params, run: &RunResult) -> MinimumGap {
+    if let Some(g) = MinimumGap::from_free_run(&free_params(p), run) {
+        return g;
+    }
+    GAPS.with_borrow_mut(|cache| {
+        if let Some((_, g)) = cache.iter().find(|(q, _)| q == p) {
+            return *g;
+        }
+        let g = minimum_gap(p);
+        if cache.len() == GAP_CACHE {
+            cache.remove(0);
+        }
+        cache.push((*p, g));
+        g
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::preset::builtin;
+
+    fn run_of(params: Params) -> RunOutput {
+        let spec = RunSpec {
+            slot: Slot::Set(0),
+            params,
+            buckets: 100,
+            window: [0.0, params.tau_end()],
+        };
+        compute_run(&spec, &|| true)
+    }
+
+    #[test]
+    fn the_minimum_gap_is_the_librarys_whether_the_set_pounds_or_not() {
+        let set1 = builtin("set1").unwrap().params;
+        let exact = minimum_gap(&set1).exact;
+        // Set 1 pounds (its Π_d is below Π_d,min): one extra run.
+        let pounding = run_of(set1);
+        assert!(!pounding.result.impacts.is_empty());
+        assert!(set1.gap < exact);
+        assert_eq!(pounding.min_gap.unwrap().exact, exact);
+        // A gap a little above Π_d,min, exact method: no impact, and the
+        // run is its own no-pounding twin.
+        let clear = run_of(Params {
+            gap: exact + 1e-6,
+            method: Method::Exact,
+            ..set1
+        });
+        assert!(clear.result.max_relative_displacement.is_some());
+        assert!(clear.result.impacts.is_empty());
+        let own = clear.min_gap.unwrap().exact;
+        assert!(
+            (own - exact).abs() <= 1e-9 * exact.max(1.0),
+            "{own} {exact}"
+        );
     }
 }

@@ -1,5 +1,6 @@
-//! Scene (t): time histories of the active set — displacements x1, x2 and
-//! the contact line x2 + Π_d (contact while x1 is above it, SPEC §4),
+//! Scene (t): time histories of the active set — displacements x1, x2,
+//! their difference x1 − x2 against the gap Π_d (contact while it is
+//! above, SPEC §4; its peak in a run without contact is Π_d,min, SPEC §11),
 //! velocities, the pounding force f_p, and the ground acceleration g(τ)
 //! that drives them (SPEC §9: sin τ for the sine, the pulse or the record)
 //! — over the visible window, with the cursor.
@@ -82,11 +83,18 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         Series::spans("x1", palette::LEFT, spans(h, X1, 0.0, &u, u.length)),
         Series::spans("x2", palette::RIGHT, spans(h, X2, 0.0, &u, u.length)),
     ];
+    displacement.push(Series::spans(
+        "x1−x2",
+        palette::RELATIVE,
+        Units::scale_spans(h.relative_spans(), u.time, u.length),
+    ));
     if gap.is_finite() {
-        displacement.push(Series::spans(
-            "x2+Π_d",
+        let [a, b] = h.window;
+        let level = gap * u.length;
+        displacement.push(Series::line(
+            "Π_d",
             palette::CONTACT_LINE,
-            spans(h, X2, gap, &u, u.length),
+            vec![(a * u.time, level), (b * u.time, level)],
         ));
     }
     let velocity = [

@@ -75,6 +75,42 @@ pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize
     fit(&parts, width)
 }
 
+/// The gap that prevents pounding (SPEC §11) of one set's run: the exact
+/// Π_d,min beside the set's own Π_d (pounds or clear), then the code rules
+/// (absolute sum, SRSS, double difference with its ρ) as room allows.
+pub fn gap_line(label: &str, run: &RunOutput, u: &Units, width: usize) -> Option<String> {
+    let g = run.min_gap.as_ref()?;
+    let gap = run.spec.params.gap;
+    let (min, set) = if u.physical {
+        ("d_min", "d")
+    } else {
+        ("Π_d,min", "Π_d")
+    };
+    let verdict = if run.result.impacts.is_empty() {
+        "clear"
+    } else {
+        "pounds"
+    };
+    let set_gap = if gap.is_finite() {
+        format!("{set} {} {verdict}", num(gap * u.length))
+    } else {
+        format!("{set} inf")
+    };
+    let r = &g.rules;
+    let parts = [
+        format!("{label} {min} {}", num(g.exact * u.length)),
+        set_gap,
+        format!("ABS {}", num(r.absolute_sum * u.length)),
+        format!("SRSS {}", num(r.srss * u.length)),
+        format!(
+            "DDC {} (ρ {})",
+            num(r.double_difference * u.length),
+            num(r.correlation)
+        ),
+    ];
+    Some(fit(&parts, width))
+}
+
 fn slots(app: &App) -> Vec<(String, Slot)> {
     let set = |i: usize| (format!("set {}", i + 1), Slot::Set(i));
     match app.view.scene {
@@ -127,7 +163,9 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         frame.render_widget(Paragraph::new(lines), area);
         return;
     }
-    let lines: Vec<Line> = slots(app)
+    let slots = slots(app);
+    let single = slots.len() == 1;
+    let mut lines: Vec<Line> = slots
         .into_iter()
         .map(|(label, slot)| {
             let u = match slot {
@@ -141,5 +179,12 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
             Line::from(app.look.text(&text))
         })
         .collect();
+    // One run shown: the second line tells the gap that prevents pounding.
+    if single
+        && let Some(run) = active
+        && let Some(text) = gap_line("gap:", run, &Units::active(app), width)
+    {
+        lines.push(Line::from(app.look.text(&text)));
+    }
     frame.render_widget(Paragraph::new(lines), area);
 }
