@@ -1,4 +1,4 @@
-//! Convergence order with pounding (issue 2): for set 1 and set 2 and both
+//! Convergence order with pounding: for set 1 and set 2 and both
 //! contact models, the error of the four peaks (Π_u1, Π_v1, Π_u2, Π_v2)
 //! against the same solver at Δτ/64 falls by 3–5× per halving of Δτ between
 //! Δτ = 0.004 and 0.001: Newmark's second order survives contact, because the

@@ -1,4 +1,4 @@
-//! Accuracy and speed, measured (issue 5).
+//! Accuracy and speed, measured against the independent reference.
 //!
 //! - [`method`]: the schemes compared (Newmark plain, located, sub-stepped in
 //!   contact; the reference at a given tolerance);

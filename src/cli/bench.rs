@@ -1,4 +1,4 @@
-//! `pounding bench`: the work-precision table of issue 5 (run time against
+//! `pounding bench`: the work-precision table (run time against
 //! error for each method, see [`crate::accuracy::work_precision`]).
 
 use std::fmt::Write as _;

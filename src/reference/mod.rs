@@ -1,4 +1,4 @@
-//! An independent reference solution (issue 5), the error axis of the
+//! An independent reference solution, the error axis of the
 //! work-precision table. It shares no code path with [`crate::solver`]: the
 //! equations of SPEC §2–4 are written again as a first-order system
 //! ([`system`]), integrated by an adaptive Dormand–Prince 5(4) pair with

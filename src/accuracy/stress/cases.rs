@@ -1,4 +1,6 @@
-//! The cases: every corner issue 5 names, then seeded random valid parameter sets.
+//! The cases: the corners of the parameter space (stiff and soft contact,
+//! extreme restitution and mass ratio, grazing, long runs, every range
+//! limit), then seeded random valid parameter sets.
 
 use crate::model::{ContactModel, Excitation, Params, SET1};
 use crate::solver::{FullHistory, SolverOptions, simulate};
@@ -56,7 +58,7 @@ fn with(key: &str, value: f64) -> Params {
 
 const MODELS: [ContactModel; 2] = ContactModel::PAPER;
 
-/// The corners of issue 5, around set 1.
+/// The corners, each a departure from set 1.
 pub fn corner_cases() -> Vec<Case> {
     let mut out = Vec::new();
     for w in [1.0, 10.0, 100.0, 1e3, 1e4] {

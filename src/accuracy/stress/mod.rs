@@ -1,4 +1,4 @@
-//! The numerical stress test of `pounding stress` (issue 5): corner and random
+//! The numerical stress test of `pounding stress`: corner and random
 //! parameter sets ([`cases`]), each run once with the project's default solver
 //! options unless the case says otherwise, and checked ([`checks`]) for:
 //! finite outputs, a closed energy balance, Newton convergence at every step
