@@ -158,6 +158,20 @@ impl std::fmt::Display for Stop {
 pub const ENERGY_TOLERANCE: f64 = 1e-4;
 
 impl RunResult {
+    /// The peaks of structure `i` (0 left, 1 right).
+    pub fn structure(&self, i: usize) -> &StructurePeaks {
+        if i == 0 { &self.left } else { &self.right }
+    }
+
+    /// The peaks of structure `i` (0 left, 1 right), to update.
+    pub fn structure_mut(&mut self, i: usize) -> &mut StructurePeaks {
+        if i == 0 {
+            &mut self.left
+        } else {
+            &mut self.right
+        }
+    }
+
     /// Peaks of the four headline numbers [Π_u1, Π_v1, Π_u2, Π_v2].
     pub fn peaks(&self) -> [f64; 4] {
         [

@@ -97,9 +97,7 @@ impl From<&SolverOptions> for ExactOptions {
             excitation: o.excitation,
             initial_displacement: o.initial_displacement,
             initial_velocity: o.initial_velocity,
-            energy: true,
-            max_events: None,
-            contact_tolerance: CONTACT_TOLERANCE,
+            ..ExactOptions::default()
         }
     }
 }
@@ -207,34 +205,16 @@ impl<'a> Run<'a> {
         };
         run.result.impacts.reserve(32);
         for i in 0..2 {
-            run.result_peaks(i, run.x[i].abs(), run.v[i].abs());
-            if matches!(run.branch[i], Branch::Yielded { .. }) {
-                run.mark_yielded(i);
-            }
+            let peaks = run.result.structure_mut(i);
+            peaks.peak_displacement = run.x[i].abs();
+            peaks.peak_velocity = run.v[i].abs();
+            peaks.yielded = matches!(run.branch[i], Branch::Yielded { .. });
         }
         let delta = x1 - x2 - p.gap;
         if delta > 0.0 || (delta == 0.0 && v1 > v2) {
             run.begin_contact();
         }
         run
-    }
-
-    fn result_peaks(&mut self, i: usize, u: f64, v: f64) {
-        let peaks = if i == 0 {
-            &mut self.result.left
-        } else {
-            &mut self.result.right
-        };
-        peaks.peak_displacement = peaks.peak_displacement.max(u);
-        peaks.peak_velocity = peaks.peak_velocity.max(v);
-    }
-
-    fn mark_yielded(&mut self, i: usize) {
-        if i == 0 {
-            self.result.left.yielded = true;
-        } else {
-            self.result.right.yielded = true;
-        }
     }
 
     fn stop(&mut self, reason: StopReason) {
@@ -328,11 +308,7 @@ impl<'a> Run<'a> {
             let (inputs, equilibrium) =
                 Transition::inputs(self.x[i], self.v[i], phasor, q / s.mass, k / s.mass);
             let [sx, sv] = t.swing(&inputs);
-            let peaks = if i == 0 {
-                &self.result.left
-            } else {
-                &self.result.right
-            };
+            let peaks = self.result.structure(i);
             if !(self.x[i].abs() + sx < peaks.peak_displacement
                 && self.v[i].abs() + sv < peaks.peak_velocity)
             {
@@ -382,7 +358,7 @@ impl<'a> Run<'a> {
         if self.p.gap.is_finite() {
             let delta0 = self.x[0] - self.x[1] - self.p.gap;
             if delta0 + segment.swing[0] + segment.swing[1] >= 0.0 {
-                let delta = segment.x[0].minus(&segment.x[1]).shifted(self.p.gap);
+                let delta = segment.penetration(self.p.gap);
                 segment.consider(&delta, Event::Onset);
             }
         }
@@ -414,11 +390,7 @@ impl<'a> Run<'a> {
         let h = step_for(&[&s.x[0], &s.x[1]], self.options.contact_tolerance * scale)
             .min(self.free_step)
             .min(reach);
-        let mut segment = Segment::new(s.x, Some(s.force), h);
-        let separation = segment.x[1].minus(&segment.x[0]).shifted(-self.p.gap);
-        segment.consider(&separation, Event::Separation);
-        self.spring_events(&mut segment);
-        segment
+        self.contact_events(Segment::new(s.x, Some(s.force), h))
     }
 
     /// A Hertz-type contact: one Runge–Kutta step ([`super::contact_rk`]).
@@ -449,8 +421,12 @@ impl<'a> Run<'a> {
             v0,
         );
         self.rk_step.set(piece.next);
-        let mut segment = Segment::new(piece.x, Some(piece.force), piece.h);
-        let separation = segment.x[1].minus(&segment.x[0]).shifted(-self.p.gap);
+        self.contact_events(Segment::new(piece.x, Some(piece.force), piece.h))
+    }
+
+    /// The events of a contact segment: separation (δ falls to 0) and the springs'.
+    fn contact_events(&self, mut segment: Segment) -> Segment {
+        let separation = segment.penetration(self.p.gap).scaled(-1.0);
         segment.consider(&separation, Event::Separation);
         self.spring_events(&mut segment);
         segment
@@ -481,22 +457,24 @@ impl<'a> Run<'a> {
     /// Peaks, impact extremes, work and samples over [0, length] of the segment.
     fn account<O: Observer>(&mut self, segment: &Segment, length: f64, observer: &mut O) {
         for i in 0..2 {
-            let peaks = if i == 0 {
-                &mut self.result.left
-            } else {
-                &mut self.result.right
-            };
-            if self.x[i].abs() + segment.swing[i] > peaks.peak_displacement {
-                raise_abs_max(
-                    &segment.x[i],
-                    &segment.v[i],
-                    length,
-                    &mut peaks.peak_displacement,
-                );
-            }
+            let peaks = self.result.structure_mut(i);
+            raise_abs_max(
+                &segment.x[i],
+                &segment.v[i],
+                length,
+                segment.swing[i],
+                &mut peaks.peak_displacement,
+            );
+            // ẍ's series only where ẋ can reach its peak.
             if self.v[i].abs() + segment.swing[2 + i] > peaks.peak_velocity {
                 let a = segment.v[i].derivative();
-                raise_abs_max(&segment.v[i], &a, length, &mut peaks.peak_velocity);
+                raise_abs_max(
+                    &segment.v[i],
+                    &a,
+                    length,
+                    segment.swing[2 + i],
+                    &mut peaks.peak_velocity,
+                );
             }
         }
         // Until a first impact the run is the no-pounding run, and the maximum
@@ -516,7 +494,7 @@ impl<'a> Run<'a> {
             );
         }
         if let (Some(force), Some(k)) = (&segment.force, self.open_impact) {
-            let delta = segment.x[0].minus(&segment.x[1]).shifted(self.p.gap);
+            let delta = segment.penetration(self.p.gap);
             let rate = delta.derivative();
             let df = force.derivative();
             let r = &mut self.result;
@@ -536,7 +514,6 @@ impl<'a> Run<'a> {
                 &self.structures,
                 self.branch,
                 segment,
-                self.p.gap,
                 self.tau,
                 length,
                 self.options.excitation,
@@ -575,7 +552,7 @@ impl<'a> Run<'a> {
             }
             Event::Yield(i, sign) => {
                 self.branch[i] = Branch::Yielded { sign };
-                self.mark_yielded(i);
+                self.result.structure_mut(i).yielded = true;
             }
             Event::Unload(i) => {
                 if let Branch::Yielded { sign } = self.branch[i] {
@@ -683,27 +660,18 @@ pub struct Segment {
 impl Segment {
     fn new(x: [Series; 2], force: Option<Series>, h: f64) -> Self {
         let v = [x[0].derivative(), x[1].derivative()];
-        let n = x[0].degree.max(x[1].degree);
-        let mut powers = [0.0; MAX_DEGREE + 1];
-        let mut hk = 1.0;
-        for p in powers[1..=n].iter_mut() {
-            hk *= h;
-            *p = hk;
-        }
-        let swing = |q: &Series| -> f64 {
-            q.c[1..=q.degree]
-                .iter()
-                .zip(&powers[1..=q.degree])
-                .map(|(c, p)| c.abs() * p)
-                .sum()
-        };
         Segment {
-            swing: [swing(&x[0]), swing(&x[1]), swing(&v[0]), swing(&v[1])],
+            swing: [x[0].swing(h), x[1].swing(h), v[0].swing(h), v[1].swing(h)],
             v,
             x,
             force,
             end: (h, None),
         }
+    }
+
+    /// δ = x1 − x2 − Π_d on the segment (SPEC §4).
+    fn penetration(&self, gap: f64) -> Series {
+        self.x[0].minus(&self.x[1]).shifted(gap)
     }
 
     /// Cuts the segment at `event` if `e` turns positive before its current end.
@@ -745,7 +713,14 @@ impl Segment {
 /// while the zeros of q' stay simple.
 fn raise_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
     *peak = peak.max(q.c[0]);
-    if bound_on(q, t1) <= *peak || cleared_from_start(&q.shifted(*peak), t1) {
+    if q.c[0] + q.swing(t1) > *peak {
+        walk_maxima(q, dq, t1, peak);
+    }
+}
+
+/// The walk of [`raise_max`], for a q whose bound does not clear the peak.
+fn walk_maxima(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
+    if cleared_from_start(&q.shifted(*peak), t1) {
         return;
     }
     let falling = dq.scaled(-1.0);
@@ -766,28 +741,16 @@ fn raise_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
     }
 }
 
-/// Σ |c_k| t1^k: a bound of q on [0, t1].
-#[inline]
-fn bound_on(q: &Series, t1: f64) -> f64 {
-    let mut bound = q.c[0];
-    let mut tk = 1.0;
-    for k in 1..=q.degree {
-        tk *= t1;
-        bound += q.c[k].abs() * tk;
-    }
-    bound
-}
-
-/// Raises `peak` to the maximum of |q| on (0, t1].
-fn raise_abs_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
+/// Raises `peak` to the maximum of |q| on (0, t1], given `swing` ≥
+/// [`Series::swing`] of q over [0, t1] (the segment's own): each sign is
+/// searched only where it can reach the peak.
+fn raise_abs_max(q: &Series, dq: &Series, t1: f64, swing: f64, peak: &mut f64) {
     *peak = peak.max(q.c[0].abs());
-    // How far q can move on the segment; each sign is searched only if it can reach the peak.
-    let swing = bound_on(q, t1) - q.c[0];
     if q.c[0] + swing > *peak {
-        raise_max(q, dq, t1, peak);
+        walk_maxima(q, dq, t1, peak);
     }
     if -q.c[0] + swing > *peak {
-        raise_max(&q.scaled(-1.0), &dq.scaled(-1.0), t1, peak);
+        walk_maxima(&q.scaled(-1.0), &dq.scaled(-1.0), t1, peak);
     }
 }
 

@@ -57,7 +57,6 @@ impl Work {
         structures: &[Structure; 2],
         branch: [Branch; 2],
         segment: &Segment,
-        _gap: f64,
         tau: f64,
         length: f64,
         excitation: Excitation,

@@ -60,7 +60,7 @@ impl Transition {
         for (j, u) in units.iter().enumerate() {
             let du = u.derivative();
             end[j] = [u.value(h), du.value(h)];
-            swing[j] = [reach(u, h), reach(&du, h)];
+            swing[j] = [u.swing(h), du.swing(h)];
         }
         Transition { end, swing }
     }
@@ -111,17 +111,6 @@ impl Transition {
         // The bounds are sums of products: allow for their own round-off.
         s.map(|v| v * (1.0 + 1e-12))
     }
-}
-
-/// Σ_{k≥1} |c_k| h^k.
-fn reach(q: &Series, h: f64) -> f64 {
-    let mut sum = 0.0;
-    let mut hk = 1.0;
-    for k in 1..=q.degree {
-        hk *= h;
-        sum += q.c[k].abs() * hk;
-    }
-    sum
 }
 
 /// Series of ẍ + c ẋ + k x = load − g from (x₀, ẋ₀), to degree n.

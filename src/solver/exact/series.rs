@@ -92,6 +92,19 @@ impl Series {
         [d0, d1, d2, m]
     }
 
+    /// Σ_{k≥1} |c_k| h^k: how far q can move from q(0) on [0, h], so that
+    /// |q(t) − c₀| ≤ this for every t ∈ [0, h].
+    #[inline]
+    pub fn swing(&self, h: f64) -> f64 {
+        let mut sum = 0.0;
+        let mut hk = 1.0;
+        for c in &self.c[1..=self.degree] {
+            hk *= h;
+            sum += c.abs() * hk;
+        }
+        sum
+    }
+
     /// The series of q' (degree n − 1).
     pub fn derivative(&self) -> Series {
         let mut d = Series::default();
