@@ -11,8 +11,9 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
-use super::map::{AxisReport, param_cells, param_columns, resolve_mu};
+use super::map::{AxisReport, resolve_mu};
 use super::output::{Format, num, print, render};
+use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::gap::{MinimumGap, free_params, minimum_gap, minimum_gaps};

@@ -11,13 +11,13 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
-use super::output::{Format, num, print, render};
+use super::output::{Format, num, param_cells, param_columns, print, render};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::map::{Axis, MapCache, MapCell, MapPlan, compute_rows, row_regions};
 use crate::analysis::spectrum::{REGION_THRESHOLD, Region};
 use crate::analysis::spectrum_spec::{SpectrumSpec, mu_from_text};
-use crate::model::params::{FIELDS, echo};
+use crate::model::params::echo;
 use crate::model::{Method, Params, Preset};
 use crate::output::report::Report;
 
@@ -222,20 +222,6 @@ const RESULT_COLUMNS: [&str; 18] = [
     "right_yielded",
     "completed",
 ];
-
-/// CSV columns naming a whole parameter set: μ, then every key of the table.
-pub(super) fn param_columns() -> Vec<&'static str> {
-    let mut h = vec!["mu"];
-    h.extend(FIELDS.iter().map(|f| f.key));
-    h
-}
-
-/// The cells of [`param_columns`] for `p`.
-pub(super) fn param_cells(p: &Params) -> Vec<String> {
-    let mut row = vec![num(p.mu())];
-    row.extend(FIELDS.iter().map(|f| f.text(p)));
-    row
-}
 
 impl Report for MapReport<'_> {
     /// Every row carries the cell's whole parameter set, μ and its results.

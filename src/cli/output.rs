@@ -6,6 +6,7 @@ use clap::ValueEnum;
 
 use super::CliError;
 use crate::model::Params;
+use crate::model::params::FIELDS;
 use crate::output::Num;
 use crate::output::report::{self, Report};
 
@@ -42,4 +43,18 @@ pub fn params_json(p: &Params) -> serde_json::Value {
 /// A float for tables and CSV: `inf` for infinity, otherwise the shortest exact form.
 pub fn num(v: f64) -> String {
     Num(v).to_string()
+}
+
+/// CSV columns naming a whole parameter set: μ, then every key of the table.
+pub fn param_columns() -> Vec<&'static str> {
+    let mut h = vec!["mu"];
+    h.extend(FIELDS.iter().map(|f| f.key));
+    h
+}
+
+/// The cells of [`param_columns`] for `p`.
+pub fn param_cells(p: &Params) -> Vec<String> {
+    let mut row = vec![num(p.mu())];
+    row.extend(FIELDS.iter().map(|f| f.text(p)));
+    row
 }

@@ -9,8 +9,8 @@ use clap::Args;
 
 use super::CliError;
 use super::budget::Work;
-use super::map::{param_cells, param_columns};
 use super::output::{Format, num, render};
+use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
 use super::spectrum::SpectrumPlan;
 use crate::analysis::similarity::{Level, master_curve_spread, study};

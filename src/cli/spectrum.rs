@@ -9,8 +9,8 @@ use clap::Args;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
-use super::map::{param_cells, param_columns};
 use super::output::{Format, num, print, render};
+use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::baseline::BaselineCache;
