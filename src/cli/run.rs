@@ -98,7 +98,13 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
 
     // Newmark's actual error, from an exact run of the same parameters (a few per cent of its cost).
     let error = (p.method == Method::Newmark).then(|| error_vs_exact(&p, &result));
-    let mut report = RunReport::new(&preset.name, &p, &result, elapsed_ms, args.repeat);
+    // Π_d,min (SPEC §11): an exact run without impact already tracked it;
+    // otherwise one exact run without contact.
+    let min_gap = match result.max_relative_displacement {
+        Some(top) => crate::analysis::gap::from_max_relative(top),
+        None => crate::analysis::gap::minimum_gap(&p).exact,
+    };
+    let mut report = RunReport::new(&preset.name, &p, &result, elapsed_ms, args.repeat, min_gap);
     report.error_vs_exact = error;
     let text = render(&report, args.format)?;
     if history_to_stdout {
@@ -151,7 +157,7 @@ pub struct RunReport<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error_vs_exact: Option<f64>,
     /// Π_d,min of SPEC §11: the smallest gap at which these structures
-    /// would never touch, from one exact run without contact.
+    /// would never touch, from an exact run without contact.
     pub min_gap_no_pounding: f64,
     /// False when the result should not be trusted; `unreliable_reason` says why.
     reliable: bool,
@@ -167,6 +173,7 @@ impl<'a> RunReport<'a> {
         r: &'a RunResult,
         elapsed_ms: f64,
         repeat: u32,
+        min_gap_no_pounding: f64,
     ) -> Self {
         let unreliable_reason = r.unreliable();
         RunReport {
@@ -191,7 +198,7 @@ impl<'a> RunReport<'a> {
             step_retries: r.step_retries,
             unconverged_steps: r.unconverged_steps,
             error_vs_exact: None,
-            min_gap_no_pounding: crate::analysis::gap::minimum_gap(p).exact,
+            min_gap_no_pounding,
             reliable: unreliable_reason.is_none(),
             unreliable_reason,
             elapsed_ms,
@@ -360,7 +367,7 @@ mod tests {
         let p = crate::model::SET1;
         let mut r = RunResult::default();
         r.energy.residual = 0.5;
-        let report = RunReport::new("set1", &p, &r, 1.0, 1);
+        let report = RunReport::new("set1", &p, &r, 1.0, 1, 2.5736);
         let v: serde_json::Value = serde_json::from_str(&json(&report).unwrap()).unwrap();
         assert_eq!(v["reliable"], false);
         assert_eq!(
@@ -381,7 +388,7 @@ mod tests {
                 .contains("UNRELIABLE: energy residual 5.000e-1 exceeds 1e-4")
         );
         r.energy.residual = 1e-12;
-        let report = RunReport::new("set1", &p, &r, 1.0, 1);
+        let report = RunReport::new("set1", &p, &r, 1.0, 1, 2.5736);
         let v: serde_json::Value = serde_json::from_str(&json(&report).unwrap()).unwrap();
         assert_eq!(v["reliable"], true);
         assert!(!report.table().contains("UNRELIABLE"));
