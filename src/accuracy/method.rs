@@ -63,14 +63,8 @@ impl Method {
     }
 }
 
-/// max over the four peaks of |p − p_ref| / |p_ref| (absolute where p_ref = 0).
+/// max over the four peaks of |p − p_ref| / |p_ref| (absolute where p_ref = 0):
+/// the solver's [`relative_peak_error`](crate::solver::relative_peak_error), by value.
 pub fn max_relative_error(peaks: [f64; 4], truth: [f64; 4]) -> f64 {
-    peaks
-        .iter()
-        .zip(truth)
-        .map(|(p, t)| {
-            let d = (p - t).abs();
-            if t != 0.0 { d / t.abs() } else { d }
-        })
-        .fold(0.0, f64::max)
+    crate::solver::relative_peak_error(&peaks, &truth)
 }
