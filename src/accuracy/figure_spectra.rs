@@ -8,10 +8,10 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::analysis::baseline::BaselineCache;
-use crate::analysis::family::{FLAG, Family};
+
 use crate::analysis::spectrum::{at_omega, baseline_params};
 use crate::analysis::sweep::{CurveSpec, curve_specs, sweep};
-use crate::model::spectrum_spec::SpectrumSpec;
+use crate::model::spectrum_spec::PresetSpectrum;
 use crate::model::{Method, Params, preset};
 use crate::reference::{ReferenceOptions, reference};
 use crate::solver::{relative_peak_error, run_for_sweep};
@@ -33,22 +33,13 @@ fn figure_curves(method: Method) -> Vec<(&'static str, Vec<CurveSpec>, Vec<f64>)
         .iter()
         .map(|&name| {
             let preset = preset::builtin(name).expect("figure presets are built in");
+            let own = PresetSpectrum::of(&preset).expect("built-in spectrum tables are valid");
             let p = Params {
                 method,
                 ..preset.params
             };
-            let spec = preset
-                .spectrum
-                .as_ref()
-                .map(|t| SpectrumSpec::from_table(t).expect("built-in spectrum tables are valid"))
-                .unwrap_or_default();
-            let family = spec.family.as_ref().map(|(key, values)| {
-                Family::new(FLAG, key, values, &p).expect("built-in families are valid")
-            });
-            let mu = spec.mu.unwrap_or(p.mu());
-            let grid = spec.grid.unwrap_or_default().values();
-            let curves = curve_specs(&p, mu, family.as_ref()).expect("built-in curves");
-            (name, curves, grid)
+            let curves = curve_specs(&p, own.mu, own.family.as_ref()).expect("built-in curves");
+            (name, curves, own.grid.values())
         })
         .collect()
 }

@@ -12,7 +12,7 @@ use std::f64::consts::PI;
 use crate::analysis::family::Family;
 use crate::analysis::grid::Grid;
 use crate::analysis::spectrum::{Region, SpectrumPoint, region_ranges};
-use crate::analysis::spectrum_spec::SpectrumSpec;
+use crate::analysis::spectrum_spec::PresetSpectrum;
 use crate::analysis::sweep::{Curve, curve_specs};
 use crate::model::physical::{G, Physical};
 use crate::model::{Method, Params, preset};
@@ -43,23 +43,13 @@ impl SpectrumInput {
     pub fn builtin(name: &str, grid: Option<Grid>) -> Result<SpectrumInput, FigureError> {
         let bad = |e: &dyn std::fmt::Display| FigureError::Input(format!("{name}: {e}"));
         let preset = preset::builtin(name).ok_or_else(|| bad(&"no such built-in preset"))?;
-        let spec = match &preset.spectrum {
-            Some(t) => SpectrumSpec::from_table(t).map_err(|e| bad(&e))?,
-            None => SpectrumSpec::default(),
-        };
-        let p = preset.params;
-        let family = match &spec.family {
-            Some((key, values)) => Some(
-                Family::new(crate::model::family::FLAG, key, values, &p).map_err(|e| bad(&e))?,
-            ),
-            None => None,
-        };
+        let own = PresetSpectrum::of(&preset).map_err(|e| bad(&e))?;
         Ok(SpectrumInput {
             name: name.to_string(),
-            params: p,
-            mu: spec.mu.unwrap_or_else(|| p.mu()),
-            family,
-            grid: grid.or(spec.grid).unwrap_or_default(),
+            params: preset.params,
+            mu: own.mu,
+            family: own.family,
+            grid: grid.unwrap_or(own.grid),
         })
     }
 

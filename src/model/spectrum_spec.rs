@@ -45,6 +45,38 @@ fn scalar_text(v: &toml::Value) -> Option<String> {
     }
 }
 
+/// A preset's own spectrum, resolved: its μ (else Π_ω2/Π_ω1), family (if
+/// any) and grid (else the default), as its `[spectrum]` table gives them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PresetSpectrum {
+    pub mu: f64,
+    pub family: Option<Family>,
+    pub grid: Grid,
+}
+
+impl PresetSpectrum {
+    /// The spectrum of `preset` (its parameters as they are); the message
+    /// of the table's or the family's error otherwise.
+    pub fn of(preset: &super::preset::Preset) -> Result<PresetSpectrum, String> {
+        let spec = match &preset.spectrum {
+            Some(t) => SpectrumSpec::from_table(t).map_err(|e| e.to_string())?,
+            None => SpectrumSpec::default(),
+        };
+        let p = preset.params;
+        let family = match &spec.family {
+            Some((key, values)) => {
+                Some(Family::new(super::family::FLAG, key, values, &p).map_err(|e| e.to_string())?)
+            }
+            None => None,
+        };
+        Ok(PresetSpectrum {
+            mu: spec.mu.unwrap_or_else(|| p.mu()),
+            family,
+            grid: spec.grid.unwrap_or_default(),
+        })
+    }
+}
+
 impl SpectrumSpec {
     /// Reads a `[spectrum]` table; unknown keys are refused.
     pub fn from_table(t: &toml::Table) -> Result<SpectrumSpec, SpecError> {
