@@ -32,7 +32,7 @@ use super::super::result::{Impact, RunResult, Stop, StopReason};
 use super::contact_rk::ContactSystem;
 use super::dynamics::{Branch, Structure, contact_series, free_series, step_for};
 use super::energy::Work;
-use super::quiet::Transition;
+use super::quiet::{Majorants, Transition, stays_above, stays_below};
 use super::roots::{cleared_from_start, fires_at_start, first_crossing};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
@@ -47,6 +47,8 @@ const FREE_REACH: f64 = 1.0;
 /// bounds of [`Transition::swing`] clear most of a cycle, cheap enough (a
 /// few nanoseconds each) that taking several costs less than one series.
 const QUIET_FRACTION: f64 = 0.25;
+/// Rotations of the quiet segments' phasor between evaluations of sin_cos.
+const PHASOR_TURNS: u32 = 16;
 /// Degree of the series in contact.
 const CONTACT_DEGREE: usize = 20;
 /// Size of each of the last two terms of a contact series, relative to the
@@ -149,6 +151,13 @@ struct Run<'a> {
     /// Unit responses over one free segment, per structure and branch kind
     /// (elastic, yielded); `None` where the excitation is not a sine.
     transitions: Option<[[Transition; 2]; 2]>,
+    /// (sin τ, cos τ) at `phasor_tau`, carried across quiet segments by
+    /// rotation through the segment's angle, `turn` = (sin h, cos h).
+    phasor: [f64; 2],
+    phasor_tau: f64,
+    turn: [f64; 2],
+    /// Rotations since the phasor was last taken from sin_cos.
+    turns: u32,
     /// Next step of a Hertz-type contact phase (0: not yet chosen).
     rk_step: std::cell::Cell<f64>,
     result: RunResult,
@@ -196,6 +205,13 @@ impl<'a> Run<'a> {
                     })
                 },
             ),
+            phasor: [0.0, 1.0],
+            phasor_tau: f64::NAN,
+            turn: {
+                let (s, c) = (QUIET_FRACTION * free_step).sin_cos();
+                [s, c]
+            },
+            turns: 0,
             rk_step: std::cell::Cell::new(0.0),
             result: RunResult {
                 completed: true,
@@ -290,12 +306,22 @@ impl<'a> Run<'a> {
 
     /// Advances one free segment by the transition matrices if bounds show
     /// that no event can happen in it and no peak can rise; returns whether it did.
+    ///
+    /// Each test tries the plain swing bound first (|q − q₀| ≤ swing) and
+    /// then the cubic majorant of [`Majorants`], which also clears the
+    /// segments near an extremum that the swing cannot: a displacement near
+    /// its running peak, a spring near yield, a gap closing and reopening.
     fn quiet_segment(&mut self) -> bool {
+        if self.transitions.is_none() {
+            return false;
+        }
+        let phasor = self.quiet_phasor();
         let Some(transitions) = &self.transitions else {
             return false;
         };
-        let phasor = self.options.excitation.phasor(self.tau);
+        let h = QUIET_FRACTION * self.free_step;
         let mut next = [[0.0; 2]; 2];
+        let mut local = [Majorants::default(); 2];
         let mut swing_x = [0.0; 2];
         for i in 0..2 {
             let s = &self.structures[i];
@@ -303,28 +329,35 @@ impl<'a> Run<'a> {
                 Branch::Elastic { .. } => 0,
                 Branch::Yielded { .. } => 1,
             };
-            let (k, q) = s.affine(self.branch[i]);
+            let load = s.affine(self.branch[i]).1 / s.mass;
             let t = &transitions[i][kind];
-            let (inputs, equilibrium) =
-                Transition::inputs(self.x[i], self.v[i], phasor, q / s.mass, k / s.mass);
+            let (x, v) = (self.x[i], self.v[i]);
+            let (inputs, equilibrium) = t.inputs(x, v, phasor, load);
             let [sx, sv] = t.swing(&inputs);
+            let m = Majorants::new(t, x, v, phasor, load, [sx, sv]);
             let peaks = self.result.structure(i);
-            if !(self.x[i].abs() + sx < peaks.peak_displacement
-                && self.v[i].abs() + sv < peaks.peak_velocity)
-            {
+            let (px, pv) = (peaks.peak_displacement, peaks.peak_velocity);
+            let within = |m: &[f64; 4], q: f64, swing: f64, lo: f64, hi: f64| {
+                (q + swing < hi || stays_below(m, hi, h))
+                    && (q - swing > lo || stays_above(m, lo, h))
+            };
+            if !(within(&m.x, x, sx, -px, px) && within(&m.v, v, sv, -pv, pv)) {
                 return false;
             }
             let calm = match self.branch[i] {
                 Branch::Elastic { offset } => {
                     let uy = s.yield_displacement;
-                    !uy.is_finite() || (self.x[i] - offset).abs() + sx < uy
+                    !uy.is_finite() || within(&m.x, x, sx, offset - uy, offset + uy)
                 }
-                Branch::Yielded { sign } => -sign * self.v[i] + sv < 0.0,
+                // A yielded spring stays yielded while sign · ẋ > 0.
+                Branch::Yielded { sign } if sign > 0.0 => v - sv > 0.0 || stays_above(&m.v, 0.0, h),
+                Branch::Yielded { .. } => v + sv < 0.0 || stays_below(&m.v, 0.0, h),
             };
             if !calm {
                 return false;
             }
             swing_x[i] = sx;
+            local[i] = m;
             next[i] = t.advance(&inputs, equilibrium);
         }
         // x1 − x2 must stay below the gap (no onset) and, until a first
@@ -334,13 +367,36 @@ impl<'a> Run<'a> {
         } else {
             self.p.gap
         };
-        if !(self.x[0] - self.x[1] + swing_x[0] + swing_x[1] < ceiling) {
+        let relative = self.x[0] - self.x[1];
+        let [a, b] = [local[0].x, local[1].x];
+        let gap_majorant = [a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] + b[3]];
+        if !(relative + swing_x[0] + swing_x[1] < ceiling || stays_below(&gap_majorant, ceiling, h))
+        {
             return false;
         }
         self.x = next.map(|y| y[0]);
         self.v = next.map(|y| y[1]);
-        self.tau += QUIET_FRACTION * self.free_step;
+        self.tau += h;
+        // sin(τ + h) and cos(τ + h) by the angle-sum rule.
+        let ([s, c], [sh, ch]) = (phasor, self.turn);
+        self.phasor = [s * ch + c * sh, c * ch - s * sh];
+        self.phasor_tau = self.tau;
+        self.turns += 1;
         true
+    }
+
+    /// The excitation's phasor at τ for a quiet segment: rotated on from the
+    /// last quiet segment when this one follows it, else evaluated afresh
+    /// (and afresh every [`PHASOR_TURNS`] rotations, which bounds the
+    /// rotations' round-off to a few units in the last place).
+    #[inline]
+    fn quiet_phasor(&mut self) -> [f64; 2] {
+        if self.phasor_tau != self.tau || self.turns >= PHASOR_TURNS {
+            self.phasor = self.options.excitation.phasor(self.tau);
+            self.phasor_tau = self.tau;
+            self.turns = 0;
+        }
+        self.phasor
     }
 
     /// Both structures out of contact, each on its own branch.

@@ -143,7 +143,7 @@ fn search_strict(e: &Series, lo: f64, root: f64, depth: u32, budget: &mut u32) -
 
 /// Whether P(s) = d0 + d1 s + d2 s² + M s³ < 0 on (0, w] (d0 ≤ 0, M ≥ 0).
 #[inline]
-fn cleared(d0: f64, d1: f64, d2: f64, m: f64, w: f64) -> bool {
+pub fn cleared(d0: f64, d1: f64, d2: f64, m: f64, w: f64) -> bool {
     let p = |s: f64| d0 + s * (d1 + s * (d2 + s * m));
     if !(p(w) < 0.0) {
         return false;
