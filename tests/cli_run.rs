@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{fails, json, parse_json, stderr, stdout, succeeds};
+use common::{fails, history_json, json, parse_json, stderr, stdout, succeeds};
 
 #[test]
 fn json_has_every_key() {
@@ -55,15 +55,7 @@ fn history_csv_has_one_row_per_step() {
     let dir = std::env::temp_dir().join(format!("pounding-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("h.csv");
-    let v = json(&[
-        "run",
-        "--cycles",
-        "1",
-        "--format",
-        "json",
-        "--history",
-        path.to_str().unwrap(),
-    ]);
+    let v = history_json(&path);
     let csv = std::fs::read_to_string(&path).unwrap();
     let mut lines = csv.lines();
     assert_eq!(

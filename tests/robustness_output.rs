@@ -23,17 +23,15 @@ use std::time::{Duration, Instant};
 
 mod common;
 
-use common::{BIN, assert_one_line, fails, json, parse_json, pounding, spawn, succeeds, text};
+use common::{
+    BIN, assert_one_line, fails, history_into, history_json, json, parse_json, pounding, spawn,
+    succeeds, text,
+};
 
 const HEADER: &str = "tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp,ag,vg,ug";
 
 fn path_str(p: &Path) -> &str {
     p.to_str().unwrap()
-}
-
-/// The arguments of a one-cycle run that writes its history to `target`.
-fn history_into(target: &Path) -> [&str; 5] {
-    ["run", "--cycles", "1", "--history", path_str(target)]
 }
 
 /// A file `name` in `dir` holding "old\n", with permissions `mode`.
@@ -42,6 +40,11 @@ fn old_file(dir: &Path, name: &str, mode: u32) -> PathBuf {
     fs::write(&path, "old\n").unwrap();
     fs::set_permissions(&path, fs::Permissions::from_mode(mode)).unwrap();
     path
+}
+
+/// Whether `path` is still a symbolic link (a write followed it, not replaced it).
+fn is_symlink(path: &Path) -> bool {
+    fs::symlink_metadata(path).unwrap().file_type().is_symlink()
 }
 
 /// Our temporary files left in `dir`.
@@ -107,23 +110,13 @@ fn symlink_is_followed_to_its_target() {
     fs::write(&real, "old\n").unwrap();
     std::os::unix::fs::symlink("real.csv", &link).unwrap();
     succeeds(&history_into(&link));
-    assert!(
-        fs::symlink_metadata(&link)
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
+    assert!(is_symlink(&link));
     assert!(fs::read_to_string(&real).unwrap().starts_with(HEADER));
     // A dangling link: its target is created.
     let dangling = dir.path().join("dangling.csv");
     std::os::unix::fs::symlink("new.csv", &dangling).unwrap();
     succeeds(&history_into(&dangling));
-    assert!(
-        fs::symlink_metadata(&dangling)
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
+    assert!(is_symlink(&dangling));
     assert!(
         fs::read_to_string(dir.path().join("new.csv"))
             .unwrap()
@@ -140,15 +133,7 @@ fn fifo_is_streamed_to() {
         let pipe = pipe.clone();
         std::thread::spawn(move || fs::read_to_string(pipe).unwrap())
     };
-    let v = json(&[
-        "run",
-        "--cycles",
-        "1",
-        "--format",
-        "json",
-        "--history",
-        path_str(&pipe),
-    ]);
+    let v = history_json(&pipe);
     let csv = reader.join().unwrap();
     assert!(csv.starts_with(HEADER));
     assert_eq!(
@@ -443,12 +428,7 @@ fn explorer_export_and_preset_save_follow_the_same_rules() {
     fs::write(dir.path().join("real.toml"), "").unwrap();
     std::os::unix::fs::symlink("real.toml", &saved).unwrap();
     preset.save(&saved).unwrap();
-    assert!(
-        fs::symlink_metadata(&saved)
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
+    assert!(is_symlink(&saved));
     let back = fs::read_to_string(dir.path().join("real.toml")).unwrap();
     assert!(back.contains("mass_ratio"), "{back}");
     fs::set_permissions(

@@ -9,6 +9,7 @@
 
 use std::ffi::OsStr;
 use std::fmt::Debug;
+use std::path::Path;
 use std::process::{Child, Command, Output, Stdio};
 
 /// The binary under test, built by Cargo for the integration tests.
@@ -63,6 +64,17 @@ pub fn json<S: AsRef<OsStr> + Debug>(args: &[S]) -> serde_json::Value {
 /// `bytes` (a report on stdout, or on stderr beside a history on stdout) as JSON.
 pub fn parse_json(bytes: &[u8]) -> serde_json::Value {
     serde_json::from_slice(bytes).unwrap_or_else(|e| panic!("not JSON ({e}): {:.300}", text(bytes)))
+}
+
+/// The arguments of a one-cycle `run` that writes its history to `target`.
+pub fn history_into(target: &Path) -> [&str; 5] {
+    let path = target.to_str().expect("a UTF-8 path");
+    ["run", "--cycles", "1", "--history", path]
+}
+
+/// The JSON summary of a successful [`history_into`] run.
+pub fn history_json(target: &Path) -> serde_json::Value {
+    json(&[&history_into(target)[..], &["--format", "json"]].concat())
 }
 
 /// Exactly one line on stderr, holding every fragment, and no panic.
