@@ -1,24 +1,13 @@
 //! `pounding run` end to end: the JSON object, the history CSV, and every bad
 //! input of the parameter table (exit code 2, one clear line, no panic).
 
-use std::process::{Command, Output};
+mod common;
 
-fn pounding(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use common::{fails, history_json, json, parse_json, stderr, stdout, succeeds};
 
 #[test]
 fn json_has_every_key() {
-    let o = pounding(&["run", "--preset", "set1", "--format", "json"]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8(o.stdout).unwrap();
+    let text = stdout(&succeeds(&["run", "--preset", "set1", "--format", "json"]));
     assert_eq!(
         text.trim().lines().count(),
         1,
@@ -56,8 +45,7 @@ fn json_has_every_key() {
 
 #[test]
 fn infinite_gap_is_written_as_inf_in_json() {
-    let o = pounding(&["run", "--no-pounding", "--format", "json", "--cycles", "1"]);
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let v = json(&["run", "--no-pounding", "--format", "json", "--cycles", "1"]);
     assert_eq!(v["params"]["gap"], "inf");
     assert_eq!(v["impacts"], 0);
 }
@@ -67,17 +55,7 @@ fn history_csv_has_one_row_per_step() {
     let dir = std::env::temp_dir().join(format!("pounding-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("h.csv");
-    let o = pounding(&[
-        "run",
-        "--cycles",
-        "1",
-        "--format",
-        "json",
-        "--history",
-        path.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let v = history_json(&path);
     let csv = std::fs::read_to_string(&path).unwrap();
     let mut lines = csv.lines();
     assert_eq!(
@@ -91,12 +69,10 @@ fn history_csv_has_one_row_per_step() {
 
 #[test]
 fn csv_and_table_formats() {
-    let o = pounding(&["run", "--preset", "set2", "--format", "csv"]);
-    let text = String::from_utf8(o.stdout).unwrap();
+    let text = stdout(&succeeds(&["run", "--preset", "set2", "--format", "csv"]));
     assert_eq!(text.lines().count(), 2);
     assert!(text.starts_with("left_peak_displacement,"));
-    let o = pounding(&["run", "--preset", "set2", "--model", "kelvin"]);
-    let text = String::from_utf8(o.stdout).unwrap();
+    let text = stdout(&succeeds(&["run", "--preset", "set2", "--model", "kelvin"]));
     assert!(
         text.contains("kelvin contact") && text.contains("(tension)"),
         "{text}"
@@ -160,18 +136,7 @@ fn bad_input_is_a_clear_error() {
         ),
     ];
     for (args, fragments) in cases {
-        let o = pounding(args);
-        let err = stderr(&o);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-        assert!(!err.contains("panicked"), "{args:?}: {err}");
-        assert_eq!(
-            err.trim().lines().count(),
-            1,
-            "{args:?}: one line, got {err}"
-        );
-        for f in *fragments {
-            assert!(err.contains(f), "{args:?}: `{f}` not in {err}");
-        }
+        fails(args, 2, fragments);
     }
 }
 
@@ -181,38 +146,29 @@ fn malformed_preset_names_file_line_and_column() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("broken.toml");
     std::fs::write(&path, "mass_ratio = 0.5\nomega1 = [oops\n").unwrap();
-    let o = pounding(&["run", "--preset", path.to_str().unwrap()]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains(&format!("{}:2:", path.display())), "{err}");
+    let preset = ["run", "--preset", path.to_str().unwrap()];
+    fails(&preset, 2, &[&format!("{}:2:", path.display())]);
     std::fs::write(&path, "restitution = 2\n").unwrap();
-    let o = pounding(&["run", "--preset", path.to_str().unwrap()]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        err.contains("broken.toml") && err.contains("`restitution` = 2"),
-        "{err}"
-    );
+    fails(&preset, 2, &["broken.toml", "`restitution` = 2"]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
 fn coarse_dt_is_a_warning_not_an_error() {
-    let o = pounding(&["run", "--dt", "0.01", "--format", "json"]);
-    assert!(o.status.success());
+    let o = succeeds(&["run", "--dt", "0.01", "--format", "json"]);
     let err = stderr(&o);
     assert!(
         err.contains("warning") && err.contains("steps per contact period"),
         "{err}"
     );
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let v = parse_json(&o.stdout);
     assert!(v["left"]["peak_displacement"].as_f64().unwrap().is_finite());
 }
 
 #[test]
 fn physical_preset_runs_its_own_pi_groups() {
     // two-buildings holds only a [physical] table: its Π-groups, not set 1's, are run.
-    let o = pounding(&[
+    let v = json(&[
         "run",
         "--preset",
         "two-buildings",
@@ -221,8 +177,6 @@ fn physical_preset_runs_its_own_pi_groups() {
         "--cycles",
         "1",
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let omega1 = v["params"]["omega1"].as_f64().unwrap();
     // Π_ω1 = ω1/ω_p = (2π/0.95)/(2π/1.0) = 1/0.95.
     assert!((omega1 - 1.0 / 0.95).abs() < 1e-12, "{omega1}");

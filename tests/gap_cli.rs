@@ -1,20 +1,9 @@
 //! `pounding gap` end to end: set 1's minimum gap and code rules (SPEC §11),
 //! the sweep over one parameter, and bad input.
 
-use std::process::{Command, Output};
+mod common;
 
-fn pounding(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let o = pounding(args);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    serde_json::from_slice(&o.stdout).unwrap()
-}
+use common::{fails, json, stdout, succeeds};
 
 #[test]
 fn set1_gap_and_rules() {
@@ -32,7 +21,7 @@ fn set1_gap_and_rules() {
     assert_eq!(pt["pounds_at_set_gap"], true);
     assert_eq!(v["method"], "exact");
     assert_eq!(v["params"]["gap"], 0.2);
-    let table = String::from_utf8(pounding(&["gap"]).stdout).unwrap();
+    let table = stdout(&succeeds(&["gap"]));
     assert!(
         table.contains("2.5736") && table.contains("too small"),
         "{table}"
@@ -50,8 +39,13 @@ fn sweep_along_omega1() {
         assert_eq!(pt["omega1"].as_f64(), Some(x));
         assert!(pt["rules"]["absolute_sum"].as_f64() >= pt["exact"].as_f64());
     }
-    let o = pounding(&["gap", "--x", "omega1=0.5:2.5:0.5", "--format", "csv"]);
-    let text = String::from_utf8(o.stdout).unwrap();
+    let text = stdout(&succeeds(&[
+        "gap",
+        "--x",
+        "omega1=0.5:2.5:0.5",
+        "--format",
+        "csv",
+    ]));
     assert_eq!(text.lines().count(), 6);
     assert!(text.lines().next().unwrap().contains("min_gap"));
 }
@@ -63,10 +57,6 @@ fn bad_axis_is_one_line_and_exit_2() {
         ("omega1=1:2", "expected KEY=START:STOP:STEP"),
         ("omega1=0.5:1e6:1", "omega1"),
     ] {
-        let o = pounding(&["gap", "--x", x]);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{x}: {err}");
-        assert_eq!(err.lines().count(), 1);
-        assert!(err.contains(says), "{x}: {err}");
+        fails(&["gap", "--x", x], 2, &[says]);
     }
 }

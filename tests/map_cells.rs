@@ -3,7 +3,7 @@
 //! baselines are shared along axes the free motion ignores; and the CLI's
 //! output and bad input.
 
-use std::process::{Command, Output};
+mod common;
 
 use pounding::analysis::baseline::BaselineCache;
 use pounding::analysis::gap::minimum_gap;
@@ -12,6 +12,8 @@ use pounding::analysis::spectrum::{Region, baseline_params};
 use pounding::analysis::sweep::{curve_specs, sweep};
 use pounding::model::{Method, Params, SET1};
 use pounding::solver::run_for_sweep;
+
+use common::{fails, json, stdout, succeeds};
 
 const EXACT_SET1: Params = Params {
     method: Method::Exact,
@@ -26,19 +28,6 @@ fn plan(x: &str, y: &str) -> MapPlan {
         Axis::parse("--y", y).unwrap(),
     )
     .unwrap()
-}
-
-fn pounding(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let o = pounding(args);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    serde_json::from_slice(&o.stdout).unwrap()
 }
 
 #[test]
@@ -204,7 +193,7 @@ fn cli_regions_agree_with_spectrum() {
 
 #[test]
 fn cli_csv_rows_carry_every_parameter() {
-    let o = pounding(&[
+    let text = stdout(&succeeds(&[
         "map",
         "--x",
         "gap=0.5:1:0.5",
@@ -212,9 +201,7 @@ fn cli_csv_rows_carry_every_parameter() {
         "restitution=0.5:0.9:0.4",
         "--format",
         "csv",
-    ]);
-    assert!(o.status.success());
-    let text = String::from_utf8(o.stdout).unwrap();
+    ]));
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines.len(), 5);
     let header: Vec<&str> = lines[0].split(',').collect();
@@ -236,11 +223,6 @@ fn cli_refuses_bad_axes() {
         ("omega2=0.5:1:0.5", "mu=1:2:1", "cannot both be axes"),
         ("omega1=0.5:1:0.5", "mu=1:2000:1000", "at omega1"),
     ] {
-        let o = pounding(&["map", "--x", x, "--y", y]);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{x} {y}: {err}");
-        assert_eq!(err.lines().count(), 1, "{err}");
-        assert!(err.contains(says), "{x} {y}: {err}");
-        assert!(o.stdout.is_empty());
+        fails(&["map", "--x", x, "--y", y], 2, &[says]);
     }
 }

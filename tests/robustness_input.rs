@@ -12,6 +12,8 @@ use std::time::{Duration, Instant};
 
 use pounding::model::params::{FIELDS, Kind};
 
+mod common;
+
 /// Longest any one run may take.
 const LIMIT: Duration = Duration::from_secs(10);
 
@@ -36,7 +38,7 @@ fn pounding(args: &[String]) -> Outcome {
     let dir = scratch();
     let err_path = dir.join("stderr");
     let err_file = std::fs::File::create(&err_path).unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_pounding"))
+    let mut child = Command::new(common::BIN)
         .args(args)
         .stdin(Stdio::null())
         .stdout(Stdio::null())
@@ -174,6 +176,22 @@ fn bad(args: &[&str], names: &[&str]) -> Case {
     }
 }
 
+/// `run --set KEY=VALUE` refused with a line holding `says`.
+fn bad_set(assignment: &str, says: &str) -> Case {
+    bad(&["run", "--set", assignment], &[says])
+}
+
+/// A one-cycle `run` with `--set assignment`.
+fn one_cycle_with(assignment: String) -> Vec<String> {
+    vec![
+        "run".into(),
+        "--cycles".into(),
+        "1".into(),
+        "--set".into(),
+        assignment,
+    ]
+}
+
 fn write(dir: &Path, name: &str, text: &str) -> String {
     let path = dir.join(name);
     std::fs::write(&path, text).unwrap();
@@ -202,48 +220,52 @@ fn every_finding_is_a_clear_error() {
     );
     let bad_spectrum = write(&dir, "spec.toml", "[spectrum]\nmu = -1\n");
     let named_five = write(&dir, "five.toml", "name = 5\n");
+    let tiny_dt = format!("dt=0.{}1", "0".repeat(300));
     let huge_key = write(
         &dir,
         "huge.toml",
         &format!("{} = 1\n", "k".repeat(1_000_000)),
     );
-    let cases = vec![
-        // Values that ran for ever.
-        bad(
-            &["run", "--set", "contact_omega=1e300"],
-            &["`contact_omega` = 1e300: must be a number in [1, 1e6]"],
+    // `run --set`: values that ran for ever, that printed nonsense with exit
+    // 0, or that the message wrote wrongly (a line break, 300 zeros); the method key.
+    let set_findings = [
+        (
+            "contact_omega=1e300",
+            "`contact_omega` = 1e300: must be a number in [1, 1e6]",
         ),
-        bad(
-            &["run", "--set", "mass_ratio=1e300"],
-            &["`mass_ratio` = 1e300: must be a number in [0.001, 1000]"],
+        (
+            "mass_ratio=1e300",
+            "`mass_ratio` = 1e300: must be a number in [0.001, 1000]",
         ),
-        bad(
-            &["run", "--set", "restitution=1e-100"],
-            &["`restitution` = 1e-100: must be a number in [0.001, 1]"],
+        (
+            "restitution=1e-100",
+            "`restitution` = 1e-100: must be a number in [0.001, 1]",
         ),
-        bad(
-            &["run", "--set", "mass_ratio=1e-320"],
-            &["`mass_ratio` = 1e-320"],
+        ("mass_ratio=1e-320", "`mass_ratio` = 1e-320"),
+        (
+            "omega1=1e100",
+            "`omega1` = 1e100: must be a number in [0, 1000]",
         ),
-        bad(
-            &["run", "--set", "omega1=1e100"],
-            &["`omega1` = 1e100: must be a number in [0, 1000]"],
+        (
+            "dt=1e300",
+            "`dt` = 1e300: must be a number in [1e-6, 0.3142]",
         ),
-        // Values that printed nonsense with exit 0.
-        bad(
-            &["run", "--set", "dt=1e300"],
-            &["`dt` = 1e300: must be a number in [1e-6, 0.3142]"],
+        ("dt=60", "`dt` = 60"),
+        ("omega1=1e300", "`omega1` = 1e300"),
+        ("contact_omega=1e15", "`contact_omega` = 1e15"),
+        ("restitution=1e-20", "`restitution` = 1e-20"),
+        ("gap=0.1\nmass_ratio=2", "`gap` = 0.1\\nmass_ratio=2"),
+        (&tiny_dt, "`dt` = 1e-301"),
+        (
+            "method=rk4",
+            "`method` = rk4: must be one of: newmark, exact",
         ),
-        bad(&["run", "--set", "dt=60"], &["`dt` = 60"]),
-        bad(&["run", "--set", "omega1=1e300"], &["`omega1` = 1e300"]),
-        bad(
-            &["run", "--set", "contact_omega=1e15"],
-            &["`contact_omega` = 1e15"],
-        ),
-        bad(
-            &["run", "--set", "restitution=1e-20"],
-            &["`restitution` = 1e-20"],
-        ),
+    ];
+    let mut cases: Vec<Case> = set_findings
+        .iter()
+        .map(|(assignment, says)| bad_set(assignment, says))
+        .collect();
+    cases.extend([
         bad(
             &["run", "--set", "omega2=30", "--dt", "0.1"],
             &["`dt` = 0.1: must be <= 0.01047"],
@@ -288,14 +310,6 @@ fn every_finding_is_a_clear_error() {
             &[&format!("{named_five}:1: `name` = 5: must be a string")],
         ),
         bad(&["run", "--preset", &huge_key], &["(1000000 characters)"]),
-        bad(
-            &["run", "--set", "gap=0.1\nmass_ratio=2"],
-            &["`gap` = 0.1\\nmass_ratio=2"],
-        ),
-        bad(
-            &["run", "--set", &format!("dt=0.{}1", "0".repeat(300))],
-            &["`dt` = 1e-301"],
-        ),
         bad(&["run", "--repeat", "-1"], &["'--repeat <N>'"]),
         bad(
             &["similarity", "--ap", "-1", "--omega-p", "6"],
@@ -304,12 +318,7 @@ fn every_finding_is_a_clear_error() {
         bad(&["similarity", "--omega-p", "-6"], &["--omega-p -6"]),
         bad(&["stress", "--cases", "-3"], &["'--cases <N>'"]),
         bad(&["stress", "--seed", "-3"], &["'--seed <S>'"]),
-        // The new key.
-        bad(
-            &["run", "--set", "method=rk4"],
-            &["`method` = rk4: must be one of: newmark, exact"],
-        ),
-    ];
+    ]);
     assert_all("findings", cases);
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -399,13 +408,7 @@ fn generated_bad_inputs_are_handled() {
     for f in FIELDS {
         for value in hostile_values() {
             cases.push(Case {
-                args: vec![
-                    "run".into(),
-                    "--cycles".into(),
-                    "1".into(),
-                    "--set".into(),
-                    format!("{}={value}", f.key),
-                ],
+                args: one_cycle_with(format!("{}={value}", f.key)),
                 codes: &[0, 2],
                 names: vec![format!("`{}`", f.key)],
             });
@@ -421,13 +424,7 @@ fn generated_bad_inputs_are_handled() {
             ] {
                 let codes: &'static [i32] = if codes.len() == 2 { &[0, 2] } else { &[2] };
                 cases.push(Case {
-                    args: vec![
-                        "run".into(),
-                        "--cycles".into(),
-                        "1".into(),
-                        "--set".into(),
-                        format!("{}={v:e}", f.key),
-                    ],
+                    args: one_cycle_with(format!("{}={v:e}", f.key)),
                     codes,
                     names: if codes.len() == 2 {
                         vec![format!("`{}` = {v:e}", f.key), "`dt`".into()]

@@ -18,36 +18,33 @@ use std::io::{BufRead, BufReader, Read};
 use std::os::unix::fs::{FileTypeExt, PermissionsExt};
 use std::os::unix::process::ExitStatusExt;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Output, Stdio};
+use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
-const BIN: &str = env!("CARGO_BIN_EXE_pounding");
+mod common;
+
+use common::{
+    BIN, assert_one_line, fails, history_into, history_json, json, parse_json, pounding, spawn,
+    succeeds, text,
+};
+
 const HEADER: &str = "tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp,ag,vg,ug";
-
-fn pounding(args: &[&str]) -> Output {
-    Command::new(BIN)
-        .args(args)
-        .stdin(Stdio::null())
-        .output()
-        .unwrap()
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
-
-/// Exactly one line on stderr, holding every fragment.
-fn assert_one_line(o: &Output, fragments: &[&str]) {
-    let err = text(&o.stderr);
-    assert_eq!(err.lines().count(), 1, "one line expected:\n{err}");
-    for f in fragments {
-        assert!(err.contains(f), "`{f}` missing from: {err}");
-    }
-    assert!(!err.contains("panicked"), "{err}");
-}
 
 fn path_str(p: &Path) -> &str {
     p.to_str().unwrap()
+}
+
+/// A file `name` in `dir` holding "old\n", with permissions `mode`.
+fn old_file(dir: &Path, name: &str, mode: u32) -> PathBuf {
+    let path = dir.join(name);
+    fs::write(&path, "old\n").unwrap();
+    fs::set_permissions(&path, fs::Permissions::from_mode(mode)).unwrap();
+    path
+}
+
+/// Whether `path` is still a symbolic link (a write followed it, not replaced it).
+fn is_symlink(path: &Path) -> bool {
+    fs::symlink_metadata(path).unwrap().file_type().is_symlink()
 }
 
 /// Our temporary files left in `dir`.
@@ -81,12 +78,8 @@ fn fifo(path: &Path) {
 #[test]
 fn read_only_file_is_refused_and_left_untouched() {
     let dir = tempfile::tempdir().unwrap();
-    let target = dir.path().join("kept.csv");
-    fs::write(&target, "old\n").unwrap();
-    fs::set_permissions(&target, fs::Permissions::from_mode(0o444)).unwrap();
-    let o = pounding(&["run", "--cycles", "1", "--history", path_str(&target)]);
-    assert_eq!(o.status.code(), Some(1));
-    assert_one_line(&o, &["kept.csv", "read-only"]);
+    let target = old_file(dir.path(), "kept.csv", 0o444);
+    let o = fails(&history_into(&target), 1, &["kept.csv", "read-only"]);
     assert!(o.stdout.is_empty(), "no summary after a failed write");
     assert_eq!(fs::read_to_string(&target).unwrap(), "old\n");
     assert_eq!(
@@ -99,11 +92,8 @@ fn read_only_file_is_refused_and_left_untouched() {
 #[test]
 fn writable_file_is_replaced_and_keeps_its_permissions() {
     let dir = tempfile::tempdir().unwrap();
-    let target = dir.path().join("h.csv");
-    fs::write(&target, "old\n").unwrap();
-    fs::set_permissions(&target, fs::Permissions::from_mode(0o640)).unwrap();
-    let o = pounding(&["run", "--cycles", "1", "--history", path_str(&target)]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
+    let target = old_file(dir.path(), "h.csv", 0o640);
+    succeeds(&history_into(&target));
     let csv = fs::read_to_string(&target).unwrap();
     assert!(csv.starts_with(HEADER));
     assert_eq!(
@@ -119,26 +109,14 @@ fn symlink_is_followed_to_its_target() {
     let link = dir.path().join("link.csv");
     fs::write(&real, "old\n").unwrap();
     std::os::unix::fs::symlink("real.csv", &link).unwrap();
-    let o = pounding(&["run", "--cycles", "1", "--history", path_str(&link)]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    assert!(
-        fs::symlink_metadata(&link)
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
+    succeeds(&history_into(&link));
+    assert!(is_symlink(&link));
     assert!(fs::read_to_string(&real).unwrap().starts_with(HEADER));
     // A dangling link: its target is created.
     let dangling = dir.path().join("dangling.csv");
     std::os::unix::fs::symlink("new.csv", &dangling).unwrap();
-    let o = pounding(&["run", "--cycles", "1", "--history", path_str(&dangling)]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    assert!(
-        fs::symlink_metadata(&dangling)
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
+    succeeds(&history_into(&dangling));
+    assert!(is_symlink(&dangling));
     assert!(
         fs::read_to_string(dir.path().join("new.csv"))
             .unwrap()
@@ -155,18 +133,8 @@ fn fifo_is_streamed_to() {
         let pipe = pipe.clone();
         std::thread::spawn(move || fs::read_to_string(pipe).unwrap())
     };
-    let o = pounding(&[
-        "run",
-        "--cycles",
-        "1",
-        "--format",
-        "json",
-        "--history",
-        path_str(&pipe),
-    ]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
+    let v = history_json(&pipe);
     let csv = reader.join().unwrap();
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert!(csv.starts_with(HEADER));
     assert_eq!(
         csv.lines().count() as u64,
@@ -184,11 +152,12 @@ fn device_is_streamed_to_and_stays_a_device() {
     if !device(&null, 1, 3) || !device(&full, 1, 7) {
         return;
     }
-    let o = pounding(&["run", "--cycles", "1", "--history", path_str(&null)]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    let o = pounding(&["run", "--cycles", "1", "--history", path_str(&full)]);
-    assert_eq!(o.status.code(), Some(1));
-    assert_one_line(&o, &["full", "No space left on device"]);
+    succeeds(&history_into(&null));
+    fails(
+        &history_into(&full),
+        1,
+        &["full", "No space left on device"],
+    );
     for node in [&null, &full] {
         assert!(fs::metadata(node).unwrap().file_type().is_char_device());
     }
@@ -197,11 +166,10 @@ fn device_is_streamed_to_and_stays_a_device() {
 
 #[test]
 fn dash_is_stdout_and_the_summary_goes_to_stderr() {
-    let o = pounding(&["run", "--cycles", "1", "--format", "json", "--history", "-"]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
+    let o = succeeds(&["run", "--cycles", "1", "--format", "json", "--history", "-"]);
     let out = text(&o.stdout);
     assert_eq!(out.lines().next(), Some(HEADER));
-    let v: serde_json::Value = serde_json::from_slice(&o.stderr).unwrap();
+    let v = parse_json(&o.stderr);
     assert_eq!(out.lines().count() as u64, v["steps"].as_u64().unwrap() + 2);
 }
 
@@ -209,14 +177,14 @@ fn dash_is_stdout_and_the_summary_goes_to_stderr() {
 fn missing_directory_is_an_error_and_is_not_created() {
     let dir = tempfile::tempdir().unwrap();
     let target = dir.path().join("no/such/h.csv");
-    let o = pounding(&["run", "--cycles", "1", "--history", path_str(&target)]);
-    assert_eq!(o.status.code(), Some(1));
-    assert_one_line(&o, &["no/such/h.csv", "does not exist"]);
+    fails(
+        &history_into(&target),
+        1,
+        &["no/such/h.csv", "does not exist"],
+    );
     assert!(!dir.path().join("no").exists());
     // A directory as the target.
-    let o = pounding(&["run", "--cycles", "1", "--history", path_str(dir.path())]);
-    assert_eq!(o.status.code(), Some(1));
-    assert_one_line(&o, &["is a directory"]);
+    fails(&history_into(dir.path()), 1, &["is a directory"]);
 }
 
 #[test]
@@ -225,8 +193,7 @@ fn longest_legal_name_works() {
     let name = format!("{}.csv", "a".repeat(250));
     assert_eq!(name.len(), 254);
     let target = dir.path().join(&name);
-    let o = pounding(&["run", "--cycles", "1", "--history", path_str(&target)]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
+    succeeds(&history_into(&target));
     assert!(fs::read_to_string(&target).unwrap().starts_with(HEADER));
 }
 
@@ -238,25 +205,13 @@ fn closed_pipe_ends_quietly() {
         &["run", "--cycles", "20", "--history", "-"][..],
     ] {
         // The reader has gone before the first write (`| head` done early).
-        let mut child = Command::new(BIN)
-            .args(args)
-            .stdin(Stdio::null())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
+        let mut child = spawn(args);
         drop(child.stdout.take());
         let o = child.wait_with_output().unwrap();
         assert_eq!(o.status.code(), Some(0), "{args:?}: {}", text(&o.stderr));
         assert!(o.stderr.is_empty() || args.contains(&"-"), "{args:?}");
         // The reader takes one line, then goes (`| head -1`).
-        let mut child = Command::new(BIN)
-            .args(args)
-            .stdin(Stdio::null())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
+        let mut child = spawn(args);
         let mut line = String::new();
         BufReader::new(child.stdout.take().unwrap())
             .read_line(&mut line)
@@ -297,21 +252,15 @@ fn peak_rss_kb(pid: u32) -> Option<u64> {
 fn long_history_is_streamed_in_bounded_memory() {
     // 40 cycles: 251 000 rows, about 45 MB of CSV. Held in memory, as
     // before, the samples and the text took about 70 MB.
-    let mut child = Command::new(BIN)
-        .args([
-            "run",
-            "--cycles",
-            "40",
-            "--format",
-            "json",
-            "--history",
-            "-",
-        ])
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = spawn(&[
+        "run",
+        "--cycles",
+        "40",
+        "--format",
+        "json",
+        "--history",
+        "-",
+    ]);
     let mut out = child.stdout.take().unwrap();
     let mut buf = vec![0u8; 1 << 16];
     let (mut bytes, mut newlines) = (0usize, 0usize);
@@ -330,7 +279,7 @@ fn long_history_is_streamed_in_bounded_memory() {
     }
     let o = child.wait_with_output().unwrap();
     assert!(o.status.success(), "{}", text(&o.stderr));
-    let v: serde_json::Value = serde_json::from_slice(&o.stderr).unwrap();
+    let v = parse_json(&o.stderr);
     assert_eq!(newlines as u64, v["steps"].as_u64().unwrap() + 2);
     assert!(bytes > 40_000_000, "{bytes} bytes");
     match peak {
@@ -346,46 +295,51 @@ fn long_history_is_streamed_in_bounded_memory() {
 fn large_and_long_requests_need_their_flags() {
     let dir = tempfile::tempdir().unwrap();
     let target = dir.path().join("x.csv");
-    let o = pounding(&["run", "--cycles", "20000", "--history", path_str(&target)]);
-    assert_eq!(o.status.code(), Some(2));
-    assert_one_line(&o, &["--history", "25 GB", "limit 1 GB", "--allow-large"]);
+    fails(
+        &["run", "--cycles", "20000", "--history", path_str(&target)],
+        2,
+        &["--history", "25 GB", "limit 1 GB", "--allow-large"],
+    );
     assert!(!target.exists());
-    let o = pounding(&[
-        "run",
-        "--cycles",
-        "100000",
-        "--set",
-        "dt=6.2832e-4",
-        "--repeat",
-        "100000",
-    ]);
-    assert_eq!(o.status.code(), Some(2));
-    assert_one_line(&o, &["1.0e14 steps", "--allow-long"]);
-    let o = pounding(&["spectrum", "--cycles", "100000", "--omega1", "0.1:3:0.001"]);
-    assert_eq!(o.status.code(), Some(2));
-    assert_one_line(&o, &["spectrum", "--allow-long"]);
-    let o = pounding(&["similarity", "--omega-p", "10", "--cycles", "100000"]);
-    assert_eq!(o.status.code(), Some(2));
-    assert_one_line(&o, &["similarity", "--allow-long"]);
+    fails(
+        &[
+            "run",
+            "--cycles",
+            "100000",
+            "--set",
+            "dt=6.2832e-4",
+            "--repeat",
+            "100000",
+        ],
+        2,
+        &["1.0e14 steps", "--allow-long"],
+    );
+    fails(
+        &["spectrum", "--cycles", "100000", "--omega1", "0.1:3:0.001"],
+        2,
+        &["spectrum", "--allow-long"],
+    );
+    fails(
+        &["similarity", "--omega-p", "10", "--cycles", "100000"],
+        2,
+        &["similarity", "--allow-long"],
+    );
 }
 
 #[test]
 fn no_progress_bar_without_a_terminal() {
     // Estimated at over a second (set1, 700 repeats of 50 000 steps).
-    let o = pounding(&["run", "--repeat", "700", "--format", "json"]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
+    let o = succeeds(&["run", "--repeat", "700", "--format", "json"]);
     assert!(o.stderr.is_empty(), "{}", text(&o.stderr));
 }
 
 #[test]
 fn reliable_runs_say_so_with_their_method() {
-    let o = pounding(&["run", "--format", "json"]);
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let v = json(&["run", "--format", "json"]);
     assert_eq!(v["reliable"], true);
     assert_eq!(v["method"], "newmark");
     assert!(v.get("unreliable_reason").is_none());
-    let o = pounding(&["run", "--format", "csv"]);
-    let csv = text(&o.stdout);
+    let csv = common::stdout(&succeeds(&["run", "--format", "csv"]));
     let rows: Vec<Vec<&str>> = csv.lines().map(|l| l.split(',').collect()).collect();
     let column = |name: &str| rows[0].iter().position(|c| *c == name).unwrap();
     assert_eq!(rows[1][column("reliable")], "true");
@@ -440,8 +394,7 @@ fn killed_runs_leave_the_target_old_and_no_temporary_file() {
         assert_eq!(temporaries(dir.path()).is_empty(), number != 9, "{signal}");
         // The next run into the directory leaves no temporary file, SIGKILL's included.
         let other = dir.path().join("other.csv");
-        let o = pounding(&["run", "--cycles", "1", "--history", path_str(&other)]);
-        assert!(o.status.success(), "{}", text(&o.stderr));
+        succeeds(&history_into(&other));
         assert!(temporaries(dir.path()).is_empty(), "{signal}");
     }
     // Absent before, absent after.
@@ -456,9 +409,7 @@ fn killed_runs_leave_the_target_old_and_no_temporary_file() {
 #[test]
 fn explorer_export_and_preset_save_follow_the_same_rules() {
     let dir = tempfile::tempdir().unwrap();
-    let target = dir.path().join("export.csv");
-    fs::write(&target, "old\n").unwrap();
-    fs::set_permissions(&target, fs::Permissions::from_mode(0o444)).unwrap();
+    let target = old_file(dir.path(), "export.csv", 0o444);
     let p = pounding::model::SET1;
     let msg = pounding::tui::export::write(&p, &target);
     assert!(msg.contains("read-only"), "{msg}");
@@ -477,12 +428,7 @@ fn explorer_export_and_preset_save_follow_the_same_rules() {
     fs::write(dir.path().join("real.toml"), "").unwrap();
     std::os::unix::fs::symlink("real.toml", &saved).unwrap();
     preset.save(&saved).unwrap();
-    assert!(
-        fs::symlink_metadata(&saved)
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
+    assert!(is_symlink(&saved));
     let back = fs::read_to_string(dir.path().join("real.toml")).unwrap();
     assert!(back.contains("mass_ratio"), "{back}");
     fs::set_permissions(
@@ -520,7 +466,7 @@ fn unreliable_run_is_flagged_and_exits_1_unless_allowed() {
             "h.csv was not written",
         ],
     );
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let v = parse_json(&o.stdout);
     assert_eq!(v["reliable"], false);
     assert!(
         v["unreliable_reason"]
@@ -538,7 +484,7 @@ fn unreliable_run_is_flagged_and_exits_1_unless_allowed() {
         .concat(),
     );
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let v = parse_json(&o.stdout);
     assert_eq!(v["reliable"], false);
     assert!(fs::read_to_string(&target).unwrap().starts_with(HEADER));
 }

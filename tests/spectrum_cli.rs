@@ -1,22 +1,12 @@
 //! `pounding spectrum` from the outside: JSON shape, CSV header, bad input.
 
-use std::process::Command;
+mod common;
 
-fn pounding(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
+use common::{fails, json, stdout, succeeds};
 
 #[test]
 fn json_has_the_issue_shape() {
-    let (code, out, err) = pounding(&[
+    let v = json(&[
         "spectrum",
         "--preset",
         "fig8-gap",
@@ -25,8 +15,6 @@ fn json_has_the_issue_shape() {
         "--format",
         "json",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["mu"], 1.5);
     assert_eq!(v["model"], "improved-kelvin");
     let curves = v["curves"].as_array().unwrap();
@@ -53,7 +41,7 @@ fn json_has_the_issue_shape() {
     assert_eq!(v["grid"]["points"], 2);
     assert_eq!(v["grid"]["step"], 0.1);
     // Without a family.
-    let (_, out, _) = pounding(&[
+    let v = json(&[
         "spectrum",
         "--omega1",
         "0.1:0.1:0.1",
@@ -62,14 +50,13 @@ fn json_has_the_issue_shape() {
         "--format",
         "json",
     ]);
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["curves"][0]["family"], serde_json::json!({}));
     assert_eq!(v["curves"][0]["points"][0]["region"], "none");
 }
 
 #[test]
 fn csv_has_one_row_per_point() {
-    let (code, out, _) = pounding(&[
+    let out = stdout(&succeeds(&[
         "spectrum",
         "--family",
         "mass_ratio=0.1,0.9",
@@ -77,8 +64,7 @@ fn csv_has_one_row_per_point() {
         "0.1:0.3:0.1",
         "--format",
         "csv",
-    ]);
-    assert_eq!(code, 0);
+    ]));
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines.len(), 1 + 2 * 3);
     // Every row carries its family member, the grid and the whole parameter set.
@@ -100,20 +86,16 @@ fn csv_has_one_row_per_point() {
 /// (2.5736, SPEC §11), in JSON and CSV; Newmark does not track it.
 #[test]
 fn min_gap_no_pounding_matches_the_gap_command() {
-    let (code, out, err) = pounding(&["gap", "--preset", "set1", "--format", "json"]);
-    assert_eq!(code, 0, "{err}");
-    let gap: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let gap = json(&["gap", "--preset", "set1", "--format", "json"]);
     let want = gap["points"][0]["exact"].as_f64().unwrap();
     assert!((want - 2.5736).abs() < 5e-5, "{want}");
     let grid = ["spectrum", "--preset", "set1", "--omega1", "1.05:1.05:0.05"];
-    let (code, out, err) = pounding(&[&grid[..], &["--format", "json"]].concat());
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let v = json(&[&grid[..], &["--format", "json"]].concat());
     let got = v["curves"][0]["points"][0]["min_gap_no_pounding"]
         .as_f64()
         .unwrap();
     assert!((got - want).abs() < 1e-9, "{got} vs {want}");
-    let (_, out, _) = pounding(&[&grid[..], &["--format", "csv"]].concat());
+    let out = stdout(&succeeds(&[&grid[..], &["--format", "csv"]].concat()));
     let last: f64 = out
         .lines()
         .nth(1)
@@ -125,8 +107,7 @@ fn min_gap_no_pounding_matches_the_gap_command() {
         .unwrap();
     assert!((last - want).abs() < 1e-9, "{last} vs {want}");
     let newmark = [&grid[..], &["--method", "newmark", "--format", "json"]].concat();
-    let (_, out, _) = pounding(&newmark);
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let v = json(&newmark);
     assert!(v["curves"][0]["points"][0]["min_gap_no_pounding"].is_null());
 }
 
@@ -144,10 +125,6 @@ fn bad_input_is_one_line_and_exit_2() {
     ] {
         let mut all = vec!["spectrum"];
         all.extend(args);
-        let (code, out, err) = pounding(&all);
-        assert_eq!(code, 2, "{all:?}");
-        assert!(out.is_empty());
-        assert_eq!(err.trim().lines().count(), 1, "{err}");
-        assert!(err.contains(needle), "{err}");
+        fails(&all, 2, &[needle]);
     }
 }

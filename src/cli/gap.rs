@@ -11,6 +11,7 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
+use super::description::{DIMENSIONLESS, Provenance};
 use super::map::{AxisReport, resolve_mu};
 use super::output::{Format, num, print, render};
 use super::output::{param_cells, param_columns};
@@ -105,9 +106,8 @@ struct GapPoint {
 /// The minimum gaps, in every format.
 #[derive(Debug, Serialize)]
 pub struct GapReport<'a> {
-    version: &'static str,
-    preset: &'a str,
-    units: &'static str,
+    #[serde(flatten)]
+    provenance: Provenance<'a>,
     /// The parameters (the axis key is set per point); their gap is the set's own.
     params: &'a Params,
     /// The no-pounding runs are always made by the exact method.
@@ -147,9 +147,7 @@ impl<'a> GapReport<'a> {
             })
             .collect();
         GapReport {
-            version: env!("CARGO_PKG_VERSION"),
-            preset,
-            units: "dimensionless (Π-groups of SPEC §1)",
+            provenance: Provenance::new(preset, DIMENSIONLESS),
             params: p,
             method: free_params(p).method,
             x: axis.map(AxisReport::of),
@@ -166,7 +164,7 @@ impl<'a> GapReport<'a> {
             s,
             "{}: the gap that prevents pounding (SPEC §11), from one no-pounding run \
              ({} method, {} cycles)",
-            self.preset, self.method, p.cycles
+            self.provenance.preset, self.method, p.cycles
         );
         let _ = writeln!(
             s,
@@ -213,7 +211,7 @@ impl<'a> GapReport<'a> {
             s,
             "{}: the gap that prevents pounding over {} = {} ({} points; exact method, \
              no-pounding runs){}",
-            self.preset,
+            self.provenance.preset,
             axis.symbol,
             axis.grid,
             axis.points,

@@ -11,6 +11,7 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
+use super::description::Description;
 use super::output::{Format, num, param_cells, param_columns, print, render};
 use super::params::ParamArgs;
 use super::progress::Progress;
@@ -18,7 +19,7 @@ use crate::analysis::map::{Axis, MapCache, MapCell, MapPlan, compute_rows, row_r
 use crate::analysis::spectrum::{REGION_THRESHOLD, Region};
 use crate::analysis::spectrum_spec::{SpectrumSpec, mu_from_text};
 use crate::model::params::echo;
-use crate::model::{Method, Params, Preset};
+use crate::model::{Params, Preset};
 use crate::output::report::Report;
 
 #[derive(Debug, Clone, Default, Args)]
@@ -128,21 +129,10 @@ impl AxisReport {
 /// A map in every format.
 #[derive(Debug, Serialize)]
 pub struct MapReport<'a> {
-    version: &'static str,
-    preset: &'a str,
-    units: &'static str,
-    /// The fixed parameters (the axis keys are set per cell).
-    params: &'a Params,
-    /// μ of the cells unless `mu` or `omega2` is an axis.
-    mu: f64,
-    model: &'static str,
-    /// The excitation's name and note (SPEC §9), as `run` gives them.
-    excitation: &'static str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    excitation_note: Option<String>,
-    method: Method,
-    /// Relative change of Π_u1 beyond which a cell is amplification or suppression.
-    region_threshold: f64,
+    /// The fixed parameters (the axis keys are set per cell) and μ of the
+    /// cells unless `mu` or `omega2` is an axis.
+    #[serde(flatten)]
+    description: Description<'a>,
     x: AxisReport,
     y: AxisReport,
     layout: &'static str,
@@ -164,16 +154,7 @@ impl<'a> MapReport<'a> {
         elapsed_ms: f64,
     ) -> Self {
         MapReport {
-            version: env!("CARGO_PKG_VERSION"),
-            preset,
-            units: "dimensionless (Π-groups of SPEC §1)",
-            params: &plan.base,
-            mu: plan.mu,
-            model: plan.base.model.name(),
-            excitation: plan.base.excitation.name(),
-            excitation_note: plan.base.ground().note(),
-            method: plan.base.method,
-            region_threshold: REGION_THRESHOLD,
+            description: Description::spectral(preset, &plan.base, plan.mu),
             x: AxisReport::of(&plan.x),
             y: AxisReport::of(&plan.y),
             layout: "row-major: cells[j * x.points + i] is (x value i, y value j)",
@@ -266,11 +247,12 @@ impl Report for MapReport<'_> {
 
     fn table(&self) -> String {
         let (p, x, y) = (&self.plan.base, &self.plan.x, &self.plan.y);
+        let case = &self.description.case;
         let mut s = String::new();
         let _ = writeln!(
             s,
             "{}: left-structure regions over x = {} ({}, {} points) and y = {} ({}, {} points)",
-            self.preset,
+            self.description.provenance.preset,
             x.symbol(),
             x.grid,
             x.len(),
@@ -282,7 +264,7 @@ impl Report for MapReport<'_> {
         let fixed: Vec<String> = [
             ("mass_ratio", "Π_m", p.mass_ratio),
             ("gap", "Π_d", p.gap),
-            ("mu", "μ", self.mu),
+            ("mu", "μ", self.plan.mu),
         ]
         .iter()
         .filter(|(key, _, _)| {
@@ -296,8 +278,8 @@ impl Report for MapReport<'_> {
             s,
             "{} method, {} excitation, {} contact, {}; + amplification, − suppression \
              (Π_u1 beyond ±{} % of no pounding), · no influence{}",
-            self.method,
-            self.excitation,
+            case.method,
+            case.excitation,
             p.model,
             fixed.join(", "),
             num(REGION_THRESHOLD * 100.0),

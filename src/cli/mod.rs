@@ -12,6 +12,7 @@
 
 pub mod bench;
 pub mod budget;
+pub mod description;
 pub mod figure;
 pub mod gap;
 pub mod map;

@@ -35,11 +35,6 @@ pub fn print(text: &str) -> Result<(), CliError> {
     Ok(crate::output::stdout::print(text)?)
 }
 
-/// Every parameter key and value as a JSON object (infinite values as "inf").
-pub fn params_json(p: &Params) -> serde_json::Value {
-    serde_json::to_value(p).unwrap_or(serde_json::Value::Null)
-}
-
 /// A float for tables and CSV: `inf` for infinity, otherwise the shortest exact form.
 pub fn num(v: f64) -> String {
     Num(v).to_string()

@@ -11,6 +11,7 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
+use super::description::Case;
 use super::output::{Format, num, print, render};
 use super::params::ParamArgs;
 use super::progress::{Progress, Tracked};
@@ -131,14 +132,10 @@ pub struct RunReport<'a> {
     preset: &'a str,
     #[serde(skip)]
     repeat: u32,
-    params: &'a Params,
-    model: &'static str,
-    /// The excitation's name (SPEC §9), and what the output must say beside
-    /// it: the type B pulse's initial velocity, a record's scaling.
-    excitation: &'static str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    excitation_note: Option<String>,
-    method: Method,
+    /// The parameters, their contact law, excitation (SPEC §9, with what
+    /// must be said beside it) and the method that ran.
+    #[serde(flatten)]
+    case: Case<'a>,
     dt: f64,
     tau_end: f64,
     steps: usize,
@@ -179,11 +176,10 @@ impl<'a> RunReport<'a> {
         RunReport {
             preset,
             repeat,
-            params: p,
-            model: p.model.name(),
-            excitation: p.excitation.name(),
-            excitation_note: p.ground().note(),
-            method: r.method,
+            case: Case {
+                method: r.method,
+                ..Case::of(p, None)
+            },
             dt: p.dt,
             tau_end: r.tau_end,
             steps: r.steps,
@@ -246,33 +242,33 @@ impl Report for RunReport<'_> {
             num(self.energy_residual),
             self.steps.to_string(),
             num(self.elapsed_ms),
-            self.method.to_string(),
+            self.case.method.to_string(),
             self.error_vs_exact.map(num).unwrap_or_default(),
             num(self.min_gap_no_pounding),
             self.reliable.to_string(),
             self.unreliable_reason.clone().unwrap_or_default(),
-            self.excitation.to_string(),
-            self.excitation_note.clone().unwrap_or_default(),
+            self.case.excitation.to_string(),
+            self.case.excitation_note.clone().unwrap_or_default(),
         ]]
     }
 
     fn table(&self) -> String {
-        let p = self.params;
+        let (p, case) = (self.case.params, &self.case);
         let mut s = String::new();
         let _ = writeln!(
             s,
             "{}: {} excitation, {} contact, {} method, Δτ = {}, {} cycles (τ_end = {:.3}), Π_d = {}",
             self.preset,
-            self.excitation,
-            p.model,
-            self.method,
+            case.excitation,
+            case.model,
+            case.method,
             Num(p.dt),
             p.cycles,
             self.tau_end,
             Num(p.gap)
         );
-        if let Some(note) = &self.excitation_note {
-            let _ = writeln!(s, "{}: {note}", self.excitation);
+        if let Some(note) = &case.excitation_note {
+            let _ = writeln!(s, "{}: {note}", case.excitation);
         }
         let _ = writeln!(
             s,

@@ -9,6 +9,7 @@ use clap::Args;
 
 use super::CliError;
 use super::budget::Work;
+use super::description::Provenance;
 use super::output::{Format, num, render};
 use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
@@ -285,13 +286,16 @@ impl<'a> LevelReport<'a> {
     }
 }
 
+/// SI for the physical runs, Π-groups for the rest.
+const UNITS: &str = "SI (m, m/s, rad/s, s, kg, m/s²) for the physical runs; \
+                     omega1, params and master are dimensionless Π-groups (SPEC §1, §8)";
+
 /// The similarity study in every format: physical runs in SI units, the
 /// master curve in Π-groups.
 #[derive(Debug, Serialize)]
 pub struct SimilarityReport<'a> {
-    version: &'static str,
-    preset: &'a str,
-    units: &'static str,
+    #[serde(flatten)]
+    provenance: Provenance<'a>,
     physical: PhysicalSi,
     omega_p: f64,
     mu: f64,
@@ -323,10 +327,7 @@ impl<'a> SimilarityReport<'a> {
         fixed: bool,
     ) -> Self {
         SimilarityReport {
-            version: env!("CARGO_PKG_VERSION"),
-            preset,
-            units: "SI (m, m/s, rad/s, s, kg, m/s²) for the physical runs; \
-                    omega1, params and master are dimensionless Π-groups (SPEC §1, §8)",
+            provenance: Provenance::new(preset, UNITS),
             physical: PhysicalSi::of(physical),
             omega_p: physical.omega_p,
             mu,
@@ -436,7 +437,7 @@ impl Report for SimilarityReport<'_> {
     fn table(&self) -> String {
         let levels: Vec<&Level> = self.levels.iter().map(|l| l.level).collect();
         table(
-            self.preset,
+            self.provenance.preset,
             self.source,
             self.mu,
             &levels,

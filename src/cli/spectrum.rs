@@ -9,6 +9,7 @@ use clap::Args;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
+use super::description::Description;
 use super::output::{Format, num, print, render};
 use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
@@ -16,13 +17,11 @@ use super::progress::Progress;
 use crate::analysis::baseline::BaselineCache;
 use crate::analysis::family::{Family, parse_mu};
 use crate::analysis::grid::Grid;
-use crate::analysis::spectrum::{
-    REGION_THRESHOLD, RegionRange, SpectrumPoint, at_omega, region_ranges,
-};
+use crate::analysis::spectrum::{RegionRange, SpectrumPoint, at_omega, region_ranges};
 use crate::analysis::spectrum_spec::{SpectrumSpec, check_sweep};
 use crate::analysis::sweep::{Curve, CurveSpec, curve_specs, sweep};
 use crate::model::params::echo;
-use crate::model::{Method, Params, Preset};
+use crate::model::{Params, Preset};
 use crate::output::report::Report;
 use serde::Serialize;
 
@@ -206,18 +205,9 @@ struct CurveReport<'a> {
 /// A spectrum in every format. All quantities are Π-groups (dimensionless).
 #[derive(Debug, Serialize)]
 pub struct SpectrumReport<'a> {
-    version: &'static str,
-    preset: &'a str,
-    units: &'static str,
     /// The fixed parameters (Π_ω1, Π_ω2 and the family key are set per point).
-    params: &'a Params,
-    mu: f64,
-    model: &'static str,
-    excitation: &'static str,
-    excitation_note: Option<String>,
-    method: Method,
-    /// Relative change of Π_u1 beyond which a point is amplification or suppression.
-    region_threshold: f64,
+    #[serde(flatten)]
+    description: Description<'a>,
     omega1_grid: String,
     grid: GridReport,
     curves: Vec<CurveReport<'a>>,
@@ -233,18 +223,8 @@ impl<'a> SpectrumReport<'a> {
         cache: &BaselineCache,
         elapsed_ms: f64,
     ) -> Self {
-        let p = &plan.params;
         SpectrumReport {
-            version: env!("CARGO_PKG_VERSION"),
-            preset: &plan.preset.name,
-            units: "dimensionless (Π-groups of SPEC §1)",
-            params: p,
-            mu: plan.mu,
-            model: p.model.name(),
-            excitation: p.excitation.name(),
-            excitation_note: p.ground().note(),
-            method: p.method,
-            region_threshold: REGION_THRESHOLD,
+            description: Description::spectral(&plan.preset.name, &plan.params, plan.mu),
             omega1_grid: plan.grid.to_string(),
             grid: GridReport {
                 start: plan.grid.start,
@@ -321,17 +301,18 @@ impl Report for SpectrumReport<'_> {
     }
 
     fn table(&self) -> String {
-        let p = self.params;
+        let (head, case) = (&self.description.provenance, &self.description.case);
+        let p = case.params;
         let mut s = String::new();
         let _ = writeln!(
             s,
             "{}: spectrum over Π_ω1 = {} ({} points), {} excitation, {} contact, {} method, Π_m = {}, Π_d = {}",
-            self.preset,
+            head.preset,
             self.omega1_grid,
             self.grid.points,
-            p.excitation.name(),
-            p.model,
-            p.method,
+            case.excitation,
+            case.model,
+            case.method,
             num(p.mass_ratio),
             num(p.gap)
         );
@@ -342,7 +323,7 @@ impl Report for SpectrumReport<'_> {
                 .member
                 .as_ref()
                 .map_or_else(String::new, |m| format!("{m}, "));
-            let _ = writeln!(s, "\n{label}μ = {}   (free = no pounding)", c.mu);
+            let _ = writeln!(s, "\n{label}μ = {}   (free = no pounding)", num(c.mu));
             let _ = writeln!(
                 s,
                 "{:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7}  region",
@@ -368,7 +349,7 @@ impl Report for SpectrumReport<'_> {
             let ranges: Vec<String> = c
                 .regions
                 .iter()
-                .map(|r| format!("{} {}–{}", r.region.name(), r.from, r.to))
+                .map(|r| format!("{} {}–{}", r.region.name(), num(r.from), num(r.to)))
                 .collect();
             let _ = writeln!(s, "left-structure regions: {}", ranges.join(", "));
         }

@@ -4,10 +4,12 @@
 use std::fmt::Write as _;
 
 use clap::Args;
+use serde::Serialize;
 
 use super::CliError;
-use super::output::{Format, num};
+use super::output::{Format, num, print, render};
 use crate::accuracy::stress::{Outcome, check, corner_cases, random_cases};
+use crate::output::report::Report;
 
 #[derive(Debug, Clone, Args)]
 pub struct StressArgs {
@@ -41,21 +43,9 @@ pub fn execute(args: &StressArgs) -> Result<(), CliError> {
     let mut cases = corner_cases();
     cases.extend(random_cases(args.cases as usize, args.seed));
     let outcomes: Vec<Outcome> = cases.iter().map(check).collect();
-    let failed = outcomes.iter().filter(|o| !o.passed).count();
-    let text = match args.format {
-        Format::Json => {
-            serde_json::json!({
-                "cases": outcomes,
-                "passed": outcomes.len() - failed,
-                "failed": failed,
-            })
-            .to_string()
-                + "\n"
-        }
-        Format::Csv => csv(&outcomes),
-        Format::Table => table(&outcomes),
-    };
-    super::output::print(&text)?;
+    let report = StressReport::new(&outcomes);
+    print(&render(&report, args.format)?)?;
+    let failed = report.failed;
     if failed > 0 {
         Err(CliError::Failed(format!(
             "{failed} of {} stress cases failed",
@@ -63,6 +53,70 @@ pub fn execute(args: &StressArgs) -> Result<(), CliError> {
         )))
     } else {
         Ok(())
+    }
+}
+
+/// Every case's outcome, and how many passed and failed, in every format.
+#[derive(Debug, Serialize)]
+pub struct StressReport<'a> {
+    cases: &'a [Outcome],
+    failed: usize,
+    passed: usize,
+}
+
+impl<'a> StressReport<'a> {
+    pub fn new(cases: &'a [Outcome]) -> Self {
+        let failed = cases.iter().filter(|o| !o.passed).count();
+        StressReport {
+            cases,
+            failed,
+            passed: cases.len() - failed,
+        }
+    }
+}
+
+impl Report for StressReport<'_> {
+    fn table(&self) -> String {
+        table(self.cases)
+    }
+
+    fn csv_header(&self) -> Vec<&'static str> {
+        vec![
+            "case",
+            "passed",
+            "impacts",
+            "steps",
+            "step_retries",
+            "energy_residual",
+            "min_force",
+            "ms",
+            "exact_ms",
+            "exact_energy_residual",
+            "newmark_vs_exact",
+            "why",
+        ]
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        self.cases
+            .iter()
+            .map(|o| {
+                vec![
+                    o.name.clone(),
+                    o.passed.to_string(),
+                    o.impacts.to_string(),
+                    o.steps.to_string(),
+                    o.step_retries.to_string(),
+                    num(o.energy_residual),
+                    num(o.min_force),
+                    num(o.ms),
+                    num(o.exact_ms),
+                    num(o.exact_energy_residual),
+                    num(o.methods_differ_by),
+                    why(o),
+                ]
+            })
+            .collect()
     }
 }
 
@@ -121,39 +175,50 @@ fn table(outcomes: &[Outcome]) -> String {
     s
 }
 
-fn csv(outcomes: &[Outcome]) -> String {
-    let header = [
-        "case",
-        "passed",
-        "impacts",
-        "steps",
-        "step_retries",
-        "energy_residual",
-        "min_force",
-        "ms",
-        "exact_ms",
-        "exact_energy_residual",
-        "newmark_vs_exact",
-        "why",
-    ];
-    let rows: Vec<Vec<String>> = outcomes
-        .iter()
-        .map(|o| {
-            vec![
-                o.name.clone(),
-                o.passed.to_string(),
-                o.impacts.to_string(),
-                o.steps.to_string(),
-                o.step_retries.to_string(),
-                num(o.energy_residual),
-                num(o.min_force),
-                num(o.ms),
-                num(o.exact_ms),
-                num(o.exact_energy_residual),
-                num(o.methods_differ_by),
-                why(o),
-            ]
-        })
-        .collect();
-    crate::output::report::csv(&header, &rows)
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::output::report::{csv, json};
+
+    #[test]
+    fn a_failed_case_with_infinite_values_reads_the_same_in_json_and_csv() {
+        let blown = Outcome {
+            name: "blown".into(),
+            passed: false,
+            failures: vec!["non-finite output".into()],
+            notes: vec![],
+            params: String::new(),
+            impacts: 0,
+            steps: 10,
+            step_retries: 0,
+            energy_residual: f64::INFINITY,
+            min_force: f64::NEG_INFINITY,
+            max_force: 0.5,
+            ms: 1.0,
+            exact_impacts: 0,
+            exact_energy_residual: 1e-15,
+            exact_ms: 1.0,
+            methods_differ_by: f64::INFINITY,
+        };
+        let cases = [blown];
+        let report = StressReport::new(&cases);
+        let v: serde_json::Value = serde_json::from_str(&json(&report).unwrap()).unwrap();
+        assert_eq!(
+            (v["passed"].as_u64(), v["failed"].as_u64()),
+            (Some(0), Some(1))
+        );
+        let case = &v["cases"][0];
+        assert_eq!(case["energy_residual"], "inf");
+        assert_eq!(case["min_force"], "-inf");
+        assert_eq!(case["methods_differ_by"], "inf");
+        assert_eq!(case["max_force"], 0.5);
+        let text = csv(&report.csv_header(), &report.csv_rows());
+        let row: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
+        let header = report.csv_header();
+        let cell = |k: &str| row[header.iter().position(|h| *h == k).unwrap()];
+        assert_eq!(cell("energy_residual"), "inf");
+        assert_eq!(cell("min_force"), "-inf");
+        assert_eq!(cell("newmark_vs_exact"), "inf");
+        assert_eq!(cell("passed"), "false");
+    }
 }

@@ -9,6 +9,7 @@ use serde::Serialize;
 
 use super::cases::{AMPLITUDE_TOLERANCE, Case, Expect};
 use crate::model::ContactModel;
+use crate::output::report::float_or_inf;
 use crate::reference::{ReferenceOptions, reference};
 use crate::solver::exact::{self, ExactOptions};
 use crate::solver::{RunResult, relative_peak_error, simulate};
@@ -43,15 +44,21 @@ pub struct Outcome {
     pub impacts: usize,
     pub steps: usize,
     pub step_retries: usize,
+    /// A failed case may hold infinite values: written `"inf"`, as in CSV.
+    #[serde(serialize_with = "float_or_inf")]
     pub energy_residual: f64,
+    #[serde(serialize_with = "float_or_inf")]
     pub min_force: f64,
+    #[serde(serialize_with = "float_or_inf")]
     pub max_force: f64,
     pub ms: f64,
     /// The exact method on the same case: its impacts, energy residual and time.
     pub exact_impacts: usize,
+    #[serde(serialize_with = "float_or_inf")]
     pub exact_energy_residual: f64,
     pub exact_ms: f64,
     /// Largest relative difference of the four peaks, Newmark against exact.
+    #[serde(serialize_with = "float_or_inf")]
     pub methods_differ_by: f64,
 }
 

@@ -1,0 +1,118 @@
+//! What a report says about itself before its results, built here only and
+//! flattened (`#[serde(flatten)]`) into each command's report, so every
+//! command writes the same keys in the same order:
+//!
+//! - [`Provenance`]: `version`, `preset`, `units` (map, spectrum, gap, similarity);
+//! - [`Case`]: `params`, `mu`, `model`, `excitation`, `excitation_note`,
+//!   `method` (map, spectrum, run);
+//! - [`Description`]: both, then the `region_threshold` of SPEC §7, for the
+//!   reports that classify regions (map, spectrum).
+
+use serde::Serialize;
+
+use crate::analysis::spectrum::REGION_THRESHOLD;
+use crate::model::{Method, Params};
+
+/// The units of every report in Π-groups.
+pub const DIMENSIONLESS: &str = "dimensionless (Π-groups of SPEC §1)";
+
+/// Which program wrote a report, from which preset, in which units.
+#[derive(Debug, Serialize)]
+pub struct Provenance<'a> {
+    version: &'static str,
+    pub preset: &'a str,
+    units: &'static str,
+}
+
+impl<'a> Provenance<'a> {
+    pub fn new(preset: &'a str, units: &'static str) -> Self {
+        Provenance {
+            version: env!("CARGO_PKG_VERSION"),
+            preset,
+            units,
+        }
+    }
+}
+
+/// The parameter set a report is about, with the names of its contact law,
+/// ground motion (and what must be said beside it, SPEC §9) and method.
+#[derive(Debug, Serialize)]
+pub struct Case<'a> {
+    /// The fixed parameters (the keys a command sweeps are set per point).
+    pub params: &'a Params,
+    /// μ = Π_ω2/Π_ω1 of a sweep over Π_ω1 (absent for a single run).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mu: Option<f64>,
+    pub model: &'static str,
+    pub excitation: &'static str,
+    /// The type B pulse's initial velocity, a record's scaling; absent for the sine.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub excitation_note: Option<String>,
+    pub method: Method,
+}
+
+impl<'a> Case<'a> {
+    /// The case of `params`, at `mu` for a sweep.
+    pub fn of(params: &'a Params, mu: Option<f64>) -> Self {
+        Case {
+            params,
+            mu,
+            model: params.model.name(),
+            excitation: params.excitation.name(),
+            excitation_note: params.ground().note(),
+            method: params.method,
+        }
+    }
+}
+
+/// The head of a report that classifies the left structure's regions (SPEC §7).
+#[derive(Debug, Serialize)]
+pub struct Description<'a> {
+    #[serde(flatten)]
+    pub provenance: Provenance<'a>,
+    #[serde(flatten)]
+    pub case: Case<'a>,
+    /// Relative change of Π_u1 beyond which a point is amplification or suppression.
+    pub region_threshold: f64,
+}
+
+impl<'a> Description<'a> {
+    /// Preset `preset`'s parameters `params` swept at frequency ratio `mu`.
+    pub fn spectral(preset: &'a str, params: &'a Params, mu: f64) -> Self {
+        Description {
+            provenance: Provenance::new(preset, DIMENSIONLESS),
+            case: Case::of(params, Some(mu)),
+            region_threshold: REGION_THRESHOLD,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_come_in_one_order_and_infinity_is_inf() {
+        let p = Params {
+            gap: f64::INFINITY,
+            ..crate::model::SET1
+        };
+        let d = Description::spectral("set1", &p, 1.5);
+        let text = crate::output::report::json(&d).unwrap();
+        let params = serde_json::to_string(&p).unwrap();
+        assert!(params.contains(r#""gap":"inf""#), "{params}");
+        let expected = format!(
+            "{{\"version\":\"{}\",\"preset\":\"set1\",\"units\":\"{DIMENSIONLESS}\",\
+             \"params\":{params},\"mu\":1.5,\"model\":\"{}\",\"excitation\":\"sine\",\
+             \"method\":\"{}\",\"region_threshold\":{}}}\n",
+            env!("CARGO_PKG_VERSION"),
+            p.model.name(),
+            p.method.name(),
+            REGION_THRESHOLD
+        );
+        assert_eq!(text, expected);
+        // A single run has no μ.
+        let v = serde_json::to_value(Case::of(&p, None)).unwrap();
+        assert!(v.get("mu").is_none() && v.get("excitation_note").is_none());
+    }
+}

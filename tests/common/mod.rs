@@ -1,0 +1,109 @@
+//! What the command-line tests share: the real `pounding` binary run with
+//! arguments, its output as text or JSON, and the checks every command's
+//! success and every refusal must pass (one line on stderr naming the
+//! problem, exit 2 for bad input with nothing on stdout, 1 for a failed run
+//! or write, never a panic).
+
+// Each test crate uses the part it needs.
+#![allow(dead_code)]
+
+use std::ffi::OsStr;
+use std::fmt::Debug;
+use std::path::Path;
+use std::process::{Child, Command, Output, Stdio};
+
+/// The binary under test, built by Cargo for the integration tests.
+pub const BIN: &str = env!("CARGO_BIN_EXE_pounding");
+
+/// Runs the binary with `args`, stdin closed, stdout and stderr captured.
+pub fn pounding<S: AsRef<OsStr>>(args: &[S]) -> Output {
+    Command::new(BIN)
+        .args(args)
+        .stdin(Stdio::null())
+        .output()
+        .expect("the binary runs")
+}
+
+/// Starts the binary with `args`, stdin closed, stdout and stderr piped.
+pub fn spawn<S: AsRef<OsStr>>(args: &[S]) -> Child {
+    Command::new(BIN)
+        .args(args)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary starts")
+}
+
+/// Bytes as text, invalid UTF-8 replaced.
+pub fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Stdout as text; the program only ever writes UTF-8 there.
+pub fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).expect("stdout is UTF-8")
+}
+
+pub fn stderr(o: &Output) -> String {
+    text(&o.stderr)
+}
+
+/// Runs `args` and asserts exit 0 (stderr shown otherwise).
+pub fn succeeds<S: AsRef<OsStr> + Debug>(args: &[S]) -> Output {
+    let o = pounding(args);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    o
+}
+
+/// The one JSON object a successful run of `args` prints on stdout.
+pub fn json<S: AsRef<OsStr> + Debug>(args: &[S]) -> serde_json::Value {
+    parse_json(&succeeds(args).stdout)
+}
+
+/// `bytes` (a report on stdout, or on stderr beside a history on stdout) as JSON.
+pub fn parse_json(bytes: &[u8]) -> serde_json::Value {
+    serde_json::from_slice(bytes).unwrap_or_else(|e| panic!("not JSON ({e}): {:.300}", text(bytes)))
+}
+
+/// The arguments of a one-cycle `run` that writes its history to `target`.
+pub fn history_into(target: &Path) -> [&str; 5] {
+    let path = target.to_str().expect("a UTF-8 path");
+    ["run", "--cycles", "1", "--history", path]
+}
+
+/// The JSON summary of a successful [`history_into`] run.
+pub fn history_json(target: &Path) -> serde_json::Value {
+    json(&[&history_into(target)[..], &["--format", "json"]].concat())
+}
+
+/// Exactly one line on stderr, holding every fragment, and no panic.
+pub fn assert_one_line(o: &Output, fragments: &[&str]) {
+    let err = stderr(o);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(err.lines().count(), 1, "one line expected:\n{err}");
+    for f in fragments {
+        assert!(err.contains(f), "`{f}` missing from: {err}");
+    }
+}
+
+/// Runs `args` and asserts it fails with exit `code` and one line on
+/// stderr holding every fragment; bad input (exit 2) also prints nothing on stdout.
+pub fn fails<S: AsRef<OsStr> + Debug>(args: &[S], code: i32, fragments: &[&str]) -> Output {
+    let o = pounding(args);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(code), "{args:?}: {err}");
+    assert!(!err.contains("panicked"), "{args:?}: {err}");
+    assert_eq!(
+        err.lines().count(),
+        1,
+        "{args:?}: one line expected:\n{err}"
+    );
+    for f in fragments {
+        assert!(err.contains(f), "{args:?}: `{f}` missing from: {err}");
+    }
+    if code == 2 {
+        assert!(o.stdout.is_empty(), "{args:?}: {}", stdout(&o));
+    }
+    o
+}
