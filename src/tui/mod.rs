@@ -15,6 +15,7 @@
 //! - [`fields`], [`physical`]: the pane rows in Π-groups or physical units;
 //! - [`event`]: terminal input, results and signals as one channel;
 //! - [`layout`], [`ui`], [`views`], [`look`]: drawing, a pure function of the state;
+//! - [`pace`]: when to draw (a quick job's result with its key, one frame);
 //! - [`terminal`]: set-up and restore, synchronized frames;
 //! - [`gapfill`], [`sgr`]: fewer bytes per frame (unchanged cells for cursor
 //!   moves, short colour codes);
@@ -30,6 +31,7 @@ pub mod gapfill;
 pub mod jobs;
 pub mod layout;
 pub mod look;
+pub mod pace;
 pub mod physical;
 pub mod presets;
 pub mod scene;
