@@ -308,15 +308,10 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
     for (i, s) in series.iter().enumerate() {
         raster.draw(s, i);
     }
-    // Data cells. In colour, a blank between two data cells of a row takes
-    // the colour of the one on its left (invisible on a blank), so that the
-    // terminal changes colour where the series change, not around every gap
-    // in a trace: the bytes per frame follow the data, not its spacing.
-    // Blanks before the first and after the last keep the default, so they
-    // do not change with the data.
+    // Data cells, each in its series' colour (the blanks between them are
+    // sent in whatever colour is set: the terminal backend sees to that).
     let plain = Style::new().fg(Color::Reset).bg(Color::Reset);
     for r in 0..raster.rows {
-        let mut last: Option<(usize, Color)> = None;
         for c in 0..raster.cols {
             let i = r * raster.cols + c;
             let Some(owner) = raster.owner[i] else {
@@ -331,14 +326,7 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
             let mut tmp = [0u8; 4];
             buf[(plot.x + c as u16, y)].set_symbol(symbol.encode_utf8(&mut tmp));
             if look.color {
-                let color = series[owner].color;
-                buf[(plot.x + c as u16, y)].set_fg(color);
-                if let Some((from, left)) = last {
-                    for g in from + 1..c {
-                        buf[(plot.x + g as u16, y)].set_fg(left);
-                    }
-                }
-                last = Some((c, color));
+                buf[(plot.x + c as u16, y)].set_fg(series[owner].color);
             }
         }
     }

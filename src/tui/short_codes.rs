@@ -1,40 +1,69 @@
-//! A writer that shortens colour changes on their way to the terminal.
-//! The crossterm backend sets both colours at every change in the 256-colour
-//! form (`ESC[38;5;6;49m`, 11 bytes). This writer keeps track of the colours
-//! the terminal has, writes only the one that changes, and the 16 basic
-//! colours in their short codes (`ESC[36m`, 5 bytes: index 0–7 is 30–37,
-//! 8–15 is 90–97, the same palette entries). Every other sequence passes as
-//! it is; one it cannot read passes as it is and forgets the colours.
+//! A writer that shortens what the backend writes on its way to the terminal:
+//!
+//! - colours: the crossterm backend sets both colours at every change in
+//!   the 256-colour form (`ESC[38;5;6;49m`, 11 bytes). This writer keeps
+//!   track of the colours the terminal has, writes only the one that
+//!   changes, and the 16 basic colours in their short codes (`ESC[36m`,
+//!   5 bytes: index 0–7 is 30–37, 8–15 is 90–97, the same palette entries);
+//! - cursor moves: a CUP to the row the cursor is on becomes the shortest
+//!   move along the row ([`super::cursor`]), and one to where it is, nothing.
+//!
+//! Every other sequence passes as it is; one it cannot read passes as it
+//! is and forgets the colours and the cursor.
 
 use std::io::{self, Write};
+
+use super::cursor::Cursor;
 
 /// Longest escape sequence held back (longer ones pass as they are).
 const HOLD: usize = 64;
 
-pub struct ShortSgr<W: Write> {
+pub struct ShortCodes<W: Write> {
     out: W,
     /// An escape sequence being read.
     pending: Vec<u8>,
     /// The colours the terminal has (SGR codes), None when not known.
     fg: Option<Vec<u16>>,
     bg: Option<Vec<u16>>,
+    cursor: Cursor,
 }
 
-impl<W: Write> ShortSgr<W> {
-    pub fn new(out: W) -> ShortSgr<W> {
-        ShortSgr {
+impl<W: Write> ShortCodes<W> {
+    pub fn new(out: W) -> ShortCodes<W> {
+        ShortCodes {
             out,
             pending: Vec::new(),
             fg: None,
             bg: None,
+            cursor: Cursor::default(),
         }
     }
 
-    /// Passes the held bytes as they are.
+    /// Passes the held bytes as they are; a sequence that is not a private
+    /// mode (`ESC[?…h`, `ESC[?…l`: the cursor shown, synchronized updates)
+    /// may move the cursor.
     fn pass(&mut self) -> io::Result<()> {
+        if !self.pending.starts_with(b"\x1b[?") {
+            self.cursor.forget();
+        }
         self.out.write_all(&self.pending)?;
         self.pending.clear();
         Ok(())
+    }
+
+    /// Rewrites the held CUP `ESC [ row ; col H` as the shortest move there.
+    fn rewrite_move(&mut self) -> io::Result<()> {
+        let params = &self.pending[2..self.pending.len() - 1];
+        let place = match parse(params).as_deref() {
+            Some(&[r, c]) if r > 0 && c > 0 => Some((r - 1, c - 1)),
+            _ => None,
+        };
+        let Some((row, col)) = place else {
+            return self.pass();
+        };
+        self.pending.clear();
+        let text = self.cursor.goto(row, col);
+        self.out.write_all(text.as_bytes())
     }
 
     /// Rewrites the held SGR sequence `ESC [ params m`.
@@ -125,14 +154,22 @@ fn short(code: &[u16]) -> Vec<u16> {
     }
 }
 
-impl<W: Write> Write for ShortSgr<W> {
+impl<W: Write> ShortCodes<W> {
+    /// Plain text: it passes, and moves the cursor on.
+    fn text(&mut self, text: &[u8]) -> io::Result<()> {
+        self.cursor.printed(text);
+        self.out.write_all(text)
+    }
+}
+
+impl<W: Write> Write for ShortCodes<W> {
     fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
         // Start of the plain text not yet written.
         let mut start = 0;
         for (k, &b) in buf.iter().enumerate() {
             if self.pending.is_empty() {
                 if b == 0x1b {
-                    self.out.write_all(&buf[start..k])?;
+                    self.text(&buf[start..k])?;
                     self.pending.push(b);
                     start = k + 1;
                 }
@@ -144,17 +181,17 @@ impl<W: Write> Write for ShortSgr<W> {
             if n == 2 && b != b'[' {
                 self.pass()?;
             } else if n > 2 && (0x40..=0x7e).contains(&b) {
-                if b == b'm' {
-                    self.rewrite()?;
-                } else {
-                    self.pass()?;
+                match b {
+                    b'm' => self.rewrite()?,
+                    b'H' => self.rewrite_move()?,
+                    _ => self.pass()?,
                 }
             } else if n > HOLD {
                 (self.fg, self.bg) = (None, None);
                 self.pass()?;
             }
         }
-        self.out.write_all(&buf[start..])?;
+        self.text(&buf[start..])?;
         Ok(buf.len())
     }
 
@@ -173,7 +210,7 @@ mod tests {
         "\x1b[3;4H\x1b[36;49m⢶xy\x1b[33mz\x1b[39m \x1b[1m\x1b[38;2;1;2;3mw\x1b[0m\x1b[?25l";
 
     fn through(chunks: &[&[u8]]) -> String {
-        let mut w = ShortSgr::new(Vec::new());
+        let mut w = ShortCodes::new(Vec::new());
         for c in chunks {
             w.write_all(c).unwrap();
         }
@@ -183,6 +220,15 @@ mod tests {
     #[test]
     fn colours_are_written_short_and_only_when_they_change() {
         assert_eq!(through(&[FRAME.as_bytes()]), SHORT);
+    }
+
+    #[test]
+    fn moves_along_the_row_are_short_and_a_move_to_where_it_is_is_dropped() {
+        let frame = "\x1b[3;4Hab\x1b[3;8Hc\x1b[3;2Hd\x1b[?25l\x1b[3;3He\x1b[5;1Hf\x1b7\x1b[5;3Hg";
+        let short = "\x1b[3;4Hab\x1b[2Cc\x1b[2Gd\x1b[?25le\x1b[5;1Hf\x1b7\x1b[5;3Hg";
+        assert_eq!(through(&[frame.as_bytes()]), short);
+        let bytes: Vec<&[u8]> = frame.as_bytes().chunks(1).collect();
+        assert_eq!(through(&bytes), short);
     }
 
     #[test]
