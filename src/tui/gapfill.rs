@@ -135,7 +135,7 @@ impl<B: Backend> Backend for GapFill<B> {
         for i in 1..out.len() {
             let (before, rest) = out.split_at_mut(i);
             let (left, cell) = (&before[i - 1].2, &mut rest[0].2);
-            if blank(cell) && cell.bg == left.bg && left.modifier.is_empty() {
+            if blank(cell) && left.modifier.is_empty() {
                 cell.fg = left.fg;
             }
         }
