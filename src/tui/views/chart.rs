@@ -157,7 +157,10 @@ struct Raster {
     dx: usize,
     dy: usize,
     bits: Vec<u8>,
+    /// The last series drawn through each cell.
     owner: Vec<Option<usize>>,
+    /// Every series drawn through each cell, a bit each (the first 64).
+    through: Vec<u64>,
     x: [f64; 2],
     y: [f64; 2],
 }
@@ -173,6 +176,7 @@ impl Raster {
             dy,
             bits: vec![0; n],
             owner: vec![None; n],
+            through: vec![0; n],
             x,
             y,
         }
@@ -210,6 +214,7 @@ impl Raster {
         };
         self.bits[i] |= bit;
         self.owner[i] = Some(series);
+        self.through[i] |= 1u64.checked_shl(series as u32).unwrap_or(0);
     }
 
     fn segment(&mut self, a: (f64, f64), b: (f64, f64), series: usize) {
@@ -309,9 +314,14 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
         raster.draw(s, i);
     }
     // Data cells, each in its series' colour (the blanks between them are
-    // sent in whatever colour is set: the terminal backend sees to that).
+    // sent in whatever colour is set: the terminal backend sees to that). A
+    // cell that several series cross takes the colour of the last one drawn,
+    // or, in colour, that of the cell on its left when one of them has it: a
+    // trace keeps its colour through a crossing, and the terminal changes
+    // colour where the series change, not at every shared cell.
     let plain = Style::new().fg(Color::Reset).bg(Color::Reset);
     for r in 0..raster.rows {
+        let mut left: Option<Color> = None;
         for c in 0..raster.cols {
             let i = r * raster.cols + c;
             let Some(owner) = raster.owner[i] else {
@@ -326,7 +336,17 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
             let mut tmp = [0u8; 4];
             buf[(plot.x + c as u16, y)].set_symbol(symbol.encode_utf8(&mut tmp));
             if look.color {
-                buf[(plot.x + c as u16, y)].set_fg(series[owner].color);
+                let through = raster.through[i];
+                let crossing = |k: usize, s: &Series| {
+                    through & 1u64.checked_shl(k as u32).unwrap_or(0) != 0 && Some(s.color) == left
+                };
+                let color = if series.iter().enumerate().any(|(k, s)| crossing(k, s)) {
+                    left.unwrap_or(series[owner].color)
+                } else {
+                    series[owner].color
+                };
+                buf[(plot.x + c as u16, y)].set_fg(color);
+                left = Some(color);
             }
         }
     }
