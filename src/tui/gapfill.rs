@@ -10,7 +10,8 @@
 //! attributes) is sent in the foreground colour already set, since that
 //! colour does not show on a blank: a blank after a coloured trace then
 //! costs no colour change, and a blank that only changed its unseen
-//! colour is not sent at all. The screen shows the same.
+//! colour is not sent at all. The cursor, once hidden, is not hidden again
+//! at every frame. The screen shows the same.
 
 use ratatui::backend::{Backend, ClearType, WindowSize};
 use ratatui::buffer::Cell;
@@ -24,6 +25,8 @@ pub struct GapFill<B: Backend> {
     size: Size,
     /// What the screen shows, row-major; None where it is not known.
     shadow: Vec<Option<Cell>>,
+    /// The cursor is hidden (ratatui hides it again at every frame).
+    hidden: bool,
 }
 
 impl<B: Backend> GapFill<B> {
@@ -32,6 +35,7 @@ impl<B: Backend> GapFill<B> {
             inner,
             size: Size::default(),
             shadow: Vec::new(),
+            hidden: false,
         }
     }
 
@@ -154,10 +158,15 @@ impl<B: Backend> Backend for GapFill<B> {
     }
 
     fn hide_cursor(&mut self) -> Result<(), Self::Error> {
-        self.inner.hide_cursor()
+        if !self.hidden {
+            self.inner.hide_cursor()?;
+            self.hidden = true;
+        }
+        Ok(())
     }
 
     fn show_cursor(&mut self) -> Result<(), Self::Error> {
+        self.hidden = false;
         self.inner.show_cursor()
     }
 

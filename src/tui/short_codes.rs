@@ -4,7 +4,8 @@
 //!   the 256-colour form (`ESC[38;5;6;49m`, 11 bytes). This writer keeps
 //!   track of the colours the terminal has, writes only the one that
 //!   changes, and the 16 basic colours in their short codes (`ESC[36m`,
-//!   5 bytes: index 0–7 is 30–37, 8–15 is 90–97, the same palette entries);
+//!   5 bytes: index 0–7 is 30–37, 8–15 is 90–97, the same palette entries),
+//!   and the underline colour's reset only when one is set;
 //! - cursor moves: a CUP to the row the cursor is on becomes the shortest
 //!   move along the row ([`super::cursor`]), and one to where it is, nothing.
 //!
@@ -25,6 +26,8 @@ pub struct ShortCodes<W: Write> {
     /// The colours the terminal has (SGR codes), None when not known.
     fg: Option<Vec<u16>>,
     bg: Option<Vec<u16>>,
+    /// The underline colour (the backend resets it after every frame).
+    underline: Option<Vec<u16>>,
     cursor: Cursor,
 }
 
@@ -35,6 +38,7 @@ impl<W: Write> ShortCodes<W> {
             pending: Vec::new(),
             fg: None,
             bg: None,
+            underline: None,
             cursor: Cursor::default(),
         }
     }
@@ -49,6 +53,10 @@ impl<W: Write> ShortCodes<W> {
         self.out.write_all(&self.pending)?;
         self.pending.clear();
         Ok(())
+    }
+
+    fn forget_colours(&mut self) {
+        (self.fg, self.bg, self.underline) = (None, None, None);
     }
 
     /// Rewrites the held CUP `ESC [ row ; col H` as the shortest move there.
@@ -70,10 +78,10 @@ impl<W: Write> ShortCodes<W> {
     fn rewrite(&mut self) -> io::Result<()> {
         let params = &self.pending[2..self.pending.len() - 1];
         let Some(codes) = parse(params) else {
-            (self.fg, self.bg) = (None, None);
+            self.forget_colours();
             return self.pass();
         };
-        let (mut fg, mut bg) = (None, None);
+        let (mut fg, mut bg, mut underline) = (None, None, None);
         let mut keep: Vec<u16> = Vec::new();
         let mut i = 0;
         while i < codes.len() {
@@ -86,21 +94,24 @@ impl<W: Write> ShortCodes<W> {
             match c {
                 0 => {
                     keep.push(0);
-                    (self.fg, self.bg) = (Some(vec![39]), Some(vec![49]));
-                    (fg, bg) = (None, None);
+                    self.fg = Some(vec![39]);
+                    self.bg = Some(vec![49]);
+                    self.underline = Some(vec![59]);
+                    (fg, bg, underline) = (None, None, None);
                 }
                 30..=37 | 39 | 90..=97 => fg = Some(vec![c]),
                 40..=47 | 49 | 100..=107 => bg = Some(vec![c]),
+                59 => underline = Some(vec![c]),
                 38 | 48 | 58 => {
                     let Some(n) = extended(i) else {
-                        (self.fg, self.bg) = (None, None);
+                        self.forget_colours();
                         return self.pass();
                     };
                     let code = short(&codes[i..i + n]);
                     match c {
                         38 => fg = Some(code),
                         48 => bg = Some(code),
-                        _ => keep.extend_from_slice(&codes[i..i + n]),
+                        _ => underline = Some(codes[i..i + n].to_vec()),
                     }
                     i += n;
                     continue;
@@ -109,7 +120,11 @@ impl<W: Write> ShortCodes<W> {
             }
             i += 1;
         }
-        for (new, now) in [(fg, &mut self.fg), (bg, &mut self.bg)] {
+        for (new, now) in [
+            (fg, &mut self.fg),
+            (bg, &mut self.bg),
+            (underline, &mut self.underline),
+        ] {
             if let Some(code) = new
                 && now.as_ref() != Some(&code)
             {
@@ -187,7 +202,7 @@ impl<W: Write> Write for ShortCodes<W> {
                     _ => self.pass()?,
                 }
             } else if n > HOLD {
-                (self.fg, self.bg) = (None, None);
+                self.forget_colours();
                 self.pass()?;
             }
         }
@@ -241,8 +256,11 @@ mod tests {
 
     #[test]
     fn a_reset_is_kept_and_known_and_bright_colours_are_short() {
-        let out = through(&[b"\x1b[0m\x1b[38;5;10;49ma\x1b[39;49mb"]);
-        assert_eq!(out, "\x1b[0m\x1b[92ma\x1b[39mb");
+        let out = through(&[b"\x1b[0m\x1b[38;5;10;49ma\x1b[39;49mb\x1b[59m\x1b[0m"]);
+        assert_eq!(out, "\x1b[0m\x1b[92ma\x1b[39mb\x1b[0m");
+        // An underline colour set is reset.
+        let out = through(&[b"\x1b[58;5;1ma\x1b[59m"]);
+        assert_eq!(out, "\x1b[58;5;1ma\x1b[59m");
     }
 
     #[test]
