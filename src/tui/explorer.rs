@@ -1,13 +1,16 @@
 //! The main loop: wait for an event, let the app take it, run the effect it
 //! returns, start the job the visible scene now needs, redraw once for a
-//! burst of events. All I/O of the explorer happens here or on threads
-//! started here.
+//! burst of events, when [`Pace`] says so (a quick job's result in the same
+//! frame as the key that asked for it). All I/O of the explorer happens
+//! here or on threads started here.
 
-use std::sync::mpsc;
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::time::Instant;
 
 use super::app::{App, Exit};
 use super::effects::{self, Effect};
 use super::event::{self, AppEvent};
+use super::pace::{Pace, Step};
 use super::worker::Worker;
 use super::{terminal, ui};
 
@@ -29,16 +32,35 @@ pub fn run(mut app: App) -> std::io::Result<Exit> {
         let size = tty.size()?;
         app.on_resize(size.width, size.height);
         event::spawn_input(tx.clone());
+        let mut pace = Pace::default();
         loop {
+            let was_computing = app.jobs.computing;
             if let Some(job) = app.job() {
                 worker.submit(job);
+                if !was_computing {
+                    pace.started(Instant::now());
+                }
             }
-            terminal::draw(&mut tty, |f| ui::render(&app, f))?;
-            let Ok(first) = rx.recv() else {
-                return Ok(Exit::Quit);
+            let first = match pace.next(Instant::now(), app.jobs.computing) {
+                Step::Draw => {
+                    terminal::draw(&mut tty, |f| ui::render(&app, f))?;
+                    continue;
+                }
+                Step::Sleep => rx.recv().map_err(|_| RecvTimeoutError::Disconnected),
+                Step::WaitUntil(t) => rx.recv_timeout(t.saturating_duration_since(Instant::now())),
+            };
+            let first = match first {
+                Ok(ev) => ev,
+                Err(RecvTimeoutError::Timeout) => continue,
+                Err(RecvTimeoutError::Disconnected) => return Ok(Exit::Quit),
             };
             // Take the whole burst before drawing again.
             for ev in std::iter::once(first).chain(rx.try_iter()) {
+                if matches!(ev, AppEvent::Worker(_)) {
+                    pace.progress();
+                } else {
+                    pace.input();
+                }
                 let effect = match ev {
                     AppEvent::Key(k) => app.on_key(k),
                     AppEvent::Mouse(m) => {

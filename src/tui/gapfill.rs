@@ -1,25 +1,32 @@
 //! A backend wrapper that sends fewer bytes per frame. ratatui sends only
-//! the cells that changed, and moves the cursor (`ESC[row;colH`, 6–8 bytes)
-//! over every run of unchanged cells between them. A chart that shifts on a
-//! nudge changes every other cell or so, so most of a frame is cursor moves.
-//! This wrapper remembers what the screen shows and, where a short run of
-//! unchanged cells lies between two changed ones in a row, sends those
-//! cells again instead of the move, when that is shorter and needs no
-//! change of colour or attribute. A blank cell (a space without
+//! the cells that changed, and moves the cursor over every run of unchanged
+//! cells between them (3–5 bytes along a row once [`super::short_codes`]
+//! has shortened the move). A chart that shifts on a nudge changes every
+//! other cell or so, so much of a frame is cursor moves. This wrapper
+//! remembers what the screen shows and, where a short run of unchanged
+//! cells lies between two changed ones in a row, sends those cells again
+//! instead of the move, when that is no longer and needs no change of
+//! colour or attribute. A blank cell (a space without
 //! attributes) is sent in the foreground colour already set, since that
 //! colour does not show on a blank: a blank after a coloured trace then
-//! costs no colour change. The screen shows the same.
+//! costs no colour change, and a blank that only changed its unseen
+//! colour is not sent at all. The cursor, once hidden, is not hidden again
+//! at every frame. The screen shows the same.
 
 use ratatui::backend::{Backend, ClearType, WindowSize};
 use ratatui::buffer::Cell;
 use ratatui::layout::{Position, Size};
 use ratatui::text::Span;
 
+use super::cursor::move_cost;
+
 pub struct GapFill<B: Backend> {
     inner: B,
     size: Size,
     /// What the screen shows, row-major; None where it is not known.
     shadow: Vec<Option<Cell>>,
+    /// The cursor is hidden (ratatui hides it again at every frame).
+    hidden: bool,
 }
 
 impl<B: Backend> GapFill<B> {
@@ -28,6 +35,7 @@ impl<B: Backend> GapFill<B> {
             inner,
             size: Size::default(),
             shadow: Vec::new(),
+            hidden: false,
         }
     }
 
@@ -35,10 +43,17 @@ impl<B: Backend> GapFill<B> {
         &mut self.inner
     }
 
-    /// Forgets the screen (after a clear or a resize).
+    /// Forgets the screen (after a resize or a partial clear).
     fn forget(&mut self, size: Size) {
         self.size = size;
         self.shadow = vec![None; size.width as usize * size.height as usize];
+    }
+
+    /// The screen is blank (after a clear of all of it).
+    fn blanked(&mut self) {
+        let size = self.inner.size().unwrap_or(self.size);
+        self.size = size;
+        self.shadow = vec![Some(Cell::default()); size.width as usize * size.height as usize];
     }
 
     fn known(&self, x: u16, y: u16) -> Option<&Cell> {
@@ -49,10 +64,11 @@ impl<B: Backend> GapFill<B> {
     }
 
     /// The unchanged cells from `from` to `to` (exclusive) of row `y`, when
-    /// sending them costs fewer bytes than a cursor move and they share the
+    /// sending them costs no more bytes than a cursor move and they share the
     /// style of `left`, the cell sent just before them.
     fn filler(&self, from: u16, to: u16, y: u16, left: &Cell) -> Option<Vec<(u16, u16, Cell)>> {
-        let jump = format!("\x1b[{};{}H", y + 1, to + 1).len();
+        // The writer below moves along a row in few bytes (CUF or CHA).
+        let jump = move_cost((Some(y), Some(from)), (y, to));
         let same = |c: &Cell| {
             c.bg == left.bg && c.modifier == left.modifier && (c.fg == left.fg || blank(c))
         };
@@ -65,7 +81,7 @@ impl<B: Backend> GapFill<B> {
         for x in from..to {
             let c = self.known(x, y)?;
             bytes += c.symbol().len();
-            if bytes >= jump || !same(c) || !narrow(c) {
+            if bytes > jump || !same(c) || !narrow(c) {
                 return None;
             }
             cells.push((x, y, c.clone()));
@@ -77,6 +93,15 @@ impl<B: Backend> GapFill<B> {
 /// A space without attributes: its foreground colour does not show.
 fn blank(c: &Cell) -> bool {
     c.symbol() == " " && c.modifier.is_empty()
+}
+
+/// Whether two cells show the same: symbol, background and attributes, and
+/// the foreground unless both are blanks.
+fn looks_same(a: &Cell, b: &Cell) -> bool {
+    a.symbol() == b.symbol()
+        && a.bg == b.bg
+        && a.modifier == b.modifier
+        && (a.fg == b.fg || blank(a) && blank(b))
 }
 
 impl<B: Backend> Backend for GapFill<B> {
@@ -92,6 +117,14 @@ impl<B: Backend> Backend for GapFill<B> {
         }
         let mut out: Vec<(u16, u16, Cell)> = Vec::new();
         for (x, y, cell) in content {
+            // A cell that looks as the screen shows it already (a blank
+            // whose unseen colour changed) is not sent.
+            if self
+                .known(x, y)
+                .is_some_and(|shown| looks_same(shown, cell))
+            {
+                continue;
+            }
             if let Some((px, py, left)) = out.last()
                 && *py == y
                 && x > px + 1
@@ -106,7 +139,7 @@ impl<B: Backend> Backend for GapFill<B> {
         for i in 1..out.len() {
             let (before, rest) = out.split_at_mut(i);
             let (left, cell) = (&before[i - 1].2, &mut rest[0].2);
-            if blank(cell) && cell.bg == left.bg && left.modifier.is_empty() {
+            if blank(cell) && left.modifier.is_empty() {
                 cell.fg = left.fg;
             }
         }
@@ -125,10 +158,15 @@ impl<B: Backend> Backend for GapFill<B> {
     }
 
     fn hide_cursor(&mut self) -> Result<(), Self::Error> {
-        self.inner.hide_cursor()
+        if !self.hidden {
+            self.inner.hide_cursor()?;
+            self.hidden = true;
+        }
+        Ok(())
     }
 
     fn show_cursor(&mut self) -> Result<(), Self::Error> {
+        self.hidden = false;
         self.inner.show_cursor()
     }
 
@@ -141,13 +179,19 @@ impl<B: Backend> Backend for GapFill<B> {
     }
 
     fn clear(&mut self) -> Result<(), Self::Error> {
-        self.forget(self.size);
-        self.inner.clear()
+        self.inner.clear()?;
+        self.blanked();
+        Ok(())
     }
 
     fn clear_region(&mut self, clear_type: ClearType) -> Result<(), Self::Error> {
-        self.forget(self.size);
-        self.inner.clear_region(clear_type)
+        self.inner.clear_region(clear_type)?;
+        if clear_type == ClearType::All {
+            self.blanked();
+        } else {
+            self.forget(self.size);
+        }
+        Ok(())
     }
 
     fn size(&self) -> Result<Size, Self::Error> {

@@ -15,12 +15,14 @@
 //! - [`fields`], [`physical`]: the pane rows in Π-groups or physical units;
 //! - [`event`]: terminal input, results and signals as one channel;
 //! - [`layout`], [`ui`], [`views`], [`look`]: drawing, a pure function of the state;
+//! - [`pace`]: when to draw (a quick job's result with its key, one frame);
 //! - [`terminal`]: set-up and restore, synchronized frames;
-//! - [`gapfill`], [`sgr`]: fewer bytes per frame (unchanged cells for cursor
-//!   moves, short colour codes);
+//! - [`gapfill`], [`short_codes`], [`cursor`]: fewer bytes per frame
+//!   (unchanged cells for cursor moves, short colour codes and moves);
 //! - [`explorer`]: the main loop wiring them.
 
 pub mod app;
+pub mod cursor;
 pub mod effects;
 pub mod event;
 pub mod explorer;
@@ -30,10 +32,11 @@ pub mod gapfill;
 pub mod jobs;
 pub mod layout;
 pub mod look;
+pub mod pace;
 pub mod physical;
 pub mod presets;
 pub mod scene;
-pub mod sgr;
+pub mod short_codes;
 pub mod terminal;
 pub mod text_field;
 pub mod trace;

@@ -3,19 +3,19 @@
 //! captures mouse buttons only (no motion reports, so moving the mouse costs
 //! nothing), and restores it all on the way out. Every frame is wrapped in a
 //! synchronized update so a slow link never shows a half-drawn screen, and
-//! drawn through [`GapFill`] and [`ShortSgr`] so that it costs fewer bytes.
+//! drawn through [`GapFill`] and [`ShortCodes`] so that it costs fewer bytes.
 
 use std::io::{self, IsTerminal, Write};
 
 use crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
 use crossterm::{execute, queue};
-use ratatui::backend::CrosstermBackend;
+use ratatui::backend::{Backend, ClearType, CrosstermBackend};
 use ratatui::{Frame, Terminal};
 
 use super::gapfill::GapFill;
-use super::sgr::ShortSgr;
+use super::short_codes::ShortCodes;
 
-pub type Tty = Terminal<GapFill<CrosstermBackend<ShortSgr<io::Stdout>>>>;
+pub type Tty = Terminal<GapFill<CrosstermBackend<ShortCodes<io::Stdout>>>>;
 
 /// Why the explorer cannot start here, if it cannot.
 pub fn unusable() -> Option<String> {
@@ -52,9 +52,12 @@ pub fn setup() -> io::Result<Tty> {
     // ratatui's set-up (raw mode, alternate screen, panic hook); its own
     // terminal is replaced by one drawing through the gap filler.
     drop(ratatui::try_init()?);
-    let tty = Terminal::new(GapFill::new(CrosstermBackend::new(ShortSgr::new(
+    let mut tty = Terminal::new(GapFill::new(CrosstermBackend::new(ShortCodes::new(
         io::stdout(),
     ))))?;
+    // A clear screen is one the gap filler knows: blanks it may resend.
+    // (The backend's own clear: the terminal's would ask for the cursor.)
+    tty.backend_mut().clear_region(ClearType::All)?;
     set_mouse(true)?;
     Ok(tty)
 }

@@ -157,7 +157,10 @@ struct Raster {
     dx: usize,
     dy: usize,
     bits: Vec<u8>,
+    /// The last series drawn through each cell.
     owner: Vec<Option<usize>>,
+    /// Every series drawn through each cell, a bit each (the first 64).
+    through: Vec<u64>,
     x: [f64; 2],
     y: [f64; 2],
 }
@@ -173,6 +176,7 @@ impl Raster {
             dy,
             bits: vec![0; n],
             owner: vec![None; n],
+            through: vec![0; n],
             x,
             y,
         }
@@ -210,6 +214,7 @@ impl Raster {
         };
         self.bits[i] |= bit;
         self.owner[i] = Some(series);
+        self.through[i] |= 1u64.checked_shl(series as u32).unwrap_or(0);
     }
 
     fn segment(&mut self, a: (f64, f64), b: (f64, f64), series: usize) {
@@ -308,15 +313,15 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
     for (i, s) in series.iter().enumerate() {
         raster.draw(s, i);
     }
-    // Data cells. In colour, a blank between two data cells of a row takes
-    // the colour of the one on its left (invisible on a blank), so that the
-    // terminal changes colour where the series change, not around every gap
-    // in a trace: the bytes per frame follow the data, not its spacing.
-    // Blanks before the first and after the last keep the default, so they
-    // do not change with the data.
+    // Data cells, each in its series' colour (the blanks between them are
+    // sent in whatever colour is set: the terminal backend sees to that). A
+    // cell that several series cross takes the colour of the last one drawn,
+    // or, in colour, that of the cell on its left when one of them has it: a
+    // trace keeps its colour through a crossing, and the terminal changes
+    // colour where the series change, not at every shared cell.
     let plain = Style::new().fg(Color::Reset).bg(Color::Reset);
     for r in 0..raster.rows {
-        let mut last: Option<(usize, Color)> = None;
+        let mut left: Option<Color> = None;
         for c in 0..raster.cols {
             let i = r * raster.cols + c;
             let Some(owner) = raster.owner[i] else {
@@ -331,14 +336,17 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
             let mut tmp = [0u8; 4];
             buf[(plot.x + c as u16, y)].set_symbol(symbol.encode_utf8(&mut tmp));
             if look.color {
-                let color = series[owner].color;
+                let through = raster.through[i];
+                let crossing = |k: usize, s: &Series| {
+                    through & 1u64.checked_shl(k as u32).unwrap_or(0) != 0 && Some(s.color) == left
+                };
+                let color = if series.iter().enumerate().any(|(k, s)| crossing(k, s)) {
+                    left.unwrap_or(series[owner].color)
+                } else {
+                    series[owner].color
+                };
                 buf[(plot.x + c as u16, y)].set_fg(color);
-                if let Some((from, left)) = last {
-                    for g in from + 1..c {
-                        buf[(plot.x + g as u16, y)].set_fg(left);
-                    }
-                }
-                last = Some((c, color));
+                left = Some(color);
             }
         }
     }

@@ -1,8 +1,8 @@
 //! Scene (a): the left structure's region (SPEC §7), or its amplification
 //! ratio Π_u1/Π_u1,free (key o), over Π_ω1 across and a second parameter
 //! down (key y: μ, Π_d, Π_m, Π_e), for the active set. Two map rows per
-//! terminal row in colour (`▀`, the upper cell in the foreground colour,
-//! the lower in the background), one row per terminal row in shading
+//! terminal row in colour (half blocks, one half in the foreground colour,
+//! the other in the background; see [`half_cell`]), one row per terminal row in shading
 //! characters under NO_COLOR or `--ascii`. A marker sits at the set's own
 //! point, the cursor cell is read out below, and rows not yet computed show
 //! their nearest computed neighbour, so the coarse picture comes first.
@@ -254,6 +254,8 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         .map(|(c, r)| (c.min(nx - 1), r.min(ny - 1)))
         .unwrap_or(own);
     for r in 0..plot.height {
+        // The colours the terminal has after the cell on the left.
+        let mut pen = (Color::Reset, Color::Reset);
         for c in 0..plot.width {
             let col = usize::from(c);
             let top = map_row(r, 0)
@@ -264,12 +266,10 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
                 let bottom = map_row(r, 1)
                     .and_then(|y| m.cell(col, y))
                     .map(|x| paint(x, ratio));
-                cell.set_symbol("▀")
-                    .set_fg(top.map_or(Color::Reset, |p| p.0))
-                    .set_bg(bottom.map_or(Color::Reset, |p| p.0));
-                if top.is_none() && bottom.is_none() {
-                    cell.set_symbol(" ");
-                }
+                let colour = |p: Option<(Color, char)>| p.map_or(Color::Reset, |p| p.0);
+                let (symbol, fg, bg) = half_cell(colour(top), colour(bottom), pen);
+                cell.set_symbol(symbol).set_fg(fg).set_bg(bg);
+                pen = (if symbol == " " { pen.0 } else { fg }, bg);
             } else {
                 cell.set_symbol(&top.map_or(' ', |p| p.1).to_string());
             }
@@ -284,7 +284,7 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
             }
             if here(cursor) && app.view.map_cursor.is_some() {
                 cell.set_style(Style::new().add_modifier(Modifier::REVERSED));
-                if cell.symbol() == " " || cell.symbol() == "▀" {
+                if matches!(cell.symbol(), " " | "▀" | "▄") {
                     cell.set_symbol("+");
                 }
             }
@@ -373,6 +373,24 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         &fit(&look.text(&format!("{label}{text}")), area.width as usize),
         right,
     );
+}
+
+/// One terminal cell of two map rows, `top` over `bottom`, as (symbol,
+/// foreground, background), given the colours `pen` the terminal has from
+/// the cell on its left. Two equal halves are a blank in the background
+/// colour (one byte, and no foreground to set); two different ones an
+/// upper half block `▀` or a lower one `▄` with the colours swapped,
+/// whichever keeps more of `pen`: the same picture in fewer colour changes.
+fn half_cell(top: Color, bottom: Color, pen: (Color, Color)) -> (&'static str, Color, Color) {
+    if top == bottom {
+        return (" ", Color::Reset, bottom);
+    }
+    let kept = |fg: Color, bg: Color| usize::from(pen.0 == fg) + usize::from(pen.1 == bg);
+    if kept(bottom, top) > kept(top, bottom) {
+        ("▄", bottom, top)
+    } else {
+        ("▀", top, bottom)
+    }
 }
 
 fn put(buf: &mut ratatui::buffer::Buffer, x: u16, y: u16, text: &str, right: u16) {

@@ -1,50 +1,87 @@
-//! A writer that shortens colour changes on their way to the terminal.
-//! The crossterm backend sets both colours at every change in the 256-colour
-//! form (`ESC[38;5;6;49m`, 11 bytes). This writer keeps track of the colours
-//! the terminal has, writes only the one that changes, and the 16 basic
-//! colours in their short codes (`ESC[36m`, 5 bytes: index 0–7 is 30–37,
-//! 8–15 is 90–97, the same palette entries). Every other sequence passes as
-//! it is; one it cannot read passes as it is and forgets the colours.
+//! A writer that shortens what the backend writes on its way to the terminal:
+//!
+//! - colours: the crossterm backend sets both colours at every change in
+//!   the 256-colour form (`ESC[38;5;6;49m`, 11 bytes). This writer keeps
+//!   track of the colours the terminal has, writes only the one that
+//!   changes, and the 16 basic colours in their short codes (`ESC[36m`,
+//!   5 bytes: index 0–7 is 30–37, 8–15 is 90–97, the same palette entries),
+//!   and the underline colour's reset only when one is set;
+//! - cursor moves: a CUP to the row the cursor is on becomes the shortest
+//!   move along the row ([`super::cursor`]), and one to where it is, nothing.
+//!
+//! Every other sequence passes as it is; one it cannot read passes as it
+//! is and forgets the colours and the cursor.
 
 use std::io::{self, Write};
+
+use super::cursor::Cursor;
 
 /// Longest escape sequence held back (longer ones pass as they are).
 const HOLD: usize = 64;
 
-pub struct ShortSgr<W: Write> {
+pub struct ShortCodes<W: Write> {
     out: W,
     /// An escape sequence being read.
     pending: Vec<u8>,
     /// The colours the terminal has (SGR codes), None when not known.
     fg: Option<Vec<u16>>,
     bg: Option<Vec<u16>>,
+    /// The underline colour (the backend resets it after every frame).
+    underline: Option<Vec<u16>>,
+    cursor: Cursor,
 }
 
-impl<W: Write> ShortSgr<W> {
-    pub fn new(out: W) -> ShortSgr<W> {
-        ShortSgr {
+impl<W: Write> ShortCodes<W> {
+    pub fn new(out: W) -> ShortCodes<W> {
+        ShortCodes {
             out,
             pending: Vec::new(),
             fg: None,
             bg: None,
+            underline: None,
+            cursor: Cursor::default(),
         }
     }
 
-    /// Passes the held bytes as they are.
+    /// Passes the held bytes as they are; a sequence that is not a private
+    /// mode (`ESC[?…h`, `ESC[?…l`: the cursor shown, synchronized updates)
+    /// may move the cursor.
     fn pass(&mut self) -> io::Result<()> {
+        if !self.pending.starts_with(b"\x1b[?") {
+            self.cursor.forget();
+        }
         self.out.write_all(&self.pending)?;
         self.pending.clear();
         Ok(())
+    }
+
+    fn forget_colours(&mut self) {
+        (self.fg, self.bg, self.underline) = (None, None, None);
+    }
+
+    /// Rewrites the held CUP `ESC [ row ; col H` as the shortest move there.
+    fn rewrite_move(&mut self) -> io::Result<()> {
+        let params = &self.pending[2..self.pending.len() - 1];
+        let place = match parse(params).as_deref() {
+            Some(&[r, c]) if r > 0 && c > 0 => Some((r - 1, c - 1)),
+            _ => None,
+        };
+        let Some((row, col)) = place else {
+            return self.pass();
+        };
+        self.pending.clear();
+        let text = self.cursor.goto(row, col);
+        self.out.write_all(text.as_bytes())
     }
 
     /// Rewrites the held SGR sequence `ESC [ params m`.
     fn rewrite(&mut self) -> io::Result<()> {
         let params = &self.pending[2..self.pending.len() - 1];
         let Some(codes) = parse(params) else {
-            (self.fg, self.bg) = (None, None);
+            self.forget_colours();
             return self.pass();
         };
-        let (mut fg, mut bg) = (None, None);
+        let (mut fg, mut bg, mut underline) = (None, None, None);
         let mut keep: Vec<u16> = Vec::new();
         let mut i = 0;
         while i < codes.len() {
@@ -57,21 +94,24 @@ impl<W: Write> ShortSgr<W> {
             match c {
                 0 => {
                     keep.push(0);
-                    (self.fg, self.bg) = (Some(vec![39]), Some(vec![49]));
-                    (fg, bg) = (None, None);
+                    self.fg = Some(vec![39]);
+                    self.bg = Some(vec![49]);
+                    self.underline = Some(vec![59]);
+                    (fg, bg, underline) = (None, None, None);
                 }
                 30..=37 | 39 | 90..=97 => fg = Some(vec![c]),
                 40..=47 | 49 | 100..=107 => bg = Some(vec![c]),
+                59 => underline = Some(vec![c]),
                 38 | 48 | 58 => {
                     let Some(n) = extended(i) else {
-                        (self.fg, self.bg) = (None, None);
+                        self.forget_colours();
                         return self.pass();
                     };
                     let code = short(&codes[i..i + n]);
                     match c {
                         38 => fg = Some(code),
                         48 => bg = Some(code),
-                        _ => keep.extend_from_slice(&codes[i..i + n]),
+                        _ => underline = Some(codes[i..i + n].to_vec()),
                     }
                     i += n;
                     continue;
@@ -80,7 +120,11 @@ impl<W: Write> ShortSgr<W> {
             }
             i += 1;
         }
-        for (new, now) in [(fg, &mut self.fg), (bg, &mut self.bg)] {
+        for (new, now) in [
+            (fg, &mut self.fg),
+            (bg, &mut self.bg),
+            (underline, &mut self.underline),
+        ] {
             if let Some(code) = new
                 && now.as_ref() != Some(&code)
             {
@@ -125,14 +169,22 @@ fn short(code: &[u16]) -> Vec<u16> {
     }
 }
 
-impl<W: Write> Write for ShortSgr<W> {
+impl<W: Write> ShortCodes<W> {
+    /// Plain text: it passes, and moves the cursor on.
+    fn text(&mut self, text: &[u8]) -> io::Result<()> {
+        self.cursor.printed(text);
+        self.out.write_all(text)
+    }
+}
+
+impl<W: Write> Write for ShortCodes<W> {
     fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
         // Start of the plain text not yet written.
         let mut start = 0;
         for (k, &b) in buf.iter().enumerate() {
             if self.pending.is_empty() {
                 if b == 0x1b {
-                    self.out.write_all(&buf[start..k])?;
+                    self.text(&buf[start..k])?;
                     self.pending.push(b);
                     start = k + 1;
                 }
@@ -144,17 +196,17 @@ impl<W: Write> Write for ShortSgr<W> {
             if n == 2 && b != b'[' {
                 self.pass()?;
             } else if n > 2 && (0x40..=0x7e).contains(&b) {
-                if b == b'm' {
-                    self.rewrite()?;
-                } else {
-                    self.pass()?;
+                match b {
+                    b'm' => self.rewrite()?,
+                    b'H' => self.rewrite_move()?,
+                    _ => self.pass()?,
                 }
             } else if n > HOLD {
-                (self.fg, self.bg) = (None, None);
+                self.forget_colours();
                 self.pass()?;
             }
         }
-        self.out.write_all(&buf[start..])?;
+        self.text(&buf[start..])?;
         Ok(buf.len())
     }
 
@@ -173,7 +225,7 @@ mod tests {
         "\x1b[3;4H\x1b[36;49m⢶xy\x1b[33mz\x1b[39m \x1b[1m\x1b[38;2;1;2;3mw\x1b[0m\x1b[?25l";
 
     fn through(chunks: &[&[u8]]) -> String {
-        let mut w = ShortSgr::new(Vec::new());
+        let mut w = ShortCodes::new(Vec::new());
         for c in chunks {
             w.write_all(c).unwrap();
         }
@@ -186,6 +238,15 @@ mod tests {
     }
 
     #[test]
+    fn moves_along_the_row_are_short_and_a_move_to_where_it_is_is_dropped() {
+        let frame = "\x1b[3;4Hab\x1b[3;8Hc\x1b[3;2Hd\x1b[?25l\x1b[3;3He\x1b[5;1Hf\x1b7\x1b[5;3Hg";
+        let short = "\x1b[3;4Hab\x1b[2Cc\x1b[2Gd\x1b[?25le\x1b[5;1Hf\x1b7\x1b[5;3Hg";
+        assert_eq!(through(&[frame.as_bytes()]), short);
+        let bytes: Vec<&[u8]> = frame.as_bytes().chunks(1).collect();
+        assert_eq!(through(&bytes), short);
+    }
+
+    #[test]
     fn sequences_split_across_writes_are_read_whole() {
         let bytes: Vec<&[u8]> = FRAME.as_bytes().chunks(1).collect();
         assert_eq!(through(&bytes), SHORT);
@@ -195,8 +256,11 @@ mod tests {
 
     #[test]
     fn a_reset_is_kept_and_known_and_bright_colours_are_short() {
-        let out = through(&[b"\x1b[0m\x1b[38;5;10;49ma\x1b[39;49mb"]);
-        assert_eq!(out, "\x1b[0m\x1b[92ma\x1b[39mb");
+        let out = through(&[b"\x1b[0m\x1b[38;5;10;49ma\x1b[39;49mb\x1b[59m\x1b[0m"]);
+        assert_eq!(out, "\x1b[0m\x1b[92ma\x1b[39mb\x1b[0m");
+        // An underline colour set is reset.
+        let out = through(&[b"\x1b[58;5;1ma\x1b[59m"]);
+        assert_eq!(out, "\x1b[58;5;1ma\x1b[59m");
     }
 
     #[test]
