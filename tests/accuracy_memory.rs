@@ -1,19 +1,28 @@
 //! The peaks-only observer allocates nothing per step: the bytes a run
 //! allocates do not grow with its length (a counting global allocator,
-//! private to this test binary).
+//! private to this test binary, counting per thread so that tests running
+//! side by side do not see each other's allocations).
 
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::cell::Cell;
 
 use pounding::model::{Params, SET1};
 use pounding::solver::{SolverOptions, simulate};
 
 struct Counting;
-static ALLOCATED: AtomicUsize = AtomicUsize::new(0);
+thread_local! {
+    /// Bytes allocated by this thread.
+    static ALLOCATED: Cell<usize> = const { Cell::new(0) };
+}
+
+fn allocated() -> usize {
+    ALLOCATED.with(Cell::get)
+}
 
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATED.fetch_add(layout.size(), Ordering::Relaxed);
+        // `try_with`: a thread being torn down has no counter left, and needs none.
+        let _ = ALLOCATED.try_with(|a| a.set(a.get() + layout.size()));
         unsafe { System.alloc(layout) }
     }
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
@@ -25,10 +34,10 @@ unsafe impl GlobalAlloc for Counting {
 static GLOBAL: Counting = Counting;
 
 fn allocated_by(p: &Params) -> usize {
-    let before = ALLOCATED.load(Ordering::Relaxed);
+    let before = allocated();
     let r = simulate(p, &SolverOptions::default(), &mut ());
     assert!(r.completed);
-    ALLOCATED.load(Ordering::Relaxed) - before
+    allocated() - before
 }
 
 /// Without pounding, 1 and 200 cycles allocate the same bytes; with pounding,
