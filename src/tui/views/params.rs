@@ -149,7 +149,10 @@ pub fn render_info(app: &App, frame: &mut Frame, area: Rect) {
         };
         presets.push(text);
     }
-    lines.push(Line::from(presets.join("  ")));
+    // Two spaces between the sets where the line fits the box, else one.
+    let both = presets.join("  ");
+    let fits = both.chars().count() < usize::from(area.width);
+    lines.push(Line::from(if fits { both } else { presets.join(" ") }));
     if app.physical_view() {
         let groups: Vec<String> = FIELDS
             .iter()
@@ -180,5 +183,11 @@ pub fn render_info(app: &App, frame: &mut Frame, area: Rect) {
             Line::styled(app.look.text(&text), style)
         })
         .collect();
+    // One blank column on the right, so that a full line never runs into
+    // the chart titles beside the box.
+    let area = Rect {
+        width: area.width.saturating_sub(1),
+        ..area
+    };
     frame.render_widget(Paragraph::new(lines).wrap(Wrap { trim: true }), area);
 }
