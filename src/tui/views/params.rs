@@ -149,10 +149,16 @@ pub fn render_info(app: &App, frame: &mut Frame, area: Rect) {
         };
         presets.push(text);
     }
-    // Two spaces between the sets where the line fits the box, else one.
-    let both = presets.join("  ");
-    let fits = both.chars().count() < usize::from(area.width);
-    lines.push(Line::from(if fits { both } else { presets.join(" ") }));
+    // Two spaces between the sets, or one where only that makes the line
+    // fit the box (it wraps otherwise).
+    let fits = |line: &String| line.chars().count() < usize::from(area.width);
+    let (wide, narrow) = (presets.join("  "), presets.join(" "));
+    let line = if !fits(&wide) && fits(&narrow) {
+        narrow
+    } else {
+        wide
+    };
+    lines.push(Line::from(line));
     if app.physical_view() {
         let groups: Vec<String> = FIELDS
             .iter()
