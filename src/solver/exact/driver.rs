@@ -132,6 +132,8 @@ struct Run<'a> {
     x: [f64; 2],
     v: [f64; 2],
     branch: [Branch; 2],
+    /// Q/m of each structure's branch (SPEC §3), for the quiet segments.
+    loads: [f64; 2],
     contact: Option<ContactLaw>,
     /// The open impact, an index into `result.impacts`.
     open_impact: Option<usize>,
@@ -183,6 +185,7 @@ impl<'a> Run<'a> {
                 structures[0].initial_branch(x1, v1),
                 structures[1].initial_branch(x2, v2),
             ],
+            loads: [0.0; 2],
             contact: None,
             open_impact: None,
             free_step,
@@ -221,6 +224,7 @@ impl<'a> Run<'a> {
             },
         };
         run.result.impacts.reserve(32);
+        run.update_loads();
         for i in 0..2 {
             let peaks = run.result.structure_mut(i);
             peaks.peak_displacement = run.x[i].abs();
@@ -322,43 +326,52 @@ impl<'a> Run<'a> {
         };
         let h = QUIET_FRACTION * self.free_step;
         let mut next = [[0.0; 2]; 2];
-        let mut local = [Majorants::default(); 2];
-        let mut swing_x = [0.0; 2];
+        let mut local = [None; 2];
+        let mut swings = [[0.0; 2]; 2];
         for i in 0..2 {
-            let s = &self.structures[i];
             let kind = match self.branch[i] {
                 Branch::Elastic { .. } => 0,
                 Branch::Yielded { .. } => 1,
             };
-            let load = s.affine(self.branch[i]).1 / s.mass;
+            let load = self.loads[i];
             let t = &transitions[i][kind];
             let (x, v) = (self.x[i], self.v[i]);
             let (inputs, equilibrium) = t.inputs(x, v, phasor, load);
             let [sx, sv] = t.swing(&inputs);
-            let m = Majorants::new(t, x, v, phasor, load, [sx, sv]);
             let peaks = self.result.structure(i);
             let (px, pv) = (peaks.peak_displacement, peaks.peak_velocity);
-            let within = |m: &[f64; 4], q: f64, swing: f64, lo: f64, hi: f64| {
-                (q + swing < hi || stays_below(m, hi, h))
-                    && (q - swing > lo || stays_above(m, lo, h))
-            };
-            if !(within(&m.x, x, sx, -px, px) && within(&m.v, v, sv, -pv, pv)) {
-                return false;
-            }
-            let calm = match self.branch[i] {
-                Branch::Elastic { offset } => {
-                    let uy = s.yield_displacement;
-                    !uy.is_finite() || within(&m.x, x, sx, offset - uy, offset + uy)
+            // The swing bounds first; the majorants only where they fail.
+            let within_x = |lo: f64, hi: f64| x - sx > lo && x + sx < hi;
+            let within_v = |lo: f64, hi: f64| v - sv > lo && v + sv < hi;
+            let uy = self.structures[i].yield_displacement;
+            let swings_clear = within_x(-px, px)
+                && within_v(-pv, pv)
+                && match self.branch[i] {
+                    Branch::Elastic { offset } => {
+                        !uy.is_finite() || within_x(offset - uy, offset + uy)
+                    }
+                    // A yielded spring stays yielded while sign · ẋ > 0.
+                    Branch::Yielded { sign } => sign * v - sv > 0.0,
+                };
+            if !swings_clear {
+                let m = Majorants::new(t, x, v, phasor, load, [sx, sv]);
+                let between =
+                    |m: &[f64; 4], lo: f64, hi: f64| stays_below(m, hi, h) && stays_above(m, lo, h);
+                let clear = between(&m.x, -px, px)
+                    && between(&m.v, -pv, pv)
+                    && match self.branch[i] {
+                        Branch::Elastic { offset } => {
+                            !uy.is_finite() || between(&m.x, offset - uy, offset + uy)
+                        }
+                        Branch::Yielded { sign } if sign > 0.0 => stays_above(&m.v, 0.0, h),
+                        Branch::Yielded { .. } => stays_below(&m.v, 0.0, h),
+                    };
+                if !clear {
+                    return false;
                 }
-                // A yielded spring stays yielded while sign · ẋ > 0.
-                Branch::Yielded { sign } if sign > 0.0 => v - sv > 0.0 || stays_above(&m.v, 0.0, h),
-                Branch::Yielded { .. } => v + sv < 0.0 || stays_below(&m.v, 0.0, h),
-            };
-            if !calm {
-                return false;
+                local[i] = Some(m);
             }
-            swing_x[i] = sx;
-            local[i] = m;
+            swings[i] = [sx, sv];
             next[i] = t.advance(&inputs, equilibrium);
         }
         // x1 − x2 must stay below the gap (no onset) and, until a first
@@ -369,11 +382,22 @@ impl<'a> Run<'a> {
             self.p.gap
         };
         let relative = self.x[0] - self.x[1];
-        let [a, b] = [local[0].x, local[1].x];
-        let gap_majorant = [a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] + b[3]];
-        if !(relative + swing_x[0] + swing_x[1] < ceiling || stays_below(&gap_majorant, ceiling, h))
-        {
-            return false;
+        if !(relative + swings[0][0] + swings[1][0] < ceiling) {
+            let [a, b] = [0, 1].map(|i| {
+                local[i].map_or_else(
+                    || {
+                        let kind = usize::from(matches!(self.branch[i], Branch::Yielded { .. }));
+                        let t = &transitions[i][kind];
+                        let (x, v) = (self.x[i], self.v[i]);
+                        Majorants::new(t, x, v, phasor, self.loads[i], swings[i]).x
+                    },
+                    |m| m.x,
+                )
+            });
+            let gap_majorant = [a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] + b[3]];
+            if !stays_below(&gap_majorant, ceiling, h) {
+                return false;
+            }
         }
         self.x = next.map(|y| y[0]);
         self.v = next.map(|y| y[1]);
@@ -619,6 +643,15 @@ impl<'a> Run<'a> {
                     };
                 }
             }
+        }
+        self.update_loads();
+    }
+
+    /// Q/m of each branch, after a change of branch.
+    fn update_loads(&mut self) {
+        for i in 0..2 {
+            let s = &self.structures[i];
+            self.loads[i] = s.affine(self.branch[i]).1 / s.mass;
         }
     }
 

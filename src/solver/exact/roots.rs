@@ -144,6 +144,11 @@ fn search_strict(e: &Series, lo: f64, root: f64, depth: u32, budget: &mut u32) -
 /// Whether P(s) = d0 + d1 s + d2 s² + M s³ < 0 on (0, w] (d0 ≤ 0, M ≥ 0).
 #[inline]
 pub fn cleared(d0: f64, d1: f64, d2: f64, m: f64, w: f64) -> bool {
+    // Cheap and sufficient: P(s) ≤ d0 + d1⁺ s + d2⁺ s² + M s³, which grows
+    // with s, so it is enough that its value at w is negative.
+    if d0 + w * (d1.max(0.0) + w * (d2.max(0.0) + w * m)) < 0.0 {
+        return true;
+    }
     let p = |s: f64| d0 + s * (d1 + s * (d2 + s * m));
     if !(p(w) < 0.0) {
         return false;
