@@ -1,34 +1,22 @@
 //! Every summary names its excitation (SPEC §9), and the type B pulse's
 //! initial velocity is said in `run`'s table, JSON and CSV.
 
-use std::process::{Command, Output};
+mod common;
 
-fn pounding(args: &[&str]) -> Output {
-    let o = Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    o
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8(o.stdout.clone()).unwrap()
-}
+use common::{json, stdout, succeeds};
 
 const SAYS: &str = "both structures start with ẋ(0) = −1";
 
 #[test]
 fn run_names_the_excitation_and_pulse_b_its_initial_velocity() {
     let base = ["run", "--excitation", "pulse-b", "--cycles", "2"];
-    let table = stdout(&pounding(&base));
+    let table = stdout(&succeeds(&base));
     assert!(table.contains("pulse-b excitation"), "{table}");
     assert!(table.contains(SAYS), "{table}");
-    let json = stdout(&pounding(&[&base[..], &["--format", "json"]].concat()));
-    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let v = json(&[&base[..], &["--format", "json"]].concat());
     assert_eq!(v["excitation"], "pulse-b");
     assert!(v["excitation_note"].as_str().unwrap().contains(SAYS));
-    let csv = stdout(&pounding(&[&base[..], &["--format", "csv"]].concat()));
+    let csv = stdout(&succeeds(&[&base[..], &["--format", "csv"]].concat()));
     let mut lines = csv.lines();
     assert!(
         lines
@@ -43,10 +31,7 @@ fn run_names_the_excitation_and_pulse_b_its_initial_velocity() {
             .contains(",pulse-b,the ground starts with velocity V_p: both")
     );
     // The sine says its name and nothing more.
-    let v: serde_json::Value = serde_json::from_str(&stdout(&pounding(&[
-        "run", "--cycles", "1", "--format", "json",
-    ])))
-    .unwrap();
+    let v = json(&["run", "--cycles", "1", "--format", "json"]);
     assert_eq!(v["excitation"], "sine");
     assert!(v.get("excitation_note").is_none());
 }
@@ -62,18 +47,15 @@ fn spectrum_names_the_excitation() {
         "--cycles",
         "1",
     ];
-    let table = stdout(&pounding(&spectrum));
+    let table = stdout(&succeeds(&spectrum));
     assert!(table.contains("pulse-a excitation"), "{table}");
-    let v: serde_json::Value = serde_json::from_str(&stdout(&pounding(
-        &[&spectrum[..], &["--format", "json"]].concat(),
-    )))
-    .unwrap();
+    let v = json(&[&spectrum[..], &["--format", "json"]].concat());
     assert_eq!(v["excitation"], "pulse-a");
 }
 
 #[test]
 fn map_json_names_the_excitation() {
-    let o = pounding(&[
+    let v = json(&[
         "map",
         "--excitation",
         "pulse-b",
@@ -86,7 +68,6 @@ fn map_json_names_the_excitation() {
         "--format",
         "json",
     ]);
-    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["excitation"], "pulse-b");
     assert!(v["excitation_note"].as_str().unwrap().contains(SAYS));
 }

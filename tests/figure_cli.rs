@@ -1,19 +1,10 @@
 //! `pounding figure` end to end: PNG size and ink, atomic output, `figure all`,
 //! and bad input (exit 2, one line).
 
+mod common;
+
+use common::{fails, succeeds};
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn pounding(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 /// Pixels that differ from the white background.
 fn ink(path: &Path) -> (u32, u32, usize) {
@@ -26,7 +17,7 @@ fn ink(path: &Path) -> (u32, u32, usize) {
 fn png_has_the_requested_size_and_ink() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("fig3.png");
-    let o = pounding(&[
+    succeeds(&[
         "figure",
         "fig3",
         "--out",
@@ -36,7 +27,6 @@ fn png_has_the_requested_size_and_ink() {
         "--height",
         "600",
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     let (w, h, ink) = ink(&out);
     assert_eq!((w, h), (800, 600));
     // Pinned once by looking at the figure (four panels of curves, grid,
@@ -58,7 +48,7 @@ fn svg_is_the_default_and_replaces_an_old_file_whole() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("loops.svg");
     std::fs::write(&out, "old contents that are longer than nothing").unwrap();
-    let o = pounding(&[
+    succeeds(&[
         "figure",
         "loops",
         "--preset",
@@ -66,7 +56,6 @@ fn svg_is_the_default_and_replaces_an_old_file_whole() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     let text = std::fs::read_to_string(&out).unwrap();
     assert!(text.starts_with("<svg"), "{}", &text[..40]);
     assert!(text.trim_end().ends_with("</svg>"));
@@ -77,7 +66,7 @@ fn svg_is_the_default_and_replaces_an_old_file_whole() {
 #[test]
 fn all_writes_every_paper_figure_in_both_formats() {
     let dir = tempfile::tempdir().unwrap();
-    let o = pounding(&[
+    succeeds(&[
         "figure",
         "all",
         "--out",
@@ -89,7 +78,6 @@ fn all_writes_every_paper_figure_in_both_formats() {
         "--height",
         "300",
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     for n in 3..=10 {
         for ext in ["svg", "png"] {
             let p = dir.path().join(format!("fig{n}.{ext}"));
@@ -135,11 +123,7 @@ fn bad_input_is_one_line_and_exit_2() {
         ),
     ];
     for (args, expected) in cases {
-        let o = pounding(args);
-        let err = stderr(&o);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
-        assert!(err.contains(expected), "{args:?}: {err}");
+        fails(args, 2, &[expected]);
     }
 }
 
@@ -149,7 +133,9 @@ fn unwritable_output_is_exit_1() {
     let file = dir.path().join("a-file");
     std::fs::write(&file, "x").unwrap();
     let out = file.join("fig3.svg");
-    let o = pounding(&["figure", "fig3", "--out", out.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
-    assert!(stderr(&o).contains("cannot write"), "{}", stderr(&o));
+    fails(
+        &["figure", "fig3", "--out", out.to_str().unwrap()],
+        1,
+        &["cannot write"],
+    );
 }

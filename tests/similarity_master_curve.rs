@@ -1,6 +1,9 @@
 //! Self-similarity (SPEC §8): the physical example at 0.2 g, 0.5 g and 0.8 g.
 //! Dimensionless spectra agree to round-off; dimensional ones scale with a_p.
 
+mod common;
+
+use common::{fails, json, stdout, succeeds};
 use pounding::analysis::similarity::{master_curve_spread, study};
 use pounding::model::Preset;
 use pounding::model::physical::{G, Physical};
@@ -56,13 +59,7 @@ fn a_fixed_structure_does_not_collapse() {
 
 #[test]
 fn cli_reports_metres_and_refuses_bad_levels() {
-    let run = |args: &[&str]| {
-        std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
-            .args(args)
-            .output()
-            .unwrap()
-    };
-    let out = run(&[
+    let v = json(&[
         "similarity",
         "--preset",
         "two-buildings",
@@ -71,8 +68,6 @@ fn cli_reports_metres_and_refuses_bad_levels() {
         "--format",
         "json",
     ]);
-    assert!(out.status.success());
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let levels = v["levels"].as_array().unwrap();
     assert_eq!(levels.len(), 3);
     assert!((levels[0]["ap_g"].as_f64().unwrap() - 0.2).abs() < 1e-12);
@@ -92,10 +87,7 @@ fn cli_reports_metres_and_refuses_bad_levels() {
             all.extend(["--preset", "two-buildings"]);
         }
         all.extend(args);
-        let out = run(&all);
-        assert_eq!(out.status.code(), Some(2), "{all:?}");
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert!(err.contains(needle), "{err}");
+        fails(&all, 2, &[needle]);
     }
 }
 
@@ -104,30 +96,25 @@ fn cli_reports_metres_and_refuses_bad_levels() {
 /// parameters, with one cell per header column.
 #[test]
 fn json_and_csv_are_self_describing() {
-    let run = |format: &str| {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
-            .args([
-                "similarity",
-                "--preset",
-                "two-buildings",
-                "--omega1",
-                "1.0:1.1:0.1",
-                "--format",
-                format,
-            ])
-            .output()
-            .unwrap();
-        assert!(out.status.success());
-        String::from_utf8(out.stdout).unwrap()
+    let args = |format| {
+        [
+            "similarity",
+            "--preset",
+            "two-buildings",
+            "--omega1",
+            "1.0:1.1:0.1",
+            "--format",
+            format,
+        ]
     };
-    let v: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
+    let v = json(&args("json"));
     let gap = v["levels"][0]["physical"]["gap_m"].as_f64().unwrap();
     assert!((gap - 0.01).abs() < 1e-15, "{gap}");
     assert!(v["levels"][0]["physical"]["yield1_m"].is_number());
     assert_eq!(v["method"], "exact");
     assert!(v["units"].as_str().unwrap().starts_with("SI"));
     assert_eq!(v["omega1_grid"], "1:1.1:0.1");
-    let csv = run("csv");
+    let csv = stdout(&succeeds(&args("csv")));
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines.len(), 1 + 3 * 2);
     let header: Vec<&str> = lines[0].split(',').collect();

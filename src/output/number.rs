@@ -5,7 +5,8 @@ use std::fmt;
 
 /// A float in its shortest round-trip form: plain decimals from 1e-5 to
 /// 1e16 (`0.2`, `3.2224489`), exponent form outside (`1e-300`, not three
-/// hundred zeros), `inf`/`-inf` for infinities (as the parameter keys take them).
+/// hundred zeros), `inf`/`-inf` for infinities (as the parameter keys take
+/// them), `nan` for NaN (as JSON writes it, see [`crate::output::report::float_or_inf`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Num(pub f64);
 
@@ -13,9 +14,11 @@ impl fmt::Display for Num {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let v = self.0;
         let a = v.abs();
-        if v.is_infinite() {
+        if v.is_nan() {
+            f.write_str("nan")
+        } else if v.is_infinite() {
             f.write_str(if v > 0.0 { "inf" } else { "-inf" })
-        } else if a == 0.0 || v.is_nan() || (1e-5..1e16).contains(&a) {
+        } else if a == 0.0 || (1e-5..1e16).contains(&a) {
             write!(f, "{v}")
         } else {
             write!(f, "{v:e}")

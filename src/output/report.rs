@@ -20,13 +20,18 @@ pub fn json(report: &impl Serialize) -> Result<String, serde_json::Error> {
 }
 
 /// Serializes a float that may be infinite (an elastic yield displacement,
-/// `gap = inf`) the way parameters are: JSON has no infinity, so it becomes
-/// the string `"inf"` (or `"-inf"`), as in CSV and tables; finite values stay numbers.
+/// `gap = inf`) or NaN (a failed run's residual) the way [`Num`] writes it in
+/// CSV and tables: JSON has neither, so it becomes the string `"inf"`,
+/// `"-inf"` or `"nan"`; finite values stay numbers. Formats that are not
+/// human-readable carry every `f64` as it is. The one definition: the
+/// parameters' serde (`model::params`) writes through it too.
+///
+/// [`Num`]: crate::output::Num
 pub fn float_or_inf<S: serde::Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
-    if v.is_infinite() {
-        s.serialize_str(if *v > 0.0 { "inf" } else { "-inf" })
-    } else {
+    if v.is_finite() || !s.is_human_readable() {
         s.serialize_f64(*v)
+    } else {
+        s.serialize_str(&crate::output::Num(*v).to_string())
     }
 }
 
@@ -84,5 +89,24 @@ mod tests {
         .unwrap();
         assert_eq!(j, "{\"a\":\"inf\",\"b\":0.010000000000000002}\n");
         assert_eq!(crate::output::Num(f64::INFINITY).to_string(), "inf");
+    }
+
+    #[test]
+    fn nan_is_nan_in_json_and_csv() {
+        #[derive(Serialize)]
+        struct Residuals {
+            #[serde(serialize_with = "float_or_inf")]
+            r: f64,
+            #[serde(serialize_with = "float_or_inf")]
+            down: f64,
+        }
+        let j = json(&Residuals {
+            r: f64::NAN,
+            down: f64::NEG_INFINITY,
+        })
+        .unwrap();
+        assert_eq!(j, "{\"r\":\"nan\",\"down\":\"-inf\"}\n");
+        assert_eq!(crate::output::Num(f64::NAN).to_string(), "nan");
+        assert_eq!(crate::output::Num(-f64::NAN).to_string(), "nan");
     }
 }

@@ -261,17 +261,12 @@ impl Params {
 }
 
 /// Serde for floats that may be infinite: TOML has `inf`, JSON does not, so
-/// infinity is written as the string `"inf"` in JSON and read back from either.
+/// infinity is written as the string `"inf"` in JSON (by the one writer of
+/// such floats, [`crate::output::report::float_or_inf`]) and read back from either.
 mod float_or_inf {
-    use serde::{Deserialize, Deserializer, Serializer};
+    use serde::{Deserialize, Deserializer};
 
-    pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
-        if v.is_infinite() && s.is_human_readable() {
-            s.serialize_str(if *v > 0.0 { "inf" } else { "-inf" })
-        } else {
-            s.serialize_f64(*v)
-        }
-    }
+    pub use crate::output::report::float_or_inf as serialize;
 
     #[derive(Deserialize)]
     #[serde(untagged)]
