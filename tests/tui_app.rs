@@ -163,13 +163,27 @@ fn every_scene_at_three_sizes_has_no_touching_labels() {
 }
 
 #[test]
+fn a_modified_set_does_not_run_into_the_chart_beside_it() {
+    // The sets' line ("set 1: set1* (Π_m)  set 2: set2") is as wide as the
+    // info box at 80×24; it must not touch the g(τ) chart's title.
+    for size in [(60, 20), (80, 24), (120, 40)] {
+        let mut a = app(size);
+        key(&mut a, KeyCode::Right);
+        settle(&mut a);
+        let s = screen(&a);
+        assert!(s.contains("set1*"), "{s}");
+        let bad = touching(&s);
+        assert!(bad.is_empty(), "{size:?}: {bad:?}\n{s}");
+    }
+}
+
+#[test]
 fn the_label_check_finds_what_it_should() {
     for bad in ["step 0.05-1.96 ", "x-2.93 ", " 6.3e- ", " min f_p -7. "] {
         assert!(!touching(bad).is_empty(), "{bad}");
     }
-    for good in ["x1 x2+Π_d 1e-3 -2.5e-4 f_p 0..39.225 set 1: Π_u 3.222/0.479"] {
-        assert!(touching(good).is_empty(), "{good}: {:?}", touching(good));
-    }
+    let good = "x1 x2+Π_d 1e-3 -2.5e-4 f_p 0..39.225 set 1: Π_u 3.222/0.479";
+    assert!(touching(good).is_empty(), "{good}: {:?}", touching(good));
 }
 
 #[test]

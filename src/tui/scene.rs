@@ -340,8 +340,10 @@ mod tests {
 
     #[test]
     fn zoom_stays_inside_the_run_and_returns_to_it() {
-        let mut v = View::default();
-        v.cursor = Some(1.0);
+        let mut v = View {
+            cursor: Some(1.0),
+            ..View::default()
+        };
         v.zoom_in(40.0);
         assert_eq!(v.zoom, Some([0.0, 10.0]));
         v.zoom_in(40.0);
