@@ -33,7 +33,7 @@ use super::contact_rk::ContactSystem;
 use super::dynamics::{Branch, Structure, contact_series, free_series, step_for};
 use super::energy::Work;
 use super::quiet::{Majorants, Transition, stays_above, stays_below};
-use super::roots::{cleared_from_start, fires_at_start, first_crossing};
+use super::roots::{Reach, fires_at_start, first_crossing, reach_from_start};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
 
@@ -795,7 +795,8 @@ impl Segment {
 }
 
 /// Raises `peak` to the maximum of q on (0, t1], given the series of q and q'.
-/// Most segments are cleared by a bound of q − peak. Otherwise the maxima
+/// Most segments are cleared by a bound of q − peak, or shown monotone by
+/// the cubic majorant of q (the maximum is then at an end). Otherwise the maxima
 /// of q are at t1 and at the falling zeros of q', with a rising zero (a
 /// minimum) between two of them, and the walk goes from one to the next.
 /// It does not look for where q crosses the peak: near a maximum that only
@@ -810,8 +811,14 @@ fn raise_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
 
 /// The walk of [`raise_max`], for a q whose bound does not clear the peak.
 fn walk_maxima(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
-    if cleared_from_start(&q.shifted(*peak), t1) {
-        return;
+    match reach_from_start(q, *peak, t1) {
+        // q(0) is already in the peak.
+        Reach::Below | Reach::Falling => return,
+        Reach::Rising => {
+            *peak = peak.max(q.value(t1));
+            return;
+        }
+        Reach::Unknown => {}
     }
     let falling = dq.scaled(-1.0);
     let mut t = 0.0;

@@ -256,14 +256,16 @@ fn square_coefficient(delta: &[f64; MAX_DEGREE + 1], m: usize) -> f64 {
 /// min over q of (tol/|c_n|)^{1/n} and (tol/|c_{n−1}|)^{1/(n−1)} (the usual
 /// step choice of Taylor integrators, Jorba and Zou 2005).
 pub fn step_for(series: &[&Series], tol: f64) -> f64 {
+    let n = series.iter().map(|s| s.degree).max().unwrap_or(0);
     let mut h = f64::INFINITY;
-    for s in series {
-        let n = s.degree;
-        for k in [n - 1, n] {
-            let a = s.c[k].abs();
-            if a > 0.0 {
-                h = h.min((tol / a).powf(1.0 / k as f64));
-            }
+    if n < 2 {
+        return h;
+    }
+    // (tol/a)^{1/k} falls as a grows: one power per order, of the largest term.
+    for k in [n - 1, n] {
+        let a = series.iter().fold(0.0f64, |a, s| a.max(s.c[k].abs()));
+        if a > 0.0 {
+            h = h.min((tol / a).powf(1.0 / k as f64));
         }
     }
     h

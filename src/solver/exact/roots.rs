@@ -122,11 +122,34 @@ fn decreasing(d1: f64, d2: f64, m: f64, w: f64) -> bool {
     d1 < 0.0 && d1 + w * (2.0 * d2 + 3.0 * m * w) < 0.0
 }
 
-/// Whether e stays ≤ 0 on (0, w] by its cubic majorant at 0 alone (one
-/// evaluation, no search): a cheap test that most segments pass.
-pub fn cleared_from_start(e: &Series, w: f64) -> bool {
-    let [d0, d1, d2, m] = e.cubic_majorant(0.0, w);
-    d0 <= 0.0 && cleared(d0, d1, d2, m, w)
+/// What one cubic majorant of q at 0 over [0, w] (no search) tells of the
+/// largest value of q there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Reach {
+    /// q stays below the level on (0, w].
+    Below,
+    /// q' < 0 on [0, w]: the largest value is q(0).
+    Falling,
+    /// q' > 0 on [0, w]: the largest value is q(w).
+    Rising,
+    /// None of these could be shown.
+    Unknown,
+}
+
+/// [`Reach`] of q against `level` on [0, w]: a cheap test that most
+/// segments pass.
+pub fn reach_from_start(q: &Series, level: f64, w: f64) -> Reach {
+    let [d0, d1, d2, m] = q.cubic_majorant(0.0, w);
+    let d0 = d0 - level;
+    if d0 <= 0.0 && cleared(d0, d1, d2, m, w) {
+        Reach::Below
+    } else if decreasing(d1, d2, m, w) {
+        Reach::Falling
+    } else if increasing(d1, d2, m, w) {
+        Reach::Rising
+    } else {
+        Reach::Unknown
+    }
 }
 
 /// As [`search`] on [lo, root), for a root already found at `root`: only a
