@@ -382,13 +382,25 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
             buf[(axis_x, plot.y + r)].set_symbol("│").set_style(axis);
         }
     }
-    let mut used = None;
+    // Where two ticks fall in one row, the row shows the one nearest its
+    // middle, and the zero row always shows 0 (it carries the zero line).
+    let mut chosen: Vec<Option<(f64, &String)>> = vec![None; raster.rows];
     for (v, label) in yt.values.iter().zip(&yt.labels) {
         let r = raster.row(*v);
-        if used == Some(r) {
-            continue;
+        let middle = ((r * raster.dy) as f64 + (raster.dy as f64 - 1.0) / 2.0).max(0.0);
+        let distance = if *v == 0.0 {
+            -1.0
+        } else {
+            (raster.py(*v) - middle).abs()
+        };
+        if chosen[r].is_none_or(|(d, _)| distance < d) {
+            chosen[r] = Some((distance, label));
         }
-        used = Some(r);
+    }
+    for (r, pick) in chosen.iter().enumerate() {
+        let Some((_, label)) = pick else {
+            continue;
+        };
         let y = plot.y + r as u16;
         let mark = if Some(r) == zero_row { "┼" } else { "┤" };
         if axis_x < area.right() {
