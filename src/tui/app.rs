@@ -252,7 +252,8 @@ impl App {
                 (runs, None, None)
             }
             Scene::Sets => (vec![set(0, buckets), set(1, buckets)], None, None),
-            Scene::Map => (vec![], None, self.map_spec()),
+            // The summary under the map shows the set's own run, as under a spectrum.
+            Scene::Map => (vec![active], None, self.map_spec()),
             Scene::Spectrum => {
                 let p = self.active_params();
                 let mu = p.mu();
