@@ -329,12 +329,8 @@ impl<'a> Run<'a> {
         let mut local = [None; 2];
         let mut swings = [[0.0; 2]; 2];
         for i in 0..2 {
-            let kind = match self.branch[i] {
-                Branch::Elastic { .. } => 0,
-                Branch::Yielded { .. } => 1,
-            };
             let load = self.loads[i];
-            let t = &transitions[i][kind];
+            let t = &transitions[i][self.branch[i].kind()];
             let (x, v) = (self.x[i], self.v[i]);
             let (inputs, equilibrium) = t.inputs(x, v, phasor, load);
             let [sx, sv] = t.swing(&inputs);
@@ -386,8 +382,7 @@ impl<'a> Run<'a> {
             let [a, b] = [0, 1].map(|i| {
                 local[i].map_or_else(
                     || {
-                        let kind = usize::from(matches!(self.branch[i], Branch::Yielded { .. }));
-                        let t = &transitions[i][kind];
+                        let t = &transitions[i][self.branch[i].kind()];
                         let (x, v) = (self.x[i], self.v[i]);
                         Majorants::new(t, x, v, phasor, self.loads[i], swings[i]).x
                     },

@@ -42,6 +42,18 @@ pub enum Branch {
     Yielded { sign: f64 },
 }
 
+impl Branch {
+    /// 0 on the elastic branch, 1 yielded: the index of the branch's stiffness
+    /// (k or Π_α k) in tables kept per kind, such as the quiet segments' transitions.
+    #[inline]
+    pub fn kind(self) -> usize {
+        match self {
+            Branch::Elastic { .. } => 0,
+            Branch::Yielded { .. } => 1,
+        }
+    }
+}
+
 /// The constant coefficients of one structure (SPEC §2–3).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Structure {
