@@ -23,7 +23,7 @@ use serde::Serialize;
 
 use super::baseline::{BaselineCache, BaselineKey, FreePeaks};
 use super::gap::from_max_relative;
-use super::spectrum::{Region, baseline_params};
+use super::spectrum::{Region, baseline_params, eight_peaks};
 use crate::model::family::MU;
 use crate::model::grid::{Grid, MAX_GRID_POINTS};
 use crate::model::params::{Kind, echo, field, is_pi};
@@ -301,6 +301,14 @@ pub struct MapCell {
 }
 
 impl MapCell {
+    /// The eight peaks with and without pounding, in the order of [`eight_peaks`].
+    pub fn peaks(&self) -> [f64; 8] {
+        eight_peaks(
+            [&self.left, &self.right],
+            [&self.free_left, &self.free_right],
+        )
+    }
+
     /// Combines a pounding run with its baseline (SPEC §7).
     pub fn combine(
         x: f64,

@@ -68,17 +68,28 @@ impl SpectrumPoint {
     /// The eight dimensionless peaks: Π_u, Π_v of the left and right
     /// structures with pounding, then the same without it.
     pub fn peaks(&self) -> [f64; 8] {
-        [
-            self.left.peak_displacement,
-            self.left.peak_velocity,
-            self.right.peak_displacement,
-            self.right.peak_velocity,
-            self.free_left.peak_displacement,
-            self.free_left.peak_velocity,
-            self.free_right.peak_displacement,
-            self.free_right.peak_velocity,
-        ]
+        eight_peaks(
+            [&self.left, &self.right],
+            [&self.free_left, &self.free_right],
+        )
     }
+}
+
+/// Π_u, Π_v of the left and right structures with pounding (`with`), then
+/// the same without it (`free`): the order of every peaks-with-and-without
+/// output (a spectrum point, a map cell).
+pub fn eight_peaks(with: [&StructurePeaks; 2], free: [&StructurePeaks; 2]) -> [f64; 8] {
+    let ([l, r], [fl, fr]) = (with, free);
+    [
+        l.peak_displacement,
+        l.peak_velocity,
+        r.peak_displacement,
+        r.peak_velocity,
+        fl.peak_displacement,
+        fl.peak_velocity,
+        fr.peak_displacement,
+        fr.peak_velocity,
+    ]
 }
 
 /// The parameters of the point Π_ω1 = `omega1`, Π_ω2 = μ Π_ω1.

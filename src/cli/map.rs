@@ -12,7 +12,7 @@ use serde::Serialize;
 use super::CliError;
 use super::budget::{Work, run_steps};
 use super::description::Description;
-use super::output::{Format, num, param_cells, param_columns, print, render};
+use super::output::{Format, PEAK_COLUMNS, num, param_cells, param_columns, print, render};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::map::{Axis, MapCache, MapCell, MapPlan, compute_rows, row_regions};
@@ -183,15 +183,8 @@ fn mark(c: &MapCell) -> char {
     }
 }
 
-const RESULT_COLUMNS: [&str; 18] = [
-    "left_peak_displacement",
-    "left_peak_velocity",
-    "right_peak_displacement",
-    "right_peak_velocity",
-    "free_left_peak_displacement",
-    "free_left_peak_velocity",
-    "free_right_peak_displacement",
-    "free_right_peak_velocity",
+/// The columns after the eight peaks ([`PEAK_COLUMNS`]).
+const RESULT_COLUMNS: [&str; 10] = [
     "left_amplification",
     "right_amplification",
     "region",
@@ -208,6 +201,7 @@ impl Report for MapReport<'_> {
     /// Every row carries the cell's whole parameter set, μ and its results.
     fn csv_header(&self) -> Vec<&'static str> {
         let mut h = param_columns();
+        h.extend(PEAK_COLUMNS);
         h.extend(RESULT_COLUMNS);
         h
     }
@@ -217,21 +211,8 @@ impl Report for MapReport<'_> {
             .iter()
             .map(|c| {
                 let mut row = param_cells(&self.plan.at(c.x, c.y));
-                row.extend(
-                    [
-                        c.left.peak_displacement,
-                        c.left.peak_velocity,
-                        c.right.peak_displacement,
-                        c.right.peak_velocity,
-                        c.free_left.peak_displacement,
-                        c.free_left.peak_velocity,
-                        c.free_right.peak_displacement,
-                        c.free_right.peak_velocity,
-                        c.left_amplification,
-                        c.right_amplification,
-                    ]
-                    .map(num),
-                );
+                row.extend(c.peaks().map(num));
+                row.extend([c.left_amplification, c.right_amplification].map(num));
                 row.push(c.region.name().to_string());
                 row.push(c.impacts.to_string());
                 row.push(num(c.max_force));

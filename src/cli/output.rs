@@ -41,6 +41,19 @@ pub fn num(v: f64) -> String {
 }
 
 /// CSV columns naming a whole parameter set: μ, then every key of the table.
+/// The columns of the eight peaks with and without pounding, in the order
+/// of [`crate::analysis::spectrum::eight_peaks`].
+pub const PEAK_COLUMNS: [&str; 8] = [
+    "left_peak_displacement",
+    "left_peak_velocity",
+    "right_peak_displacement",
+    "right_peak_velocity",
+    "free_left_peak_displacement",
+    "free_left_peak_velocity",
+    "free_right_peak_displacement",
+    "free_right_peak_velocity",
+];
+
 pub fn param_columns() -> Vec<&'static str> {
     let mut h = vec!["mu"];
     h.extend(FIELDS.iter().map(|f| f.key));

@@ -11,7 +11,7 @@ use super::CliError;
 use super::budget::{Work, run_steps};
 use super::description::Description;
 use super::output::{Format, num, print, render};
-use super::output::{param_cells, param_columns};
+use super::output::{PEAK_COLUMNS, param_cells, param_columns};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::baseline::BaselineCache;
@@ -263,19 +263,8 @@ impl Report for SpectrumReport<'_> {
     fn csv_header(&self) -> Vec<&'static str> {
         let mut h = vec!["family", "omega1_grid"];
         h.extend(param_columns());
-        h.extend([
-            "left_peak_displacement",
-            "left_peak_velocity",
-            "right_peak_displacement",
-            "right_peak_velocity",
-            "free_left_peak_displacement",
-            "free_left_peak_velocity",
-            "free_right_peak_displacement",
-            "free_right_peak_velocity",
-            "impacts",
-            "region",
-            "min_gap_no_pounding",
-        ]);
+        h.extend(PEAK_COLUMNS);
+        h.extend(["impacts", "region", "min_gap_no_pounding"]);
         h
     }
 
