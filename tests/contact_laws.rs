@@ -4,26 +4,16 @@
 //! (separation over approach velocity) is measured by the exact method,
 //! Newmark and the reference, and compared with each law's published relation.
 
+mod common;
+
 use pounding::model::contact::{HERTZ_DURATION, matched_hertz_stiffness};
-use pounding::model::{ContactModel, Excitation, Method, Params, SET1};
+use pounding::model::{ContactModel, Excitation, Method, Params};
 use pounding::reference::{ReferenceOptions, reference};
 use pounding::solver::exact::{self, ExactOptions};
 use pounding::solver::{FullHistory, RunResult, SolverOptions, simulate};
 
 fn isolated(model: ContactModel, e: f64) -> Params {
-    let p = Params {
-        mass_ratio: 0.5,
-        omega1: 0.0,
-        omega2: 0.0,
-        damping: 0.0,
-        restitution: e,
-        gap: 0.05,
-        model,
-        cycles: 1,
-        ..SET1
-    };
-    p.validate().unwrap();
-    p
+    common::isolated_impact(model, e, 0.5)
 }
 
 fn exact_impact(p: &Params, history: &mut FullHistory) -> RunResult {

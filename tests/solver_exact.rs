@@ -4,6 +4,8 @@
 //! isolated impact, and conservation of momentum. Then its guards: the event
 //! cap and the non-finite check turn runaways into reported stops.
 
+mod common;
+
 use pounding::model::{ContactModel, Excitation, Method, Params, SET1, SET2};
 use pounding::reference::{ReferenceOptions, reference};
 use pounding::solver::exact::{ExactOptions, simulate};
@@ -148,17 +150,7 @@ fn linear_structures_follow_the_closed_form_to_1e_12() {
 fn kelvin_restitution_of_an_isolated_impact_to_1e_9() {
     for e in [0.1, 0.4, 0.8, 1.0] {
         for mass_ratio in [0.5, 2.0] {
-            let p = Params {
-                mass_ratio,
-                omega1: 0.0,
-                omega2: 0.0,
-                damping: 0.0,
-                restitution: e,
-                gap: 0.05,
-                model: ContactModel::Kelvin,
-                cycles: 1,
-                ..SET1
-            };
+            let p = common::isolated_impact(ContactModel::Kelvin, e, mass_ratio);
             let options = ExactOptions {
                 excitation: Excitation::None,
                 initial_velocity: [1.0, 0.0],

@@ -2,7 +2,9 @@
 //! excitation; the left mass approaches the right one at unit speed. The
 //! achieved restitution is the separation over the approach velocity.
 
-use pounding::model::{ContactModel, Excitation, Params, SET1};
+mod common;
+
+use pounding::model::{ContactModel, Excitation};
 use pounding::solver::{FullHistory, RunResult, Sample, SolverOptions, simulate};
 
 fn impact(model: ContactModel, e: f64, mass_ratio: f64) -> RunResult {
@@ -11,18 +13,7 @@ fn impact(model: ContactModel, e: f64, mass_ratio: f64) -> RunResult {
 
 /// The run and its final state.
 fn impact_with_end(model: ContactModel, e: f64, mass_ratio: f64) -> (RunResult, Sample) {
-    let p = Params {
-        mass_ratio,
-        omega1: 0.0,
-        omega2: 0.0,
-        damping: 0.0,
-        restitution: e,
-        gap: 0.05,
-        model,
-        cycles: 1,
-        ..SET1
-    };
-    p.validate().unwrap();
+    let p = common::isolated_impact(model, e, mass_ratio);
     let options = SolverOptions {
         excitation: Excitation::None,
         initial_velocity: [1.0, 0.0],

@@ -2,11 +2,13 @@
 //! arguments, its output as text or JSON, and the checks every command's
 //! success and every refusal must pass (one line on stderr naming the
 //! problem, exit 2 for bad input with nothing on stdout, 1 for a failed run
-//! or write, never a panic).
+//! or write, never a panic); and the one parameter set of an isolated
+//! impact that the solver tests share.
 
 // Each test crate uses the part it needs.
 #![allow(dead_code)]
 
+use pounding::model::{ContactModel, Params, SET1};
 use std::ffi::OsStr;
 use std::fmt::Debug;
 use std::path::Path;
@@ -106,4 +108,23 @@ pub fn fails<S: AsRef<OsStr> + Debug>(args: &[S], code: i32, fragments: &[&str])
         assert!(o.stdout.is_empty(), "{args:?}: {}", stdout(&o));
     }
     o
+}
+
+/// An isolated impact: two free, undamped masses (Π_ω = 0) closing a gap of
+/// 0.05 for one cycle, with contact law `model`, restitution `e` and mass
+/// ratio `mass_ratio`; run with no excitation and ẋ1 = 1 at rest otherwise.
+pub fn isolated_impact(model: ContactModel, e: f64, mass_ratio: f64) -> Params {
+    let p = Params {
+        mass_ratio,
+        omega1: 0.0,
+        omega2: 0.0,
+        damping: 0.0,
+        restitution: e,
+        gap: 0.05,
+        model,
+        cycles: 1,
+        ..SET1
+    };
+    p.validate().unwrap();
+    p
 }
