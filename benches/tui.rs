@@ -94,27 +94,13 @@ fn map_first_picture(c: &mut Criterion) {
 
 fn keypress_to_redraw(c: &mut Criterion) {
     for (w, h) in [(80u16, 24u16), (120, 40)] {
-        let mut app = App::new(
-            builtin("set1").unwrap(),
-            builtin("set2").unwrap(),
-            App::load_presets(None),
-            None,
-            Look {
-                ascii: false,
-                color: true,
-            },
-        );
-        app.on_resize(w, h);
-        app.on_key(KeyEvent::new(KeyCode::Down, KeyModifiers::NONE)); // Π_ω1
-        app.compute_blocking();
+        let mut app = app_at(w, h, 't');
         let mut term = Terminal::new(TestBackend::new(w, h)).unwrap();
         let mut up = true;
         c.bench_function(&format!("keypress_to_redraw_history_{w}x{h}"), |b| {
             b.iter(|| {
-                let code = if up { KeyCode::Right } else { KeyCode::Left };
-                up = !up;
                 app.jobs.results.clear();
-                app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+                app.on_key(key(&mut up));
                 app.compute_blocking();
                 term.draw(|f| ui::render(&app, f)).unwrap();
             })
