@@ -30,67 +30,25 @@ fn wait_for(screen: &Arc<Mutex<vt100::Parser>>, what: &str) -> String {
 
 #[test]
 fn explorer_in_a_pty_takes_keys_and_quits_cleanly() {
-    let pty = native_pty_system()
-        .openpty(PtySize {
-            rows: 30,
-            cols: 100,
-            pixel_width: 0,
-            pixel_height: 0,
-        })
-        .unwrap();
-    let mut cmd = CommandBuilder::new(BIN);
-    cmd.env("TERM", "xterm-256color");
-    cmd.env("LANG", "C.UTF-8");
-    cmd.env(
-        "XDG_CONFIG_HOME",
-        std::env::temp_dir().join("pounding-pty-test"),
-    );
-    let mut child = pty.slave.spawn_command(cmd).unwrap();
-    drop(pty.slave);
-    let mut reader = pty.master.try_clone_reader().unwrap();
-    let mut writer = pty.master.take_writer().unwrap();
-    let screen = Arc::new(Mutex::new(vt100::Parser::new(
-        30.try_into().unwrap(),
-        100.try_into().unwrap(),
-        0,
-    )));
-    let sink = Arc::clone(&screen);
-    std::thread::spawn(move || {
-        let mut buf = [0u8; 4096];
-        while let Ok(n) = reader.read(&mut buf) {
-            if n == 0 {
-                break;
-            }
-            sink.lock().unwrap().process(&buf[..n]);
-        }
-    });
-    wait_for(&screen, "impacts 9");
-    writer.write_all(b"jl").unwrap(); // select Π_ω1, nudge it to 1.1
-    writer.flush().unwrap();
-    let text = wait_for(&screen, "1.1 ");
+    let dir = scratch("keys");
+    let mut s = Session::start(100, 30, &dir, &dir);
+    s.wait_for("impacts 9");
+    s.send(b"jl"); // select Π_ω1, nudge it to 1.1
+    let text = s.wait_for("1.1 ");
     assert!(text.contains("[set 1]"), "{text}");
-    writer.write_all(b"?").unwrap();
-    wait_for(&screen, "this help");
+    s.send(b"?");
+    s.wait_for("this help");
     // Set 1 was changed: q asks first, y quits.
-    writer.write_all(b"xq").unwrap();
-    writer.flush().unwrap();
-    wait_for(&screen, "Quit anyway");
-    writer.write_all(b"y").unwrap();
-    writer.flush().unwrap();
-    let start = Instant::now();
-    let status = loop {
-        if let Some(s) = child.try_wait().unwrap() {
-            break s;
-        }
-        assert!(start.elapsed() < Duration::from_secs(10), "did not quit");
-        std::thread::sleep(Duration::from_millis(20));
-    };
+    s.send(b"xq");
+    s.wait_for("Quit anyway");
+    s.send(b"y");
+    let status = s.exit_status();
     assert!(status.success(), "{status:?}");
     // The alternate screen was left: the explorer's frame is gone.
     std::thread::sleep(Duration::from_millis(100));
-    let text = screen.lock().unwrap().screen().contents();
+    let text = s.screen.lock().unwrap().screen().contents();
     assert!(!text.contains("[set 1]"), "{text}");
-    assert!(!screen.lock().unwrap().screen().alternate_screen());
+    assert!(!s.screen.lock().unwrap().screen().alternate_screen());
 }
 
 #[test]
