@@ -570,16 +570,39 @@ impl<'a> Run<'a> {
             );
         }
         if let (Some(force), Some(k)) = (&segment.force, self.open_impact) {
-            let delta = segment.penetration(self.p.gap);
-            let rate = delta.derivative();
-            let df = force.derivative();
             let r = &mut self.result;
             let imp = &mut r.impacts[k];
-            raise_max(&delta, &rate, length, &mut imp.max_penetration);
-            raise_max(force, &df, length, &mut imp.peak_force);
+            // Each extreme is searched only where its bound can beat it; the
+            // penetration's swing is at most the sum of the two displacements'.
+            let delta0 = self.x[0] - self.x[1] - self.p.gap;
+            if delta0 + segment.swing[0] + segment.swing[1] > imp.max_penetration {
+                let delta = segment.penetration(self.p.gap);
+                let swing = segment.swing[0] + segment.swing[1];
+                raise_max_by(
+                    &delta,
+                    &delta.derivative(),
+                    length,
+                    swing,
+                    &mut imp.max_penetration,
+                );
+            }
+            let force_swing = force.swing(length);
+            let df = (force.c[0] + force_swing > imp.peak_force
+                || -force.c[0] + force_swing > -r.min_force)
+                .then(|| force.derivative());
+            if let Some(df) = &df
+                && force.c[0] + force_swing > imp.peak_force
+            {
+                raise_max_by(force, df, length, force_swing, &mut imp.peak_force);
+            }
             r.max_force = r.max_force.max(imp.peak_force);
             let mut pull = -r.min_force;
-            raise_max(&force.scaled(-1.0), &df.scaled(-1.0), length, &mut pull);
+            if let Some(df) = &df
+                && -force.c[0] + force_swing > pull
+            {
+                let (f, df) = (force.scaled(-1.0), df.scaled(-1.0));
+                raise_max_by(&f, &df, length, force_swing, &mut pull);
+            }
             // A pull within round-off of zero (δ ≈ ±1e-17 at a located onset) is no pull.
             if pull > 1e-9 * r.max_force {
                 r.min_force = -pull;
@@ -798,8 +821,13 @@ impl Segment {
 /// just fails to beat it, that crossing is a tangency, costly to rule out,
 /// while the zeros of q' stay simple.
 fn raise_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
+    raise_max_by(q, dq, t1, q.swing(t1), peak);
+}
+
+/// [`raise_max`] with a bound `swing` ≥ [`Series::swing`] of q over [0, t1] already known.
+fn raise_max_by(q: &Series, dq: &Series, t1: f64, swing: f64, peak: &mut f64) {
     *peak = peak.max(q.c[0]);
-    if q.c[0] + q.swing(t1) > *peak {
+    if q.c[0] + swing > *peak {
         walk_maxima(q, dq, t1, peak);
     }
 }

@@ -194,6 +194,20 @@ pub struct ContactSeries {
 }
 
 /// The coupled contact recurrence to degree `n` (f_p to degree n − 1).
+///
+/// Written so that each order waits on the last for as little as possible.
+/// With R_{i,j} the right-hand side of structure i without the pounding
+/// force and a_{i,j} = 1/(m_i (j+1)(j+2)),
+///
+/// ```text
+/// x_{1,j+2} = (R_{1,j} − f_j) a_{1,j},   x_{2,j+2} = (R_{2,j} + f_j) a_{2,j},
+/// δ_{j+2}   = (R_{1,j} a_{1,j} − R_{2,j} a_{2,j}) − f_j (a_{1,j} + a_{2,j}),
+/// f_j       = [k̄ δ_j + h ((j+1)/2) Σ_{i=1}^{j} δ_i δ_{j+1−i}] + (c + h δ₀)(j+1) δ_{j+1},
+/// ```
+///
+/// (the last from (δδ̇)_j = ((j+1)/2)(δ²)_{j+1}, since δδ̇ = ½ d(δ²)/dt),
+/// so that from δ_{j+1} to δ_{j+2} there are two multiply-adds; the
+/// convolution and the structures' own terms are off that path.
 #[allow(clippy::too_many_arguments)]
 pub fn contact_series(
     s: &[Structure; 2],
@@ -208,11 +222,10 @@ pub fn contact_series(
     let n = n.min(MAX_DEGREE);
     let kq = [s[0].affine(branch[0]), s[1].affine(branch[1])];
     let inv_m = [1.0 / s[0].mass, 1.0 / s[1].mass];
+    let mass = [s[0].mass, s[1].mass];
     let mut x = [Series::default(), Series::default()];
     let mut force = Series::default();
     let mut delta = [0.0; MAX_DEGREE + 1];
-    // (k+1) δ_{k+1}: the coefficients of δ̇.
-    let mut rate = [0.0; MAX_DEGREE + 1];
     for i in 0..2 {
         x[i].degree = n;
         x[i].c[0] = x0[i];
@@ -220,40 +233,39 @@ pub fn contact_series(
     }
     delta[0] = x0[0] - x0[1] - gap;
     delta[1] = v0[0] - v0[1];
-    rate[0] = delta[1];
     let (kc, cc, hc) = (law.stiffness, law.linear_damping, law.hertz_damping);
+    // The coefficient of δ_{j+1} in f_j, per unit of (j + 1).
+    let rate_gain = cc + hc * delta[0];
     for j in 0..n.saturating_sub(1) {
-        // f_j from δ_0 … δ_{j+1}.
-        let mut f = kc * delta[j] + cc * rate[j];
-        if hc != 0.0 {
-            // (δδ̇)_j = ((j+1)/2) (δ²)_{j+1}, since δδ̇ = ½ d(δ²)/dt.
-            let conv = 0.5 * NEXT[j] * square_coefficient(&delta, j + 1);
-            f += hc * conv;
+        let next = NEXT[j];
+        let mut f_known = kc * delta[j];
+        if hc != 0.0 && j > 0 {
+            f_known += hc * 0.5 * next * inner_square_coefficient(&delta, j + 1);
         }
-        force.c[j] = f;
-        for i in 0..2 {
+        let a = [inv_m[0] * INV_PAIR[j], inv_m[1] * INV_PAIR[j]];
+        let r = [0, 1].map(|i| {
             let (k, q) = kq[i];
             let load = if j == 0 { q } else { 0.0 };
-            let push = if i == 0 { -f } else { f };
-            let xi = &mut x[i];
-            let rhs = (load + push - s[i].damping * NEXT[j] * xi.c[j + 1] - k * xi.c[j]) * inv_m[i]
-                - g.c[j];
-            xi.c[j + 2] = rhs * INV_PAIR[j];
-        }
-        delta[j + 2] = x[0].c[j + 2] - x[1].c[j + 2];
-        rate[j + 1] = NEXT[j + 1] * delta[j + 2];
+            load - s[i].damping * next * x[i].c[j + 1] - k * x[i].c[j] - mass[i] * g.c[j]
+        });
+        let f = f_known + rate_gain * next * delta[j + 1];
+        force.c[j] = f;
+        x[0].c[j + 2] = (r[0] - f) * a[0];
+        x[1].c[j + 2] = (r[1] + f) * a[1];
+        delta[j + 2] = (r[0] * a[0] - r[1] * a[1]) - f * (a[0] + a[1]);
     }
     force.degree = n.saturating_sub(2);
     ContactSeries { x, force }
 }
 
-/// (δ²)_m = Σ_{i=0}^{m} δ_i δ_{m−i}, by its symmetry (half the products)
-/// and in four independent partial sums (the additions do not wait on one another).
+/// Σ_{i=1}^{m−1} δ_i δ_{m−i}: (δ²)_m without its two terms in δ₀ δ_m, by
+/// its symmetry (half the products) and in four independent partial sums
+/// (the additions do not wait on one another).
 #[inline]
-fn square_coefficient(delta: &[f64; MAX_DEGREE + 1], m: usize) -> f64 {
+fn inner_square_coefficient(delta: &[f64; MAX_DEGREE + 1], m: usize) -> f64 {
     let pairs = m.div_ceil(2);
     let mut acc = [0.0; 4];
-    for i in 0..pairs {
+    for i in 1..pairs {
         acc[i % 4] += delta[i] * delta[m - i];
     }
     let middle = if m.is_multiple_of(2) {
