@@ -656,9 +656,27 @@ impl<'a> Run<'a> {
             Event::Unload(i) => {
                 if let Branch::Yielded { sign } = self.branch[i] {
                     let uy = self.structures[i].yield_displacement;
-                    self.branch[i] = Branch::Elastic {
-                        offset: self.x[i] - sign * uy,
-                    };
+                    let x = self.x[i];
+                    // The spring turns back at ẋ = 0 with z = σΠ_uy. The state
+                    // reached carries round-off of both: an ẋ a few 1e-18 on
+                    // the loading side, or x − p one bit past Π_uy, would
+                    // yield again at once and unload again after 1e-17.
+                    // Both are set to the located values.
+                    if sign * self.v[i] > 0.0 {
+                        self.v[i] = 0.0;
+                    }
+                    let mut offset = x - sign * uy;
+                    for _ in 0..4 {
+                        if !(sign * (x - offset) > uy) {
+                            break;
+                        }
+                        offset = if sign > 0.0 {
+                            offset.next_up()
+                        } else {
+                            offset.next_down()
+                        };
+                    }
+                    self.branch[i] = Branch::Elastic { offset };
                 }
             }
         }
@@ -875,3 +893,52 @@ fn raise_abs_max(q: &Series, dq: &Series, t1: f64, swing: f64, peak: &mut f64) {
 }
 
 const _: () = assert!(CONTACT_DEGREE <= MAX_DEGREE && FREE_DEGREE <= MAX_DEGREE);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::SET1;
+
+    /// A spring turning back at ẋ = 0, z = Π_uy, reached with the round-off
+    /// of the located root (ẋ = +1e-18 on the loading side, x − p one bit
+    /// past Π_uy), starts its elastic branch inside the yield surface and
+    /// not moving out of it: the next segment does not yield again at once.
+    #[test]
+    fn an_unloading_with_round_off_does_not_yield_again_at_once() {
+        let p = Params {
+            gap: f64::INFINITY,
+            ..SET1
+        };
+        let options = ExactOptions {
+            energy: false,
+            ..ExactOptions::default()
+        };
+        let uy = p.yield1;
+        // A displacement at which x − (x − Π_uy) rounds above Π_uy.
+        let x = (1..10_000)
+            .map(|k| k as f64 * 1.37e-4)
+            .find(|&x| x - (x - uy) > uy)
+            .expect("some x rounds past the yield surface");
+        let mut run = Run::new(&p, &options);
+        run.x = [x, 0.0];
+        run.v = [1e-18, 0.0];
+        run.branch[0] = Branch::Yielded { sign: 1.0 };
+        run.update_loads();
+        run.switch(Event::Unload(0));
+        let Branch::Elastic { offset } = run.branch[0] else {
+            panic!("unloading leaves the spring elastic");
+        };
+        assert!(x - offset <= uy, "z = {} > Π_uy = {uy}", x - offset);
+        assert!((x - offset - uy).abs() <= 4.0 * f64::EPSILON * uy);
+        assert_eq!(run.v[0], 0.0);
+        let mut ground = Series {
+            degree: FREE_DEGREE,
+            ..Series::default()
+        };
+        options
+            .excitation
+            .taylor(run.tau, &mut ground.c[..=FREE_DEGREE]);
+        let segment = run.free_segment(&ground, 1.0);
+        assert!(segment.end.0 > 1e-3, "next event after {:?}", segment.end);
+    }
+}
