@@ -785,10 +785,11 @@ pub struct Segment {
 
 impl Segment {
     fn new(x: [Series; 2], force: Option<Series>, h: f64) -> Self {
-        let v = [x[0].derivative(), x[1].derivative()];
+        let (v0, sx0, sv0) = x[0].derivative_and_swings(h);
+        let (v1, sx1, sv1) = x[1].derivative_and_swings(h);
         Segment {
-            swing: [x[0].swing(h), x[1].swing(h), v[0].swing(h), v[1].swing(h)],
-            v,
+            swing: [sx0, sx1, sv0, sv1],
+            v: [v0, v1],
             x,
             force,
             end: (h, None),

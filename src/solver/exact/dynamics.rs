@@ -281,16 +281,17 @@ fn inner_square_coefficient(delta: &[f64; MAX_DEGREE + 1], m: usize) -> f64 {
 /// step choice of Taylor integrators, Jorba and Zou 2005).
 pub fn step_for(series: &[&Series], tol: f64) -> f64 {
     let n = series.iter().map(|s| s.degree).max().unwrap_or(0);
-    let mut h = f64::INFINITY;
     if n < 2 {
-        return h;
+        return f64::INFINITY;
     }
-    // (tol/a)^{1/k} falls as a grows: one power per order, of the largest term.
+    // (tol/a)^{1/k} falls as a grows: the largest term of each order, and
+    // one exponential of the smaller exponent ln(tol/a)/k.
+    let mut exponent = f64::INFINITY;
     for k in [n - 1, n] {
         let a = series.iter().fold(0.0f64, |a, s| a.max(s.c[k].abs()));
         if a > 0.0 {
-            h = h.min((tol / a).powf(1.0 / k as f64));
+            exponent = exponent.min((tol / a).ln() / k as f64);
         }
     }
-    h
+    exponent.exp()
 }

@@ -105,6 +105,31 @@ impl Series {
         sum
     }
 
+    /// The series of q' with the swings of q and of q' over [0, h]
+    /// ([`Series::swing`] of each), in one pass over the coefficients:
+    /// Σ_{k≥1} |c_k| h^k and Σ_{k≥2} k |c_k| h^{k−1}.
+    #[inline]
+    pub fn derivative_and_swings(&self, h: f64) -> (Series, f64, f64) {
+        let mut d = Series::default();
+        if self.degree == 0 {
+            return (d, 0.0, 0.0);
+        }
+        d.degree = self.degree - 1;
+        let (mut swing, mut rate_swing) = (0.0, 0.0);
+        // h^{k−1}, from h⁰ at k = 1.
+        let mut hk1 = 1.0;
+        for k in 1..=self.degree {
+            let dk = k as f64 * self.c[k];
+            d.c[k - 1] = dk;
+            if k >= 2 {
+                rate_swing += dk.abs() * hk1;
+            }
+            hk1 *= h;
+            swing += self.c[k].abs() * hk1;
+        }
+        (d, swing, rate_swing)
+    }
+
     /// The series of q' (degree n − 1).
     pub fn derivative(&self) -> Series {
         let mut d = Series::default();
@@ -162,6 +187,16 @@ mod tests {
             f *= (k + 1) as f64;
         }
         s
+    }
+
+    #[test]
+    fn derivative_and_swings_agree_with_each_alone() {
+        let mut s = exp_series(20);
+        s.c[3] = -s.c[3];
+        let (d, swing, rate_swing) = s.derivative_and_swings(0.6);
+        assert_eq!(d, s.derivative());
+        assert!((swing - s.swing(0.6)).abs() <= 1e-15 * swing);
+        assert!((rate_swing - d.swing(0.6)).abs() <= 1e-15 * rate_swing);
     }
 
     #[test]
