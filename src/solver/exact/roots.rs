@@ -86,7 +86,7 @@ fn search(e: &Series, lo: f64, hi: f64, depth: u32, budget: &mut u32) -> Option<
     if e_hi > 0.0 {
         // A sign change inside: solve it. Where e is increasing it is the only
         // one; otherwise make sure no earlier crossing hides before the root.
-        let root = solve(e, lo, hi);
+        let root = solve(e, lo, hi, d0, e_hi);
         if rising || depth >= MAX_DEPTH || root <= lo {
             return Some(root);
         }
@@ -204,11 +204,12 @@ pub fn cleared(d0: f64, d1: f64, d2: f64, m: f64, w: f64) -> bool {
     true
 }
 
-/// The root of e in (lo, hi] with e(lo) ≤ 0 < e(hi): Newton steps kept inside
-/// the bracket (bisection when a step would leave it), to the last bit.
-fn solve(e: &Series, mut lo: f64, mut hi: f64) -> f64 {
-    // Start from the secant through the bracket's ends.
-    let (e_lo, e_hi) = (e.value(lo), e.value(hi));
+/// The root of e in (lo, hi] with e(lo) ≤ 0 < e(hi), given those two values:
+/// Halley steps, t ← t − e e' / (e'² − e e''/2), kept inside the bracket
+/// (bisection when a step would leave it), to the last bit. Halley's method
+/// converges cubically, so from the secant through the bracket's ends two
+/// steps usually reach round-off and a third confirms it.
+fn solve(e: &Series, mut lo: f64, mut hi: f64, e_lo: f64, e_hi: f64) -> f64 {
     let secant = lo + (hi - lo) * (-e_lo / (e_hi - e_lo));
     let mut t = if secant > lo && secant < hi {
         secant
@@ -216,7 +217,7 @@ fn solve(e: &Series, mut lo: f64, mut hi: f64) -> f64 {
         hi
     };
     for _ in 0..100 {
-        let (v, dv) = e.value_slope(t);
+        let [v, dv, half_curvature] = e.derivatives(t);
         if v == 0.0 {
             return t;
         }
@@ -229,17 +230,17 @@ fn solve(e: &Series, mut lo: f64, mut hi: f64) -> f64 {
         if mid <= lo || mid >= hi {
             break;
         }
-        let newton = t - v / dv;
-        if newton > lo && newton < hi {
-            // Converged when the Newton correction is at the last bit of t.
-            if (newton - t).abs() <= 2.0 * f64::EPSILON * t.abs() {
-                return if e.value(newton) > 0.0 {
-                    newton
+        let step = t - v * dv / (dv * dv - v * half_curvature);
+        if step > lo && step < hi {
+            // Converged when the correction is at the last bit of t.
+            if (step - t).abs() <= 2.0 * f64::EPSILON * t.abs() {
+                return if e.value(step) > 0.0 {
+                    step
                 } else {
-                    hi.min(newton.next_up())
+                    hi.min(step.next_up())
                 };
             }
-            t = newton;
+            t = step;
         } else {
             t = mid;
         }

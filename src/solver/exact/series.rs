@@ -64,6 +64,19 @@ impl Series {
         (q, dq)
     }
 
+    /// (q(t), q'(t), q''(t)/2), by Horner's rule on the shifted coefficients.
+    #[inline]
+    pub fn derivatives(&self, t: f64) -> [f64; 3] {
+        let n = self.degree;
+        let (mut d0, mut d1, mut d2) = (self.c[n], 0.0, 0.0);
+        for k in (0..n).rev() {
+            d2 = d2 * t + d1;
+            d1 = d1 * t + d0;
+            d0 = d0 * t + self.c[k];
+        }
+        [d0, d1, d2]
+    }
+
     /// (q, q', q''/2, bound of |q'''|/6 on [t, t + w]): the cubic majorant
     /// q(t + s) ≤ q + q' s + (q''/2) s² + M s³ for s ∈ [0, w], with
     /// M = Σ_k C(k,3) |c_k| (|t| + w)^{k−3} (Taylor's theorem with the
@@ -71,17 +84,11 @@ impl Series {
     #[inline]
     pub fn cubic_majorant(&self, t: f64, w: f64) -> [f64; 4] {
         let n = self.degree;
-        let (d0, d1, d2) = if t == 0.0 {
-            (self.c[0], self.c[1], self.c[2])
+        let [d0, d1, d2] = if t == 0.0 {
+            [self.c[0], self.c[1], self.c[2]]
         } else {
             // Derivatives at t via the shifted coefficients d_j = Σ_k C(k,j) c_k t^{k−j}, j ≤ 2.
-            let (mut d0, mut d1, mut d2) = (self.c[n], 0.0, 0.0);
-            for k in (0..n).rev() {
-                d2 = d2 * t + d1;
-                d1 = d1 * t + d0;
-                d0 = d0 * t + self.c[k];
-            }
-            (d0, d1, d2)
+            self.derivatives(t)
         };
         // M by Horner in r from the top: Σ_{k≥3} C(k,3) |c_k| r^{k−3}.
         let r = t.abs() + w;
