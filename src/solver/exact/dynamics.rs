@@ -150,9 +150,28 @@ const NEXT: [f64; MAX_DEGREE + 1] = {
     r
 };
 
+/// 1/(j + 2), as floats.
+const INV_NEXT2: [f64; MAX_DEGREE + 1] = {
+    let mut r = [0.0; MAX_DEGREE + 1];
+    let mut j = 0;
+    while j <= MAX_DEGREE {
+        r[j] = 1.0 / (j + 2) as f64;
+        j += 1;
+    }
+    r
+};
+
 /// Series of both structures out of contact, each alone on its branch:
-/// x_i from x₀, ẋ₀ and the ground series `g`, to degree `n`. The two
-/// recurrences run in one loop so that their dependency chains overlap.
+/// x_i from x₀, ẋ₀ and the ground series `g`, to degree `n`. The recurrence
+/// is taken as
+///
+/// ```text
+/// x_{j+2} = −(c/m)/(j+2) · x_{j+1} + [−(K/m) x_j − g_j] / ((j+1)(j+2)),
+/// ```
+///
+/// so that each coefficient waits on the one before by a single
+/// multiply-add (the bracket is ready a step earlier), and the two
+/// structures' chains run side by side.
 pub fn free_series(
     s: &[Structure; 2],
     branch: [Branch; 2],
@@ -179,8 +198,8 @@ pub fn free_series(
     for j in 1..n.saturating_sub(1) {
         for i in 0..2 {
             let xi = &mut x[i];
-            let rhs = -g.c[j] - c[i] * NEXT[j] * xi.c[j + 1] - k[i] * xi.c[j];
-            xi.c[j + 2] = rhs * INV_PAIR[j];
+            let known = (-g.c[j] - k[i] * xi.c[j]) * INV_PAIR[j];
+            xi.c[j + 2] = known - c[i] * INV_NEXT2[j] * xi.c[j + 1];
         }
     }
     x
