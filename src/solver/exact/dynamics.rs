@@ -198,9 +198,35 @@ pub fn free_series(
     for j in 1..n.saturating_sub(1) {
         for i in 0..2 {
             let xi = &mut x[i];
-            let known = (-g.c[j] - k[i] * xi.c[j]) * INV_PAIR[j];
-            xi.c[j + 2] = known - c[i] * INV_NEXT2[j] * xi.c[j + 1];
+            xi.c[j + 2] = next_free_coefficient(c[i], k[i], g.c[j], j, xi.c[j], xi.c[j + 1]);
         }
+    }
+    x
+}
+
+/// x_{j+2} of ẍ + c ẋ + k x = −g (mass divided out, j ≥ 1), from x_j and
+/// x_{j+1}: the bracket of [`free_series`] first, then one multiply-add.
+#[inline]
+fn next_free_coefficient(c: f64, k: f64, g_j: f64, j: usize, x_j: f64, x_j1: f64) -> f64 {
+    let known = (-g_j - k * x_j) * INV_PAIR[j];
+    known - c * INV_NEXT2[j] * x_j1
+}
+
+/// The series of ẍ + c ẋ + k x = load − g from (x₀, ẋ₀), to degree `n`:
+/// one structure of [`free_series`] with its mass divided out.
+pub fn oscillator(c: f64, k: f64, load: f64, x0: f64, v0: f64, g: &Series, n: usize) -> Series {
+    let n = n.min(MAX_DEGREE);
+    let mut x = Series {
+        degree: n,
+        ..Series::default()
+    };
+    x.c[0] = x0;
+    x.c[1] = v0;
+    if n >= 2 {
+        x.c[2] = (load - g.c[0] - c * v0 - k * x0) * INV_PAIR[0];
+    }
+    for j in 1..n.saturating_sub(1) {
+        x.c[j + 2] = next_free_coefficient(c, k, g.c[j], j, x.c[j], x.c[j + 1]);
     }
     x
 }

@@ -18,9 +18,9 @@
 //! event function negative and every peak below its running value, the
 //! segment is quiet: the state is advanced by the matrix alone.
 
-use super::dynamics::Structure;
+use super::dynamics::{Structure, oscillator};
 use super::roots::cleared;
-use super::series::{MAX_DEGREE, Series};
+use super::series::Series;
 
 /// Number of inputs: x₀, ẋ₀, sin τ₀, cos τ₀, Q/m.
 const INPUTS: usize = 5;
@@ -63,9 +63,9 @@ impl Transition {
         let mut end = [[0.0; 2]; INPUTS];
         let mut swing = [[0.0; 2]; INPUTS];
         for (j, u) in units.iter().enumerate() {
-            let du = u.derivative();
+            let (du, sx, sv) = u.derivative_and_swings(h);
             end[j] = [u.value(h), du.value(h)];
-            swing[j] = [u.swing(h), du.swing(h)];
+            swing[j] = [sx, sv];
         }
         Transition {
             end,
@@ -116,23 +116,6 @@ impl Transition {
         // The bounds are sums of products: allow for their own round-off.
         s.map(|v| v * (1.0 + 1e-12))
     }
-}
-
-/// Series of ẍ + c ẋ + k x = load − g from (x₀, ẋ₀), to degree n.
-fn oscillator(c: f64, k: f64, load: f64, x0: f64, v0: f64, g: &Series, n: usize) -> Series {
-    let n = n.min(MAX_DEGREE);
-    let mut x = Series {
-        degree: n,
-        ..Series::default()
-    };
-    x.c[0] = x0;
-    x.c[1] = v0;
-    for j in 0..n.saturating_sub(1) {
-        let constant = if j == 0 { load } else { 0.0 };
-        let rhs = constant - g.c[j] - c * (j + 1) as f64 * x.c[j + 1] - k * x.c[j];
-        x.c[j + 2] = rhs / ((j + 1) * (j + 2)) as f64;
-    }
-    x
 }
 
 /// Bounds of |g|, |g'| and |g''| of the sine excitation, g = sin τ.
