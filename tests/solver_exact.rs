@@ -96,6 +96,52 @@ fn grazing_cases_agree_with_the_reference_to_1e_8() {
     }
 }
 
+/// Runs for peaks only (no energy integrals, as spectra and maps make them)
+/// step through quiet stretches by transition matrix instead of series; where
+/// the right structure is four or more times as fast as the left, first over
+/// segments sized to the slow one, the fast one bounded by its steady response
+/// and its free vibration's energy. They meet the reference as the full runs
+/// do, with impacts (the fast structure ringing after each) and without, and
+/// agree with the full runs of the same parameters to round-off.
+#[test]
+fn peaks_only_runs_over_long_quiet_segments_agree_with_the_reference() {
+    let peaks_only = ExactOptions {
+        energy: false,
+        ..ExactOptions::default()
+    };
+    let cases = [
+        // (Π_ω1, μ, Π_d): no impact; 32 impacts; a yielding left structure.
+        (2.82, 7.4, 0.2),
+        (2.02, 8.2, 0.2),
+        (0.5, 10.0, 0.2),
+        (1.05, 10.0, f64::INFINITY),
+    ];
+    for (omega1, mu, gap) in cases {
+        let p = Params {
+            omega1,
+            omega2: mu * omega1,
+            gap,
+            ..SET1
+        };
+        let name = format!("Π_ω1={omega1} μ={mu} Π_d={gap}");
+        let r = simulate(&p, &peaks_only, &mut ());
+        assert!(r.completed, "{name}: {:?}", r.stop);
+        let q = reference(&p, &ReferenceOptions::with_tolerance(1e-13));
+        let err = relative_peak_error(&r.peaks(), &q.peaks);
+        assert!(
+            err < 1e-8,
+            "{name}: {:?} vs {:?}: {err:.2e}",
+            r.peaks(),
+            q.peaks
+        );
+        assert_eq!(r.impacts.len(), q.impacts.len(), "{name}: impact count");
+        let full = exact(&p);
+        let err = relative_peak_error(&r.peaks(), &full.peaks());
+        assert!(err < 1e-11, "{name}: peaks-only against full: {err:.2e}");
+        assert_eq!(r.impacts.len(), full.impacts.len(), "{name}");
+    }
+}
+
 /// ẍ + 2ζωẋ + ω²x = −sin τ from rest, in closed form (the reference's, checked there).
 fn closed_form(omega: f64, zeta: f64, tau: f64) -> f64 {
     pounding::reference::closed_form::LinearOscillator::new(omega, zeta, 1.0, 0.0, 0.0)
