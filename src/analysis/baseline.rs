@@ -9,6 +9,7 @@
 
 use std::collections::HashMap;
 
+use super::batch::NewBaseline;
 use crate::model::Params;
 use crate::solver::{RunResult, StructurePeaks};
 
@@ -104,6 +105,19 @@ impl BaselineCache {
     /// no-pounding run, or a pounding run that had no impact).
     pub fn insert(&mut self, p: &Params, free: FreePeaks) {
         self.map.entry(BaselineKey::of(p)).or_insert(free);
+    }
+
+    /// Records a baseline a [`super::batch`] obtained for `p`, and counts how.
+    pub fn record(&mut self, p: &Params, b: &NewBaseline) {
+        if self.contains(p) {
+            return;
+        }
+        if b.from_pounding {
+            self.from_pounding += 1;
+        } else {
+            self.runs += 1;
+        }
+        self.insert(p, b.peaks);
     }
 }
 

@@ -10,25 +10,25 @@
 //! unless `mu` is an axis); an `omega2` axis sets Π_ω2 itself, and with
 //! neither axis a frequency Π_ω2 keeps the base's value.
 //!
-//! The cells are computed as the spectrum engine computes points (see
-//! [`super::sweep`]): the pounding runs in parallel, then the baselines
-//! still missing, one run per distinct [`BaselineKey`], so an axis that the
-//! free motion does not depend on (Π_d, Π_e, Π_ωcon) costs no baseline runs.
+//! The cells are computed as the spectrum engine computes points, as one
+//! [`super::batch`]: the pounding runs and the baselines still missing, one
+//! per distinct [`BaselineKey`], so an axis that the free motion does not
+//! depend on (Π_d, Π_e, Π_ωcon) costs no baseline runs.
 
 use std::collections::HashSet;
 use std::fmt;
 
-use rayon::prelude::*;
 use serde::Serialize;
 
 use super::baseline::{BaselineCache, BaselineKey, FreePeaks};
+use super::batch::{NewBaseline, run_points};
 use super::gap::from_max_relative;
-use super::spectrum::{Region, baseline_params, eight_peaks};
+use super::spectrum::{Region, eight_peaks};
 use crate::model::family::MU;
 use crate::model::grid::{Grid, MAX_GRID_POINTS};
 use crate::model::params::{Kind, echo, field, is_pi};
 use crate::model::{ParamError, Params};
-use crate::solver::{RunResult, StructurePeaks, run_for_sweep as run};
+use crate::solver::{RunResult, StructurePeaks};
 
 /// Most cells one map may have: the product of two long axes is refused
 /// before any run (a map holds every cell in memory).
@@ -351,30 +351,12 @@ pub fn compute_rows(plan: &MapPlan, ys: &[f64], cache: &mut MapCache) -> Vec<Map
         .map(|(x, y)| (x, y, plan.at(x, y)))
         .collect();
 
-    // Pass 1: the pounding runs (none for gap = inf: the baseline is the run).
-    let pounding: Vec<Option<RunResult>> = cells
-        .par_iter()
-        .map(|(_, _, q)| q.pounding().then(|| run(q)))
-        .collect();
-    for ((_, _, q), r) in cells.iter().zip(&pounding) {
-        if let Some(r) = r.as_ref().filter(|r| r.impacts.is_empty()) {
-            cache.insert(q, r, true);
-        }
+    let points: Vec<Params> = cells.iter().map(|(_, _, q)| *q).collect();
+    let batch = run_points(&points, |q| cache.baselines.contains(q));
+    for b in &batch.baselines {
+        cache.insert(&points[b.point], b);
     }
-
-    // Pass 2: the missing baselines, one run per distinct key.
-    let mut seen = HashSet::new();
-    let missing: Vec<Params> = cells
-        .iter()
-        .map(|(_, _, q)| q)
-        .filter(|q| !cache.baselines.contains(q) && seen.insert(BaselineKey::of(q)))
-        .map(baseline_params)
-        .collect();
-    let free: Vec<RunResult> = missing.par_iter().map(run).collect();
-    cache.baselines.runs += missing.len();
-    for (q, r) in missing.iter().zip(&free) {
-        cache.insert(q, r, false);
-    }
+    let pounding = batch.pounding;
 
     cells
         .iter()
@@ -408,17 +390,14 @@ pub struct MapCache {
 impl MapCache {
     /// Records the baseline of `p` from a run without contact: a pounding
     /// run that had no impact (`from_pounding`), or a no-pounding run.
-    fn insert(&mut self, p: &Params, r: &RunResult, from_pounding: bool) {
+    fn insert(&mut self, p: &Params, b: &NewBaseline) {
         if self.baselines.contains(p) {
             return;
         }
-        if !r.completed {
+        if !b.completed {
             self.incomplete.insert(BaselineKey::of(p));
         }
-        if from_pounding {
-            self.baselines.from_pounding += 1;
-        }
-        self.baselines.insert(p, FreePeaks::of(r));
+        self.baselines.record(p, b);
     }
 
     fn get(&self, p: &Params) -> (FreePeaks, bool) {

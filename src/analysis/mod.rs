@@ -6,6 +6,8 @@
 //!   (they live in the model, beside the parameters they check, so that a
 //!   preset's `[spectrum]` table is checked when the preset is read);
 //! - [`baseline`]: the no-pounding baseline and its cache;
+//! - [`batch`]: many points' pounding runs and missing baselines in one
+//!   parallel pass, for [`sweep`] and [`map`];
 //! - [`sweep`]: the engine that computes every curve in parallel;
 //! - [`map`]: region maps over two parameters (any Π key or μ);
 //! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
@@ -13,6 +15,7 @@
 //! - [`similarity`]: spectra at several excitation levels and their master curve.
 
 pub mod baseline;
+pub mod batch;
 pub mod gap;
 pub mod map;
 pub mod similarity;

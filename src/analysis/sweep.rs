@@ -1,27 +1,20 @@
 //! The spectrum engine: every curve of a family over one Π_ω1 grid
 //! (SPEC §7), peaks only, points in parallel (rayon).
 //!
-//! A sweep runs in two parallel passes:
-//! 1. every pounding run (`gap` finite) of every curve; one that has no
-//!    impact never touched contact, so it is its own no-pounding baseline
-//!    and goes into the [`BaselineCache`];
-//! 2. the baselines still missing, one run per distinct [`BaselineKey`]
-//!    (shared by all curves that differ only in gap, restitution, contact
-//!    frequency, contact model or grazing floor).
-//!
-//! Then each point is [`combine`]d from its pounding run and its baseline.
+//! The runs are one [`super::batch`]: every pounding run (`gap` finite) of
+//! every curve, and the baselines the [`BaselineCache`] does not hold yet,
+//! one per [`BaselineKey`] (shared by all curves that differ only in gap,
+//! restitution, contact frequency, contact model or grazing floor), none
+//! where a pounding run had no impact (it is its own baseline). Then each
+//! point is [`combine`]d from its pounding run and its baseline.
 //!
 //! [`BaselineKey`]: super::baseline::BaselineKey
 
-use std::collections::HashSet;
-
-use rayon::prelude::*;
-
-use super::baseline::{BaselineCache, BaselineKey, FreePeaks};
+use super::baseline::{BaselineCache, FreePeaks};
+use super::batch::run_points;
 use super::family::{Family, FamilyError, Member};
-use super::spectrum::{SpectrumPoint, at_omega, baseline_params, combine};
+use super::spectrum::{SpectrumPoint, at_omega, combine};
 use crate::model::Params;
-use crate::solver::{RunResult, run_for_sweep as run};
 
 /// One curve to compute: the family member it stands for (none without a
 /// family), its parameters and its frequency ratio μ.
@@ -74,32 +67,11 @@ pub fn sweep(specs: &[CurveSpec], omega1: &[f64], cache: &mut BaselineCache) -> 
         .flat_map(|s| omega1.iter().map(|&w| at_omega(&s.params, w, s.mu)))
         .collect();
 
-    // Pass 1: pounding runs (none for gap = inf: the baseline is the run).
-    let pounding: Vec<Option<RunResult>> = points
-        .par_iter()
-        .map(|q| q.pounding().then(|| run(q)))
-        .collect();
-    for (q, r) in points.iter().zip(&pounding) {
-        if let Some(r) = r.as_ref().filter(|r| r.impacts.is_empty()) {
-            if !cache.contains(q) {
-                cache.from_pounding += 1;
-            }
-            cache.insert(q, FreePeaks::of(r));
-        }
+    let batch = run_points(&points, |q| cache.contains(q));
+    for b in &batch.baselines {
+        cache.record(&points[b.point], b);
     }
-
-    // Pass 2: the missing baselines, one run per distinct key.
-    let mut seen = HashSet::new();
-    let missing: Vec<Params> = points
-        .iter()
-        .filter(|q| !cache.contains(q) && seen.insert(BaselineKey::of(q)))
-        .map(baseline_params)
-        .collect();
-    let free: Vec<FreePeaks> = missing.par_iter().map(|q| FreePeaks::of(&run(q))).collect();
-    cache.runs += missing.len();
-    for (q, f) in missing.iter().zip(free) {
-        cache.insert(q, f);
-    }
+    let pounding = batch.pounding;
 
     // Combine.
     let mut results = points.iter().zip(pounding).map(|(q, with)| {
