@@ -14,6 +14,16 @@ fn json_has_every_key() {
         "exactly one JSON object on one line"
     );
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    // It says which program wrote it, from which preset, in which units,
+    // before anything else, as every other command's report does.
+    assert!(text.starts_with(r#"{"version":"#), "{}", &text[..60]);
+    let at = |key: &str| text.find(&format!("\"{key}\":")).unwrap();
+    assert!(
+        at("version") < at("preset") && at("preset") < at("units") && at("units") < at("params")
+    );
+    assert_eq!(v["version"], env!("CARGO_PKG_VERSION"));
+    assert_eq!(v["preset"], "set1");
+    assert_eq!(v["units"], "dimensionless (Π-groups of SPEC §1)");
     for key in pounding::model::params::keys() {
         assert!(v["params"].get(key).is_some(), "params.{key} missing");
     }
@@ -71,7 +81,17 @@ fn history_csv_has_one_row_per_step() {
 fn csv_and_table_formats() {
     let text = stdout(&succeeds(&["run", "--preset", "set2", "--format", "csv"]));
     assert_eq!(text.lines().count(), 2);
-    assert!(text.starts_with("left_peak_displacement,"));
+    // Self-describing: the preset and every parameter, then the results.
+    let mut rows = text.lines().map(|l| l.split(',').collect::<Vec<_>>());
+    let (header, row) = (rows.next().unwrap(), rows.next().unwrap());
+    assert_eq!(header.len(), row.len());
+    let cell = |key: &str| row[header.iter().position(|h| *h == key).unwrap()];
+    assert_eq!(cell("preset"), "set2");
+    for key in pounding::model::params::keys() {
+        assert!(header.contains(&key), "column {key} missing");
+    }
+    assert_eq!((cell("omega1"), cell("method")), ("1.5", "newmark"));
+    assert_eq!(cell("impacts"), "26");
     let text = stdout(&succeeds(&["run", "--preset", "set2", "--model", "kelvin"]));
     assert!(
         text.contains("kelvin contact") && text.contains("(tension)"),

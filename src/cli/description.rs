@@ -2,7 +2,7 @@
 //! flattened (`#[serde(flatten)]`) into each command's report, so every
 //! command writes the same keys in the same order:
 //!
-//! - [`Provenance`]: `version`, `preset`, `units` (map, spectrum, gap, similarity);
+//! - [`Provenance`]: `version`, `preset`, `units` (map, spectrum, gap, similarity, run);
 //! - [`Case`]: `params`, `mu`, `model`, `excitation`, `excitation_note`,
 //!   `method` (map, spectrum, run);
 //! - [`Description`]: both, then the `region_threshold` of SPEC §7, for the

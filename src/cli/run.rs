@@ -11,8 +11,8 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{Work, run_steps};
-use super::description::Case;
-use super::output::{Format, num, print, render};
+use super::description::{Case, DIMENSIONLESS, Provenance};
+use super::output::{Format, num, param_cells, param_columns, print, render};
 use super::params::ParamArgs;
 use super::progress::{Progress, Tracked};
 use crate::accuracy::timing::median;
@@ -128,8 +128,9 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
 /// The summary of one run, in every format (SPEC §6).
 #[derive(Debug, Serialize)]
 pub struct RunReport<'a> {
-    #[serde(skip)]
-    preset: &'a str,
+    /// `version`, `preset` and `units` (Π-groups: a run is dimensionless).
+    #[serde(flatten)]
+    provenance: Provenance<'a>,
     #[serde(skip)]
     repeat: u32,
     /// The parameters, their contact law, excitation (SPEC §9, with what
@@ -174,7 +175,7 @@ impl<'a> RunReport<'a> {
     ) -> Self {
         let unreliable_reason = r.unreliable();
         RunReport {
-            preset,
+            provenance: Provenance::new(preset, DIMENSIONLESS),
             repeat,
             case: Case {
                 method: r.method,
@@ -203,8 +204,13 @@ impl<'a> RunReport<'a> {
 }
 
 impl Report for RunReport<'_> {
+    /// The preset and every parameter (with the contact law, the ground
+    /// motion and the method), then the results.
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
+        let mut h = vec!["preset"];
+        h.extend(param_columns());
+        h.extend([
+            "excitation_note",
             "left_peak_displacement",
             "left_peak_velocity",
             "left_yielded",
@@ -217,19 +223,23 @@ impl Report for RunReport<'_> {
             "energy_residual",
             "steps",
             "elapsed_ms",
-            "method",
             "error_vs_exact",
             "min_gap_no_pounding",
             "reliable",
             "unreliable_reason",
-            "excitation",
-            "excitation_note",
-        ]
+        ]);
+        h
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
         let (l, r) = (&self.left, &self.right);
-        vec![vec![
+        let mut row = vec![self.provenance.preset.to_string()];
+        row.extend(param_cells(&Params {
+            method: self.case.method,
+            ..*self.case.params
+        }));
+        row.extend([
+            self.case.excitation_note.clone().unwrap_or_default(),
             num(l.peak_displacement),
             num(l.peak_velocity),
             l.yielded.to_string(),
@@ -242,14 +252,12 @@ impl Report for RunReport<'_> {
             num(self.energy_residual),
             self.steps.to_string(),
             num(self.elapsed_ms),
-            self.case.method.to_string(),
             self.error_vs_exact.map(num).unwrap_or_default(),
             num(self.min_gap_no_pounding),
             self.reliable.to_string(),
             self.unreliable_reason.clone().unwrap_or_default(),
-            self.case.excitation.to_string(),
-            self.case.excitation_note.clone().unwrap_or_default(),
-        ]]
+        ]);
+        vec![row]
     }
 
     fn table(&self) -> String {
@@ -258,7 +266,7 @@ impl Report for RunReport<'_> {
         let _ = writeln!(
             s,
             "{}: {} excitation, {} contact, {} method, Δτ = {}, {} cycles (τ_end = {:.3}), Π_d = {}",
-            self.preset,
+            self.provenance.preset,
             case.excitation,
             case.model,
             case.method,
@@ -374,8 +382,12 @@ mod tests {
         let text = csv(&report.csv_header(), &report.csv_rows());
         let last = text.lines().nth(1).unwrap();
         assert!(
-            last.contains(",newmark,,") // no error_vs_exact on a report built by hand
-                && last.ends_with(",false,energy residual 5.000e-1 exceeds 1e-4,sine,"),
+            last.starts_with("set1,") && last.contains(",sine,"),
+            "{last}"
+        );
+        assert!(
+            last.contains(",newmark,") // no error_vs_exact on a report built by hand
+                && last.ends_with(",,2.5736,false,energy residual 5.000e-1 exceeds 1e-4"),
             "{last}"
         );
         assert!(
