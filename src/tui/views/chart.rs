@@ -299,7 +299,12 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
     } else {
         legend(look, series, braille)
     };
-    let rows = header(buf, area, &title, &entries);
+    let short_title = look.text(&format!(
+        "{}{}",
+        without_scaling(&spec.title),
+        ticks::scale_note(yt.exponent)
+    ));
+    let rows = header(buf, area, &title, &short_title, &entries);
     let mut plot = plot;
     if rows == 2 {
         plot.y += 1;
@@ -446,37 +451,79 @@ fn legend(look: Look, series: &[Series], braille: bool) -> Vec<(String, String, 
         .collect()
 }
 
-fn legend_width(entries: &[(String, String, Style)]) -> u16 {
-    let w: u16 = entries.iter().map(|(a, b, _)| width(a) + width(b)).sum();
-    w + 2 * entries.len().saturating_sub(1) as u16
+fn legend_width(entries: &[(String, String, Style)], compact: bool) -> u16 {
+    let (sample, gap) = if compact { (1, 1) } else { (2, 2) };
+    let w: u16 = entries
+        .iter()
+        .map(|(_, name, _)| sample + width(name))
+        .sum();
+    w + gap * entries.len().saturating_sub(1) as u16
 }
 
 /// The header: the title left and the legend right on one row, or the
 /// legend on a second row when both do not fit and the chart is tall
-/// enough; entries that still do not fit are left out rather than drawn
-/// over each other. Returns the rows used.
-fn header(buf: &mut Buffer, area: Rect, title: &str, entries: &[(String, String, Style)]) -> u16 {
+/// enough. Where they still do not fit, the legend closes up (a one-cell
+/// sample, one space between entries), then the title gives up its scaling
+/// (`short_title`, kept where the chart is wide enough for it); entries that
+/// still do not fit are left out rather than drawn over each other. Returns
+/// the rows used.
+fn header(
+    buf: &mut Buffer,
+    area: Rect,
+    title: &str,
+    short_title: &str,
+    entries: &[(String, String, Style)],
+) -> u16 {
     let right = margin(buf, area);
-    let end = put(buf, area.x, area.y, title, Style::new(), right);
-    let one_row = end + 2 + legend_width(entries) <= right;
-    let (row, left) = if one_row || area.height < 7 {
-        (area.y, end + 2)
-    } else {
-        (area.y + 1, area.x + GUTTER)
+    let second_row = area.height >= 7;
+    // Where the legend goes after `title`, and how many of its entries fit there.
+    let place = |title: &str, compact: bool| {
+        let end = area.x + width(title);
+        let one_row = end + 2 + legend_width(entries, compact) <= right;
+        let (row, left) = if one_row || !second_row {
+            (area.y, end + 2)
+        } else {
+            (area.y + 1, area.x + GUTTER)
+        };
+        let mut fitting = 0;
+        while fitting < entries.len() && left + legend_width(&entries[..=fitting], compact) <= right
+        {
+            fitting += 1;
+        }
+        (row, fitting)
     };
-    let mut fitting = 0;
-    while fitting < entries.len() && left + legend_width(&entries[..=fitting]) <= right {
-        fitting += 1;
-    }
-    let mut x = right - legend_width(&entries[..fitting]);
+    // The first layout that shows the most entries, and its whole title.
+    let score = |t: &str, c: bool| (place(t, c).1, area.x + width(t) <= right);
+    let layouts = [(title, false), (title, true), (short_title, true)];
+    let best = layouts.iter().map(|(t, c)| score(t, *c)).max();
+    let (title, compact) = layouts
+        .into_iter()
+        .find(|(t, c)| Some(score(t, *c)) == best)
+        .unwrap_or((title, false));
+    let (row, fitting) = place(title, compact);
+    put(buf, area.x, area.y, title, Style::new(), right);
+    let mut x = right - legend_width(&entries[..fitting], compact);
     for (k, (sample, name, style)) in entries[..fitting].iter().enumerate() {
         if k > 0 {
-            x += 2;
+            x += if compact { 1 } else { 2 };
         }
-        x = put(buf, x, row, sample, *style, right);
+        let sample = if compact {
+            sample.chars().next().map(String::from).unwrap_or_default()
+        } else {
+            sample.clone()
+        };
+        x = put(buf, x, row, &sample, *style, right);
         x = put(buf, x, row, name, Style::new(), right);
     }
     if row == area.y { 1 } else { 2 }
+}
+
+/// A title without its bracketed scaling: `x [a_p/ω_p²]` → `x`.
+fn without_scaling(title: &str) -> String {
+    match (title.find(" ["), title.find(']')) {
+        (Some(a), Some(b)) if b > a => format!("{}{}", &title[..a], &title[b + 1..]),
+        _ => title.to_string(),
+    }
 }
 
 fn x_labels(
@@ -571,5 +618,51 @@ mod tests {
         assert!(t.contains("0┼"), "{t}");
         assert!(lines[7].starts_with("      0"), "{t}");
         assert!(lines[7].ends_with("τ"), "{t}");
+    }
+
+    /// In a narrow chart the legend closes up, then the title gives up its
+    /// scaling, before any entry is left out; a title with no legend beside
+    /// it keeps its scaling, and one that would be cut gives it up.
+    #[test]
+    fn a_narrow_header_closes_up_before_it_leaves_an_entry_out() {
+        let look = Look {
+            ascii: false,
+            color: false,
+        };
+        let four = [
+            Series::line("x1", Color::Cyan, vec![(0.0, -2.0), (50.0, 3.0)]),
+            Series::line("x2", Color::Yellow, vec![(0.0, 1.0), (50.0, -1.0)]),
+            Series::line("x1−x2", Color::Green, vec![(0.0, 0.0), (50.0, 1.0)]),
+            Series::line("Π_d", Color::Red, vec![(0.0, 0.2), (50.0, 0.2)]),
+        ];
+        let spec = ChartSpec {
+            title: "x [a_p/ω_p²]".into(),
+            x_title: "τ".into(),
+            ..Default::default()
+        };
+        let first_line = |width: u16, series: &[Series], spec: &ChartSpec| {
+            let area = Rect::new(0, 0, width, 4);
+            let mut buf = Buffer::empty(area);
+            draw(&mut buf, area, look, spec, series);
+            text(&buf).lines().next().unwrap().trim_end().to_string()
+        };
+        // Wide: the whole title and two-cell samples two spaces apart.
+        let wide = first_line(60, &four, &spec);
+        assert!(
+            wide.starts_with("x [a_p/ω_p²]") && wide.ends_with("## Π_d"),
+            "{wide}"
+        );
+        // 29 columns (the 60 × 20 layout): every entry, closed up, title short.
+        let narrow = first_line(29, &four, &spec);
+        assert_eq!(narrow, "x     * x1 + x2 o x1−x2 # Π_d");
+        // No legend: the whole title.
+        let spec_alone = ChartSpec {
+            no_legend: true,
+            ..spec.clone()
+        };
+        assert_eq!(first_line(14, &four, &spec_alone), "x [a_p/ω_p²]");
+        // A title that would be cut gives up its scaling instead.
+        let cut = first_line(12, &four[..1], &spec);
+        assert!(cut.starts_with("x ") && !cut.contains('['), "{cut}");
     }
 }
