@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use clap::Args;
 
 use super::CliError;
-use super::output::{Format, num, render};
+use super::output::{Format, FormatArg, num, render};
 use super::params::user_preset_dir;
 use crate::accuracy::figure_spectra::SpectraAccuracy;
 use crate::accuracy::plot::{Series, render as plot_render};
@@ -23,9 +23,8 @@ pub struct BenchArgs {
     /// Contact model (repeatable) [default: both].
     #[arg(long, value_parser = ["kelvin", "improved-kelvin"])]
     pub model: Vec<String>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
+    #[command(flatten)]
+    pub output: FormatArg,
     /// Also draw error against time on log–log axes (Braille), one plot per preset and model.
     #[arg(long)]
     pub plot: bool,
@@ -83,8 +82,8 @@ pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
         truth_tolerance: crate::accuracy::work_precision::TRUTH_TOLERANCE,
         rows: all,
     };
-    let mut text = render(&report, args.format)?;
-    if args.plot && args.format == Format::Table {
+    let mut text = render(&report, args.output.format)?;
+    if args.plot && args.output.format == Format::Table {
         for group in &groups {
             text += &plot(group);
         }
@@ -121,7 +120,7 @@ fn spectra(args: &BenchArgs) -> Result<(), CliError> {
             })
             .collect(),
     };
-    super::output::print(&render(&report, args.format)?)
+    super::output::print(&render(&report, args.output.format)?)
 }
 
 /// The work-precision table in every format.

@@ -6,6 +6,8 @@
 //! steps for 50 266 nominal) and more for stiff contact, so the estimate is
 //! a lower bound of the work and an order of magnitude of its time.
 
+use clap::Args;
+
 use super::CliError;
 use crate::model::Params;
 
@@ -27,6 +29,14 @@ pub const HISTORY_ROW_BYTES: f64 = 200.0;
 pub const SECONDS_PER_ROW: f64 = 1e-6;
 
 /// Nominal Newmark steps of one run of `p`: τ_end/Δτ.
+/// `--allow-long`, as every command that can be asked for long work takes it.
+#[derive(Debug, Clone, Copy, Default, Args)]
+pub struct LongArg {
+    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
+    #[arg(long)]
+    pub allow_long: bool,
+}
+
 pub fn run_steps(p: &Params) -> f64 {
     p.tau_end() / p.dt
 }

@@ -10,10 +10,10 @@ use clap::Args;
 use serde::Serialize;
 
 use super::CliError;
-use super::budget::{Work, run_steps};
+use super::budget::{LongArg, Work, run_steps};
 use super::description::{DIMENSIONLESS, Provenance};
 use super::map::{AxisReport, resolve_mu};
-use super::output::{Format, num, print, render};
+use super::output::{FormatArg, num, print, render};
 use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
 use super::progress::Progress;
@@ -32,12 +32,10 @@ pub struct GapArgs {
     /// Frequency ratio μ, Π_ω2 = μ Π_ω1 on an omega1 axis [default: the preset's, else omega2/omega1].
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub mu: Option<String>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
-    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
-    #[arg(long)]
-    pub allow_long: bool,
+    #[command(flatten)]
+    pub output: FormatArg,
+    #[command(flatten)]
+    pub long: LongArg,
 }
 
 pub fn execute(args: &GapArgs) -> Result<(), CliError> {
@@ -62,7 +60,7 @@ pub fn execute(args: &GapArgs) -> Result<(), CliError> {
         steps: points.len() as f64 * run_steps(&p),
         rows: 0.0,
     };
-    work.check("gap", args.allow_long, true)?;
+    work.check("gap", args.long.allow_long, true)?;
     let progress = Progress::start(&work);
     let t = Instant::now();
     let gaps = match &axis {
@@ -73,7 +71,7 @@ pub fn execute(args: &GapArgs) -> Result<(), CliError> {
     drop(progress);
     let mut report = GapReport::new(&preset.name, &p, axis.as_ref(), &points, &gaps, elapsed_ms);
     report.mu = mu;
-    print(&render(&report, args.format)?)?;
+    print(&render(&report, args.output.format)?)?;
     match gaps.iter().find(|g| !g.completed) {
         Some(g) => Err(CliError::Failed(format!(
             "the no-pounding run at omega1 = {}, omega2 = {} stopped before τ_end; \

@@ -10,9 +10,9 @@ use clap::Args;
 use serde::Serialize;
 
 use super::CliError;
-use super::budget::{Work, run_steps};
+use super::budget::{LongArg, Work, run_steps};
 use super::description::Description;
-use super::output::{Format, PEAK_COLUMNS, num, param_cells, param_columns, print, render};
+use super::output::{FormatArg, PEAK_COLUMNS, num, param_cells, param_columns, print, render};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::map::{Axis, MapCache, MapCell, MapPlan, compute_rows, row_regions};
@@ -35,12 +35,10 @@ pub struct MapArgs {
     /// Frequency ratio μ, Π_ω2 = μ Π_ω1 on an omega1 axis [default: the preset's, else omega2/omega1].
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub mu: Option<String>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
-    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
-    #[arg(long)]
-    pub allow_long: bool,
+    #[command(flatten)]
+    pub output: FormatArg,
+    #[command(flatten)]
+    pub long: LongArg,
 }
 
 pub fn execute(args: &MapArgs) -> Result<(), CliError> {
@@ -54,14 +52,14 @@ pub fn execute(args: &MapArgs) -> Result<(), CliError> {
         steps: 2.0 * plan.cells() as f64 * run_steps(&p),
         rows: 0.0,
     };
-    work.check("map", args.allow_long, true)?;
+    work.check("map", args.long.allow_long, true)?;
     let progress = Progress::start(&work);
     let t = Instant::now();
     let (cells, cache) = compute_with(&plan, &progress);
     let elapsed_ms = t.elapsed().as_secs_f64() * 1e3;
     drop(progress);
     let report = MapReport::new(&preset.name, &plan, &cells, &cache, elapsed_ms);
-    print(&render(&report, args.format)?)
+    print(&render(&report, args.output.format)?)
 }
 
 /// μ as a spectrum takes it: `--mu`, else the preset's `[spectrum]` μ,

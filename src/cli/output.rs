@@ -2,7 +2,7 @@
 //! for scripts, each written by one writer from the command's typed report
 //! (see [`crate::output::report`]).
 
-use clap::ValueEnum;
+use clap::{Args, ValueEnum};
 
 use super::CliError;
 use crate::model::Params;
@@ -19,6 +19,14 @@ pub enum Format {
     Json,
     /// A header row, then one row per record.
     Csv,
+}
+
+/// `--format`, as every command that writes a report takes it.
+#[derive(Debug, Clone, Copy, Default, Args)]
+pub struct FormatArg {
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
 }
 
 /// `report` in `format`.

@@ -10,9 +10,9 @@ use clap::Args;
 use serde::Serialize;
 
 use super::CliError;
-use super::budget::{Work, run_steps};
+use super::budget::{LongArg, Work, run_steps};
 use super::description::{Case, DIMENSIONLESS, Provenance};
-use super::output::{Format, num, param_cells, param_columns, print, render};
+use super::output::{FormatArg, num, param_cells, param_columns, print, render};
 use super::params::ParamArgs;
 use super::progress::{Progress, Tracked};
 use crate::accuracy::timing::median;
@@ -25,9 +25,8 @@ use crate::solver::{CsvHistory, Impact, RunResult, StructurePeaks, error_vs_exac
 pub struct RunArgs {
     #[command(flatten)]
     pub params: ParamArgs,
-    /// Output format of the summary.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
+    #[command(flatten)]
+    pub output: FormatArg,
     /// Write the history as CSV (tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp, then the ground
     /// motion ag,vg,ug in Π form, SPEC §9), one row per step,
     /// streamed as it is computed. `-` is stdout (the summary then goes to stderr).
@@ -36,9 +35,8 @@ pub struct RunArgs {
     /// Run the same case N times in this process and report the median time.
     #[arg(long, value_name = "N", default_value_t = 1, allow_negative_numbers = true, value_parser = clap::value_parser!(u32).range(1..=100_000))]
     pub repeat: u32,
-    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
-    #[arg(long)]
-    pub allow_long: bool,
+    #[command(flatten)]
+    pub long: LongArg,
     /// Write a history even when it is estimated at over 1 GB.
     #[arg(long)]
     pub allow_large: bool,
@@ -60,7 +58,7 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
     } else {
         "run"
     };
-    work.check(what, args.allow_long, args.allow_large)?;
+    work.check(what, args.long.allow_long, args.allow_large)?;
     // Open the history target before any work, so a bad path fails at once.
     let history = args.history.as_deref().map(Target::open).transpose()?;
     let progress = Progress::start(&work);
@@ -107,7 +105,7 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
     };
     let mut report = RunReport::new(&preset.name, &p, &result, elapsed_ms, args.repeat, min_gap);
     report.error_vs_exact = error;
-    let text = render(&report, args.format)?;
+    let text = render(&report, args.output.format)?;
     if history_to_stdout {
         // Stdout carries the history alone.
         let _ = std::io::stderr().write_all(text.as_bytes());

@@ -8,9 +8,9 @@ use std::time::Instant;
 use clap::Args;
 
 use super::CliError;
-use super::budget::Work;
+use super::budget::{LongArg, Work};
 use super::description::Provenance;
-use super::output::{Format, num, render};
+use super::output::{FormatArg, num, render};
 use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
 use super::spectrum::SpectrumPlan;
@@ -46,12 +46,10 @@ pub struct SimilarityArgs {
     /// and the curves do not collapse). By default they scale with a_p, as in the paper.
     #[arg(long)]
     pub fixed_structure: bool,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
-    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
-    #[arg(long)]
-    pub allow_long: bool,
+    #[command(flatten)]
+    pub output: FormatArg,
+    #[command(flatten)]
+    pub long: LongArg,
 }
 
 fn usage(msg: impl std::fmt::Display) -> CliError {
@@ -136,7 +134,7 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
         steps: levels.len() as f64 * plan.work()?.steps,
         rows: 0.0,
     };
-    work.check("similarity", args.allow_long, true)?;
+    work.check("similarity", args.long.allow_long, true)?;
     let t = Instant::now();
     let result = study(
         &physical,
@@ -159,7 +157,7 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
         elapsed_ms,
         args.fixed_structure,
     );
-    super::output::print(&render(&report, args.format)?)
+    super::output::print(&render(&report, args.output.format)?)
 }
 
 /// Peak displacement and velocity of one structure in SI units.

@@ -8,9 +8,9 @@ use std::time::Instant;
 use clap::Args;
 
 use super::CliError;
-use super::budget::{Work, run_steps};
+use super::budget::{LongArg, Work, run_steps};
 use super::description::Description;
-use super::output::{Format, num, print, render};
+use super::output::{FormatArg, num, print, render};
 use super::output::{PEAK_COLUMNS, param_cells, param_columns};
 use super::params::ParamArgs;
 use super::progress::Progress;
@@ -38,12 +38,10 @@ pub struct SpectrumArgs {
     /// One curve per value of a key, e.g. mass_ratio=0.1,0.5,0.9, gap=0.2,1.5,inf, mu=1.5,4,10.
     #[arg(long, value_name = "KEY=V1,V2,...", allow_hyphen_values = true)]
     pub family: Option<String>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
-    /// Run even when the estimated work exceeds 1e10 steps (several minutes).
-    #[arg(long)]
-    pub allow_long: bool,
+    #[command(flatten)]
+    pub output: FormatArg,
+    #[command(flatten)]
+    pub long: LongArg,
 }
 
 /// What to sweep, resolved from the preset's `[spectrum]` table and the flags (flags win).
@@ -175,10 +173,10 @@ pub fn execute(args: &SpectrumArgs) -> Result<(), CliError> {
         args.family.as_deref(),
     )?;
     let work = plan.work()?;
-    work.check("spectrum", args.allow_long, true)?;
+    work.check("spectrum", args.long.allow_long, true)?;
     let (curves, cache, elapsed_ms) = plan.compute_with(&Progress::start(&work))?;
     let report = SpectrumReport::new(&plan, &curves, &cache, elapsed_ms);
-    print(&render(&report, args.format)?)
+    print(&render(&report, args.output.format)?)
 }
 
 /// The Π_ω1 grid as reported.

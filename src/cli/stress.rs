@@ -7,7 +7,7 @@ use clap::Args;
 use serde::Serialize;
 
 use super::CliError;
-use super::output::{Format, num, print, render};
+use super::output::{FormatArg, num, print, render};
 use crate::accuracy::stress::{Outcome, check, corner_cases, random_cases};
 use crate::output::report::Report;
 
@@ -24,9 +24,8 @@ pub struct StressArgs {
         allow_negative_numbers = true
     )]
     pub seed: u64,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
+    #[command(flatten)]
+    pub output: FormatArg,
 }
 
 impl Default for StressArgs {
@@ -34,7 +33,7 @@ impl Default for StressArgs {
         StressArgs {
             cases: 100,
             seed: 1,
-            format: Format::Table,
+            output: FormatArg::default(),
         }
     }
 }
@@ -44,7 +43,7 @@ pub fn execute(args: &StressArgs) -> Result<(), CliError> {
     cases.extend(random_cases(args.cases as usize, args.seed));
     let outcomes: Vec<Outcome> = cases.iter().map(check).collect();
     let report = StressReport::new(&outcomes);
-    print(&render(&report, args.format)?)?;
+    print(&render(&report, args.output.format)?)?;
     let failed = report.failed;
     if failed > 0 {
         Err(CliError::Failed(format!(
