@@ -266,6 +266,8 @@ impl<'a> Run<'a> {
             degree: CONTACT_DEGREE.max(FREE_DEGREE),
             ..Series::default()
         };
+        // Rebuilt in place by each segment that needs series.
+        let mut segment = Segment::default();
         while self.tau < tau_end {
             self.segments += 1;
             let segments = self.segments;
@@ -296,10 +298,10 @@ impl<'a> Run<'a> {
             }
             let reach = (tau_end - self.tau).min(excitation.next_break(self.tau) - self.tau);
             excitation.taylor(self.tau, &mut ground.c[..=ground.degree]);
-            let segment = match self.contact {
-                None => self.free_segment(&ground, reach),
-                Some(law) => self.contact_segment(&law, &ground, reach),
-            };
+            match self.contact {
+                None => self.free_segment(&ground, reach, &mut segment),
+                Some(law) => self.contact_segment(&law, &ground, reach, &mut segment),
+            }
             let (length, event) = segment.end;
             self.account(&segment, length, observer);
             self.advance(&segment, length);
@@ -453,17 +455,17 @@ impl<'a> Run<'a> {
     }
 
     /// Both structures out of contact, each on its own branch.
-    fn free_segment(&self, ground: &Series, reach: f64) -> Segment {
-        let x = free_series(
+    fn free_segment(&self, ground: &Series, reach: f64, segment: &mut Segment) {
+        free_series(
             &self.structures,
             self.branch,
             self.x,
             self.v,
             ground,
             FREE_DEGREE,
+            &mut segment.x,
         );
-        let h = self.free_step.min(reach);
-        let mut segment = Segment::new(x, None, h);
+        segment.open(self.free_step.min(reach), false);
         if self.p.gap.is_finite() {
             let delta0 = self.x[0] - self.x[1] - self.p.gap;
             if delta0 + segment.swing[0] + segment.swing[1] >= 0.0 {
@@ -471,16 +473,21 @@ impl<'a> Run<'a> {
                 segment.consider(&delta, Event::Onset);
             }
         }
-        self.spring_events(&mut segment);
-        segment
+        self.spring_events(segment);
     }
 
     /// Both structures coupled through the contact law.
-    fn contact_segment(&self, law: &ContactLaw, ground: &Series, reach: f64) -> Segment {
+    fn contact_segment(
+        &self,
+        law: &ContactLaw,
+        ground: &Series,
+        reach: f64,
+        segment: &mut Segment,
+    ) {
         if !law.is_analytic() {
-            return self.contact_rk_segment(law, ground, reach);
+            return self.contact_rk_segment(law, ground, reach, segment);
         }
-        let s = contact_series(
+        contact_series(
             &self.structures,
             self.branch,
             self.x,
@@ -489,6 +496,8 @@ impl<'a> Run<'a> {
             law,
             ground,
             CONTACT_DEGREE,
+            &mut segment.x,
+            &mut segment.force,
         );
         let impact = &self.result.impacts[self.open_impact.expect("contact has an impact")];
         let scale = impact
@@ -496,14 +505,24 @@ impl<'a> Run<'a> {
             .abs()
             .max(self.p.min_impact_velocity)
             / self.p.contact_omega;
-        let h = step_for(&[&s.x[0], &s.x[1]], self.options.contact_tolerance * scale)
-            .min(self.free_step)
-            .min(reach);
-        self.contact_events(Segment::new(s.x, Some(s.force), h))
+        let h = step_for(
+            &[&segment.x[0], &segment.x[1]],
+            self.options.contact_tolerance * scale,
+        )
+        .min(self.free_step)
+        .min(reach);
+        segment.open(h, true);
+        self.contact_events(segment);
     }
 
     /// A Hertz-type contact: one Runge–Kutta step ([`super::contact_rk`]).
-    fn contact_rk_segment(&self, law: &ContactLaw, ground: &Series, reach: f64) -> Segment {
+    fn contact_rk_segment(
+        &self,
+        law: &ContactLaw,
+        ground: &Series,
+        reach: f64,
+        segment: &mut Segment,
+    ) {
         let impact = &self.result.impacts[self.open_impact.expect("contact has an impact")];
         let v0 = impact
             .approach_velocity
@@ -530,15 +549,19 @@ impl<'a> Run<'a> {
             v0,
         );
         self.rk_step.set(piece.next);
-        self.contact_events(Segment::new(piece.x, Some(piece.force), piece.h))
+        segment.x = piece.x;
+        segment.force = piece.force;
+        segment.open(piece.h, true);
+        self.contact_events(segment);
     }
 
-    /// The events of a contact segment: separation (δ falls to 0) and the springs'.
-    fn contact_events(&self, mut segment: Segment) -> Segment {
-        let separation = segment.penetration(self.p.gap).scaled(-1.0);
+    /// The events of a contact segment: separation (δ falls to 0) and the
+    /// springs'. Keeps δ's series for the impact's extremes.
+    fn contact_events(&self, segment: &mut Segment) {
+        segment.delta = segment.penetration(self.p.gap);
+        let separation = segment.delta.scaled(-1.0);
         segment.consider(&separation, Event::Separation);
-        self.spring_events(&mut segment);
-        segment
+        self.spring_events(segment);
     }
 
     fn spring_events(&self, segment: &mut Segment) {
@@ -602,17 +625,17 @@ impl<'a> Run<'a> {
                 &mut self.max_relative_displacement,
             );
         }
-        if let (Some(force), Some(k)) = (&segment.force, self.open_impact) {
+        if let (Some(force), Some(k)) = (segment.force(), self.open_impact) {
             let r = &mut self.result;
             let imp = &mut r.impacts[k];
             // Each extreme is searched only where its bound can beat it; the
             // penetration's swing is at most the sum of the two displacements'.
             let delta0 = self.x[0] - self.x[1] - self.p.gap;
             if delta0 + segment.swing[0] + segment.swing[1] > imp.max_penetration {
-                let delta = segment.penetration(self.p.gap);
+                let delta = &segment.delta;
                 let swing = segment.swing[0] + segment.swing[1];
                 raise_max_by(
-                    &delta,
+                    delta,
                     &delta.derivative(),
                     length,
                     swing,
@@ -803,11 +826,15 @@ impl<'a> Run<'a> {
 }
 
 /// One segment's series and its earliest event.
+#[derive(Default)]
 pub struct Segment {
     pub x: [Series; 2],
     pub v: [Series; 2],
-    /// f_p in contact.
-    pub force: Option<Series>,
+    /// f_p, in contact ([`Segment::force`]).
+    force: Series,
+    /// δ = x1 − x2 − Π_d, in contact.
+    delta: Series,
+    contact: bool,
     /// Σ_{k≥1} |c_k| h^k of x1, x2, ẋ1, ẋ2 over the segment's full length h:
     /// how far each can move from its start value, a bound that clears most
     /// event functions and peaks without a search.
@@ -817,16 +844,21 @@ pub struct Segment {
 }
 
 impl Segment {
-    fn new(x: [Series; 2], force: Option<Series>, h: f64) -> Self {
-        let (v0, sx0, sv0) = x[0].derivative_and_swings(h);
-        let (v1, sx1, sv1) = x[1].derivative_and_swings(h);
-        Segment {
-            swing: [sx0, sx1, sv0, sv1],
-            v: [v0, v1],
-            x,
-            force,
-            end: (h, None),
-        }
+    /// Starts a segment of length h on the series of x already in place
+    /// (and of f_p, in contact): the velocities' series, the swings, and
+    /// no event yet.
+    fn open(&mut self, h: f64, contact: bool) {
+        let [v0, v1] = &mut self.v;
+        let (sx0, sv0) = self.x[0].derivative_and_swings_into(h, v0);
+        let (sx1, sv1) = self.x[1].derivative_and_swings_into(h, v1);
+        self.swing = [sx0, sx1, sv0, sv1];
+        self.contact = contact;
+        self.end = (h, None);
+    }
+
+    /// f_p's series, in contact.
+    pub fn force(&self) -> Option<&Series> {
+        self.contact.then_some(&self.force)
     }
 
     /// δ = x1 − x2 − Π_d on the segment (SPEC §4).
@@ -858,8 +890,8 @@ impl Segment {
             v: [v0, v1],
             a: [a0, a1],
             fs,
-            fp: self.force.as_ref().map_or(0.0, |f| f.value(t)),
-            in_contact: self.force.is_some(),
+            fp: self.force().map_or(0.0, |f| f.value(t)),
+            in_contact: self.contact,
         }
     }
 }
@@ -972,7 +1004,8 @@ mod tests {
         options
             .excitation
             .taylor(run.tau, &mut ground.c[..=FREE_DEGREE]);
-        let segment = run.free_segment(&ground, 1.0);
+        let mut segment = Segment::default();
+        run.free_segment(&ground, 1.0, &mut segment);
         assert!(segment.end.0 > 1e-3, "next event after {:?}", segment.end);
     }
 }

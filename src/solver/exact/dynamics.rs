@@ -179,9 +179,9 @@ pub fn free_series(
     v0: [f64; 2],
     g: &Series,
     n: usize,
-) -> [Series; 2] {
+    x: &mut [Series; 2],
+) {
     let n = n.min(MAX_DEGREE);
-    let mut x = [Series::default(), Series::default()];
     let mut k = [0.0; 2];
     let mut c = [0.0; 2];
     for i in 0..2 {
@@ -189,6 +189,7 @@ pub fn free_series(
         let (ki, qi) = s[i].affine(branch[i]);
         k[i] = ki * inv_m;
         c[i] = s[i].damping * inv_m;
+        x[i].c[n + 1..].fill(0.0);
         x[i].degree = n;
         x[i].c[0] = x0[i];
         x[i].c[1] = v0[i];
@@ -201,7 +202,6 @@ pub fn free_series(
             xi.c[j + 2] = next_free_coefficient(c[i], k[i], g.c[j], j, xi.c[j], xi.c[j + 1]);
         }
     }
-    x
 }
 
 /// x_{j+2} of ẍ + c ẋ + k x = −g (mass divided out, j ≥ 1), from x_j and
@@ -231,14 +231,8 @@ pub fn oscillator(c: f64, k: f64, load: f64, x0: f64, v0: f64, g: &Series, n: us
     x
 }
 
-/// Series of both structures and of the pounding force in contact.
-pub struct ContactSeries {
-    pub x: [Series; 2],
-    /// f_p.
-    pub force: Series,
-}
-
-/// The coupled contact recurrence to degree `n` (f_p to degree n − 1).
+/// The coupled contact recurrence to degree `n` of both structures, into
+/// `x`, and of the pounding force f_p (to degree n − 2), into `force`.
 ///
 /// Written so that each order waits on the last for as little as possible.
 /// With R_{i,j} the right-hand side of structure i without the pounding
@@ -263,15 +257,17 @@ pub fn contact_series(
     law: &ContactLaw,
     g: &Series,
     n: usize,
-) -> ContactSeries {
+    x: &mut [Series; 2],
+    force: &mut Series,
+) {
     let n = n.min(MAX_DEGREE);
     let kq = [s[0].affine(branch[0]), s[1].affine(branch[1])];
     let inv_m = [1.0 / s[0].mass, 1.0 / s[1].mass];
     let mass = [s[0].mass, s[1].mass];
-    let mut x = [Series::default(), Series::default()];
-    let mut force = Series::default();
+    force.c = [0.0; MAX_DEGREE + 1];
     let mut delta = [0.0; MAX_DEGREE + 1];
     for i in 0..2 {
+        x[i].c[n + 1..].fill(0.0);
         x[i].degree = n;
         x[i].c[0] = x0[i];
         x[i].c[1] = v0[i];
@@ -300,7 +296,6 @@ pub fn contact_series(
         delta[j + 2] = (r[0] * a[0] - r[1] * a[1]) - f * (a[0] + a[1]);
     }
     force.degree = n.saturating_sub(2);
-    ContactSeries { x, force }
 }
 
 /// Σ_{i=1}^{m−1} δ_i δ_{m−i}: (δ²)_m without its two terms in δ₀ δ_m, by

@@ -77,7 +77,7 @@ impl Work {
                 damping += weight * s.damping * vi * vi;
                 spring += weight * s.spring_force(branch[i], x) * vi;
             }
-            if let Some(f) = &segment.force {
+            if let Some(f) = segment.force() {
                 contact += weight * f.value(t) * (v[0] - v[1]);
             }
         }

@@ -98,7 +98,8 @@ impl Transition {
         let mut end = [[0.0; 2]; INPUTS];
         let mut swing = [[0.0; 2]; INPUTS];
         for (j, u) in units.iter().enumerate() {
-            let (du, sx, sv) = u.derivative_and_swings(h);
+            let mut du = Series::default();
+            let (sx, sv) = u.derivative_and_swings_into(h, &mut du);
             end[j] = [u.value(h), du.value(h)];
             swing[j] = [sx, sv];
         }

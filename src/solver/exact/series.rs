@@ -112,16 +112,14 @@ impl Series {
         sum
     }
 
-    /// The series of q' with the swings of q and of q' over [0, h]
-    /// ([`Series::swing`] of each), in one pass over the coefficients:
-    /// Σ_{k≥1} |c_k| h^k and Σ_{k≥2} k |c_k| h^{k−1}.
+    /// Writes the series of q' into `d` and returns the swings of q and of
+    /// q' over [0, h] ([`Series::swing`] of each), in one pass over the
+    /// coefficients: Σ_{k≥1} |c_k| h^k and Σ_{k≥2} k |c_k| h^{k−1}. Written
+    /// in place, as segments are rebuilt in storage they reuse.
     #[inline]
-    pub fn derivative_and_swings(&self, h: f64) -> (Series, f64, f64) {
-        let mut d = Series::default();
-        if self.degree == 0 {
-            return (d, 0.0, 0.0);
-        }
-        d.degree = self.degree - 1;
+    pub fn derivative_and_swings_into(&self, h: f64, d: &mut Series) -> (f64, f64) {
+        d.c = [0.0; MAX_DEGREE + 1];
+        d.degree = self.degree.saturating_sub(1);
         let (mut swing, mut rate_swing) = (0.0, 0.0);
         // h^{k−1}, from h⁰ at k = 1.
         let mut hk1 = 1.0;
@@ -134,7 +132,7 @@ impl Series {
             hk1 *= h;
             swing += self.c[k].abs() * hk1;
         }
-        (d, swing, rate_swing)
+        (swing, rate_swing)
     }
 
     /// The series of q' (degree n − 1).
@@ -200,7 +198,8 @@ mod tests {
     fn derivative_and_swings_agree_with_each_alone() {
         let mut s = exp_series(20);
         s.c[3] = -s.c[3];
-        let (d, swing, rate_swing) = s.derivative_and_swings(0.6);
+        let mut d = Series::default();
+        let (swing, rate_swing) = s.derivative_and_swings_into(0.6, &mut d);
         assert_eq!(d, s.derivative());
         assert!((swing - s.swing(0.6)).abs() <= 1e-15 * swing);
         assert!((rate_swing - d.swing(0.6)).abs() <= 1e-15 * rate_swing);
