@@ -23,6 +23,18 @@ const BINOMIAL_3: [f64; MAX_DEGREE + 1] = {
     b
 };
 
+/// k as a float, for the derivative's coefficients k c_k (a load, not a
+/// conversion, in the loops).
+const ORDER: [f64; MAX_DEGREE + 1] = {
+    let mut f = [0.0; MAX_DEGREE + 1];
+    let mut k = 0;
+    while k <= MAX_DEGREE {
+        f[k] = k as f64;
+        k += 1;
+    }
+    f
+};
+
 /// Coefficients c₀ … c_n of one Taylor series.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Series {
@@ -118,17 +130,21 @@ impl Series {
     /// in place, as segments are rebuilt in storage they reuse.
     #[inline]
     pub fn derivative_and_swings_into(&self, h: f64, d: &mut Series) -> (f64, f64) {
-        d.c = [0.0; MAX_DEGREE + 1];
-        d.degree = self.degree.saturating_sub(1);
-        let (mut swing, mut rate_swing) = (0.0, 0.0);
-        // h^{k−1}, from h⁰ at k = 1.
-        let mut hk1 = 1.0;
-        for k in 1..=self.degree {
-            let dk = k as f64 * self.c[k];
+        let n = self.degree;
+        d.c[n.saturating_sub(1)..].fill(0.0);
+        d.degree = n.saturating_sub(1);
+        if n == 0 {
+            return (0.0, 0.0);
+        }
+        d.c[0] = self.c[1];
+        // h^{k−1}, at h¹ for k = 2.
+        let mut hk1 = h;
+        let mut swing = self.c[1].abs() * h;
+        let mut rate_swing = 0.0;
+        for k in 2..=n {
+            let dk = ORDER[k] * self.c[k];
             d.c[k - 1] = dk;
-            if k >= 2 {
-                rate_swing += dk.abs() * hk1;
-            }
+            rate_swing += dk.abs() * hk1;
             hk1 *= h;
             swing += self.c[k].abs() * hk1;
         }
@@ -143,7 +159,7 @@ impl Series {
         }
         d.degree = self.degree - 1;
         for k in 1..=self.degree {
-            d.c[k - 1] = k as f64 * self.c[k];
+            d.c[k - 1] = ORDER[k] * self.c[k];
         }
         d
     }
