@@ -141,12 +141,12 @@ impl Series {
         let mut hk1 = h;
         let mut swing = self.c[1].abs() * h;
         let mut rate_swing = 0.0;
-        for k in 2..=n {
-            let dk = ORDER[k] * self.c[k];
-            d.c[k - 1] = dk;
+        let terms = self.c[2..=n].iter().zip(&ORDER[2..=n]);
+        for (dk, (c, k)) in d.c[1..n].iter_mut().zip(terms) {
+            *dk = k * c;
             rate_swing += dk.abs() * hk1;
             hk1 *= h;
-            swing += self.c[k].abs() * hk1;
+            swing += c.abs() * hk1;
         }
         (swing, rate_swing)
     }
@@ -158,8 +158,12 @@ impl Series {
             return d;
         }
         d.degree = self.degree - 1;
-        for k in 1..=self.degree {
-            d.c[k - 1] = ORDER[k] * self.c[k];
+        let n = self.degree;
+        for (dk, (c, k)) in d.c[..n]
+            .iter_mut()
+            .zip(self.c[1..=n].iter().zip(&ORDER[1..=n]))
+        {
+            *dk = k * c;
         }
         d
     }
