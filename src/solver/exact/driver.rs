@@ -32,8 +32,9 @@ use super::super::result::{Impact, RunResult, Stop, StopReason};
 use super::contact_rk::ContactSystem;
 use super::dynamics::{Branch, Structure, contact_series, free_series, step_for};
 use super::energy::Work;
+use super::peaks::{raise_abs_max, raise_max};
 use super::quiet::{Majorants, QuietStep, stays_above, stays_below};
-use super::roots::{Reach, fires_at_start, first_crossing, reach_from_start};
+use super::roots::{fires_at_start, first_crossing};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
 
@@ -592,22 +593,19 @@ impl<'a> Run<'a> {
             let peaks = self.result.structure_mut(i);
             raise_abs_max(
                 &segment.x[i],
-                &segment.v[i],
+                Some(&segment.v[i]),
                 length,
                 segment.swing[i],
                 &mut peaks.peak_displacement,
             );
-            // ẍ's series only where ẋ can reach its peak.
-            if self.v[i].abs() + segment.swing[2 + i] > peaks.peak_velocity {
-                let a = segment.v[i].derivative();
-                raise_abs_max(
-                    &segment.v[i],
-                    &a,
-                    length,
-                    segment.swing[2 + i],
-                    &mut peaks.peak_velocity,
-                );
-            }
+            // ẍ's series only where a walk for ẋ's peak needs it.
+            raise_abs_max(
+                &segment.v[i],
+                None,
+                length,
+                segment.swing[2 + i],
+                &mut peaks.peak_velocity,
+            );
         }
         // Until a first impact the run is the no-pounding run, and the maximum
         // of x1 − x2 is the gap that would prevent pounding (SPEC §11); it
@@ -617,11 +615,12 @@ impl<'a> Run<'a> {
                 > self.max_relative_displacement
         {
             let relative = segment.x[0].minus(&segment.x[1]);
-            let rate = relative.derivative();
             raise_max(
                 &relative,
-                &rate,
+                None,
+                1.0,
                 length,
+                relative.swing(length),
                 &mut self.max_relative_displacement,
             );
         }
@@ -630,35 +629,20 @@ impl<'a> Run<'a> {
             let imp = &mut r.impacts[k];
             // Each extreme is searched only where its bound can beat it; the
             // penetration's swing is at most the sum of the two displacements'.
-            let delta0 = self.x[0] - self.x[1] - self.p.gap;
-            if delta0 + segment.swing[0] + segment.swing[1] > imp.max_penetration {
-                let delta = &segment.delta;
-                let swing = segment.swing[0] + segment.swing[1];
-                raise_max_by(
-                    delta,
-                    &delta.derivative(),
-                    length,
-                    swing,
-                    &mut imp.max_penetration,
-                );
-            }
+            let swing = segment.swing[0] + segment.swing[1];
+            raise_max(
+                &segment.delta,
+                None,
+                1.0,
+                length,
+                swing,
+                &mut imp.max_penetration,
+            );
             let force_swing = force.swing(length);
-            let df = (force.c[0] + force_swing > imp.peak_force
-                || -force.c[0] + force_swing > -r.min_force)
-                .then(|| force.derivative());
-            if let Some(df) = &df
-                && force.c[0] + force_swing > imp.peak_force
-            {
-                raise_max_by(force, df, length, force_swing, &mut imp.peak_force);
-            }
+            raise_max(force, None, 1.0, length, force_swing, &mut imp.peak_force);
             r.max_force = r.max_force.max(imp.peak_force);
             let mut pull = -r.min_force;
-            if let Some(df) = &df
-                && -force.c[0] + force_swing > pull
-            {
-                let (f, df) = (force.scaled(-1.0), df.scaled(-1.0));
-                raise_max_by(&f, &df, length, force_swing, &mut pull);
-            }
+            raise_max(force, None, -1.0, length, force_swing, &mut pull);
             // A pull within round-off of zero (δ ≈ ±1e-17 at a located onset) is no pull.
             if pull > 1e-9 * r.max_force {
                 r.min_force = -pull;
@@ -893,68 +877,6 @@ impl Segment {
             fp: self.force().map_or(0.0, |f| f.value(t)),
             in_contact: self.contact,
         }
-    }
-}
-
-/// Raises `peak` to the maximum of q on (0, t1], given the series of q and q'.
-/// Most segments are cleared by a bound of q − peak, or shown monotone by
-/// the cubic majorant of q (the maximum is then at an end). Otherwise the maxima
-/// of q are at t1 and at the falling zeros of q', with a rising zero (a
-/// minimum) between two of them, and the walk goes from one to the next.
-/// It does not look for where q crosses the peak: near a maximum that only
-/// just fails to beat it, that crossing is a tangency, costly to rule out,
-/// while the zeros of q' stay simple.
-fn raise_max(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
-    raise_max_by(q, dq, t1, q.swing(t1), peak);
-}
-
-/// [`raise_max`] with a bound `swing` ≥ [`Series::swing`] of q over [0, t1] already known.
-fn raise_max_by(q: &Series, dq: &Series, t1: f64, swing: f64, peak: &mut f64) {
-    *peak = peak.max(q.c[0]);
-    if q.c[0] + swing > *peak {
-        walk_maxima(q, dq, t1, peak);
-    }
-}
-
-/// The walk of [`raise_max`], for a q whose bound does not clear the peak.
-fn walk_maxima(q: &Series, dq: &Series, t1: f64, peak: &mut f64) {
-    match reach_from_start(q, *peak, t1) {
-        // q(0) is already in the peak.
-        Reach::Below | Reach::Falling => return,
-        Reach::Rising => {
-            *peak = peak.max(q.value(t1));
-            return;
-        }
-        Reach::Unknown => {}
-    }
-    let falling = dq.scaled(-1.0);
-    let mut t = 0.0;
-    // A segment of at most about a radian holds one or two maxima; the cap only guards progress.
-    for _ in 0..8 {
-        // The next maximum: the next falling zero of q', else the end.
-        let tm = first_crossing(&falling, t, t1).unwrap_or(t1);
-        *peak = peak.max(q.value(tm));
-        if tm >= t1 {
-            return;
-        }
-        // Past the maximum, q falls to a minimum (a rising zero of q') before it can rise again.
-        match first_crossing(dq, tm, t1).filter(|&s| s > tm) {
-            Some(tmin) => t = tmin,
-            None => return,
-        }
-    }
-}
-
-/// Raises `peak` to the maximum of |q| on (0, t1], given `swing` ≥
-/// [`Series::swing`] of q over [0, t1] (the segment's own): each sign is
-/// searched only where it can reach the peak.
-fn raise_abs_max(q: &Series, dq: &Series, t1: f64, swing: f64, peak: &mut f64) {
-    *peak = peak.max(q.c[0].abs());
-    if q.c[0] + swing > *peak {
-        walk_maxima(q, dq, t1, peak);
-    }
-    if -q.c[0] + swing > *peak {
-        walk_maxima(&q.scaled(-1.0), &dq.scaled(-1.0), t1, peak);
     }
 }
 

@@ -15,7 +15,7 @@
 //!
 //! Everything that changes the equations is an event located on the series
 //! to round-off ([`roots`]): contact onset and separation, yield, unloading.
-//! Peaks are the true maxima, located at the zeros of the rates. The loop and
+//! Peaks are the true maxima, located at the zeros of the rates ([`peaks`]). The loop and
 //! its accounting are in [`driver`]; the energy balance in [`energy`].
 //! A free segment in which bounds show that nothing can happen (no event, no
 //! new peak) is advanced by a precomputed transition matrix instead
@@ -36,6 +36,7 @@ pub mod contact_rk;
 pub mod driver;
 pub mod dynamics;
 pub mod energy;
+pub mod peaks;
 pub mod quiet;
 pub mod roots;
 pub mod series;

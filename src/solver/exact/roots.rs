@@ -136,11 +136,12 @@ pub enum Reach {
     Unknown,
 }
 
-/// [`Reach`] of q against `level` on [0, w]: a cheap test that most
-/// segments pass.
-pub fn reach_from_start(q: &Series, level: f64, w: f64) -> Reach {
+/// [`Reach`] of σ·q (σ = ±1) against `level` on [0, w]: a cheap test that
+/// most segments pass. The majorant of σq is σ times q's derivatives with
+/// the same bound M of the third.
+pub fn reach_from_start(q: &Series, sign: f64, level: f64, w: f64) -> Reach {
     let [d0, d1, d2, m] = q.cubic_majorant(0.0, w);
-    let d0 = d0 - level;
+    let (d0, d1, d2) = (sign * d0 - level, sign * d1, sign * d2);
     if d0 <= 0.0 && cleared(d0, d1, d2, m, w) {
         Reach::Below
     } else if decreasing(d1, d2, m, w) {
