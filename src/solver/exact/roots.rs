@@ -81,6 +81,9 @@ fn search(e: &Series, lo: f64, hi: f64, depth: u32, budget: &mut u32) -> Option<
     if cleared(d0.min(0.0), d1, d2, m, w) {
         return None;
     }
+    if lo == 0.0 && d0 == 0.0 && d1 == 0.0 && d2 == 0.0 && leading_term_clears(e, w) {
+        return None;
+    }
     let e_hi = e.value(hi);
     let rising = increasing(d1, d2, m, w);
     if e_hi > 0.0 {
@@ -107,6 +110,24 @@ fn search(e: &Series, lo: f64, hi: f64, depth: u32, budget: &mut u32) -> Option<
     }
     let mid = lo + 0.5 * w;
     search(e, lo, mid, depth + 1, budget).or_else(|| search(e, mid, hi, depth + 1, budget))
+}
+
+/// Whether e < 0 on (0, w] for a series that starts flat at zero (e, e',
+/// e'' all 0 at t = 0, as the first segment from rest has), where the cubic
+/// majorant cannot help: with c_m the first nonzero coefficient,
+/// e(s) ≤ s^m (c_m + Σ_{k>m} |c_k| s^{k−m}), negative if c_m is and the sum
+/// at s = w does not outweigh it. Otherwise the search would halve towards
+/// 0 to its depth limit.
+fn leading_term_clears(e: &Series, w: f64) -> bool {
+    let Some(m) = (3..=e.degree).find(|&k| e.c[k] != 0.0) else {
+        // e ≡ 0: never positive.
+        return true;
+    };
+    let tail = e.c[m + 1..=e.degree]
+        .iter()
+        .rev()
+        .fold(0.0, |acc, c| acc * w + c.abs());
+    e.c[m] < 0.0 && e.c[m] + w * tail < 0.0
 }
 
 /// Whether e' > 0 on [t, t + w], from e'(t + s) ≥ d1 + 2 d2 s − 3M s²
@@ -275,6 +296,22 @@ mod tests {
         let e = poly(&[-0.25 + 1e-6, 1.0, -1.0]);
         let t = first_crossing(&e, 0.0, 1.0).unwrap();
         assert!((t - (0.5 - 1e-3)).abs() < 1e-12, "{t}");
+    }
+
+    /// A series flat at its start (e, e', e'' = 0, as the first segment from
+    /// rest gives x1 − x2) and negative after: the cubic majorant is no
+    /// help at t = 0, the leading term clears it in one evaluation, where
+    /// halving alone would use up a budget of 20 (and 100 steps unbudgeted).
+    #[test]
+    fn a_series_flat_at_its_start_is_cleared_by_its_leading_term() {
+        let e = poly(&[0.0, 0.0, 0.0, -1.0 / 32.0, 0.01]);
+        let mut budget = 20;
+        assert_eq!(search(&e, 0.0, 0.5, 0, &mut budget), None);
+        assert_eq!(budget, 19);
+        // With a term that wins at s = 1/32 there is a crossing, and it is found.
+        let e = poly(&[0.0, 0.0, 0.0, -1.0 / 32.0, 1.0]);
+        let t = first_crossing(&e, 0.0, 0.1).unwrap();
+        assert!((t - 1.0 / 32.0).abs() < 1e-15, "{t}");
     }
 
     #[test]
