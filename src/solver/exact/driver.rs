@@ -389,12 +389,18 @@ impl<'a> Run<'a> {
                 let m = Majorants::new(t, x, v, phasor, load, [sx, sv]);
                 let between =
                     |m: &[f64; 4], lo: f64, hi: f64| stays_below(m, hi, h) && stays_above(m, lo, h);
-                let clear = between(&m.x, -px, px)
+                // x within its running peak and, on an elastic branch, within
+                // the yield surface: one band, the tighter of the two on each side.
+                let (x_lo, x_hi) = match self.branch[i] {
+                    Branch::Elastic { offset } if uy.is_finite() => {
+                        ((-px).max(offset - uy), px.min(offset + uy))
+                    }
+                    _ => (-px, px),
+                };
+                let clear = between(&m.x, x_lo, x_hi)
                     && between(&m.v, -pv, pv)
                     && match self.branch[i] {
-                        Branch::Elastic { offset } => {
-                            !uy.is_finite() || between(&m.x, offset - uy, offset + uy)
-                        }
+                        Branch::Elastic { .. } => true,
                         Branch::Yielded { sign } if sign > 0.0 => stays_above(&m.v, 0.0, h),
                         Branch::Yielded { .. } => stays_below(&m.v, 0.0, h),
                     };
