@@ -397,13 +397,14 @@ impl<'a> Run<'a> {
                     }
                     _ => (-px, px),
                 };
-                let clear = between(&m.x, x_lo, x_hi)
-                    && between(&m.v, -pv, pv)
-                    && match self.branch[i] {
-                        Branch::Elastic { .. } => true,
-                        Branch::Yielded { sign } if sign > 0.0 => stays_above(&m.v, 0.0, h),
-                        Branch::Yielded { .. } => stays_below(&m.v, 0.0, h),
-                    };
+                // ẋ within its running peak and, while yielded, on the
+                // loading side (sign · ẋ > 0): again one band.
+                let (v_lo, v_hi) = match self.branch[i] {
+                    Branch::Yielded { sign } if sign > 0.0 => (0.0, pv),
+                    Branch::Yielded { .. } => (-pv, 0.0),
+                    Branch::Elastic { .. } => (-pv, pv),
+                };
+                let clear = between(&m.x, x_lo, x_hi) && between(&m.v, v_lo, v_hi);
                 if !clear {
                     return false;
                 }
