@@ -113,8 +113,8 @@ fn search(e: &Series, lo: f64, hi: f64, depth: u32, budget: &mut u32) -> Option<
 }
 
 /// Whether e < 0 on (0, w] for a series that starts flat at zero (e, e',
-/// e'' all 0 at t = 0, as the first segment from rest has), where the cubic
-/// majorant cannot help: with c_m the first nonzero coefficient,
+/// e'' all 0 at t = 0: from rest, x1 − x2 = −Π_ξ(Π_ω2 − Π_ω1)τ⁴/12 + …,
+/// so its rate is flat at τ = 0), where the cubic majorant cannot help: with c_m the first nonzero coefficient,
 /// e(s) ≤ s^m (c_m + Σ_{k>m} |c_k| s^{k−m}), negative if c_m is and the sum
 /// at s = w does not outweigh it. Otherwise the search would halve towards
 /// 0 to its depth limit.
@@ -298,8 +298,8 @@ mod tests {
         assert!((t - (0.5 - 1e-3)).abs() < 1e-12, "{t}");
     }
 
-    /// A series flat at its start (e, e', e'' = 0, as the first segment from
-    /// rest gives x1 − x2) and negative after: the cubic majorant is no
+    /// A series flat at its start (e, e', e'' = 0, as the rate of x1 − x2 is
+    /// on the first segment from rest; −τ³/32 for set 2) and negative after: the cubic majorant is no
     /// help at t = 0, the leading term clears it in one evaluation, where
     /// halving alone would use up a budget of 20 (and 100 steps unbudgeted).
     #[test]
