@@ -11,6 +11,7 @@ use pounding::analysis::map::{Axis, MapPlan, compute};
 use pounding::analysis::spectrum::{Region, baseline_params};
 use pounding::analysis::sweep::{curve_specs, sweep};
 use pounding::model::{Method, Params, SET1};
+use pounding::solver::exact::ContactExtremes;
 use pounding::solver::run_for_sweep;
 
 use common::{fails, json, stdout, succeeds};
@@ -38,8 +39,8 @@ fn cells_are_their_own_runs() {
     for c in &cells {
         let p = plan.at(c.x, c.y);
         assert_eq!((p.omega1, p.omega2), (c.x, c.y * c.x));
-        let with = run_for_sweep(&p);
-        let without = run_for_sweep(&baseline_params(&p));
+        let with = run_for_sweep(&p, ContactExtremes::Forces);
+        let without = run_for_sweep(&baseline_params(&p), ContactExtremes::None);
         assert_eq!(c.left, with.left);
         assert_eq!(c.right, with.right);
         assert_eq!(c.impacts, with.impacts.len());

@@ -281,3 +281,67 @@ fn hostile_values_stop_or_finish_finite() {
         }
     }
 }
+
+/// Each impact's peak force and penetration and the run's force extremes
+/// are searches on the motion's series, not part of the motion: a run that
+/// skips them (a spectrum's) or locates the forces only (a map's) has the
+/// same peaks and impacts bit for bit, the forces it locates are the full
+/// run's, and what it skips is NaN, never a value that looks measured. The
+/// located extremes bound the reference's, which are taken at its step
+/// ends, from above, and closely.
+#[test]
+fn contact_extremes_are_located_only_when_asked_and_change_nothing_else() {
+    use pounding::solver::exact::ContactExtremes;
+    let with = |p: &Params, extremes| {
+        let options = ExactOptions {
+            energy: false,
+            extremes,
+            ..ExactOptions::default()
+        };
+        simulate(p, &options, &mut ())
+    };
+    for (name, base) in [("set1", SET1), ("set2", SET2)] {
+        for model in ContactModel::PAPER {
+            let p = Params { model, ..base };
+            let all = with(&p, ContactExtremes::All);
+            let forces = with(&p, ContactExtremes::Forces);
+            let none = with(&p, ContactExtremes::None);
+            for r in [&forces, &none] {
+                assert_eq!(r.peaks(), all.peaks(), "{name} {model}");
+                assert_eq!(r.impacts.len(), all.impacts.len(), "{name} {model}");
+                for (a, b) in r.impacts.iter().zip(&all.impacts) {
+                    assert_eq!(
+                        (a.start, a.end, a.approach_velocity, a.separation_velocity),
+                        (b.start, b.end, b.approach_velocity, b.separation_velocity)
+                    );
+                }
+            }
+            assert_eq!(
+                (forces.max_force, forces.min_force),
+                (all.max_force, all.min_force)
+            );
+            for (a, b) in forces.impacts.iter().zip(&all.impacts) {
+                assert_eq!(a.peak_force, b.peak_force);
+                assert!(a.max_penetration.is_nan() && b.max_penetration > 0.0);
+            }
+            assert!(none.max_force.is_nan() && none.min_force.is_nan());
+            assert!(
+                none.impacts
+                    .iter()
+                    .all(|i| i.peak_force.is_nan() && i.max_penetration.is_nan())
+            );
+            let q = reference(&p, &ReferenceOptions::with_tolerance(1e-13));
+            let (hi, lo) = (all.max_force, all.min_force);
+            assert!(
+                q.max_force <= hi * (1.0 + 1e-12) && hi <= q.max_force * (1.0 + 1e-4),
+                "{name} {model}: max force {hi} vs the reference's {}",
+                q.max_force
+            );
+            assert!(
+                lo <= q.min_force + 1e-12 * hi,
+                "{name} {model}: min force {lo} vs the reference's {}",
+                q.min_force
+            );
+        }
+    }
+}

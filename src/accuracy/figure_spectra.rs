@@ -14,6 +14,7 @@ use crate::analysis::sweep::{CurveSpec, curve_specs, sweep};
 use crate::model::spectrum_spec::PresetSpectrum;
 use crate::model::{Method, Params, preset};
 use crate::reference::{ReferenceOptions, reference};
+use crate::solver::exact::ContactExtremes;
 use crate::solver::{relative_peak_error, run_for_sweep};
 
 /// The presets of Figures 7–10, in order.
@@ -88,7 +89,7 @@ pub fn measure(method: Method) -> SpectraAccuracy {
     let errors: Vec<(f64, bool)> = runs
         .par_iter()
         .map(|(_, p)| {
-            let r = run_for_sweep(p);
+            let r = run_for_sweep(p, ContactExtremes::None);
             let q = reference(p, &ReferenceOptions::with_tolerance(REFERENCE_TOLERANCE));
             (
                 relative_peak_error(&r.peaks(), &q.peaks),

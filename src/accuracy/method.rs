@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::model::Params;
 use crate::reference::{ReferenceOptions, reference};
-use crate::solver::exact::{self, ExactOptions};
+use crate::solver::exact::{self, ContactExtremes, ExactOptions};
 use crate::solver::{SolverOptions, simulate};
 
 /// One way of computing a run's four peaks.
@@ -53,6 +53,7 @@ impl Method {
                 &ExactOptions {
                     energy: false,
                     contact_tolerance: tol,
+                    extremes: ContactExtremes::None,
                     ..ExactOptions::default()
                 },
                 &mut (),

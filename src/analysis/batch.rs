@@ -15,7 +15,8 @@ use rayon::prelude::*;
 use super::baseline::{BaselineKey, FreePeaks};
 use super::spectrum::baseline_params;
 use crate::model::Params;
-use crate::solver::{RunResult, run_for_sweep as run};
+use crate::solver::exact::ContactExtremes;
+use crate::solver::{RunResult, run_for_sweep};
 
 /// A baseline this batch obtained.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -38,9 +39,13 @@ pub struct Batch {
     pub baselines: Vec<NewBaseline>,
 }
 
-/// Runs `points` in parallel, one task per baseline key; `cached` says
-/// which baselines need no run.
-pub fn run_points(points: &[Params], cached: impl Fn(&Params) -> bool + Sync) -> Batch {
+/// Runs `points` in parallel, one task per baseline key, locating the
+/// contact `extremes` the caller reports; `cached` says which baselines need no run.
+pub fn run_points(
+    points: &[Params],
+    extremes: ContactExtremes,
+    cached: impl Fn(&Params) -> bool + Sync,
+) -> Batch {
     let mut groups: Vec<Vec<usize>> = Vec::new();
     let mut by_key: HashMap<BaselineKey, usize> = HashMap::new();
     for (i, p) in points.iter().enumerate() {
@@ -55,7 +60,10 @@ pub fn run_points(points: &[Params], cached: impl Fn(&Params) -> bool + Sync) ->
         .map(|group| {
             let runs: Vec<Option<RunResult>> = group
                 .iter()
-                .map(|&i| points[i].pounding().then(|| run(&points[i])))
+                .map(|&i| {
+                    let p = &points[i];
+                    p.pounding().then(|| run_for_sweep(p, extremes))
+                })
                 .collect();
             let first = group[0];
             let baseline = (!cached(&points[first])).then(|| {
@@ -64,7 +72,8 @@ pub fn run_points(points: &[Params], cached: impl Fn(&Params) -> bool + Sync) ->
                 let (r, from_pounding) = match untouched {
                     Some(r) => (r, true),
                     None => {
-                        own = run(&baseline_params(&points[first]));
+                        own =
+                            run_for_sweep(&baseline_params(&points[first]), ContactExtremes::None);
                         (&own, false)
                     }
                 };
@@ -113,7 +122,7 @@ mod tests {
                 })
             })
             .collect();
-        let batch = run_points(&points, |_| false);
+        let batch = run_points(&points, ContactExtremes::None, |_| false);
         assert_eq!(batch.pounding.len(), 6);
         assert!(batch.pounding.iter().all(Option::is_some));
         assert_eq!(
@@ -126,13 +135,17 @@ mod tests {
             assert!(b.from_pounding && b.completed);
             assert_eq!(b.peaks, FreePeaks::of(wide));
             // The same as a run of its own without contact.
-            let own = run(&baseline_params(&points[b.point]));
+            let own = run_for_sweep(&baseline_params(&points[b.point]), ContactExtremes::None);
             let err = (own.left.peak_displacement - b.peaks.left.peak_displacement).abs();
             assert!(err < 1e-12 * own.left.peak_displacement, "{err:e}");
         }
         // Keys the cache holds get no baseline; a lone pounding point gets its own run.
-        assert!(run_points(&points, |_| true).baselines.is_empty());
-        let lone = run_points(&points[2..3], |_| false);
+        assert!(
+            run_points(&points, ContactExtremes::None, |_| true)
+                .baselines
+                .is_empty()
+        );
+        let lone = run_points(&points[2..3], ContactExtremes::None, |_| false);
         assert_eq!(lone.baselines.len(), 1);
         assert!(!lone.baselines[0].from_pounding);
     }

@@ -23,6 +23,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::model::{Method, Params};
+use crate::solver::exact::ContactExtremes;
 use crate::solver::{RunResult, StructurePeaks, run_for_sweep};
 
 /// The correlation coefficient of the double-difference rule for two
@@ -145,7 +146,8 @@ pub fn free_params(p: &Params) -> Params {
 /// The minimum gap of `p` (validated): one exact no-pounding run.
 pub fn minimum_gap(p: &Params) -> MinimumGap {
     let q = free_params(p);
-    MinimumGap::from_free_run(&q, &run_for_sweep(&q)).expect("the exact method tracks x1 − x2")
+    MinimumGap::from_free_run(&q, &run_for_sweep(&q, ContactExtremes::None))
+        .expect("the exact method tracks x1 − x2")
 }
 
 /// [`minimum_gap`] of every parameter set, in parallel.

@@ -28,6 +28,7 @@ use crate::model::family::MU;
 use crate::model::grid::{Grid, MAX_GRID_POINTS};
 use crate::model::params::{Kind, echo, field, is_pi};
 use crate::model::{ParamError, Params};
+use crate::solver::exact::ContactExtremes;
 use crate::solver::{RunResult, StructurePeaks};
 
 /// Most cells one map may have: the product of two long axes is refused
@@ -352,7 +353,9 @@ pub fn compute_rows(plan: &MapPlan, ys: &[f64], cache: &mut MapCache) -> Vec<Map
         .collect();
 
     let points: Vec<Params> = cells.iter().map(|(_, _, q)| *q).collect();
-    let batch = run_points(&points, |q| cache.baselines.contains(q));
+    let batch = run_points(&points, ContactExtremes::Forces, |q| {
+        cache.baselines.contains(q)
+    });
     for b in &batch.baselines {
         cache.insert(&points[b.point], b);
     }

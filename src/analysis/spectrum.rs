@@ -6,7 +6,8 @@ use serde::Serialize;
 
 use super::gap::from_max_relative;
 use crate::model::Params;
-use crate::solver::{RunResult, StructurePeaks, run_for_sweep as run};
+use crate::solver::exact::ContactExtremes;
+use crate::solver::{RunResult, StructurePeaks, run_for_sweep};
 
 /// Relative change of the left structure's Π_u beyond which pounding counts
 /// as amplifying or suppressing it (SPEC §7).
@@ -128,11 +129,11 @@ pub fn combine(p: &Params, with: &RunResult, without: &RunResult) -> SpectrumPoi
 /// pounding run with no impact is its own baseline.
 pub fn point(p: &Params, omega1: f64, mu: f64) -> SpectrumPoint {
     let q = at_omega(p, omega1, mu);
-    let with = run(&q);
+    let with = run_for_sweep(&q, ContactExtremes::None);
     if with.impacts.is_empty() {
         return combine(&q, &with, &with);
     }
-    let without = run(&baseline_params(&q));
+    let without = run_for_sweep(&baseline_params(&q), ContactExtremes::None);
     combine(&q, &with, &without)
 }
 

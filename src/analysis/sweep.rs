@@ -15,6 +15,7 @@ use super::batch::run_points;
 use super::family::{Family, FamilyError, Member};
 use super::spectrum::{SpectrumPoint, at_omega, combine};
 use crate::model::Params;
+use crate::solver::exact::ContactExtremes;
 
 /// One curve to compute: the family member it stands for (none without a
 /// family), its parameters and its frequency ratio μ.
@@ -67,7 +68,7 @@ pub fn sweep(specs: &[CurveSpec], omega1: &[f64], cache: &mut BaselineCache) -> 
         .flat_map(|s| omega1.iter().map(|&w| at_omega(&s.params, w, s.mu)))
         .collect();
 
-    let batch = run_points(&points, |q| cache.contains(q));
+    let batch = run_points(&points, ContactExtremes::None, |q| cache.contains(q));
     for b in &batch.baselines {
         cache.record(&points[b.point], b);
     }

@@ -4,7 +4,7 @@
 
 use crate::model::{Method, Params};
 
-use super::exact::{self, ExactOptions};
+use super::exact::{self, ContactExtremes, ExactOptions};
 use super::newmark::{SolverOptions, simulate};
 use super::observer::Observer;
 use super::result::RunResult;
@@ -44,16 +44,17 @@ pub fn run(p: &Params) -> RunResult {
     solve(p, &mut ())
 }
 
-/// Runs `p` for a sweep, where only the peaks, impacts and forces are used:
-/// the exact method then skips its energy quadrature (Newmark's energy
-/// costs nothing extra and is kept).
-pub fn run_for_sweep(p: &Params) -> RunResult {
+/// Runs `p` for a sweep, where only the peaks, the impacts and the
+/// `extremes` asked for are used: the exact method then skips its energy
+/// quadrature and the other extremes (Newmark's cost nothing extra and are kept).
+pub fn run_for_sweep(p: &Params, extremes: ContactExtremes) -> RunResult {
     match p.method {
         Method::Newmark => simulate(p, &newmark_options(p), &mut ()),
         Method::Exact => exact::simulate(
             p,
             &ExactOptions {
                 energy: false,
+                extremes,
                 ..exact_options(p)
             },
             &mut (),
@@ -66,10 +67,13 @@ pub fn run_for_sweep(p: &Params) -> RunResult {
 /// error Newmark actually made, shown beside its result. A peak of zero
 /// counts by its absolute error.
 pub fn error_vs_exact(p: &Params, result: &RunResult) -> f64 {
-    let exact = run_for_sweep(&Params {
-        method: Method::Exact,
-        ..*p
-    });
+    let exact = run_for_sweep(
+        &Params {
+            method: Method::Exact,
+            ..*p
+        },
+        ContactExtremes::None,
+    );
     relative_peak_error(&result.peaks(), &exact.peaks())
 }
 

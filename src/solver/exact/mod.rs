@@ -41,4 +41,4 @@ pub mod quiet;
 pub mod roots;
 pub mod series;
 
-pub use driver::{ExactOptions, simulate};
+pub use driver::{ContactExtremes, ExactOptions, simulate};

@@ -56,7 +56,11 @@ pub fn first_crossing(e: &Series, a: f64, b: f64) -> Option<f64> {
     if !(b > a) {
         return None;
     }
-    let [d0, d1, d2, _] = e.cubic_majorant(a, 0.0);
+    let [d0, d1, d2] = if a == 0.0 {
+        [e.c[0], e.c[1], e.c[2]]
+    } else {
+        e.derivatives(a)
+    };
     if d0 >= 0.0 {
         let moving_on = if a == 0.0 {
             fires_at_start(e)
