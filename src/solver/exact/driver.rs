@@ -595,9 +595,9 @@ impl<'a> Run<'a> {
     /// The events of a contact segment: separation (δ falls to 0) and the
     /// springs'. Keeps δ's series for the impact's extremes.
     fn contact_events(&self, segment: &mut Segment) {
-        segment.delta = segment.penetration(self.p.gap);
-        let separation = segment.delta.scaled(-1.0);
-        segment.consider(&separation, Event::Separation);
+        segment.write_opening(self.p.gap);
+        let opening = segment.opening;
+        segment.consider(&opening, Event::Separation);
         self.spring_events(segment);
     }
 
@@ -672,10 +672,11 @@ impl<'a> Run<'a> {
             // penetration's swing is at most the sum of the two displacements'.
             if extremes == ContactExtremes::All {
                 let swing = segment.swing[0] + segment.swing[1];
+                // δ = −opening.
                 raise_max(
-                    &segment.delta,
+                    &segment.opening,
                     None,
-                    1.0,
+                    -1.0,
                     length,
                     swing,
                     &mut imp.max_penetration,
@@ -871,8 +872,9 @@ pub struct Segment {
     pub v: [Series; 2],
     /// f_p, in contact ([`Segment::force`]).
     force: Series,
-    /// δ = x1 − x2 − Π_d, in contact.
-    delta: Series,
+    /// The opening x2 − x1 + Π_d = −δ, in contact: negative while the
+    /// structures overlap, positive once they separate.
+    opening: Series,
     contact: bool,
     /// Σ_{k≥1} |c_k| h^k of x1, x2, ẋ1, ẋ2 over the segment's full length h:
     /// how far each can move from its start value, a bound that clears most
@@ -903,6 +905,17 @@ impl Segment {
     /// δ = x1 − x2 − Π_d on the segment (SPEC §4).
     fn penetration(&self, gap: f64) -> Series {
         self.x[0].minus(&self.x[1]).shifted(gap)
+    }
+
+    /// Writes the opening x2 − x1 + Π_d = −δ (SPEC §4) from the series of x
+    /// in one pass (exactly the negated penetration: rounding is symmetric).
+    fn write_opening(&mut self, gap: f64) {
+        let [x1, x2] = &self.x;
+        for (o, (a, b)) in self.opening.c.iter_mut().zip(x1.c.iter().zip(&x2.c)) {
+            *o = b - a;
+        }
+        self.opening.c[0] += gap;
+        self.opening.degree = x1.degree.max(x2.degree);
     }
 
     /// Cuts the segment at `event` if `e` turns positive before its current end.
