@@ -405,6 +405,19 @@ const RECIPROCALS: [f64; 64] = {
     r
 };
 
+/// 1/k! for k < 64, each the one before times 1/k (with 1/k from
+/// [`RECIPROCALS`]), a table so that the coefficients of a segment's ground
+/// series are independent products.
+const INV_FACTORIALS: [f64; 64] = {
+    let mut f = [1.0; 64];
+    let mut k = 1;
+    while k < 64 {
+        f[k] = f[k - 1] * RECIPROCALS[k];
+        k += 1;
+    }
+    f
+};
+
 impl Excitation {
     /// Taylor coefficients of g about τ: g(τ + t) = Σ_k out[k] t^k, for
     /// k < out.len(). For the sine, g^{(k)}(τ) cycles through sin τ, cos τ,
@@ -467,12 +480,8 @@ impl Excitation {
 fn sinusoid_taylor(amplitude: f64, theta: f64, out: &mut [f64]) {
     let (s, c) = theta.sin_cos();
     let cycle = [s, c, -s, -c].map(|v| amplitude * v);
-    let mut inv_factorial = 1.0;
     for (k, o) in out.iter_mut().enumerate() {
-        if k > 0 {
-            inv_factorial *= RECIPROCALS[k.min(RECIPROCALS.len() - 1)];
-        }
-        *o = cycle[k % 4] * inv_factorial;
+        *o = cycle[k % 4] * INV_FACTORIALS[k.min(INV_FACTORIALS.len() - 1)];
     }
 }
 
