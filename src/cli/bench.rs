@@ -295,7 +295,8 @@ fn table(rows: &[&Row]) -> String {
     let _ = writeln!(
         s,
         "errors: max over Π_u1, Π_v1, Π_u2, Π_v2 of |p − p_ref|/p_ref, reference = DOPRI5 at tol {:e}; \
-         times: median of repeated runs in one process after a warm-up",
+         times: median of repeated runs in one process after a warm-up; \
+         each run finds the four peaks and the impacts (exact: no energy integrals, no force or penetration extremes)",
         crate::accuracy::work_precision::TRUTH_TOLERANCE
     );
     s
