@@ -26,6 +26,8 @@ pub struct Impact {
     pub separation_velocity: f64,
     /// Achieved restitution: separation / approach velocity.
     pub restitution: f64,
+    /// Largest f_p and δ of the contact; NaN where an exact run did not
+    /// locate them ([`ContactExtremes`](crate::solver::exact::ContactExtremes)).
     pub peak_force: f64,
     pub max_penetration: f64,
     /// False when the run ended during this contact.
@@ -78,9 +80,11 @@ pub struct RunResult {
     pub left: StructurePeaks,
     pub right: StructurePeaks,
     pub impacts: Vec<Impact>,
-    /// Largest pounding force (0 without contact).
+    /// Largest pounding force (0 without contact; NaN after an impact where
+    /// an exact run did not locate the forces).
     pub max_force: f64,
     /// Smallest pounding force: below 0 means the element pulled (tension).
+    /// NaN as `max_force`.
     pub min_force: f64,
     /// max over τ of x1 − x2, the left structure's largest excursion towards
     /// the right one. In a run without contact the smallest gap that
