@@ -14,7 +14,7 @@
 //!   event-driven method, picked by [`solver::solve`] from the set's
 //!   `method`, reporting to an [`solver::Observer`] and returning a
 //!   [`solver::RunResult`];
-//! - [`reference`]: an independent DOPRI5 solution, the error axis of every check;
+//! - [`mod@reference`]: an independent DOPRI5 solution, the error axis of every check;
 //! - [`analysis`]: what is built from many runs (spectra, similarity);
 //! - [`accuracy`]: work-precision tables and the stress test;
 //! - [`figure`]: the paper's figures and the scenes as SVG or PNG files.
