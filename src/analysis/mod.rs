@@ -11,7 +11,7 @@
 //! - [`sweep`]: the engine that computes every curve in parallel;
 //! - [`map`]: region maps over two parameters (any Π key or μ);
 //! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
-//! - [`physical`]: physical units to Π-groups and back (SPEC §8);
+//! - [`physical`](crate::model::physical): physical units to Π-groups and back (SPEC §8);
 //! - [`similarity`]: spectra at several excitation levels and their master curve.
 
 pub mod baseline;

@@ -419,9 +419,9 @@ const INV_FACTORIALS: [f64; 64] = {
 };
 
 impl Excitation {
-    /// Taylor coefficients of g about τ: g(τ + t) = Σ_k out[k] t^k, for
+    /// Taylor coefficients of g about τ: g(τ + t) = Σ_k `out[k]` t^k, for
     /// k < out.len(). For the sine, g^{(k)}(τ) cycles through sin τ, cos τ,
-    /// −sin τ, −cos τ, so out[k] = g^{(k)}(τ)/k!. The event-driven method
+    /// −sin τ, −cos τ, so `out[k]` = g^{(k)}(τ)/k!. The event-driven method
     /// expands the ground motion this way on each segment.
     pub fn taylor(self, tau: f64, out: &mut [f64]) {
         match self {
