@@ -1,12 +1,13 @@
 //! One run of each paper preset (both contact models), peaks only and with
-//! the full history, with Newmark's default options and with the exact
-//! method (peaks only: with and without its energy quadrature); and set 1
+//! the full history, with Newmark's default options; with the exact method
+//! for the peaks and impacts alone (as a spectrum point runs) and for a full
+//! run (its energy quadrature and every contact extreme, as `run`); and set 1
 //! without pounding.
 //! `cargo bench --bench run`. The default spectrum is in `benches/spectrum.rs`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use pounding::model::{ContactModel, Params, SET1, SET2};
-use pounding::solver::exact::{self, ExactOptions};
+use pounding::solver::exact::{self, ContactExtremes, ExactOptions};
 use pounding::solver::{FullHistory, SolverOptions, simulate};
 use std::hint::black_box;
 
@@ -21,6 +22,7 @@ fn runs(c: &mut Criterion) {
             });
             let sweep = ExactOptions {
                 energy: false,
+                extremes: ContactExtremes::None,
                 ..ExactOptions::default()
             };
             group.bench_function(format!("{name}/{model}/exact"), |b| {
