@@ -607,10 +607,17 @@ impl<'a> Run<'a> {
                 Branch::Elastic { offset } => {
                     let uy = self.structures[i].yield_displacement;
                     let z0 = self.x[i] - offset;
-                    if uy.is_finite() && z0.abs() + segment.swing[i] >= uy {
+                    // Each side of the yield surface only where z can reach it.
+                    let swing = segment.swing[i];
+                    let (up, down) = (z0 + swing >= uy, -z0 + swing >= uy);
+                    if uy.is_finite() && (up || down) {
                         let z = segment.x[i].shifted(offset);
-                        segment.consider(&z.shifted(uy), Event::Yield(i, 1.0));
-                        segment.consider(&z.scaled(-1.0).shifted(uy), Event::Yield(i, -1.0));
+                        if up {
+                            segment.consider(&z.shifted(uy), Event::Yield(i, 1.0));
+                        }
+                        if down {
+                            segment.consider(&z.scaled(-1.0).shifted(uy), Event::Yield(i, -1.0));
+                        }
                     }
                 }
                 Branch::Yielded { sign } => {
