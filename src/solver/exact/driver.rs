@@ -593,11 +593,10 @@ impl<'a> Run<'a> {
     }
 
     /// The events of a contact segment: separation (δ falls to 0) and the
-    /// springs'. Keeps δ's series for the impact's extremes.
+    /// springs'. Keeps the opening (−δ) for the impact's extremes.
     fn contact_events(&self, segment: &mut Segment) {
         segment.write_opening(self.p.gap);
-        let opening = segment.opening;
-        segment.consider(&opening, Event::Separation);
+        cut(&mut segment.end, &segment.opening, Event::Separation);
         self.spring_events(segment);
     }
 
@@ -668,11 +667,9 @@ impl<'a> Run<'a> {
             );
         }
         let extremes = self.options.extremes;
-        if let (Some(force), Some(k), true) = (
-            segment.force(),
-            self.open_impact,
-            extremes > ContactExtremes::None,
-        ) {
+        if extremes > ContactExtremes::None
+            && let (Some(force), Some(k)) = (segment.force(), self.open_impact)
+        {
             let r = &mut self.result;
             let imp = &mut r.impacts[k];
             // Each extreme is searched only where its bound can beat it; the
@@ -927,14 +924,7 @@ impl Segment {
 
     /// Cuts the segment at `event` if `e` turns positive before its current end.
     fn consider(&mut self, e: &Series, event: Event) {
-        if self.end.0 == 0.0 {
-            return;
-        }
-        if fires_at_start(e) {
-            self.end = (0.0, Some(event));
-        } else if let Some(t) = first_crossing(e, 0.0, self.end.0) {
-            self.end = (t, Some(event));
-        }
+        cut(&mut self.end, e, event);
     }
 
     /// The state at offset t into the segment (τ = `tau`), for observers.
@@ -952,6 +942,19 @@ impl Segment {
             fp: self.force().map_or(0.0, |f| f.value(t)),
             in_contact: self.contact,
         }
+    }
+}
+
+/// [`Segment::consider`] on the segment's `end` alone, for an event function
+/// that the segment itself holds (its opening) and so cannot be lent to it.
+fn cut(end: &mut (f64, Option<Event>), e: &Series, event: Event) {
+    if end.0 == 0.0 {
+        return;
+    }
+    if fires_at_start(e) {
+        *end = (0.0, Some(event));
+    } else if let Some(t) = first_crossing(e, 0.0, end.0) {
+        *end = (t, Some(event));
     }
 }
 
