@@ -277,31 +277,80 @@ pub fn contact_series(
     let (kc, cc, hc) = (law.stiffness, law.linear_damping, law.hertz_damping);
     // The coefficient of δ_{j+1} in f_j, per unit of (j + 1).
     let rate_gain = cc + hc * delta[0];
-    for j in 0..n.saturating_sub(1) {
-        let next = NEXT[j];
-        let mut f_known = kc * delta[j];
-        if hc != 0.0 && j > 0 {
-            f_known += hc * 0.5 * next * inner_square_coefficient(&delta, j + 1);
-        }
-        let a = [inv_m[0] * INV_PAIR[j], inv_m[1] * INV_PAIR[j]];
-        let r = [0, 1].map(|i| {
-            let (k, q) = kq[i];
-            let load = if j == 0 { q } else { 0.0 };
-            load - s[i].damping * next * x[i].c[j + 1] - k * x[i].c[j] - mass[i] * g.c[j]
-        });
-        let f = f_known + rate_gain * next * delta[j + 1];
-        force.c[j] = f;
-        x[0].c[j + 2] = (r[0] - f) * a[0];
-        x[1].c[j + 2] = (r[1] + f) * a[1];
-        delta[j + 2] = (r[0] * a[0] - r[1] * a[1]) - f * (a[0] + a[1]);
+    let orders = Orders {
+        k: [kq[0].0, kq[1].0],
+        damping: [s[0].damping, s[1].damping],
+        mass,
+        inv_m,
+        kc,
+        rate_gain,
+        half_h: hc * 0.5,
+    };
+    let [x0s, x1s] = x;
+    if hc != 0.0 {
+        orders.run::<true>(n, [kq[0].1, kq[1].1], g, [x0s, x1s], &mut delta, force);
+    } else {
+        orders.run::<false>(n, [kq[0].1, kq[1].1], g, [x0s, x1s], &mut delta, force);
     }
     force.degree = n.saturating_sub(2);
+}
+
+/// The constants of [`contact_series`]'s recurrence, per structure where
+/// they differ: K, c, m and 1/m of each branch, and of the law k̄, the
+/// rate gain c + h δ₀ and h/2.
+struct Orders {
+    k: [f64; 2],
+    damping: [f64; 2],
+    mass: [f64; 2],
+    inv_m: [f64; 2],
+    kc: f64,
+    rate_gain: f64,
+    half_h: f64,
+}
+
+impl Orders {
+    /// Orders 2 … n of x1, x2 and δ, and 0 … n − 2 of f_p, from orders 0
+    /// and 1 in place; `HERTZ`: the law has the δδ̇ term.
+    #[inline(always)]
+    fn run<const HERTZ: bool>(
+        &self,
+        n: usize,
+        q: [f64; 2],
+        g: &Series,
+        x: [&mut Series; 2],
+        delta: &mut [f64; MAX_DEGREE + 1],
+        force: &mut Series,
+    ) {
+        let [xa, xb] = x;
+        for j in 0..n.saturating_sub(1).min(MAX_DEGREE - 1) {
+            let next = NEXT[j];
+            let mut f_known = self.kc * delta[j];
+            if HERTZ && j > 0 {
+                f_known += self.half_h * next * inner_square_coefficient(delta, j + 1);
+            }
+            let a = [self.inv_m[0] * INV_PAIR[j], self.inv_m[1] * INV_PAIR[j]];
+            let (l0, l1) = if j == 0 { (q[0], q[1]) } else { (0.0, 0.0) };
+            let r0 = l0
+                - self.damping[0] * next * xa.c[j + 1]
+                - self.k[0] * xa.c[j]
+                - self.mass[0] * g.c[j];
+            let r1 = l1
+                - self.damping[1] * next * xb.c[j + 1]
+                - self.k[1] * xb.c[j]
+                - self.mass[1] * g.c[j];
+            let f = f_known + self.rate_gain * next * delta[j + 1];
+            force.c[j] = f;
+            xa.c[j + 2] = (r0 - f) * a[0];
+            xb.c[j + 2] = (r1 + f) * a[1];
+            delta[j + 2] = (r0 * a[0] - r1 * a[1]) - f * (a[0] + a[1]);
+        }
+    }
 }
 
 /// Σ_{i=1}^{m−1} δ_i δ_{m−i}: (δ²)_m without its two terms in δ₀ δ_m, by
 /// its symmetry (half the products) and in four independent partial sums
 /// (the additions do not wait on one another).
-#[inline]
+#[inline(always)]
 fn inner_square_coefficient(delta: &[f64; MAX_DEGREE + 1], m: usize) -> f64 {
     let pairs = m.div_ceil(2);
     let mut acc = [0.0; 4];

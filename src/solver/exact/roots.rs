@@ -88,6 +88,11 @@ fn search(e: &Series, lo: f64, hi: f64, depth: u32, budget: &mut u32) -> Option<
     if lo == 0.0 && d0 == 0.0 && d1 == 0.0 && d2 == 0.0 && leading_term_clears(e, w) {
         return None;
     }
+    // Falling from at or below zero: no crossing, and no need of e(hi).
+    let falling = decreasing(d1, d2, m, w);
+    if falling && d0 <= 0.0 {
+        return None;
+    }
     let e_hi = e.value(hi);
     let rising = increasing(d1, d2, m, w);
     if e_hi > 0.0 {
@@ -106,7 +111,7 @@ fn search(e: &Series, lo: f64, hi: f64, depth: u32, budget: &mut u32) -> Option<
         return Some(root);
     }
     // e(hi) ≤ 0: a monotone e has no crossing in between.
-    if rising || decreasing(d1, d2, m, w) {
+    if rising || falling {
         return None;
     }
     if depth >= MAX_DEPTH || w <= f64::EPSILON * hi.abs().max(lo.abs()).max(f64::MIN_POSITIVE) {
