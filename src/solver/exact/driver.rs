@@ -436,7 +436,7 @@ impl<'a> Run<'a> {
                 if !clear {
                     return false;
                 }
-                local[i] = Some(m);
+                local[i] = Some(m.x);
             }
             swings[i] = [sx, sv];
             next[i] = t.advance(&inputs, equilibrium);
@@ -457,7 +457,7 @@ impl<'a> Run<'a> {
                         let (x, v) = (self.x[i], self.v[i]);
                         Majorants::new(t, x, v, phasor, self.loads[i], swings[i]).x
                     },
-                    |m| m.x,
+                    |x| x,
                 )
             });
             let gap_majorant = [a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] + b[3]];

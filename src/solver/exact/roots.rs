@@ -239,7 +239,10 @@ pub fn cleared(d0: f64, d1: f64, d2: f64, m: f64, w: f64) -> bool {
 /// Halley steps, t ← t − e e' / (e'² − e e''/2), kept inside the bracket
 /// (bisection when a step would leave it), to the last bit. Halley's method
 /// converges cubically, so from the secant through the bracket's ends two
-/// steps usually reach round-off and a third confirms it.
+/// steps usually reach round-off. Each correction Δ_k then predicts the
+/// next, Δ_{k+1} ≈ K Δ_k³ with K ≈ Δ_k/Δ_{k−1}³ taken from the two last; a
+/// predicted correction below the last bit of t ends the iteration without
+/// the evaluation that would confirm it.
 fn solve(e: &Series, mut lo: f64, mut hi: f64, e_lo: f64, e_hi: f64) -> f64 {
     let secant = lo + (hi - lo) * (-e_lo / (e_hi - e_lo));
     let mut t = if secant > lo && secant < hi {
@@ -247,6 +250,8 @@ fn solve(e: &Series, mut lo: f64, mut hi: f64, e_lo: f64, e_hi: f64) -> f64 {
     } else {
         hi
     };
+    // The last Halley correction (none yet: infinite).
+    let mut last = f64::INFINITY;
     for _ in 0..100 {
         let [v, dv, half_curvature] = e.derivatives(t);
         if v == 0.0 {
@@ -263,16 +268,23 @@ fn solve(e: &Series, mut lo: f64, mut hi: f64, e_lo: f64, e_hi: f64) -> f64 {
         }
         let step = t - v * dv / (dv * dv - v * half_curvature);
         if step > lo && step < hi {
-            // Converged when the correction is at the last bit of t.
-            if (step - t).abs() <= 2.0 * f64::EPSILON * t.abs() {
+            let correction = (step - t).abs();
+            let last_bit = 2.0 * f64::EPSILON * step.abs();
+            // Converged when the correction is at the last bit of t, or
+            // the next is predicted to be: K Δ³ = Δ (Δ/Δ_prev)³.
+            let ratio = correction / last;
+            let predicted = correction * ratio * ratio * ratio;
+            if correction <= last_bit || (last.is_finite() && predicted <= 0.25 * last_bit) {
                 return if e.value(step) > 0.0 {
                     step
                 } else {
                     hi.min(step.next_up())
                 };
             }
+            last = correction;
             t = step;
         } else {
+            last = f64::INFINITY;
             t = mid;
         }
     }

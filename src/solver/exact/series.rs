@@ -163,18 +163,32 @@ impl Series {
             return (0.0, 0.0);
         }
         d.c[0] = self.c[1];
-        // h^{k−1}, at h¹ for k = 2.
-        let mut hk1 = h;
-        let mut swing = self.c[1].abs() * h;
-        let mut rate_swing = 0.0;
-        let terms = self.c[2..=n].iter().zip(&ORDER[2..=n]);
-        for (dk, (c, k)) in d.c[1..n].iter_mut().zip(terms) {
-            *dk = k * c;
-            rate_swing += dk.abs() * hk1;
-            hk1 *= h;
-            swing += c.abs() * hk1;
+        // The terms in pairs (k, k + 1), with h^{k−1}, h^k and h^{k+1}
+        // each carried on by h²: the sums and powers wait on one operation
+        // per pair instead of per term.
+        let h2 = h * h;
+        let mut powers = [h, h2, h2 * h];
+        let mut swing = [self.c[1].abs() * h, 0.0];
+        let mut rate_swing = [0.0; 2];
+        let mut k = 2;
+        while k < n {
+            let (a, b) = (ORDER[k] * self.c[k], ORDER[k + 1] * self.c[k + 1]);
+            d.c[k - 1] = a;
+            d.c[k] = b;
+            rate_swing[0] += a.abs() * powers[0];
+            rate_swing[1] += b.abs() * powers[1];
+            swing[0] += self.c[k].abs() * powers[1];
+            swing[1] += self.c[k + 1].abs() * powers[2];
+            powers = powers.map(|p| p * h2);
+            k += 2;
         }
-        (swing, rate_swing)
+        if k == n {
+            let a = ORDER[k] * self.c[k];
+            d.c[k - 1] = a;
+            rate_swing[0] += a.abs() * powers[0];
+            swing[0] += self.c[k].abs() * powers[1];
+        }
+        (swing[0] + swing[1], rate_swing[0] + rate_swing[1])
     }
 
     /// The series of q' (degree n − 1).
