@@ -451,14 +451,11 @@ impl<'a> Run<'a> {
         let relative = self.x[0] - self.x[1];
         if !(relative + swings[0][0] + swings[1][0] < ceiling) {
             let [a, b] = [0, 1].map(|i| {
-                local[i].map_or_else(
-                    || {
-                        let t = &transitions[i][self.branch[i].kind()];
-                        let (x, v) = (self.x[i], self.v[i]);
-                        Majorants::new(t, x, v, phasor, self.loads[i], swings[i]).x
-                    },
-                    |x| x,
-                )
+                local[i].unwrap_or_else(|| {
+                    let t = &transitions[i][self.branch[i].kind()];
+                    let (x, v) = (self.x[i], self.v[i]);
+                    Majorants::new(t, x, v, phasor, self.loads[i], swings[i]).x
+                })
             });
             let gap_majorant = [a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] + b[3]];
             if !stays_below(&gap_majorant, ceiling, h) {
