@@ -304,6 +304,27 @@ mod tests {
         s
     }
 
+    /// Halley's iteration, stopped on its predicted next correction, still
+    /// lands on the last bits: the zero of −sin(t + φ) rising through
+    /// t = π − φ (degree-20 series, exact to round-off on [0, 1.5]).
+    #[test]
+    fn a_root_of_a_full_series_to_the_last_bits() {
+        for phase in [1.7, 2.0, 2.5, 3.0] {
+            let mut e = Series {
+                degree: 20,
+                ..Default::default()
+            };
+            let mut factorial = 1.0;
+            for k in 0..=20 {
+                e.c[k] = -(phase + k as f64 * std::f64::consts::FRAC_PI_2).sin() / factorial;
+                factorial *= (k + 1) as f64;
+            }
+            let root = std::f64::consts::PI - phase;
+            let t = first_crossing(&e, 0.0, 1.5).unwrap();
+            assert!((t - root).abs() <= 4.0 * f64::EPSILON, "φ = {phase}: {t} against {root}");
+        }
+    }
+
     #[test]
     fn finds_a_plain_crossing() {
         // e = t − 0.3
