@@ -332,7 +332,7 @@ impl<'a> Run<'a> {
                 Some(law) => self.contact_segment(&law, &ground, reach, &mut segment),
             }
             let (length, event) = segment.end;
-            self.account(&segment, length, observer);
+            self.account(&segment, &ground, length, observer);
             self.advance(&segment, length);
             if let Some(event) = event {
                 self.events += 1;
@@ -627,7 +627,13 @@ impl<'a> Run<'a> {
     }
 
     /// Peaks, impact extremes, work and samples over [0, length] of the segment.
-    fn account<O: Observer>(&mut self, segment: &Segment, length: f64, observer: &mut O) {
+    fn account<O: Observer>(
+        &mut self,
+        segment: &Segment,
+        ground: &Series,
+        length: f64,
+        observer: &mut O,
+    ) {
         for i in 0..2 {
             let peaks = self.result.structure_mut(i);
             raise_abs_max(
@@ -694,14 +700,8 @@ impl<'a> Run<'a> {
             }
         }
         if self.options.energy {
-            self.work.add(
-                &self.structures,
-                self.branch,
-                segment,
-                self.tau,
-                length,
-                self.options.excitation,
-            );
+            self.work
+                .add(&self.structures, self.branch, segment, ground, length);
         }
         if O::RECORDS {
             let end = self.tau + length;

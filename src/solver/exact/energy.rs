@@ -8,11 +8,10 @@
 //! independent check of the motion: nothing in it is a state function of
 //! the solver's own bookkeeping.
 
-use crate::model::Excitation;
-
 use super::super::result::EnergyBalance;
 use super::driver::Segment;
 use super::dynamics::{Branch, Structure};
+use super::series::Series;
 
 /// Gauss–Legendre nodes and weights on [0, 1], 8 points (written to 17
 /// digits, one more than f64 holds, as tabulated).
@@ -50,16 +49,16 @@ pub struct Work {
 }
 
 impl Work {
-    /// Adds the work done over [τ, τ + length] of `segment`.
-    #[allow(clippy::too_many_arguments)]
+    /// Adds the work done over [0, length] of `segment`, whose ground
+    /// acceleration is the series `ground` (exact over the segment: it
+    /// never crosses a change of the excitation's formula).
     pub fn add(
         &mut self,
         structures: &[Structure; 2],
         branch: [Branch; 2],
         segment: &Segment,
-        tau: f64,
+        ground: &Series,
         length: f64,
-        excitation: Excitation,
     ) {
         if length <= 0.0 {
             return;
@@ -67,7 +66,7 @@ impl Work {
         let (mut input, mut damping, mut spring, mut contact) = (0.0, 0.0, 0.0, 0.0);
         for (node, weight) in NODES.iter().zip(WEIGHTS) {
             let t = node * length;
-            let g = excitation.at(tau + t);
+            let g = ground.value(t);
             let mut v = [0.0; 2];
             for i in 0..2 {
                 let (x, vi) = segment.x[i].value_slope(t);

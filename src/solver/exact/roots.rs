@@ -321,7 +321,10 @@ mod tests {
             }
             let root = std::f64::consts::PI - phase;
             let t = first_crossing(&e, 0.0, 1.5).unwrap();
-            assert!((t - root).abs() <= 4.0 * f64::EPSILON, "φ = {phase}: {t} against {root}");
+            assert!(
+                (t - root).abs() <= 4.0 * f64::EPSILON,
+                "φ = {phase}: {t} against {root}"
+            );
         }
     }
 
