@@ -60,8 +60,7 @@ impl Series {
     /// since evaluations wait on the latency of one multiply-add per term.
     #[inline]
     pub fn value(&self, t: f64) -> f64 {
-        let [e, o] = self.halves::<1>(t * t);
-        e[0] + t * o[0]
+        split_sum(self.degree.min(MAX_DEGREE), t, |k| self.c[k])
     }
 
     /// (q(t), q'(t)), with q = E(u) + t·O(u) as in [`Series::value`]:
@@ -69,7 +68,7 @@ impl Series {
     #[inline]
     pub fn value_slope(&self, t: f64) -> (f64, f64) {
         let u = t * t;
-        let [[e, de], [o, d_o]] = self.halves::<2>(u);
+        let [[e, de], [o, d_o]] = halves::<2>(self.degree.min(MAX_DEGREE), u, |k| self.c[k]);
         (e + t * o, o + 2.0 * (u * d_o + t * de))
     }
 
@@ -78,42 +77,13 @@ impl Series {
     #[inline]
     pub fn derivatives(&self, t: f64) -> [f64; 3] {
         let u = t * t;
-        let [[e, de, e2], [o, d_o, o2]] = self.halves::<3>(u);
+        let [[e, de, e2], [o, d_o, o2]] =
+            halves::<3>(self.degree.min(MAX_DEGREE), u, |k| self.c[k]);
         [
             e + t * o,
             o + 2.0 * (u * d_o + t * de),
             de + 3.0 * t * d_o + 4.0 * u * (e2 + t * o2),
         ]
-    }
-
-    /// The even part E(u) = Σ c_{2i} u^i and the odd part O(u) = Σ c_{2i+1} u^i,
-    /// each with its first D − 1 derivatives in u (the second halved), by
-    /// Horner's rule with the two chains interleaved.
-    #[inline(always)]
-    fn halves<const D: usize>(&self, u: f64) -> [[f64; D]; 2] {
-        let n = self.degree.min(MAX_DEGREE);
-        let mut even = [0.0; D];
-        let mut odd = [0.0; D];
-        let step = |acc: &mut [f64; D], c: f64| {
-            for d in (1..D).rev() {
-                acc[d] = acc[d] * u + acc[d - 1];
-            }
-            acc[0] = acc[0] * u + c;
-        };
-        // The top coefficient starts its chain; then both chains step together.
-        let mut i = n / 2;
-        if n % 2 == 1 {
-            step(&mut odd, self.c[n]);
-        }
-        loop {
-            step(&mut even, self.c[2 * i]);
-            if i == 0 {
-                break;
-            }
-            i -= 1;
-            step(&mut odd, self.c[2 * i + 1]);
-        }
-        [even, odd]
     }
 
     /// (q, q', q''/2, bound of |q'''|/6 on [t, t + w]): the cubic majorant
@@ -238,26 +208,42 @@ impl Series {
 }
 
 /// Σ_{j=0}^{top} a(j) x^j by Horner's rule in x² on the even and the odd
-/// terms, two chains of half the length (evaluations wait on the latency of
-/// one multiply-add per term, not on their number).
+/// terms, E(x²) + x·O(x²): two chains of half the length (evaluations wait
+/// on the latency of one multiply-add per term, not on their number).
 #[inline(always)]
 fn split_sum(top: usize, x: f64, a: impl Fn(usize) -> f64) -> f64 {
-    let x2 = x * x;
-    let (mut even, mut odd) = (0.0, 0.0);
-    let mut j = top;
-    if j % 2 == 1 {
-        odd = a(j);
-        j -= 1;
+    let [even, odd] = halves::<1>(top, x * x, a);
+    even[0] + x * odd[0]
+}
+
+/// The even part E(u) = Σ a(2i) u^i and the odd part O(u) = Σ a(2i+1) u^i
+/// of Σ_{j=0}^{top} a(j) x^j (u = x²), each with its first D − 1
+/// derivatives in u (the second halved), by Horner's rule with the two
+/// chains interleaved.
+#[inline(always)]
+fn halves<const D: usize>(top: usize, u: f64, a: impl Fn(usize) -> f64) -> [[f64; D]; 2] {
+    let mut even = [0.0; D];
+    let mut odd = [0.0; D];
+    let step = |acc: &mut [f64; D], c: f64| {
+        for d in (1..D).rev() {
+            acc[d] = acc[d] * u + acc[d - 1];
+        }
+        acc[0] = acc[0] * u + c;
+    };
+    // The top term starts its chain; then both chains step together.
+    let mut i = top / 2;
+    if top % 2 == 1 {
+        step(&mut odd, a(top));
     }
     loop {
-        even = even * x2 + a(j);
-        if j == 0 {
+        step(&mut even, a(2 * i));
+        if i == 0 {
             break;
         }
-        odd = odd * x2 + a(j - 1);
-        j -= 2;
+        i -= 1;
+        step(&mut odd, a(2 * i + 1));
     }
-    even + x * odd
+    [even, odd]
 }
 
 #[cfg(test)]
