@@ -502,8 +502,8 @@ impl<'a> Run<'a> {
         if self.p.gap.is_finite() {
             let delta0 = self.x[0] - self.x[1] - self.p.gap;
             if delta0 + segment.swing[0] + segment.swing[1] >= 0.0 {
-                let delta = segment.penetration(self.p.gap);
-                segment.consider(&delta, Event::Onset);
+                segment.write_gap_function(self.p.gap, 1.0);
+                cut(&mut segment.end, &segment.gap_function, Event::Onset);
             }
         }
         self.spring_events(segment);
@@ -592,8 +592,8 @@ impl<'a> Run<'a> {
     /// The events of a contact segment: separation (δ falls to 0) and the
     /// springs'. Keeps the opening (−δ) for the impact's extremes.
     fn contact_events(&self, segment: &mut Segment) {
-        segment.write_opening(self.p.gap);
-        cut(&mut segment.end, &segment.opening, Event::Separation);
+        segment.write_gap_function(self.p.gap, -1.0);
+        cut(&mut segment.end, &segment.gap_function, Event::Separation);
         self.spring_events(segment);
     }
 
@@ -681,7 +681,7 @@ impl<'a> Run<'a> {
                 let swing = segment.swing[0] + segment.swing[1];
                 // δ = −opening.
                 raise_max(
-                    &segment.opening,
+                    &segment.gap_function,
                     None,
                     -1.0,
                     length,
@@ -873,9 +873,12 @@ pub struct Segment {
     pub v: [Series; 2],
     /// f_p, in contact ([`Segment::force`]).
     force: Series,
-    /// The opening x2 − x1 + Π_d = −δ, in contact: negative while the
-    /// structures overlap, positive once they separate.
-    opening: Series,
+    /// σ(x1 − x2 − Π_d) as [`Segment::write_gap_function`] last wrote it:
+    /// out of contact the penetration δ (σ = 1), the onset's event function;
+    /// in contact the opening −δ (σ = −1), negative while the structures
+    /// overlap and positive once they separate: separation's event function,
+    /// whose minimum is the maximum penetration.
+    gap_function: Series,
     contact: bool,
     /// Σ_{k≥1} |c_k| h^k of x1, x2, ẋ1, ẋ2 over the segment's full length h:
     /// how far each can move from its start value, a bound that clears most
@@ -903,20 +906,18 @@ impl Segment {
         self.contact.then_some(&self.force)
     }
 
-    /// δ = x1 − x2 − Π_d on the segment (SPEC §4).
-    fn penetration(&self, gap: f64) -> Series {
-        self.x[0].minus(&self.x[1]).shifted(gap)
-    }
-
-    /// Writes the opening x2 − x1 + Π_d = −δ (SPEC §4) from the series of x
-    /// in one pass (exactly the negated penetration: rounding is symmetric).
-    fn write_opening(&mut self, gap: f64) {
+    /// Writes σ(x1 − x2 − Π_d) (SPEC §4, σ = ±1) into `gap_function` from
+    /// the series of x in one pass, in place: the penetration δ for σ = 1,
+    /// the opening −δ for σ = −1 (each exactly the negative of the other:
+    /// rounding is symmetric).
+    fn write_gap_function(&mut self, gap: f64, sign: f64) {
         let [x1, x2] = &self.x;
-        for (o, (a, b)) in self.opening.c.iter_mut().zip(x1.c.iter().zip(&x2.c)) {
-            *o = b - a;
+        let (a, b) = if sign > 0.0 { (x1, x2) } else { (x2, x1) };
+        for (e, (p, q)) in self.gap_function.c.iter_mut().zip(a.c.iter().zip(&b.c)) {
+            *e = p - q;
         }
-        self.opening.c[0] += gap;
-        self.opening.degree = x1.degree.max(x2.degree);
+        self.gap_function.c[0] -= sign * gap;
+        self.gap_function.degree = x1.degree.max(x2.degree);
     }
 
     /// Cuts the segment at `event` if `e` turns positive before its current end.
@@ -943,7 +944,7 @@ impl Segment {
 }
 
 /// [`Segment::consider`] on the segment's `end` alone, for an event function
-/// that the segment itself holds (its opening) and so cannot be lent to it.
+/// that the segment itself holds (its gap function) and so cannot be lent to it.
 fn cut(end: &mut (f64, Option<Event>), e: &Series, event: Event) {
     if end.0 == 0.0 {
         return;
