@@ -5,3 +5,16 @@
 //! analytic at onset (δ^{3/2}), so a Taylor series in τ does not apply there.
 
 pub mod dopri5;
+
+/// a·b + c: fused, with one rounding, where the build's target has a fused
+/// multiply-add instruction; else a product and a sum (a fused one in
+/// software costs a library call, slower than both). The results of the
+/// two differ in the last bits only.
+#[inline(always)]
+pub fn madd(a: f64, b: f64, c: f64) -> f64 {
+    if cfg!(target_feature = "fma") {
+        a.mul_add(b, c)
+    } else {
+        a * b + c
+    }
+}

@@ -30,7 +30,7 @@ use crate::model::{ContactLaw, Excitation, Method, Params};
 use super::super::observer::{Observer, Sample};
 use super::super::result::{Impact, RunResult, Stop, StopReason};
 use super::contact_rk::ContactSystem;
-use super::dynamics::{Branch, Structure, contact_series, free_series, step_for};
+use super::dynamics::{Branch, ContactRecurrence, Structure, free_series, step_for};
 use super::energy::Work;
 use super::peaks::{raise_abs_max, raise_max};
 use super::quiet::{Majorants, QuietStep, stays_above, stays_below};
@@ -203,6 +203,8 @@ struct Run<'a> {
     long_quiet_from: f64,
     /// Rotations since the phasor was last taken from sin_cos.
     turns: u32,
+    /// The contact recurrence's constants, from the first contact on.
+    recurrence: Option<Box<ContactRecurrence>>,
     /// Next step of a Hertz-type contact phase (0: not yet chosen).
     rk_step: std::cell::Cell<f64>,
     result: RunResult,
@@ -258,6 +260,7 @@ impl<'a> Run<'a> {
             phasor_tau: f64::NAN,
             long_quiet_from: 0.0,
             turns: 0,
+            recurrence: None,
             rk_step: std::cell::Cell::new(0.0),
             result: RunResult {
                 completed: true,
@@ -520,7 +523,11 @@ impl<'a> Run<'a> {
         if !law.is_analytic() {
             return self.contact_rk_segment(law, ground, reach, segment);
         }
-        contact_series(
+        let recurrence = self
+            .recurrence
+            .as_ref()
+            .expect("an analytic contact has its recurrence");
+        recurrence.series(
             &self.structures,
             self.branch,
             self.x,
@@ -782,6 +789,9 @@ impl<'a> Run<'a> {
         let rate = self.v[0] - self.v[1];
         let law = ContactConstants::of(p).law(rate);
         self.contact = Some(law);
+        if law.is_analytic() && self.recurrence.is_none() {
+            self.recurrence = Some(Box::new(ContactRecurrence::new(&self.structures)));
+        }
         self.rk_step.set(0.0);
         let delta = self.x[0] - self.x[1] - p.gap;
         let extremes = self.options.extremes;

@@ -32,6 +32,7 @@
 use crate::model::{ContactLaw, Params};
 
 use super::series::{MAX_DEGREE, Series};
+use crate::numerics::madd;
 
 /// One spring's branch between events (SPEC §3).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -209,7 +210,7 @@ pub fn free_series(
 #[inline]
 fn next_free_coefficient(c: f64, k: f64, g_j: f64, j: usize, x_j: f64, x_j1: f64) -> f64 {
     let known = (-g_j - k * x_j) * INV_PAIR[j];
-    known - c * INV_NEXT2[j] * x_j1
+    madd(-c * INV_NEXT2[j], x_j1, known)
 }
 
 /// The series of ẍ + c ẋ + k x = load − g from (x₀, ẋ₀), to degree `n`:
@@ -231,118 +232,160 @@ pub fn oscillator(c: f64, k: f64, load: f64, x0: f64, v0: f64, g: &Series, n: us
     x
 }
 
-/// The coupled contact recurrence to degree `n` of both structures, into
-/// `x`, and of the pounding force f_p (to degree n − 2), into `force`.
+/// The constants of the coupled contact recurrence, order by order, for
+/// one pair of structures: fixed for a run, so that each contact segment
+/// spends its multiplications on the state alone.
 ///
-/// Written so that each order waits on the last for as little as possible.
-/// With R_{i,j} the right-hand side of structure i without the pounding
-/// force and a_{i,j} = 1/(m_i (j+1)(j+2)),
+/// With the mass divided out, structure i's equation gives
 ///
 /// ```text
-/// x_{1,j+2} = (R_{1,j} − f_j) a_{1,j},   x_{2,j+2} = (R_{2,j} + f_j) a_{2,j},
-/// δ_{j+2}   = (R_{1,j} a_{1,j} − R_{2,j} a_{2,j}) − f_j (a_{1,j} + a_{2,j}),
+/// x_{i,j+2} = u_{i,j} ∓ p_{i,j} f_j,
+/// u_{i,j}   = −(c/m)/(j+2) · x_{i,j+1} − (K/m)/((j+1)(j+2)) · x_{i,j}
+///             − g_j/((j+1)(j+2))  [+ (Q/m)/2 at j = 0],
+/// p_{i,j}   = 1/(m (j+1)(j+2)),
+/// δ_{j+2}   = (u_{1,j} − u_{2,j}) − (p_{1,j} + p_{2,j}) f_j,
 /// f_j       = [k̄ δ_j + h ((j+1)/2) Σ_{i=1}^{j} δ_i δ_{j+1−i}] + (c + h δ₀)(j+1) δ_{j+1},
 /// ```
 ///
-/// (the last from (δδ̇)_j = ((j+1)/2)(δ²)_{j+1}, since δδ̇ = ½ d(δ²)/dt),
-/// so that from δ_{j+1} to δ_{j+2} there are two multiply-adds; the
-/// convolution and the structures' own terms are off that path.
-#[allow(clippy::too_many_arguments)]
-pub fn contact_series(
-    s: &[Structure; 2],
-    branch: [Branch; 2],
-    x0: [f64; 2],
-    v0: [f64; 2],
-    gap: f64,
-    law: &ContactLaw,
-    g: &Series,
-    n: usize,
-    x: &mut [Series; 2],
-    force: &mut Series,
-) {
-    let n = n.min(MAX_DEGREE);
-    let kq = [s[0].affine(branch[0]), s[1].affine(branch[1])];
-    let inv_m = [1.0 / s[0].mass, 1.0 / s[1].mass];
-    let mass = [s[0].mass, s[1].mass];
-    force.c = [0.0; MAX_DEGREE + 1];
-    let mut delta = [0.0; MAX_DEGREE + 1];
-    for i in 0..2 {
-        x[i].c[n + 1..].fill(0.0);
-        x[i].degree = n;
-        x[i].c[0] = x0[i];
-        x[i].c[1] = v0[i];
-    }
-    delta[0] = x0[0] - x0[1] - gap;
-    delta[1] = v0[0] - v0[1];
-    let (kc, cc, hc) = (law.stiffness, law.linear_damping, law.hertz_damping);
-    // The coefficient of δ_{j+1} in f_j, per unit of (j + 1).
-    let rate_gain = cc + hc * delta[0];
-    let orders = Orders {
-        k: [kq[0].0, kq[1].0],
-        damping: [s[0].damping, s[1].damping],
-        mass,
-        inv_m,
-        kc,
-        rate_gain,
-        half_h: hc * 0.5,
-    };
-    let [x0s, x1s] = x;
-    if hc != 0.0 {
-        orders.run::<true>(n, [kq[0].1, kq[1].1], g, [x0s, x1s], &mut delta, force);
-    } else {
-        orders.run::<false>(n, [kq[0].1, kq[1].1], g, [x0s, x1s], &mut delta, force);
-    }
-    force.degree = n.saturating_sub(2);
+/// (the last from (δδ̇)_j = ((j+1)/2)(δ²)_{j+1}, since δδ̇ = ½ d(δ²)/dt).
+/// The coefficients of x_{i,j+1}, x_{i,j} and f_j are tabulated here, the
+/// second per branch (K is k or Π_α k), so that an order's products are
+/// those with the state; with fused multiply-adds ([`madd`]) each is one
+/// instruction, and the chain from δ_{j+1} to δ_{j+2} two.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactRecurrence {
+    /// −(c/m)/(j+2) of each structure.
+    rate: [[f64; MAX_DEGREE + 1]; 2],
+    /// −(K/m)/((j+1)(j+2)) of each structure, elastic and yielded ([`Branch::kind`]).
+    spring: [[[f64; MAX_DEGREE + 1]; 2]; 2],
+    /// p_{i,j} = 1/(m (j+1)(j+2)) of each structure.
+    push: [[f64; MAX_DEGREE + 1]; 2],
+    /// p_{1,j} + p_{2,j}.
+    push_sum: [f64; MAX_DEGREE + 1],
 }
 
-/// The constants of [`contact_series`]'s recurrence, per structure where
-/// they differ: K, c, m and 1/m of each branch, and of the law k̄, the
-/// rate gain c + h δ₀ and h/2.
-struct Orders {
-    k: [f64; 2],
-    damping: [f64; 2],
-    mass: [f64; 2],
-    inv_m: [f64; 2],
+impl ContactRecurrence {
+    pub fn new(s: &[Structure; 2]) -> Self {
+        let inv_m = s.map(|s| 1.0 / s.mass);
+        let rate = [0, 1].map(|i| {
+            let c = s[i].damping * inv_m[i];
+            std::array::from_fn(|j| -c * INV_NEXT2[j])
+        });
+        let spring = [0, 1].map(|i| {
+            [s[i].stiffness, s[i].alpha * s[i].stiffness].map(|k| {
+                let k = k * inv_m[i];
+                std::array::from_fn(|j| -k * INV_PAIR[j])
+            })
+        });
+        let push: [[f64; MAX_DEGREE + 1]; 2] =
+            inv_m.map(|inv_m| std::array::from_fn(|j| inv_m * INV_PAIR[j]));
+        let push_sum = std::array::from_fn(|j| push[0][j] + push[1][j]);
+        ContactRecurrence {
+            rate,
+            spring,
+            push,
+            push_sum,
+        }
+    }
+
+    /// The series of both structures in contact to degree `n`, into `x`,
+    /// and of the pounding force f_p (to degree n − 2), into `force`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn series(
+        &self,
+        s: &[Structure; 2],
+        branch: [Branch; 2],
+        x0: [f64; 2],
+        v0: [f64; 2],
+        gap: f64,
+        law: &ContactLaw,
+        g: &Series,
+        n: usize,
+        x: &mut [Series; 2],
+        force: &mut Series,
+    ) {
+        let n = n.min(MAX_DEGREE);
+        force.c = [0.0; MAX_DEGREE + 1];
+        let mut delta = [0.0; MAX_DEGREE + 1];
+        for i in 0..2 {
+            x[i].c[n + 1..].fill(0.0);
+            x[i].degree = n;
+            x[i].c[0] = x0[i];
+            x[i].c[1] = v0[i];
+        }
+        delta[0] = x0[0] - x0[1] - gap;
+        delta[1] = v0[0] - v0[1];
+        // Q/m · 1/2 of each branch: the load enters order 0 alone.
+        let load = [0, 1].map(|i| s[i].affine(branch[i]).1 * self.push[i][0]);
+        let spring = [0, 1].map(|i| &self.spring[i][branch[i].kind()]);
+        let orders = Orders {
+            table: self,
+            spring,
+            load,
+            kc: law.stiffness,
+            // The coefficient of δ_{j+1} in f_j, per unit of (j + 1).
+            rate_gain: law.linear_damping + law.hertz_damping * delta[0],
+            half_h: law.hertz_damping * 0.5,
+        };
+        let [xa, xb] = x;
+        if law.hertz_damping != 0.0 {
+            orders.run::<true>(n, g, [xa, xb], &mut delta, force);
+        } else {
+            orders.run::<false>(n, g, [xa, xb], &mut delta, force);
+        }
+        force.degree = n.saturating_sub(2);
+    }
+}
+
+/// What one contact segment's recurrence uses: the run's table, the rows of
+/// the current branches, the loads, and of the law k̄, the rate gain
+/// c + h δ₀ and h/2.
+struct Orders<'a> {
+    table: &'a ContactRecurrence,
+    spring: [&'a [f64; MAX_DEGREE + 1]; 2],
+    load: [f64; 2],
     kc: f64,
     rate_gain: f64,
     half_h: f64,
 }
 
-impl Orders {
+impl Orders<'_> {
     /// Orders 2 … n of x1, x2 and δ, and 0 … n − 2 of f_p, from orders 0
     /// and 1 in place; `HERTZ`: the law has the δδ̇ term.
     #[inline(always)]
     fn run<const HERTZ: bool>(
         &self,
         n: usize,
-        q: [f64; 2],
         g: &Series,
         x: [&mut Series; 2],
         delta: &mut [f64; MAX_DEGREE + 1],
         force: &mut Series,
     ) {
         let [xa, xb] = x;
+        let t = self.table;
+        let [sa, sb] = self.spring;
         for j in 0..n.saturating_sub(1).min(MAX_DEGREE - 1) {
             let next = NEXT[j];
-            let mut f_known = self.kc * delta[j];
+            let mut f = self.kc * delta[j];
             if HERTZ && j > 0 {
-                f_known += self.half_h * next * inner_square_coefficient(delta, j + 1);
+                f = madd(
+                    self.half_h * next,
+                    inner_square_coefficient(delta, j + 1),
+                    f,
+                );
             }
-            let a = [self.inv_m[0] * INV_PAIR[j], self.inv_m[1] * INV_PAIR[j]];
-            let (l0, l1) = if j == 0 { (q[0], q[1]) } else { (0.0, 0.0) };
-            let r0 = l0
-                - self.damping[0] * next * xa.c[j + 1]
-                - self.k[0] * xa.c[j]
-                - self.mass[0] * g.c[j];
-            let r1 = l1
-                - self.damping[1] * next * xb.c[j + 1]
-                - self.k[1] * xb.c[j]
-                - self.mass[1] * g.c[j];
-            let f = f_known + self.rate_gain * next * delta[j + 1];
+            let f = madd(self.rate_gain * next, delta[j + 1], f);
+            let ground = INV_PAIR[j] * g.c[j];
+            let mut ua = madd(t.rate[0][j], xa.c[j + 1], madd(sa[j], xa.c[j], -ground));
+            let mut ub = madd(t.rate[1][j], xb.c[j + 1], madd(sb[j], xb.c[j], -ground));
+            if j == 0 {
+                ua += self.load[0];
+                ub += self.load[1];
+            }
             force.c[j] = f;
-            xa.c[j + 2] = (r0 - f) * a[0];
-            xb.c[j + 2] = (r1 + f) * a[1];
-            delta[j + 2] = (r0 * a[0] - r1 * a[1]) - f * (a[0] + a[1]);
+            xa.c[j + 2] = madd(-t.push[0][j], f, ua);
+            xb.c[j + 2] = madd(t.push[1][j], f, ub);
+            delta[j + 2] = madd(-t.push_sum[j], f, ua - ub);
         }
     }
 }
@@ -355,7 +398,7 @@ fn inner_square_coefficient(delta: &[f64; MAX_DEGREE + 1], m: usize) -> f64 {
     let pairs = m.div_ceil(2);
     let mut acc = [0.0; 4];
     for i in 1..pairs {
-        acc[i % 4] += delta[i] * delta[m - i];
+        acc[i % 4] = madd(delta[i], delta[m - i], acc[i % 4]);
     }
     let middle = if m.is_multiple_of(2) {
         delta[m / 2] * delta[m / 2]

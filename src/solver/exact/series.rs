@@ -8,6 +8,8 @@
 //! by Horner's rule, and bounds of the tail used to prove that an event
 //! function keeps its sign on a sub-interval.
 
+use crate::numerics::madd;
+
 /// Largest degree kept. Series are truncated where their terms fall below
 /// round-off over the segment (see [`super::dynamics`]), well before this.
 pub const MAX_DEGREE: usize = 20;
@@ -145,10 +147,10 @@ impl Series {
             let (a, b) = (ORDER[k] * self.c[k], ORDER[k + 1] * self.c[k + 1]);
             d.c[k - 1] = a;
             d.c[k] = b;
-            rate_swing[0] += a.abs() * powers[0];
-            rate_swing[1] += b.abs() * powers[1];
-            swing[0] += self.c[k].abs() * powers[1];
-            swing[1] += self.c[k + 1].abs() * powers[2];
+            rate_swing[0] = madd(a.abs(), powers[0], rate_swing[0]);
+            rate_swing[1] = madd(b.abs(), powers[1], rate_swing[1]);
+            swing[0] = madd(self.c[k].abs(), powers[1], swing[0]);
+            swing[1] = madd(self.c[k + 1].abs(), powers[2], swing[1]);
             powers = powers.map(|p| p * h2);
             k += 2;
         }
@@ -226,9 +228,9 @@ fn halves<const D: usize>(top: usize, u: f64, a: impl Fn(usize) -> f64) -> [[f64
     let mut odd = [0.0; D];
     let step = |acc: &mut [f64; D], c: f64| {
         for d in (1..D).rev() {
-            acc[d] = acc[d] * u + acc[d - 1];
+            acc[d] = madd(acc[d], u, acc[d - 1]);
         }
-        acc[0] = acc[0] * u + c;
+        acc[0] = madd(acc[0], u, c);
     };
     // The top term starts its chain; then both chains step together.
     let mut i = top / 2;
