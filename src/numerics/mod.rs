@@ -12,7 +12,7 @@ pub mod dopri5;
 /// two differ in the last bits only.
 #[inline(always)]
 pub fn madd(a: f64, b: f64, c: f64) -> f64 {
-    if cfg!(target_feature = "fma") {
+    if cfg!(any(target_feature = "fma", target_arch = "aarch64")) {
         a.mul_add(b, c)
     } else {
         a * b + c
