@@ -8,17 +8,28 @@ mod common;
 
 use pounding::model::{ContactModel, Excitation, Method, Params, SET1, SET2};
 use pounding::reference::{ReferenceOptions, reference};
-use pounding::solver::exact::{ExactOptions, simulate};
+use pounding::solver::exact::{CONTACT_TOLERANCE, ExactOptions, simulate};
 use pounding::solver::{FullHistory, RunResult, StopReason, relative_peak_error};
 
 fn exact(p: &Params) -> RunResult {
     simulate(p, &ExactOptions::default(), &mut ())
 }
 
-/// Exact against the reference at tolerance 1e-13: the four peaks to
-/// `tolerance` (relative) and the same impact count.
-fn agrees_with_reference(name: &str, p: &Params, tolerance: f64) {
-    let r = exact(p);
+/// Exact at contact tolerance `contact_tolerance` against the reference at
+/// tolerance 1e-13: the four peaks to `tolerance` (relative), the same
+/// impact count, and each impact's onset and approach velocity to `timing`.
+fn agrees_with_reference_at(
+    name: &str,
+    p: &Params,
+    contact_tolerance: f64,
+    tolerance: f64,
+    timing: f64,
+) {
+    let options = ExactOptions {
+        contact_tolerance,
+        ..ExactOptions::default()
+    };
+    let r = simulate(p, &options, &mut ());
     assert!(r.completed && r.stop.is_none(), "{name}: {:?}", r.stop);
     assert_eq!(r.method, Method::Exact);
     let q = reference(p, &ReferenceOptions::with_tolerance(1e-13));
@@ -33,14 +44,14 @@ fn agrees_with_reference(name: &str, p: &Params, tolerance: f64) {
     assert_eq!(r.impacts.len(), q.impacts.len(), "{name}: impact count");
     for (a, b) in r.impacts.iter().zip(&q.impacts) {
         assert!(
-            (a.start - b.start).abs() < 1e-8,
+            (a.start - b.start).abs() < timing,
             "{name}: onset {} vs {}",
             a.start,
             b.start
         );
         let dv = (a.approach_velocity - b.approach_velocity).abs();
         assert!(
-            dv < 1e-8,
+            dv < timing,
             "{name}: v0 {} vs {}",
             a.approach_velocity,
             b.approach_velocity
@@ -51,6 +62,12 @@ fn agrees_with_reference(name: &str, p: &Params, tolerance: f64) {
         "{name}: energy residual {:.1e}",
         r.energy.residual
     );
+}
+
+/// [`agrees_with_reference_at`] the default contact tolerance, with onsets
+/// and approach velocities to 1e-8.
+fn agrees_with_reference(name: &str, p: &Params, tolerance: f64) {
+    agrees_with_reference_at(name, p, CONTACT_TOLERANCE, tolerance, 1e-8);
 }
 
 #[test]
@@ -88,11 +105,16 @@ fn grazing_cases_agree_with_the_reference_to_1e_8() {
             gap,
             ..SET1
         };
-        agrees_with_reference(
-            &format!("Π_ω1={omega1} μ={mu} Π_m={mass_ratio} Π_d={gap}"),
-            &p,
-            1e-8,
-        );
+        let name = format!("Π_ω1={omega1} μ={mu} Π_m={mass_ratio} Π_d={gap}");
+        // At the default tolerance the peaks hold to 1e-8 (measured: 5e-12 at
+        // worst). A near-grazing impact turns the small velocity errors left
+        // by earlier contacts into a timing error about 1/v₀ times larger:
+        // at Π_ω1 = 0.6, μ = 1.5 (v₀ ≈ 0.066) onsets are off by 1.1e-8 at
+        // 1e-11, 8e-10 at 1e-12 and 4e-10 at 1e-14 (the reference's own
+        // difference between 1e-13 and 1e-14). So timings are held to 1e-7
+        // here, and to 1e-8 at a contact tolerance of 1e-14.
+        agrees_with_reference_at(&name, &p, CONTACT_TOLERANCE, 1e-8, 1e-7);
+        agrees_with_reference_at(&name, &p, 1e-14, 1e-8, 1e-8);
     }
 }
 
