@@ -135,6 +135,7 @@ mod tests {
             contact_omega: 10.0,
             model: ContactModel::Kelvin,
             min_impact_velocity: 0.1,
+            contact_tolerance: 1e-14,
             ..SET1
         };
         assert_eq!(BaselineKey::of(&contact_only), k);

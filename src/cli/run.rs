@@ -261,9 +261,16 @@ impl Report for RunReport<'_> {
     fn table(&self) -> String {
         let (p, case) = (self.case.params, &self.case);
         let mut s = String::new();
+        // The exact method's one knob beside its name; Newmark's is Δτ.
+        let tolerance = match p.method {
+            crate::model::Method::Exact => {
+                format!(" (contact tolerance {})", Num(p.contact_tolerance))
+            }
+            crate::model::Method::Newmark => String::new(),
+        };
         let _ = writeln!(
             s,
-            "{}: {} excitation, {} contact, {} method, Δτ = {}, {} cycles (τ_end = {:.3}), Π_d = {}",
+            "{}: {} excitation, {} contact, {} method{tolerance}, Δτ = {}, {} cycles (τ_end = {:.3}), Π_d = {}",
             self.provenance.preset,
             case.excitation,
             case.model,

@@ -35,6 +35,7 @@ pub fn exact_options(p: &Params) -> ExactOptions {
     ExactOptions {
         excitation,
         initial_velocity: excitation.initial_velocity(),
+        contact_tolerance: p.contact_tolerance,
         ..ExactOptions::default()
     }
 }

@@ -71,15 +71,6 @@ const PHASOR_TURNS: u32 = 16;
 const CONTACT_REACH: f64 = 1.0;
 /// Degree of the series in contact.
 const CONTACT_DEGREE: usize = 20;
-/// Size of each of the last two terms of a contact series, relative to the
-/// contact scale δ ~ v₀/Π_ωcon. Kelvin's steps are held shorter by
-/// [`CONTACT_REACH`], and its peaks agree with the reference to round-off
-/// (6e-14 and 3e-13 on the presets) at any tolerance from 1e-8 down.
-/// Improved Kelvin's are set by the tolerance: its peaks' error is about
-/// three times it (3e-11 and 6e-11 on the presets at 1e-11, 9e-14 at
-/// 1e-14), 30 times inside the method's target of 1e-9, at 0.7 of the
-/// contact segments that 1e-14 takes.
-pub const CONTACT_TOLERANCE: f64 = 1e-11;
 /// Events (onsets, separations, yields, unloadings) allowed per cycle of the
 /// run, beyond a fixed allowance: a physical run has a few per cycle.
 const EVENTS_PER_CYCLE: usize = 1_000;
@@ -101,7 +92,8 @@ pub struct ExactOptions {
     /// per cycle, far above any physical run (a few per cycle).
     pub max_events: Option<usize>,
     /// Size allowed to each of the last two terms of a contact series,
-    /// relative to the contact scale δ ~ v₀/Π_ωcon (the method's one knob).
+    /// relative to the contact scale δ ~ v₀/Π_ωcon (the method's one knob;
+    /// a parameter set's `contact_tolerance`).
     pub contact_tolerance: f64,
     /// Which extremes of the pounding force and penetration to locate.
     pub extremes: ContactExtremes,
@@ -133,7 +125,7 @@ impl Default for ExactOptions {
             initial_velocity: [0.0; 2],
             energy: true,
             max_events: None,
-            contact_tolerance: CONTACT_TOLERANCE,
+            contact_tolerance: crate::model::params::CONTACT_TOLERANCE,
             extremes: ContactExtremes::All,
         }
     }

@@ -41,4 +41,4 @@ pub mod quiet;
 pub mod roots;
 pub mod series;
 
-pub use driver::{CONTACT_TOLERANCE, ContactExtremes, ExactOptions, simulate};
+pub use driver::{ContactExtremes, ExactOptions, simulate};
