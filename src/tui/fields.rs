@@ -3,7 +3,8 @@
 //! meaning and nudge step. This file only adds what a nudge does.
 
 use crate::model::Params;
-pub use crate::model::params::{FIELDS, Field, Kind};
+use crate::model::params::echo::g4;
+pub use crate::model::params::{FIELDS, Field, Kind, Step};
 
 /// How big a nudge is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -30,8 +31,9 @@ pub fn value_text(p: &Params, f: &Field) -> String {
 
 /// The text a nudge of `direction` (±1) steps of `size` would set, or `None`
 /// when the row cannot be nudged from its value (an infinite one). A choice
-/// moves to the next (or previous) name. A number is rounded to 1e-9 so
-/// repeated nudges print cleanly.
+/// moves to the next (or previous) name. A number moves by its row's
+/// [`Step`]: added, rounded to 1e-9 so repeated nudges print cleanly; or
+/// multiplied (×r, Shift ×r², fine ×r^{1/10}), to four significant digits.
 pub fn nudged_text(p: &Params, f: &Field, direction: f64, size: StepSize) -> Option<String> {
     match f.kind {
         Kind::Choice { names, get, .. } => {
@@ -41,7 +43,11 @@ pub fn nudged_text(p: &Params, f: &Field, direction: f64, size: StepSize) -> Opt
             Some(names[next].to_string())
         }
         Kind::Integer { get, .. } => {
-            let step = (f.step * size.factor()).max(1.0);
+            let unit = match f.step {
+                Step::Add(d) => d,
+                Step::Times(_) => 1.0,
+            };
+            let step = (unit * size.factor()).max(1.0);
             let n = (get(p) as f64 + direction * step).max(1.0);
             Some(format!("{n}"))
         }
@@ -50,8 +56,20 @@ pub fn nudged_text(p: &Params, f: &Field, direction: f64, size: StepSize) -> Opt
             if !v.is_finite() {
                 return None;
             }
-            let next = v + direction * f.step * size.factor();
-            Some(format!("{}", (next * 1e9).round() / 1e9))
+            match f.step {
+                Step::Add(d) => {
+                    let next = v + direction * d * size.factor();
+                    Some(format!("{}", (next * 1e9).round() / 1e9))
+                }
+                Step::Times(r) => {
+                    let power = match size {
+                        StepSize::Fine => 0.1,
+                        StepSize::Normal => 1.0,
+                        StepSize::Coarse => 2.0,
+                    };
+                    Some(g4(v * r.powf(direction * power)))
+                }
+            }
         }
     }
 }
@@ -63,6 +81,31 @@ mod tests {
 
     fn row(key: &str) -> &'static Field {
         crate::model::params::field(key).unwrap()
+    }
+
+    /// The contact tolerance spans decades: a nudge multiplies it.
+    #[test]
+    fn a_tolerance_is_nudged_by_factors() {
+        let tol = row("contact_tolerance");
+        assert_eq!(
+            nudged_text(&SET1, tol, 1.0, StepSize::Normal).unwrap(),
+            "1e-10"
+        );
+        assert_eq!(
+            nudged_text(&SET1, tol, -1.0, StepSize::Coarse).unwrap(),
+            "1e-13"
+        );
+        assert_eq!(
+            nudged_text(&SET1, tol, -1.0, StepSize::Fine).unwrap(),
+            "7.943e-12"
+        );
+        let mut p = SET1;
+        p.set(
+            "contact_tolerance",
+            &nudged_text(&SET1, tol, -1.0, StepSize::Normal).unwrap(),
+        )
+        .unwrap();
+        assert_eq!(p.contact_tolerance, 1e-12);
     }
 
     #[test]

@@ -53,8 +53,28 @@ pub struct Field {
     pub meaning: &'static str,
     pub group: Group,
     pub kind: Kind,
-    /// One nudge in the explorer (←/→); Shift moves ×10, the fine step is ÷10.
-    pub step: f64,
+    /// One nudge in the explorer (←/→).
+    pub step: Step,
+}
+
+/// How far one nudge moves a key in the explorer.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Step {
+    /// By this much; Shift moves ten times as far, the fine step a tenth.
+    Add(f64),
+    /// By this factor, for a key whose range spans decades; Shift by its
+    /// square, the fine step by its tenth root.
+    Times(f64),
+}
+
+impl std::fmt::Display for Step {
+    /// As the explorer states it: `0.05`, `×10`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Step::Add(d) => write!(f, "{}", echo::g4(*d)),
+            Step::Times(r) => write!(f, "×{}", echo::g4(*r)),
+        }
+    }
 }
 
 /// Parses a float the way a user writes it: `0.2`, `1e-3`, `inf`, `infinity`.

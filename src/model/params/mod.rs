@@ -20,7 +20,7 @@ pub mod echo;
 pub mod field;
 pub mod table;
 
-pub use field::{Field, Group, Kind};
+pub use field::{Field, Group, Kind, Step};
 pub use table::{FIELDS, field, is_pi, keys};
 
 /// The ten Π-groups (SPEC §1) and the run settings.

@@ -10,7 +10,7 @@
 
 use std::f64::consts::TAU;
 
-use super::field::{Field, Group, Kind};
+use super::field::{Field, Group, Kind, Step};
 use crate::model::excitation::{Excitation, NAMES as EXCITATIONS};
 use crate::model::{ContactModel, Method};
 
@@ -45,7 +45,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.mass_ratio,
             set: |p, v| p.mass_ratio = v,
         },
-        step: 0.05,
+        step: Step::Add(0.05),
     },
     // Π_ω: 0 is a structure without a spring, a free mass (the isolated
     // two-mass impact tests use it); towards 0 it drifts with the ground
@@ -65,7 +65,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.omega1,
             set: |p, v| p.omega1 = v,
         },
-        step: 0.05,
+        step: Step::Add(0.05),
     },
     // Π_ω2: as Π_ω1.
     Field {
@@ -81,7 +81,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.omega2,
             set: |p, v| p.omega2 = v,
         },
-        step: 0.05,
+        step: Step::Add(0.05),
     },
     // Π_uy: below 1e-4 the structure yields at once and the value no longer
     // matters (Π_u1 = 5.081 at 1e-4, 5.082 at 1e-300); 1e6 is above every
@@ -100,7 +100,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.yield1,
             set: |p, v| p.yield1 = v,
         },
-        step: 0.05,
+        step: Step::Add(0.05),
     },
     // Π_uy2: as Π_uy1.
     Field {
@@ -116,7 +116,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.yield2,
             set: |p, v| p.yield2 = v,
         },
-        step: 0.05,
+        step: Step::Add(0.05),
     },
     // Π_ξ: a viscous damping ratio; at ξ ≥ 1 a structure no longer
     // oscillates (overdamped: set 1 has no impact at ξ = 2), which no
@@ -134,7 +134,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.damping,
             set: |p, v| p.damping = v,
         },
-        step: 0.01,
+        step: Step::Add(0.01),
     },
     // Π_α: post-yield over elastic stiffness, from perfectly plastic (0) to
     // linear (1); both ends run cleanly in the stress test.
@@ -151,7 +151,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.alpha,
             set: |p, v| p.alpha = v,
         },
-        step: 0.01,
+        step: Step::Add(0.01),
     },
     // Π_ωcon: a contact element slower than the excitation is no impact (at
     // 1 the improved Kelvin element already pulls, f_p = −0.089). Above,
@@ -174,7 +174,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.contact_omega,
             set: |p, v| p.contact_omega = v,
         },
-        step: 5.0,
+        step: Step::Add(5.0),
     },
     // Π_e: the improved Kelvin damping 3(1−e)/(2e) grows without bound as
     // e → 0. At 1e-3 Π_u1 = 3.094 is within 1.3 % of the Kelvin element's
@@ -193,7 +193,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.restitution,
             set: |p, v| p.restitution = v,
         },
-        step: 0.05,
+        step: Step::Add(0.05),
     },
     // Π_d: 0 is touching at rest; above 1e6 (as for Π_uy) the gap is never
     // closed by an allowed run: write inf for no pounding.
@@ -210,7 +210,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.gap,
             set: |p, v| p.gap = v,
         },
-        step: 0.05,
+        step: Step::Add(0.05),
     },
     // Π_K = β√l_e/(m2 ω_p²) of the Hertz-type laws (SPEC §10); 0 derives it
     // from Π_ωcon so that a contact at v₀ = 1 lasts π/Π_ωcon, as the linear
@@ -229,7 +229,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.hertz_stiffness,
             set: |p, v| p.hertz_stiffness = v,
         },
-        step: 100.0,
+        step: Step::Add(100.0),
     },
     // The contact element of SPEC §4 and §10.
     Field {
@@ -250,7 +250,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.model.name(),
             set: |p, t| t.parse::<ContactModel>().map(|m| p.model = m).is_ok(),
         },
-        step: 1.0,
+        step: Step::Add(1.0),
     },
     // The ground motion of SPEC §9; `record:PATH` reads a PEER `.AT2` file.
     Field {
@@ -264,7 +264,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.excitation.name(),
             set: |p, t| Excitation::parse(t).map(|e| p.excitation = e).is_ok(),
         },
-        step: 1.0,
+        step: Step::Add(1.0),
     },
     // a_p of a record (m/s²): 0 is its peak |a|; 1e3 m/s² is 100 g.
     Field {
@@ -280,7 +280,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.record_amplitude,
             set: |p, v| p.record_amplitude = v,
         },
-        step: 0.5,
+        step: Step::Add(0.5),
     },
     // ω_p of a record (rad/s): 0 is its dominant frequency; 1e3 rad/s is
     // 160 Hz, above any structural band.
@@ -297,7 +297,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.record_omega,
             set: |p, v| p.record_omega = v,
         },
-        step: 0.5,
+        step: Step::Add(0.5),
     },
     // The time integrator: Newmark-β at Δτ, or event-driven exact.
     Field {
@@ -311,7 +311,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.method.name(),
             set: |p, t| t.parse::<Method>().map(|m| p.method = m).is_ok(),
         },
-        step: 1.0,
+        step: Step::Add(1.0),
     },
     // The exact method's contact tolerance (Newmark ignores it). Below 1e-14
     // the error is round-off and only the cost grows (set 2, improved
@@ -330,7 +330,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.contact_tolerance,
             set: |p, v| p.contact_tolerance = v,
         },
-        step: 1e-12,
+        step: Step::Times(10.0),
     },
     // Duration: 1e5 cycles is 6.3e8 steps at Δτ = 0.001, close to the
     // 1e9-step cap on one run.
@@ -346,7 +346,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.cycles,
             set: |p, n| p.cycles = n,
         },
-        step: 1.0,
+        step: Step::Add(1.0),
     },
     // Δτ: at most 20 steps per excitation period ([`DT_MAX`]; the structural
     // periods are checked with the frequencies). At 1e-6 a cycle is 6.3e6
@@ -365,7 +365,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.dt,
             set: |p, v| p.dt = v,
         },
-        step: 0.0005,
+        step: Step::Add(0.0005),
     },
     // v₀ floor of the improved Kelvin element: above 0.1 it changes real
     // impacts (set 1's approach velocities are about 1: Π_u1 moves 1.2 % at a
@@ -385,7 +385,7 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.min_impact_velocity,
             set: |p, v| p.min_impact_velocity = v,
         },
-        step: 1e-4,
+        step: Step::Add(1e-4),
     },
 ];
 

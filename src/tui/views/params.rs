@@ -173,7 +173,7 @@ pub fn render_info(app: &App, frame: &mut Frame, area: Rect) {
             f.symbol,
             f.meaning,
             f.range(),
-            echo::g4(f.step)
+            f.step
         )));
         lines.push(Line::from(format!("μ = Π_ω2/Π_ω1 = {:.4}", p.mu())));
     }
