@@ -314,11 +314,8 @@ mod tests {
                 degree: 20,
                 ..Default::default()
             };
-            let mut factorial = 1.0;
-            for k in 0..=20 {
-                e.c[k] = -(phase + k as f64 * std::f64::consts::FRAC_PI_2).sin() / factorial;
-                factorial *= (k + 1) as f64;
-            }
+            crate::model::Excitation::Sine.taylor(phase, &mut e.c);
+            e = e.scaled(-1.0);
             let root = std::f64::consts::PI - phase;
             let t = first_crossing(&e, 0.0, 1.5).unwrap();
             assert!(

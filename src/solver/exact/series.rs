@@ -157,8 +157,8 @@ impl Series {
         if k == n {
             let a = ORDER[k] * self.c[k];
             d.c[k - 1] = a;
-            rate_swing[0] += a.abs() * powers[0];
-            swing[0] += self.c[k].abs() * powers[1];
+            rate_swing[0] = madd(a.abs(), powers[0], rate_swing[0]);
+            swing[0] = madd(self.c[k].abs(), powers[1], swing[0]);
         }
         (swing[0] + swing[1], rate_swing[0] + rate_swing[1])
     }
