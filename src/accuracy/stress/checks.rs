@@ -80,11 +80,7 @@ pub fn check(case: &Case) -> Outcome {
     let mut failures = invariants(case, &r);
     // The same case with the exact method: its own invariants, then agreement.
     let start = Instant::now();
-    let options = ExactOptions {
-        contact_tolerance: p.contact_tolerance,
-        ..ExactOptions::from(&case.options)
-    };
-    let x = exact::simulate(p, &options, &mut ());
+    let x = exact::simulate(p, &ExactOptions::matching(p, &case.options), &mut ());
     let exact_ms = start.elapsed().as_secs_f64() * 1e3;
     let exact_case = Case {
         name: case.name.clone(),

@@ -131,12 +131,16 @@ impl Default for ExactOptions {
     }
 }
 
-impl From<&SolverOptions> for ExactOptions {
-    fn from(o: &SolverOptions) -> Self {
+impl ExactOptions {
+    /// The exact method's options for a run of `p` that Newmark makes with
+    /// `o`: the same ground motion and initial state, and the set's
+    /// contact tolerance.
+    pub fn matching(p: &Params, o: &SolverOptions) -> Self {
         ExactOptions {
             excitation: o.excitation,
             initial_displacement: o.initial_displacement,
             initial_velocity: o.initial_velocity,
+            contact_tolerance: p.contact_tolerance,
             ..ExactOptions::default()
         }
     }
@@ -200,8 +204,9 @@ struct Run<'a> {
     long_quiet_from: f64,
     /// Rotations since the phasor was last taken from sin_cos.
     turns: u32,
-    /// The contact recurrence's constants, from the first contact on.
-    recurrence: Option<Box<ContactRecurrence>>,
+    /// The contact recurrence's constants, made at the first analytic
+    /// contact segment (a run without one never needs them).
+    recurrence: std::cell::OnceCell<Box<ContactRecurrence>>,
     /// Next step of a Hertz-type contact phase (0: not yet chosen).
     rk_step: std::cell::Cell<f64>,
     result: RunResult,
@@ -257,7 +262,7 @@ impl<'a> Run<'a> {
             phasor_tau: f64::NAN,
             long_quiet_from: 0.0,
             turns: 0,
-            recurrence: None,
+            recurrence: std::cell::OnceCell::new(),
             rk_step: std::cell::Cell::new(0.0),
             result: RunResult {
                 completed: true,
@@ -522,8 +527,7 @@ impl<'a> Run<'a> {
         }
         let recurrence = self
             .recurrence
-            .as_ref()
-            .expect("an analytic contact has its recurrence");
+            .get_or_init(|| Box::new(ContactRecurrence::new(&self.structures)));
         recurrence.series(
             &self.structures,
             self.branch,
@@ -786,9 +790,6 @@ impl<'a> Run<'a> {
         let rate = self.v[0] - self.v[1];
         let law = ContactConstants::of(p).law(rate);
         self.contact = Some(law);
-        if law.is_analytic() && self.recurrence.is_none() {
-            self.recurrence = Some(Box::new(ContactRecurrence::new(&self.structures)));
-        }
         self.rk_step.set(0.0);
         let delta = self.x[0] - self.x[1] - p.gap;
         let extremes = self.options.extremes;
