@@ -6,12 +6,15 @@ pub mod excitation;
 pub mod family;
 pub mod grid;
 pub mod hysteresis;
+pub mod intensity;
 pub mod method;
 pub mod params;
 pub mod physical;
 pub mod preset;
 pub mod record;
+pub mod simulated;
 pub mod spectrum_spec;
+pub mod suite;
 pub mod synthetic;
 
 pub use contact::{ContactLaw, ContactModel};
