@@ -19,6 +19,7 @@ pub mod map;
 pub mod output;
 pub mod params;
 pub mod progress;
+pub mod records;
 pub mod run;
 pub mod similarity;
 pub mod spectrum;
@@ -109,6 +110,8 @@ pub enum Command {
     Stress(stress::StressArgs),
     /// The paper's figures and the scenes as SVG or PNG files.
     Figure(figure::FigureArgs),
+    /// Ground-motion records for suites: `records synth` writes simulated ones (SPEC §12).
+    Records(records::RecordsArgs),
 }
 
 /// Parses the command line and runs the chosen command.
@@ -142,6 +145,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
         Some(Command::Bench(args)) => bench::execute(&args),
         Some(Command::Stress(args)) => stress::execute(&args),
         Some(Command::Figure(args)) => figure::execute(&args),
+        Some(Command::Records(args)) => records::execute(&args),
         None => tui::execute(&cli.tui),
     };
     crate::output::temp::remove_live();

@@ -272,24 +272,30 @@ impl Interval<'_> {
     /// the bracket by bisection.
     fn velocity_root(&self, mut left: f64, mut right: f64, v_left: f64) -> f64 {
         let rising = v_left < 0.0;
+        let tolerance = 4.0 * f64::EPSILON * right;
         let mut tau = 0.5 * (left + right);
         for _ in 0..100 {
             let (v, acc) = self.rates(tau);
+            if v == 0.0 {
+                return tau;
+            }
             if (v < 0.0) == rising {
                 left = tau;
             } else {
                 right = tau;
             }
             let newton = tau - v / acc;
-            let next = if newton > left && newton < right {
+            if (newton - tau).abs() <= tolerance && newton >= left && newton <= right {
+                return newton;
+            }
+            tau = if newton > left && newton < right {
                 newton
             } else {
                 0.5 * (left + right)
             };
-            if (next - tau).abs() <= 4.0 * f64::EPSILON * right.max(f64::MIN_POSITIVE) || v == 0.0 {
-                return next;
+            if right - left <= tolerance {
+                return tau;
             }
-            tau = next;
         }
         tau
     }
@@ -324,5 +330,24 @@ mod tests {
         let want = 2.0 * (1.0 + (-xi * PI / (1.0 - xi * xi).sqrt()).exp());
         let got = spectral_acceleration(&a, 0.01, 0.77, xi);
         assert!((got / want - 1.0).abs() < 1e-12, "{got} vs {want}");
+    }
+
+    #[test]
+    fn no_peak_inside_an_interval_is_missed() {
+        // Every interval's located peak is at least the largest |u| of a
+        // scan of 1000 points across it (with the end values).
+        let oscillator = Oscillator::new(0.5, SA_DAMPING, 0.01);
+        let a: Vec<f64> = (0..400).map(|k| 3.0 * (k as f64 * 0.37).sin()).collect();
+        let (mut u, mut v) = (0.0, 0.0);
+        for pair in a.windows(2) {
+            let interval = oscillator.interval(u, v, pair[0], pair[1]);
+            let (u1, v1) = interval.end();
+            let located = interval.inner_peak(v, v1).max(u.abs()).max(u1.abs());
+            let scanned = (0..=1000)
+                .map(|i| interval.displacement(i as f64 * 1e-5).abs())
+                .fold(0.0f64, f64::max);
+            assert!(scanned <= located * (1.0 + 1e-13), "{scanned} > {located}");
+            (u, v) = (u1, v1);
+        }
     }
 }

@@ -218,7 +218,8 @@ impl Simulation {
         let mut state = [0.0f64; 4];
         let mut out = Vec::with_capacity(n);
         for k in 0..n {
-            out.push(output(&state) * self.envelope(k as f64 * self.dt));
+            // + 0.0: the first sample, at rest, is +0 rather than −0.
+            out.push(output(&state) * self.envelope(k as f64 * self.dt) + 0.0);
             let w: f64 = StandardNormal.sample(&mut rng);
             for _ in 0..substeps {
                 state = rk4(&state, h, |s| rate(s, w));
