@@ -5,8 +5,11 @@
 //! w_k (`rand_distr::StandardNormal`) from `ChaCha20Rng::seed_from_u64(S)`
 //! set to stream j, so record j is the same whatever the number of records
 //! asked for (`synthetic:20@7` is a prefix of `synthetic:44@7`) and on any
-//! machine (ChaCha is defined bit for bit; the normal deviates need `exp`
-//! only in the ziggurat's rare tail draws). w_k is held over [t_k, t_{k+1}).
+//! machine: ChaCha is defined bit for bit, and the ziggurat sampler uses
+//! `exp`/`ln` only in its rare wedge and tail draws, where a last-bit
+//! difference between platforms' maths libraries would change a draw only
+//! if a uniform fell within one ulp of the density. w_k is held over
+//! [t_k, t_{k+1}).
 //!
 //! **Filter.** Kanai–Tajimi (ground y driven by the noise; the output is
 //! its absolute acceleration):
