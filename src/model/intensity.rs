@@ -12,7 +12,7 @@
 //! under the record's piecewise-linear a(t), over the record only (no free
 //! tail). It is computed exactly: on each sample interval the load is linear
 //! in time, so the response is known in closed form (the Nigam–Jennings
-//! recurrence, [`Interval`]), and the maximum of |u| is located where u̇
+//! recurrence, `Interval` below), and the maximum of |u| is located where u̇
 //! changes sign inside an interval rather than read at the samples.
 
 use std::f64::consts::PI;

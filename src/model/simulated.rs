@@ -41,7 +41,7 @@
 //!
 //! **Memory and files agree bit for bit.** The `.AT2` text writes each value
 //! in g in its shortest round-trip form (Rust's `{}`), so reading it back
-//! gives the same f64; [`record`] builds the record in memory through the
+//! gives the same f64; [`Simulation::record`] builds the record in memory through the
 //! same g → m/s² product as the `.AT2` reader.
 
 use std::fmt;

@@ -1,4 +1,5 @@
-//! K-NET and KiK-net ASCII records (NIED): one component of one station.
+//! K-NET and KiK-net ASCII records (NIED; SPEC §9): one component of one
+//! station.
 //!
 //! Seventeen header lines, each a key in the first 18 columns and its value
 //! after them:

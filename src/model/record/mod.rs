@@ -332,4 +332,20 @@ mod tests {
         let w = dominant_omega(&a, 0.01);
         assert!((w - 4.0 * std::f64::consts::PI).abs() < 1e-9, "{w}");
     }
+
+    #[test]
+    fn an_at_sign_in_a_file_name_is_not_a_unit() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("quake@site.csv");
+        std::fs::write(&path, "0 0.5\n0.01 -1\n").unwrap();
+        let path = path.to_str().unwrap();
+        let r = read(path).unwrap();
+        assert_eq!(r.acceleration, [0.5 * STANDARD_GRAVITY, -STANDARD_GRAVITY]);
+        assert_eq!(
+            read(&format!("{path}@m/s2")).unwrap().acceleration,
+            [0.5, -1.0]
+        );
+        let e = read(&format!("{path}@furlongs")).unwrap_err().to_string();
+        assert!(e.contains("unknown unit `furlongs`"), "{e}");
+    }
 }
