@@ -1,7 +1,7 @@
 //! The two summary lines: per run the scene shows, Π_u and Π_v of both
-//! structures (SPEC §6), impacts, the force range, the accuracy and the
-//! compute time, parts left out from the end when the line is narrow; a
-//! run being recomputed says so. With the cursor shown, they read out the
+//! structures (SPEC §6), impacts, the force range, the accuracy, the
+//! compute time, then the demands of SPEC §6 (A, μ, r, E_h), parts left out
+//! from the end when the line is narrow; a run being recomputed says so. With the cursor shown, they read out the
 //! active run at the cursor instead.
 
 use ratatui::Frame;
@@ -17,7 +17,7 @@ use crate::tui::scene::Scene;
 use crate::tui::worker::{RunOutput, Slot};
 
 /// Joins `parts` with spaces, as many as fit in `width`.
-fn fit(parts: &[String], width: usize) -> String {
+pub fn fit(parts: &[String], width: usize) -> String {
     let mut out = String::new();
     for p in parts {
         let extra = p.chars().count() + usize::from(!out.is_empty());
@@ -71,6 +71,23 @@ pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize
         accuracy,
         format!("res {:.0e}", r.energy.residual),
         format!("{:.1} ms", run.elapsed_ms),
+        // The demands of SPEC §6 where the line is wide enough.
+        format!(
+            "A {}/{}",
+            num(r.left.peak_absolute_acceleration * u.acceleration),
+            num(r.right.peak_absolute_acceleration * u.acceleration)
+        ),
+        format!("μ {}/{}", num(r.left.ductility), num(r.right.ductility)),
+        format!(
+            "r {}/{}",
+            num(r.left.residual_displacement * u.length),
+            num(r.right.residual_displacement * u.length)
+        ),
+        format!(
+            "E_h {}/{}",
+            num(r.left.hysteretic_energy * u.energy),
+            num(r.right.hysteretic_energy * u.energy)
+        ),
     ];
     fit(&parts, width)
 }
