@@ -159,7 +159,7 @@ fn energy(app: &App, r: &RunResult, u: &Units, frame: &mut Frame, area: Rect) {
         )));
     }
     let (left, right) = (&r.left, &r.right);
-    let pair = |name: &str, a: f64, b: f64| format!("{name} {}/{}", num(a), num(b));
+    let pair = super::summary::pair;
     let demands = [
         pair(
             "A",

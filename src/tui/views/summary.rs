@@ -12,6 +12,7 @@ use ratatui::widgets::Paragraph;
 use super::history::{FP, FS1, FS2, V1, V2, X1, X2};
 use super::impacts::num;
 use super::units::Units;
+use crate::solver::StructurePeaks;
 use crate::tui::app::App;
 use crate::tui::scene::Scene;
 use crate::tui::worker::{RunOutput, Slot};
@@ -32,6 +33,11 @@ pub fn fit(parts: &[String], width: usize) -> String {
     out
 }
 
+/// `name left/right`, each number in at most 6 characters.
+pub fn pair(name: &str, left: f64, right: f64) -> String {
+    format!("{name} {}/{}", num(left), num(right))
+}
+
 /// One run in one line of at most `width` characters.
 pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize) -> String {
     let r = &run.result;
@@ -50,18 +56,14 @@ pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize
     } else {
         ("Π_u", "Π_v")
     };
+    // One quantity of both structures, scaled to the view's units.
+    let both = |name: &str, of: fn(&StructurePeaks) -> f64, scale: f64| {
+        pair(name, of(&r.left) * scale, of(&r.right) * scale)
+    };
     let parts = [
         label,
-        format!(
-            "{peak_u} {}/{}",
-            num(r.left.peak_displacement * u.length),
-            num(r.right.peak_displacement * u.length)
-        ),
-        format!(
-            "{peak_v} {}/{}",
-            num(r.left.peak_velocity * u.velocity),
-            num(r.right.peak_velocity * u.velocity)
-        ),
+        both(peak_u, |s| s.peak_displacement, u.length),
+        both(peak_v, |s| s.peak_velocity, u.velocity),
         format!("impacts {}", r.impacts.len()),
         format!(
             "f_p {}..{}",
@@ -72,22 +74,10 @@ pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize
         format!("res {:.0e}", r.energy.residual),
         format!("{:.1} ms", run.elapsed_ms),
         // The demands of SPEC §6 where the line is wide enough.
-        format!(
-            "A {}/{}",
-            num(r.left.peak_absolute_acceleration * u.acceleration),
-            num(r.right.peak_absolute_acceleration * u.acceleration)
-        ),
-        format!("μ {}/{}", num(r.left.ductility), num(r.right.ductility)),
-        format!(
-            "r {}/{}",
-            num(r.left.residual_displacement * u.length),
-            num(r.right.residual_displacement * u.length)
-        ),
-        format!(
-            "E_h {}/{}",
-            num(r.left.hysteretic_energy * u.energy),
-            num(r.right.hysteretic_energy * u.energy)
-        ),
+        both("A", |s| s.peak_absolute_acceleration, u.acceleration),
+        both("μ", |s| s.ductility, 1.0),
+        both("r", |s| s.residual_displacement, u.length),
+        both("E_h", |s| s.hysteretic_energy, u.energy),
     ];
     fit(&parts, width)
 }
