@@ -22,6 +22,7 @@ fn runs(c: &mut Criterion) {
             });
             let sweep = ExactOptions {
                 energy: false,
+                absolute_acceleration: false,
                 extremes: ContactExtremes::None,
                 ..ExactOptions::default()
             };

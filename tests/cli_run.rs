@@ -233,3 +233,73 @@ fn readme_lists_every_key_of_the_table() {
         rows.join("\n")
     );
 }
+
+/// The demands of SPEC §6 per structure in JSON (ductility ∞ written "inf",
+/// JSON staying valid), in CSV's columns and in the table.
+#[test]
+fn json_csv_and_table_carry_the_demands() {
+    // Set 1 with an elastic right structure.
+    let case = ["run", "--preset", "set1", "--set", "yield2=inf"];
+    let with = |format: &'static str| [&case[..], &["--format", format]].concat();
+    let v = json(&with("json"));
+    let left = &v["left"];
+    for key in [
+        "peak_absolute_acceleration",
+        "ductility",
+        "residual_displacement",
+        "hysteretic_energy",
+    ] {
+        assert!(left[key].is_number(), "left.{key}: {}", left[key]);
+    }
+    let (u, mu) = (
+        left["peak_displacement"].as_f64().unwrap(),
+        left["ductility"].as_f64().unwrap(),
+    );
+    assert!((mu - u / 0.9).abs() < 1e-12 * mu, "{mu} vs {u}/0.9");
+    assert!(left["peak_absolute_acceleration"].as_f64().unwrap() > 30.0);
+    assert!(left["hysteretic_energy"].as_f64().unwrap() > 1.0);
+    assert!(left["residual_displacement"].as_f64().unwrap() < 0.0);
+    let right = &v["right"];
+    assert_eq!(right["ductility"], "inf");
+    assert_eq!(right["residual_displacement"], 0.0);
+    assert!(right["hysteretic_energy"].as_f64().unwrap().abs() < 1e-9);
+    let springs = v["energy"]["spring_by_structure"].as_array().unwrap();
+    let sum: f64 = springs.iter().map(|s| s.as_f64().unwrap()).sum();
+    let spring = v["energy"]["spring"].as_f64().unwrap();
+    assert!((sum - spring).abs() < 1e-12 * spring.abs());
+
+    let text = stdout(&succeeds(&with("csv")));
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let cell = |name: &str| row[header.iter().position(|h| *h == name).unwrap()];
+    assert_eq!(cell("right_ductility"), "inf");
+    assert_eq!(cell("right_residual_displacement"), "0");
+    assert_eq!(
+        cell("left_ductility").parse::<f64>().unwrap(),
+        left["ductility"].as_f64().unwrap()
+    );
+    for side in ["left", "right"] {
+        assert!(
+            cell(&format!("{side}_peak_absolute_acceleration"))
+                .parse::<f64>()
+                .is_ok()
+        );
+        assert!(
+            cell(&format!("{side}_hysteretic_energy"))
+                .parse::<f64>()
+                .is_ok()
+        );
+    }
+
+    let table = stdout(&succeeds(&[
+        "run",
+        "--preset",
+        "set1",
+        "--set",
+        "yield2=inf",
+    ]));
+    assert!(table.contains("   A ") && table.contains("E_h"), "{table}");
+    let right_line = table.lines().find(|l| l.starts_with("right (2)")).unwrap();
+    assert!(right_line.contains(" inf "), "{right_line}");
+}

@@ -52,6 +52,7 @@ impl Method {
                 p,
                 &ExactOptions {
                     energy: false,
+                    absolute_acceleration: false,
                     contact_tolerance: tol,
                     extremes: ContactExtremes::None,
                     ..ExactOptions::default()

@@ -201,20 +201,89 @@ impl<'a> RunReport<'a> {
     }
 }
 
+/// The CSV columns of each structure's peaks and demands (SPEC §6), in the
+/// order of [`structure_cells`].
+const LEFT_COLUMNS: [&str; 7] = [
+    "left_peak_displacement",
+    "left_peak_velocity",
+    "left_peak_absolute_acceleration",
+    "left_ductility",
+    "left_residual_displacement",
+    "left_hysteretic_energy",
+    "left_yielded",
+];
+const RIGHT_COLUMNS: [&str; 7] = [
+    "right_peak_displacement",
+    "right_peak_velocity",
+    "right_peak_absolute_acceleration",
+    "right_ductility",
+    "right_residual_displacement",
+    "right_hysteretic_energy",
+    "right_yielded",
+];
+
+/// One structure's cells under [`LEFT_COLUMNS`] or [`RIGHT_COLUMNS`].
+fn structure_cells(p: &StructurePeaks) -> [String; 7] {
+    [
+        num(p.peak_displacement),
+        num(p.peak_velocity),
+        num(p.peak_absolute_acceleration),
+        num(p.ductility),
+        num(p.residual_displacement),
+        num(p.hysteretic_energy),
+        p.yielded.to_string(),
+    ]
+}
+
+impl RunReport<'_> {
+    /// The table's lines of each structure's peaks and demands (SPEC §6), in
+    /// Π units: Π_u, Π_v, A = max |ẍ + g| (in a_p), μ = Π_u/Π_uy, r the
+    /// residual displacement, E_h the hysteretic energy.
+    fn structure_table(&self, s: &mut String) {
+        let _ = writeln!(
+            s,
+            "{:<10} {:>10} {:>10} {:>10} {:>8} {:>10} {:>10}  yielded",
+            "structure", "Π_u", "Π_v", "A", "μ", "r", "E_h"
+        );
+        for (label, peaks) in [("left (1)", &self.left), ("right (2)", &self.right)] {
+            let _ = writeln!(
+                s,
+                "{label:<10} {:>10.6} {:>10.6} {:>10.4} {:>8} {:>10.6} {:>10.4}  {}",
+                peaks.peak_displacement,
+                peaks.peak_velocity,
+                peaks.peak_absolute_acceleration,
+                fixed(peaks.ductility, 3),
+                peaks.residual_displacement,
+                peaks.hysteretic_energy,
+                if peaks.yielded { "yes" } else { "no" }
+            );
+        }
+        let _ = writeln!(
+            s,
+            "A = max |ẍ + g| (in a_p), μ = Π_u/Π_uy, r = residual displacement, E_h = hysteretic energy (SPEC §6)"
+        );
+    }
+}
+
+/// `v` to `digits` decimals, or `inf`/`nan` as [`Num`] writes them.
+fn fixed(v: f64, digits: usize) -> String {
+    if v.is_finite() {
+        format!("{v:.digits$}")
+    } else {
+        Num(v).to_string()
+    }
+}
+
 impl Report for RunReport<'_> {
     /// The preset and every parameter (with the contact law, the ground
     /// motion and the method), then the results.
     fn csv_header(&self) -> Vec<&'static str> {
         let mut h = vec!["preset"];
         h.extend(param_columns());
+        h.extend(["excitation_note"]);
+        h.extend(LEFT_COLUMNS);
+        h.extend(RIGHT_COLUMNS);
         h.extend([
-            "excitation_note",
-            "left_peak_displacement",
-            "left_peak_velocity",
-            "left_yielded",
-            "right_peak_displacement",
-            "right_peak_velocity",
-            "right_yielded",
             "impacts",
             "max_force",
             "min_force",
@@ -236,14 +305,10 @@ impl Report for RunReport<'_> {
             method: self.case.method,
             ..*self.case.params
         }));
+        row.extend([self.case.excitation_note.clone().unwrap_or_default()]);
+        row.extend(structure_cells(l));
+        row.extend(structure_cells(r));
         row.extend([
-            self.case.excitation_note.clone().unwrap_or_default(),
-            num(l.peak_displacement),
-            num(l.peak_velocity),
-            l.yielded.to_string(),
-            num(r.peak_displacement),
-            num(r.peak_velocity),
-            r.yielded.to_string(),
             self.impacts.to_string(),
             num(self.max_force),
             num(self.min_force),
@@ -283,20 +348,7 @@ impl Report for RunReport<'_> {
         if let Some(note) = &case.excitation_note {
             let _ = writeln!(s, "{}: {note}", case.excitation);
         }
-        let _ = writeln!(
-            s,
-            "{:<12} {:>12} {:>12}  yielded",
-            "structure", "Π_u", "Π_v"
-        );
-        for (label, peaks) in [("left (1)", &self.left), ("right (2)", &self.right)] {
-            let _ = writeln!(
-                s,
-                "{label:<12} {:>12.6} {:>12.6}  {}",
-                peaks.peak_displacement,
-                peaks.peak_velocity,
-                if peaks.yielded { "yes" } else { "no" }
-            );
-        }
+        self.structure_table(&mut s);
         let tension = if self.min_force < 0.0 {
             " (tension)"
         } else {

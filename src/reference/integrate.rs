@@ -94,6 +94,15 @@ pub struct ReferenceResult {
     pub min_force: f64,
     /// The state at the end.
     pub final_state: [f64; 4],
+    /// z of each spring at the end (SPEC §3), for the residual displacement
+    /// (1 − Π_α)(x − z) of SPEC §6.
+    pub final_elastic_part: [f64; 2],
+    /// max |ẍ_i + g| of each structure (SPEC §6, demands) over the accepted
+    /// points (step ends, and both sides of every event, where f_p may jump),
+    /// and the τ at which each was reached: the true peak where it is reached
+    /// at such a point (a Kelvin onset), a lower bound by O(h²) otherwise.
+    pub peak_absolute_acceleration: [f64; 2],
+    pub peak_absolute_acceleration_at: [f64; 2],
     pub tau_end: f64,
     pub accepted_steps: usize,
     pub rejected_steps: usize,
@@ -223,6 +232,8 @@ impl<'a> Run<'a> {
                     self.y = short.y1;
                     self.track_point(&self.y.clone());
                     self.switch(event);
+                    // The other side of the event: f_p may have jumped.
+                    self.track_accelerations(&self.y.clone());
                     self.result.events += 1;
                     self.fresh = true;
                     f0 = self.rhs()(self.tau, &self.y);
@@ -240,6 +251,11 @@ impl<'a> Run<'a> {
         }
         self.result.tau_end = self.tau;
         self.result.final_state = self.y;
+        for i in 0..2 {
+            self.result.final_elastic_part[i] =
+                self.system
+                    .elastic_part(i, self.mode.springs[i], self.y[2 * i]);
+        }
     }
 
     /// The earliest active event whose function turned positive within the step.
@@ -306,6 +322,19 @@ impl<'a> Run<'a> {
             self.result.min_force = self.result.min_force.min(f);
         }
         self.track_peaks(y);
+        self.track_accelerations(y);
+    }
+
+    /// Raises each peak absolute acceleration to its value at state `y` and the current τ.
+    fn track_accelerations(&mut self, y: &Vector) {
+        let a = self.system.absolute_acceleration(&self.mode, y);
+        let r = &mut self.result;
+        for i in 0..2 {
+            if a[i].abs() > r.peak_absolute_acceleration[i] {
+                r.peak_absolute_acceleration[i] = a[i].abs();
+                r.peak_absolute_acceleration_at[i] = self.tau;
+            }
+        }
     }
 
     fn track_peaks(&mut self, y: &Vector) {

@@ -189,6 +189,20 @@ impl Structures {
         }
     }
 
+    /// The absolute accelerations (ẍ1 + g, ẍ2 + g) in a mode (SPEC §2, §6):
+    ///   Π_m (ẍ1 + g) = −2Π_ξΠ_mΠ_ω1 ẋ1 − f_s1 − f_p,
+    ///        ẍ2 + g  = −2Π_ξΠ_ω2 ẋ2 − f_s2 + f_p.
+    #[inline]
+    pub fn absolute_acceleration(&self, mode: &Mode, y: &Vector) -> [f64; 2] {
+        let fp = self.pounding_force(mode, y);
+        let fs1 = self.spring_force(0, mode.springs[0], y[0]);
+        let fs2 = self.spring_force(1, mode.springs[1], y[2]);
+        [
+            (-self.damping[0] * y[1] - fs1 - fp) / self.mass[0],
+            (-self.damping[1] * y[3] - fs2 + fp) / self.mass[1],
+        ]
+    }
+
     /// ẏ = (ẋ1, ẍ1, ẋ2, ẍ2) with (SPEC §2)
     ///   Π_m ẍ1 = −2Π_ξΠ_mΠ_ω1 ẋ1 − f_s1 − f_p − Π_m g(τ),
     ///       ẍ2 = −2Π_ξΠ_ω2 ẋ2 − f_s2 + f_p − g(τ).

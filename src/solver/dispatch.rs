@@ -47,7 +47,7 @@ pub fn run(p: &Params) -> RunResult {
 
 /// Runs `p` for a sweep, where only the peaks, the impacts and the
 /// `extremes` asked for are used: the exact method then skips its energy
-/// quadrature and the other extremes (Newmark's cost nothing extra and are kept).
+/// quadrature, the absolute accelerations and the other extremes (Newmark's cost nothing extra and are kept).
 pub fn run_for_sweep(p: &Params, extremes: ContactExtremes) -> RunResult {
     match p.method {
         Method::Newmark => simulate(p, &newmark_options(p), &mut ()),
@@ -55,6 +55,7 @@ pub fn run_for_sweep(p: &Params, extremes: ContactExtremes) -> RunResult {
             p,
             &ExactOptions {
                 energy: false,
+                absolute_acceleration: false,
                 extremes,
                 ..exact_options(p)
             },

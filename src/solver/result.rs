@@ -4,13 +4,85 @@ use serde::Serialize;
 
 use crate::model::Method;
 
-/// Peak response of one structure: Π_u = max |x|, Π_v = max |ẋ| (SPEC §6).
+/// Peak response of one structure: Π_u = max |x|, Π_v = max |ẋ| (SPEC §6),
+/// and the demands of SPEC §6 "Demands for performance studies".
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct StructurePeaks {
     pub peak_displacement: f64,
     pub peak_velocity: f64,
+    /// A_i = max over the run of |ẍ_i + g(τ)|, the floor's absolute
+    /// acceleration in a_p (SPEC §6, demands). By the equations of motion
+    /// (SPEC §2), Π_m(ẍ1 + g) = −(2Π_ξΠ_mΠ_ω1 ẋ1 + f_s1 + f_p) and
+    /// ẍ2 + g = −(2Π_ξΠ_ω2 ẋ2 + f_s2 − f_p): a function of the state and the
+    /// pounding force, so it does not jump where g does; it jumps where f_p
+    /// does (a Kelvin contact's onset and separation), and both one-sided
+    /// values count. NaN where a run did not locate it (an exact run with
+    /// `absolute_acceleration: false`, as sweeps make).
+    #[serde(serialize_with = "crate::output::report::float_or_inf")]
+    pub peak_absolute_acceleration: f64,
+    /// μ_i = Π_u,i / Π_uy,i (SPEC §6, demands); ∞ for an elastic structure
+    /// (Π_uy = ∞), written `inf`.
+    #[serde(serialize_with = "crate::output::report::float_or_inf")]
+    pub ductility: f64,
+    /// r_i = (1 − Π_α)(x_i − z_i) at τ_end (SPEC §6, demands, with SPEC §3's
+    /// split f_s = Π_α k x + (1 − Π_α) k z): the displacement at which the
+    /// spring force vanishes when unloaded elastically from the final state.
+    /// Signed; exactly 0 for an elastic structure.
+    pub residual_displacement: f64,
+    /// E_h,i = ∫ f_s,i ẋ_i dτ − f_s,i(τ_end)²/(2 k_i) (SPEC §6, demands),
+    /// k1 = Π_m Π_ω1², k2 = Π_ω2², per m2 a_p²/ω_p²: the spring's work less
+    /// the elastic energy it stores at the end. NaN where the run did not
+    /// integrate the work (an exact run with `energy: false`, as sweeps make).
+    #[serde(serialize_with = "crate::output::report::float_or_inf")]
+    pub hysteretic_energy: f64,
     /// Whether the spring left its elastic range at any time.
     pub yielded: bool,
+}
+
+/// One spring at the end of a run, from which the end-of-run demands of
+/// SPEC §6 follow ([`StructurePeaks::settle`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FinalSpring {
+    /// Elastic stiffness k (k1 = Π_m Π_ω1², k2 = Π_ω2²).
+    pub stiffness: f64,
+    /// Π_uy (∞: elastic).
+    pub yield_displacement: f64,
+    /// Π_α.
+    pub alpha: f64,
+    /// x at τ_end.
+    pub displacement: f64,
+    /// z at τ_end (SPEC §3).
+    pub elastic_part: f64,
+    /// f_s at τ_end.
+    pub force: f64,
+    /// ∫ f_s ẋ dτ over the run; NaN where it was not integrated.
+    pub work: f64,
+}
+
+impl StructurePeaks {
+    /// Sets the demands that follow from the peaks and the final state
+    /// (SPEC §6, demands): μ = Π_u/Π_uy (∞ when elastic), r = (1 − Π_α)(x − z)
+    /// (0 when elastic), E_h = ∫ f_s ẋ dτ − f_s²/(2k).
+    pub fn settle(&mut self, end: &FinalSpring) {
+        let elastic = !end.yield_displacement.is_finite();
+        self.ductility = if elastic {
+            f64::INFINITY
+        } else {
+            self.peak_displacement / end.yield_displacement
+        };
+        self.residual_displacement = if elastic {
+            0.0
+        } else {
+            (1.0 - end.alpha) * (end.displacement - end.elastic_part)
+        };
+        self.hysteretic_energy = end.work - end.force * end.force / (2.0 * end.stiffness);
+    }
+
+    /// Raises A to |a| for an absolute acceleration a = ẍ + g at an instant.
+    #[inline(always)]
+    pub fn raise_absolute_acceleration(&mut self, a: f64) {
+        self.peak_absolute_acceleration = self.peak_absolute_acceleration.max(a.abs());
+    }
 }
 
 /// One contact phase, from the located onset to the located separation.
@@ -66,6 +138,9 @@ pub struct EnergyBalance {
     pub damping: f64,
     /// E_spring = ∫ (f_s1 ẋ1 + f_s2 ẋ2) dτ (stored plus dissipated by yielding).
     pub spring: f64,
+    /// The spring work of each structure, [∫ f_s1 ẋ1 dτ, ∫ f_s2 ẋ2 dτ]; its
+    /// sum is `spring` (SPEC §6, demands: the hysteretic energy's first term).
+    pub spring_by_structure: [f64; 2],
     /// E_contact = ∫ f_p δ̇ dτ.
     pub contact: f64,
     /// max |E_in| over the run.

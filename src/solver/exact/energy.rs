@@ -43,7 +43,8 @@ const WEIGHTS: [f64; 8] = [
 pub struct Work {
     input: f64,
     damping: f64,
-    spring: f64,
+    /// ∫ f_s,i ẋ_i dτ of each structure.
+    spring: [f64; 2],
     contact: f64,
     max_input: f64,
 }
@@ -63,7 +64,7 @@ impl Work {
         if length <= 0.0 {
             return;
         }
-        let (mut input, mut damping, mut spring, mut contact) = (0.0, 0.0, 0.0, 0.0);
+        let (mut input, mut damping, mut spring, mut contact) = (0.0, 0.0, [0.0; 2], 0.0);
         for (node, weight) in NODES.iter().zip(WEIGHTS) {
             let t = node * length;
             let g = ground.value(t);
@@ -74,7 +75,7 @@ impl Work {
                 v[i] = vi;
                 input -= weight * s.mass * vi * g;
                 damping += weight * s.damping * vi * vi;
-                spring += weight * s.spring_force(branch[i], x) * vi;
+                spring[i] += weight * s.spring_force(branch[i], x) * vi;
             }
             if let Some(f) = segment.force() {
                 contact += weight * f.value(t) * (v[0] - v[1]);
@@ -82,7 +83,9 @@ impl Work {
         }
         self.input += input * length;
         self.damping += damping * length;
-        self.spring += spring * length;
+        for (total, w) in self.spring.iter_mut().zip(spring) {
+            *total += w * length;
+        }
         self.contact += contact * length;
         self.max_input = self.max_input.max(self.input.abs());
     }
@@ -91,13 +94,15 @@ impl Work {
     /// kinetic energy `initial` the run started with.
     pub fn balance(&self, mass: [f64; 2], v: [f64; 2], initial: f64) -> EnergyBalance {
         let kinetic = 0.5 * (mass[0] * v[0] * v[0] + mass[1] * v[1] * v[1]);
-        let imbalance = kinetic + self.damping + self.spring + self.contact - self.input - initial;
+        let spring = self.spring[0] + self.spring[1];
+        let imbalance = kinetic + self.damping + spring + self.contact - self.input - initial;
         let scale = self.max_input.max(initial);
         EnergyBalance {
             input: self.input,
             kinetic,
             damping: self.damping,
-            spring: self.spring,
+            spring,
+            spring_by_structure: self.spring,
             contact: self.contact,
             max_input: self.max_input,
             residual: if scale > 0.0 {

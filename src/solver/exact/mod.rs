@@ -32,6 +32,7 @@
 //! assert_eq!(r.impacts.len(), 9);
 //! ```
 
+pub mod acceleration;
 pub mod contact_rk;
 pub mod driver;
 pub mod dynamics;

@@ -45,6 +45,17 @@ impl Driver<'_> {
         }
         self.add_work(start, next);
         self.peaks_within(start, next);
+        if switch.is_some() {
+            // Where f_p jumps (a Kelvin onset or separation), ẍ + g has two
+            // one-sided values: the one before the switch counts here, the
+            // one after it in `track`.
+            for (i, peaks) in [&mut self.result.left, &mut self.result.right]
+                .into_iter()
+                .enumerate()
+            {
+                peaks.raise_absolute_acceleration(next.a[i] + next.g);
+            }
+        }
         self.state = state;
         if let Some((phase, _)) = switch {
             self.phase = phase;
@@ -111,7 +122,7 @@ impl Driver<'_> {
         e.input -= g * (sys.mass[0] * dx[0] + sys.mass[1] * dx[1]);
         for (i, dx) in dx.into_iter().enumerate() {
             e.damping += sys.damping[i] * 0.5 * (start.v[i] + next.v[i]) * dx;
-            e.spring += 0.5 * (start.fs[i] + next.fs[i]) * dx;
+            e.spring_by_structure[i] += 0.5 * (start.fs[i] + next.fs[i]) * dx;
         }
         e.contact += 0.5 * (start.fp + next.fp) * (dx[0] - dx[1]);
         e.max_input = e.max_input.max(e.input.abs());
@@ -147,7 +158,8 @@ impl Driver<'_> {
         }
     }
 
-    /// Peaks, yielding, force extremes and the open impact's maxima at the current state.
+    /// Peaks (Π_u, Π_v and the absolute acceleration A), yielding, force
+    /// extremes and the open impact's maxima at the current state.
     #[inline(always)]
     pub fn track(&mut self) {
         let Driver {
@@ -160,6 +172,8 @@ impl Driver<'_> {
         for (peaks, i) in [(&mut r.left, 0), (&mut r.right, 1)] {
             peaks.peak_displacement = peaks.peak_displacement.max(s.x[i].abs());
             peaks.peak_velocity = peaks.peak_velocity.max(s.v[i].abs());
+            // ẍ + g (SPEC §6, demands) at the accepted state.
+            peaks.raise_absolute_acceleration(s.a[i] + s.g);
             peaks.yielded |= s.plastic[i];
         }
         if let Some(i) = *open_impact {

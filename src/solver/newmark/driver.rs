@@ -10,7 +10,7 @@ use super::policy::{Policy, contact_law};
 use super::step::{Phase, State, System};
 use crate::model::Method;
 use crate::solver::observer::Observer;
-use crate::solver::result::{EnergyBalance, RunResult, Stop, StopReason};
+use crate::solver::result::{EnergyBalance, FinalSpring, RunResult, Stop, StopReason};
 
 /// How often (in accepted steps) the observer is asked whether to go on,
 /// the excitation phasor is re-evaluated from τ and the step cap is checked.
@@ -238,6 +238,7 @@ impl<'a> Driver<'a> {
         let m = self.system.mass;
         let e = &mut self.energy;
         e.kinetic = 0.5 * (m[0] * s.v[0] * s.v[0] + m[1] * s.v[1] * s.v[1]);
+        e.spring = e.spring_by_structure[0] + e.spring_by_structure[1];
         let imbalance = e.kinetic + e.damping + e.spring + e.contact - e.input;
         // A run with no input (free motion) is measured against its initial energy instead.
         let initial = 0.5
@@ -250,6 +251,19 @@ impl<'a> Driver<'a> {
             imbalance.abs()
         };
         self.result.energy = self.energy;
+        for i in 0..2 {
+            let spring = &self.system.springs[i];
+            let end = FinalSpring {
+                stiffness: spring.stiffness,
+                yield_displacement: spring.yield_displacement,
+                alpha: spring.alpha,
+                displacement: s.x[i],
+                elastic_part: s.springs[i].z,
+                force: s.fs[i],
+                work: self.energy.spring_by_structure[i],
+            };
+            self.result.structure_mut(i).settle(&end);
+        }
         self.result.tau_end = s.tau;
         self.result
     }

@@ -2,7 +2,8 @@
 //! (start, end, approach velocity v₀, separation velocity, achieved e, peak
 //! force, penetration), the one at the cursor selected (n/N walk them, z
 //! zooms the time scene onto it); under it the energy terms of SPEC §6 as
-//! bars against the input.
+//! bars against the input, and, where a line is left, the demands of SPEC §6
+//! per structure.
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -11,7 +12,7 @@ use ratatui::text::Line;
 use ratatui::widgets::{Cell, Paragraph, Row, Table, TableState};
 
 use super::units::Units;
-use crate::solver::EnergyBalance;
+use crate::solver::RunResult;
 use crate::tui::app::App;
 use crate::tui::worker::Slot;
 
@@ -42,7 +43,8 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     };
     let u = Units::active(app);
     let r = &run.result;
-    let energy_rows = 7u16.min(area.height / 2);
+    // The energy's title and six bars, and a line of demands where the height allows.
+    let energy_rows = 8u16.min(area.height / 2);
     let [table_area, energy_area] =
         Layout::vertical([Constraint::Min(3), Constraint::Length(energy_rows)]).areas(area);
     let t = if u.physical { "t s" } else { "τ" };
@@ -121,19 +123,25 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         .row_highlight_style(Style::new().add_modifier(Modifier::REVERSED));
     let mut state = TableState::default().with_selected(app.view.selected_impact(&r.impacts));
     frame.render_stateful_widget(table, table_area, &mut state);
-    energy(app, &r.energy, &u, frame, energy_area);
+    energy(app, r, &u, frame, energy_area);
 }
 
-/// The energy terms as bars scaled to the largest.
-fn energy(app: &App, e: &EnergyBalance, u: &Units, frame: &mut Frame, area: Rect) {
+/// The energy terms as bars scaled to the largest. The spring work E_spring
+/// is split into what the springs dissipated, the hysteretic energy E_h of
+/// both structures, and the elastic energy Σ f_s²/(2k) they still store at
+/// the end (SPEC §6, demands); then the demands per structure (left/right).
+fn energy(app: &App, r: &RunResult, u: &Units, frame: &mut Frame, area: Rect) {
     if area.height == 0 {
         return;
     }
+    let e = &r.energy;
+    let hysteretic = r.left.hysteretic_energy + r.right.hysteretic_energy;
     let terms = [
         ("input", e.input),
         ("kinetic", e.kinetic),
         ("damping", e.damping),
-        ("hysteretic", e.spring),
+        ("hysteretic", hysteretic),
+        ("elastic", e.spring - hysteretic),
         ("contact", e.contact),
     ];
     let biggest = terms.iter().fold(0f64, |m, t| m.max(t.1.abs())).max(1e-300);
@@ -150,5 +158,22 @@ fn energy(app: &App, e: &EnergyBalance, u: &Units, frame: &mut Frame, area: Rect
             num(v * u.energy)
         )));
     }
+    let (left, right) = (&r.left, &r.right);
+    let pair = super::summary::pair;
+    let demands = [
+        pair(
+            "A",
+            left.peak_absolute_acceleration * u.acceleration,
+            right.peak_absolute_acceleration * u.acceleration,
+        ),
+        pair("μ", left.ductility, right.ductility),
+        pair(
+            "r",
+            left.residual_displacement * u.length,
+            right.residual_displacement * u.length,
+        ),
+    ];
+    let demands = super::summary::fit(&demands, area.width as usize);
+    lines.push(Line::from(app.look.text(&demands)));
     frame.render_widget(Paragraph::new(lines), area);
 }

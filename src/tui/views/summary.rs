@@ -1,7 +1,7 @@
 //! The two summary lines: per run the scene shows, Π_u and Π_v of both
-//! structures (SPEC §6), impacts, the force range, the accuracy and the
-//! compute time, parts left out from the end when the line is narrow; a
-//! run being recomputed says so. With the cursor shown, they read out the
+//! structures (SPEC §6), impacts, the force range, the accuracy, the
+//! compute time, then the demands of SPEC §6 (A, μ, r, E_h), parts left out
+//! from the end when the line is narrow; a run being recomputed says so. With the cursor shown, they read out the
 //! active run at the cursor instead.
 
 use ratatui::Frame;
@@ -12,12 +12,13 @@ use ratatui::widgets::Paragraph;
 use super::history::{FP, FS1, FS2, V1, V2, X1, X2};
 use super::impacts::num;
 use super::units::Units;
+use crate::solver::StructurePeaks;
 use crate::tui::app::App;
 use crate::tui::scene::Scene;
 use crate::tui::worker::{RunOutput, Slot};
 
 /// Joins `parts` with spaces, as many as fit in `width`.
-fn fit(parts: &[String], width: usize) -> String {
+pub fn fit(parts: &[String], width: usize) -> String {
     let mut out = String::new();
     for p in parts {
         let extra = p.chars().count() + usize::from(!out.is_empty());
@@ -30,6 +31,11 @@ fn fit(parts: &[String], width: usize) -> String {
         out.push_str(p);
     }
     out
+}
+
+/// `name left/right`, each number in at most 6 characters.
+pub fn pair(name: &str, left: f64, right: f64) -> String {
+    format!("{name} {}/{}", num(left), num(right))
 }
 
 /// One run in one line of at most `width` characters.
@@ -50,18 +56,14 @@ pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize
     } else {
         ("Π_u", "Π_v")
     };
+    // One quantity of both structures, scaled to the view's units.
+    let both = |name: &str, of: fn(&StructurePeaks) -> f64, scale: f64| {
+        pair(name, of(&r.left) * scale, of(&r.right) * scale)
+    };
     let parts = [
         label,
-        format!(
-            "{peak_u} {}/{}",
-            num(r.left.peak_displacement * u.length),
-            num(r.right.peak_displacement * u.length)
-        ),
-        format!(
-            "{peak_v} {}/{}",
-            num(r.left.peak_velocity * u.velocity),
-            num(r.right.peak_velocity * u.velocity)
-        ),
+        both(peak_u, |s| s.peak_displacement, u.length),
+        both(peak_v, |s| s.peak_velocity, u.velocity),
         format!("impacts {}", r.impacts.len()),
         format!(
             "f_p {}..{}",
@@ -71,6 +73,11 @@ pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize
         accuracy,
         format!("res {:.0e}", r.energy.residual),
         format!("{:.1} ms", run.elapsed_ms),
+        // The demands of SPEC §6 where the line is wide enough.
+        both("A", |s| s.peak_absolute_acceleration, u.acceleration),
+        both("μ", |s| s.ductility, 1.0),
+        both("r", |s| s.residual_displacement, u.length),
+        both("E_h", |s| s.hysteretic_energy, u.energy),
     ];
     fit(&parts, width)
 }
