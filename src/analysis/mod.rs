@@ -1,5 +1,5 @@
 //! Studies built from many runs: spectra (SPEC §7), physical units and
-//! self-similarity (SPEC §8).
+//! self-similarity (SPEC §8), suites of records (SPEC §12).
 //!
 //! - [`spectrum`]: one point (pounding run, baseline, region);
 //! - [`grid`], [`family`], [`spectrum_spec`]: what a spectrum is asked for
@@ -12,14 +12,21 @@
 //! - [`map`]: region maps over two parameters (any Π key or μ);
 //! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
 //! - [`physical`](crate::model::physical): physical units to Π-groups and back (SPEC §8);
-//! - [`similarity`]: spectra at several excitation levels and their master curve.
+//! - [`similarity`]: spectra at several excitation levels and their master curve;
+//! - [`demands`]: a run's demands (SPEC §6) in SI;
+//! - [`suite`]: one pair of physical buildings under a suite of records,
+//!   each scaled to an intensity (SPEC §12), and [`statistics`], the
+//!   median, percentiles and dispersion of a demand over a suite.
 
 pub mod baseline;
 pub mod batch;
+pub mod demands;
 pub mod gap;
 pub mod map;
 pub mod similarity;
 pub mod spectrum;
+pub mod statistics;
+pub mod suite;
 pub mod sweep;
 
 pub use crate::model::{family, grid, spectrum_spec};

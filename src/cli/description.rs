@@ -48,7 +48,52 @@ pub struct Case<'a> {
     /// The type B pulse's initial velocity, a record's scaling; absent for the sine.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub excitation_note: Option<String>,
+    /// A record's samples, DT and the a_p, ω_p it ran at, as numbers.
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub record: Option<RecordNumbers>,
     pub method: Method,
+}
+
+/// What a run under a record says of it as numbers (SPEC §9): the samples
+/// and their interval DT (s), and the base quantities a_p (m/s²) and ω_p
+/// (rad/s) that scale it into g(τ) = a(τ/ω_p)/a_p.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RecordNumbers {
+    pub samples: usize,
+    pub record_dt: f64,
+    pub a_p: f64,
+    pub omega_p: f64,
+}
+
+impl RecordNumbers {
+    /// The numbers of `params`' record, or `None` for another excitation.
+    pub fn of(params: &Params) -> Option<RecordNumbers> {
+        match params.ground() {
+            crate::model::Excitation::Record(m) => Some(RecordNumbers {
+                samples: m.record.acceleration.len(),
+                record_dt: m.record.dt,
+                a_p: m.amplitude,
+                omega_p: m.omega,
+            }),
+            _ => None,
+        }
+    }
+
+    /// CSV columns of [`RecordNumbers`], empty cells for another excitation.
+    pub const COLUMNS: [&'static str; 4] = ["samples", "record_dt", "a_p", "omega_p"];
+
+    /// The cells of [`RecordNumbers::COLUMNS`] for `params`.
+    pub fn cells(params: &Params) -> [String; 4] {
+        match RecordNumbers::of(params) {
+            Some(r) => [
+                r.samples.to_string(),
+                crate::output::Num(r.record_dt).to_string(),
+                crate::output::Num(r.a_p).to_string(),
+                crate::output::Num(r.omega_p).to_string(),
+            ],
+            None => Default::default(),
+        }
+    }
 }
 
 impl<'a> Case<'a> {
@@ -60,6 +105,7 @@ impl<'a> Case<'a> {
             model: params.model.name(),
             excitation: params.excitation.name(),
             excitation_note: params.ground().note(),
+            record: RecordNumbers::of(params),
             method: params.method,
         }
     }

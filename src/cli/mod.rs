@@ -24,6 +24,7 @@ pub mod run;
 pub mod similarity;
 pub mod spectrum;
 pub mod stress;
+pub mod suite;
 pub mod tui;
 
 use clap::{Parser, Subcommand};
@@ -102,6 +103,9 @@ pub enum Command {
     Gap(gap::GapArgs),
     /// Physical units in and out, and the self-similarity of SPEC §8.
     Similarity(similarity::SimilarityArgs),
+    /// One physical pair of buildings under a suite of records scaled to an
+    /// intensity: the demands of every record and their statistics (SPEC §12).
+    Suite(suite::SuiteArgs),
     /// Open the terminal explorer (the default without a command).
     Tui(tui::TuiArgs),
     /// Work-precision table: run time against error for each method.
@@ -141,6 +145,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
         Some(Command::Map(args)) => map::execute(&args),
         Some(Command::Gap(args)) => gap::execute(&args),
         Some(Command::Similarity(args)) => similarity::execute(&args),
+        Some(Command::Suite(args)) => suite::execute(&args),
         Some(Command::Tui(args)) => tui::execute(&args),
         Some(Command::Bench(args)) => bench::execute(&args),
         Some(Command::Stress(args)) => stress::execute(&args),

@@ -7,6 +7,7 @@ use clap::Args;
 
 use super::CliError;
 use crate::model::excitation::ExcitationError;
+use crate::model::physical::Physical;
 use crate::model::{Excitation, Params, Preset};
 
 #[derive(Debug, Clone, Default, Args)]
@@ -69,6 +70,29 @@ fn set_excitation(p: &mut Params, text: &str) -> Result<(), CliError> {
 }
 
 impl ParamArgs {
+    /// The preset's buildings in SI (its `[physical]` table, SPEC §8), or
+    /// `None` without one. Their Π-groups then come from that table and
+    /// the excitation's a_p and ω_p, so a `--set` of a Π key is refused.
+    pub fn physical(&self, preset: &Preset) -> Result<Option<Physical>, CliError> {
+        let Some(table) = &preset.physical else {
+            return Ok(None);
+        };
+        if let Some(kv) = self
+            .overrides
+            .iter()
+            .find(|kv| crate::model::params::is_pi(kv.split('=').next().unwrap_or("").trim()))
+        {
+            return Err(CliError::Usage(format!(
+                "--set `{}`: preset `{}` gives this in physical units; edit its [physical] table",
+                crate::model::params::echo::text(kv),
+                preset.name
+            )));
+        }
+        Physical::from_table(table)
+            .map(Some)
+            .map_err(|e| CliError::Usage(format!("{}: {e}", preset.name)))
+    }
+
     /// The preset, with every override applied and validated. A `dt` too
     /// coarse for the contact is a warning on stderr, not an error.
     /// As [`ParamArgs::resolve`], for a command that runs many cases
@@ -118,6 +142,13 @@ impl ParamArgs {
         }
         if let Some(c) = &self.cycles {
             p.set("cycles", c)?;
+        }
+        // A physical preset under a record: the record's own a_p and ω_p
+        // set the Π-groups of the same buildings (SPEC §12), as in a suite.
+        if let Excitation::Record(motion) = p.ground() {
+            if let Some(physical) = self.physical(&preset)?.filter(|_| motion.record.peak > 0.0) {
+                p = physical.under_record(&p, motion)?;
+            }
         }
         if self.no_pounding {
             p.gap = f64::INFINITY;

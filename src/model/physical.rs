@@ -297,6 +297,31 @@ impl Physical {
         Ok(p)
     }
 
+    /// The Π-groups of these structures under a record (SPEC §12: suites are
+    /// physical). The record's own a_p and ω_p (`motion`) are the base
+    /// quantities, so l_e = a_p/ω_p² and every Π-group follow the record,
+    /// while the masses, frequencies, yield displacements and gap stay those
+    /// of the same buildings; the set names the record with that a_p and ω_p
+    /// explicitly. Model, duration, Δτ and the grazing floor come from
+    /// `settings`. The result is validated.
+    pub fn under_record(
+        &self,
+        settings: &Params,
+        motion: super::excitation::RecordMotion,
+    ) -> Result<Params, ParamError> {
+        let at_record = Physical {
+            ap: motion.amplitude,
+            omega_p: motion.omega,
+            ..*self
+        };
+        at_record.to_params(&Params {
+            excitation: super::excitation::Excitation::Record(motion),
+            record_amplitude: motion.amplitude,
+            record_omega: motion.omega,
+            ..*settings
+        })
+    }
+
     /// The same structures under excitation amplitude `ap`. With `similar`
     /// the yield displacements and the gap scale with a_p, so every Π-group
     /// is unchanged (the paper's Figure 7), β scaling as 1/√(scale) to keep

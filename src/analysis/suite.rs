@@ -1,0 +1,294 @@
+//! One pair of buildings under a suite of records (SPEC §12).
+//!
+//! **Suites are physical.** The preset's `[physical]` table describes the
+//! buildings in SI units. Record j, scaled by s_j, has its own base
+//! quantities a_p,j = s_j · max|a_j| and ω_p,j (its dominant frequency,
+//! SPEC §9), which turn the same buildings into that record's Π-groups
+//! ([`Physical::under_record`]). Every record thus shakes the same
+//! buildings, and results are compared in physical units
+//! ([`super::demands::RunSi`]).
+//!
+//! Scaling a record by s scales every sample, so g(τ) = a(τ/ω_p)/a_p is the
+//! same for every s; the scale enters through a_p alone.
+//!
+//! **Intensity.** With a measure IM (PGA or Sa(T), SPEC §12) and a level X
+//! (in g), s_j = X / IM(record j), so every scaled record has IM = X. Without
+//! a level, a record runs at the scale its suite list gives (1 otherwise).
+//!
+//! Each row of a suite is bit for bit the run `pounding run` makes of that
+//! record with the preset and `record_amplitude = a_p,j`: both build their
+//! parameters through [`Physical::under_record`] and run them through
+//! [`solve`].
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use super::demands::{DemandsSi, RunSi};
+use super::gap::{free_params, from_max_relative};
+use super::statistics::Summary;
+use crate::model::excitation::RecordMotion;
+use crate::model::intensity::IntensityMeasure;
+use crate::model::physical::Physical;
+use crate::model::suite::SuiteMember;
+use crate::model::{ParamError, Params};
+use crate::solver::exact::ContactExtremes;
+use crate::solver::{RunResult, run_for_sweep, solve};
+
+/// How the records of a suite are scaled (SPEC §12).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scaling {
+    /// The intensity measure reported for every record.
+    pub measure: IntensityMeasure,
+    /// The level X (g) every record is scaled to; `None`: each record at its
+    /// suite list's scale.
+    pub level: Option<f64>,
+}
+
+/// A suite study: the buildings, the run settings and the scaling.
+#[derive(Debug, Clone, Copy)]
+pub struct SuiteCase {
+    /// The buildings in SI (the preset's `[physical]` table).
+    pub physical: Physical,
+    /// Contact law, method, free cycles after the record, Δτ, grazing floor
+    /// and contact tolerance (every non-Π key of the set).
+    pub settings: Params,
+    pub scaling: Scaling,
+}
+
+/// Why a suite cannot be run: the record named and what is wrong.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SuiteRunError {
+    /// A record whose intensity is 0 (all zeros) cannot be scaled or run.
+    #[error(
+        "record `{record}`: its {measure} is 0 (every sample is zero): it cannot be scaled or run"
+    )]
+    ZeroIntensity { record: String, measure: String },
+    /// The record's Π-groups are out of range (a Δτ too coarse for its ω_p, …).
+    #[error("record `{record}`: {error}")]
+    Params { record: String, error: ParamError },
+}
+
+/// One record of a suite, run.
+#[derive(Debug, Clone)]
+pub struct SuiteRun {
+    /// The record's name in the suite.
+    pub name: String,
+    /// Samples and their interval DT (s).
+    pub samples: usize,
+    pub dt: f64,
+    /// The factor s applied to the record's accelerations.
+    pub scale: f64,
+    /// IM of the scaled record (g).
+    pub intensity: f64,
+    /// The results in SI, with the scales of the record's a_p and ω_p.
+    pub si: RunSi,
+    /// The record's Π-groups and settings, as `pounding run` takes them.
+    pub params: Params,
+    pub result: RunResult,
+    /// Π_d,min of SPEC §11 from the record's run without contact.
+    pub min_gap: f64,
+}
+
+impl SuiteRun {
+    /// Structure `i`'s demands in SI (0 left, 1 right).
+    pub fn demands(&self, i: usize) -> DemandsSi {
+        *self.si.structure(i)
+    }
+
+    /// Largest pounding force (kN); 0 without contact.
+    pub fn max_force_kn(&self) -> f64 {
+        self.si.max_force_kn
+    }
+
+    /// Π_d,min in m.
+    pub fn min_gap_m(&self) -> f64 {
+        self.si.min_gap_m
+    }
+
+    pub fn pounded(&self) -> bool {
+        !self.result.impacts.is_empty()
+    }
+}
+
+/// The scale and intensity of a member under `scaling` (SPEC §12): s = X/IM
+/// at a level X, else the list's scale.
+pub fn scale_of(member: &SuiteMember, scaling: &Scaling) -> Result<(f64, f64), SuiteRunError> {
+    let raw = scaling.measure.measure(member.record);
+    if !(raw > 0.0 && raw.is_finite()) || member.record.peak <= 0.0 {
+        return Err(SuiteRunError::ZeroIntensity {
+            record: member.name.clone(),
+            measure: scaling.measure.to_string(),
+        });
+    }
+    let scale = match scaling.level {
+        Some(level) => level / raw,
+        None => member.scale,
+    };
+    Ok((scale, raw * scale))
+}
+
+/// The parameters of one member: the buildings under the record at its
+/// scale, with a_p = s·max|a| and ω_p its dominant frequency.
+pub fn member_params(
+    case: &SuiteCase,
+    member: &SuiteMember,
+    scale: f64,
+) -> Result<Params, SuiteRunError> {
+    let motion = RecordMotion {
+        amplitude: scale * member.record.peak,
+        ..RecordMotion::new(member.record)
+    };
+    case.physical
+        .under_record(&case.settings, motion)
+        .map_err(|error| SuiteRunError::Params {
+            record: member.name.clone(),
+            error,
+        })
+}
+
+/// What one member will run: its scale, the IM of the scaled record (g)
+/// and its parameters.
+#[derive(Debug, Clone, Copy)]
+pub struct MemberPlan {
+    pub scale: f64,
+    pub intensity: f64,
+    pub params: Params,
+}
+
+/// Plans every member before any run (a zero record, Π-groups out of range
+/// fail here), so that a bad suite fails at once and names the record.
+pub fn plan(case: &SuiteCase, members: &[SuiteMember]) -> Result<Vec<MemberPlan>, SuiteRunError> {
+    members
+        .iter()
+        .map(|m| {
+            let (scale, intensity) = scale_of(m, &case.scaling)?;
+            Ok(MemberPlan {
+                scale,
+                intensity,
+                params: member_params(case, m, scale)?,
+            })
+        })
+        .collect()
+}
+
+/// Runs one planned member: its pounding run, and its run without contact
+/// for Π_d,min unless the pounding run had no impact (then it is its own).
+pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> SuiteRun {
+    let params = plan.params;
+    let result = solve(&params, &mut ());
+    let min_gap = match result.max_relative_displacement {
+        Some(top) => from_max_relative(top),
+        None => {
+            let free = run_for_sweep(&free_params(&params), ContactExtremes::None);
+            from_max_relative(free.max_relative_displacement.unwrap_or(f64::NAN))
+        }
+    };
+    let si = RunSi::of(
+        &case.physical,
+        // [`Physical::under_record`] names a_p and ω_p in the set.
+        params.record_amplitude,
+        params.record_omega,
+        &result,
+        min_gap,
+    );
+    SuiteRun {
+        name: member.name.clone(),
+        samples: member.record.acceleration.len(),
+        dt: member.record.dt,
+        scale: plan.scale,
+        intensity: plan.intensity,
+        si,
+        params,
+        result,
+        min_gap,
+    }
+}
+
+/// Runs every planned member in parallel, in suite order; `done` is told of
+/// each finished record (progress).
+pub fn run_suite(
+    case: &SuiteCase,
+    members: &[SuiteMember],
+    plans: &[MemberPlan],
+    done: &(dyn Fn(&SuiteRun) + Sync),
+) -> Vec<SuiteRun> {
+    members
+        .par_iter()
+        .zip(plans)
+        .map(|(m, p)| {
+            let run = run_member(case, m, p);
+            done(&run);
+            run
+        })
+        .collect()
+}
+
+/// One demand's statistics over a suite.
+#[derive(Debug, Clone, Serialize)]
+pub struct DemandSummary {
+    /// The demand's key (`left.peak_displacement_m`, `max_force_kn`, …).
+    pub demand: String,
+    pub unit: &'static str,
+    #[serde(flatten)]
+    pub summary: Summary,
+}
+
+/// The statistics of a suite (SPEC §12).
+#[derive(Debug, Clone, Serialize)]
+pub struct SuiteStatistics {
+    pub records: usize,
+    /// Records with at least one impact.
+    pub pounded: usize,
+    pub demands: Vec<DemandSummary>,
+}
+
+/// Each demand of SPEC §6 in SI, its key and unit, for statistics.
+type Demand = (&'static str, &'static str, fn(&DemandsSi) -> f64);
+
+const DEMANDS: [Demand; 6] = [
+    ("peak_displacement_m", "m", |d| d.peak_displacement_m),
+    ("peak_velocity_m_s", "m/s", |d| d.peak_velocity_m_s),
+    ("peak_absolute_acceleration_g", "g", |d| {
+        d.peak_absolute_acceleration_g
+    }),
+    ("ductility", "", |d| d.ductility),
+    // The size of the residual drift decides repair, not its side.
+    ("residual_displacement_m", "m, absolute", |d| {
+        d.residual_displacement_m.abs()
+    }),
+    ("hysteretic_energy_kj", "kJ", |d| d.hysteretic_energy_kj),
+];
+
+impl SuiteStatistics {
+    pub fn of(runs: &[SuiteRun]) -> SuiteStatistics {
+        let mut demands = Vec::new();
+        for (side, i) in [("left", 0), ("right", 1)] {
+            for (key, unit, get) in DEMANDS {
+                let values: Vec<f64> = runs.iter().map(|r| get(&r.demands(i))).collect();
+                demands.push(DemandSummary {
+                    demand: format!("{side}.{key}"),
+                    unit,
+                    summary: Summary::of(&values),
+                });
+            }
+        }
+        let pair: [(&str, &'static str, fn(&SuiteRun) -> f64); 3] = [
+            ("impacts", "", |r| r.result.impacts.len() as f64),
+            ("max_force_kn", "kN", SuiteRun::max_force_kn),
+            ("min_gap_m", "m", SuiteRun::min_gap_m),
+        ];
+        for (key, unit, get) in pair {
+            let values: Vec<f64> = runs.iter().map(get).collect();
+            demands.push(DemandSummary {
+                demand: key.to_string(),
+                unit,
+                summary: Summary::of(&values),
+            });
+        }
+        SuiteStatistics {
+            records: runs.len(),
+            pounded: runs.iter().filter(|r| r.pounded()).count(),
+            demands,
+        }
+    }
+}
