@@ -11,11 +11,13 @@
 //! - [`sweep`]: the engine that computes every curve in parallel;
 //! - [`map`]: region maps over two parameters (any Π key or μ);
 //! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
+//! - [`fragility`]: lognormal fragility by maximum likelihood (SPEC §12);
 //! - [`physical`](crate::model::physical): physical units to Π-groups and back (SPEC §8);
 //! - [`similarity`]: spectra at several excitation levels and their master curve.
 
 pub mod baseline;
 pub mod batch;
+pub mod fragility;
 pub mod gap;
 pub mod map;
 pub mod similarity;
