@@ -315,20 +315,7 @@ fn maximize(points: &[Point]) -> Probit {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// SplitMix64: a fixed-seed stream of test data, uniform in [0, 1).
-    struct SplitMix(u64);
-
-    impl SplitMix {
-        fn uniform(&mut self) -> f64 {
-            self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-            let mut z = self.0;
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            z ^= z >> 31;
-            (z >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
+    use crate::accuracy::random::SplitMix64;
 
     const THETA: f64 = 0.5;
     const BETA: f64 = 0.4;
@@ -478,12 +465,12 @@ mod tests {
         let (se_ln_theta, se_beta) = standard_errors(runs as f64);
         assert!(se_ln_theta < 0.03 && se_beta < 0.03);
         for seed in 0..10 {
-            let mut random = SplitMix(seed);
+            let mut random = SplitMix64::new(seed);
             let exceeded: Vec<usize> = levels()
                 .iter()
                 .map(|&x| {
                     let p = probability(x, THETA, BETA);
-                    (0..runs).filter(|_| random.uniform() < p).count()
+                    (0..runs).filter(|_| random.chance(p)).count()
                 })
                 .collect();
             let (theta, beta, _) = fitted(fit(&counts(runs, &exceeded)));

@@ -11,6 +11,7 @@
 //! - [`sweep`]: the engine that computes every curve in parallel;
 //! - [`map`]: region maps over two parameters (any Π key or μ);
 //! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
+//! - [`limit_state`]: what a run must do to count as exceeding (SPEC §12);
 //! - [`fragility`]: lognormal fragility by maximum likelihood (SPEC §12);
 //! - [`physical`](crate::model::physical): physical units to Π-groups and back (SPEC §8);
 //! - [`similarity`]: spectra at several excitation levels and their master curve.
@@ -19,6 +20,7 @@ pub mod baseline;
 pub mod batch;
 pub mod fragility;
 pub mod gap;
+pub mod limit_state;
 pub mod map;
 pub mod similarity;
 pub mod spectrum;
