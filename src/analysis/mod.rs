@@ -13,6 +13,8 @@
 //! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
 //! - [`limit_state`]: what a run must do to count as exceeding (SPEC §12);
 //! - [`fragility`]: lognormal fragility by maximum likelihood (SPEC §12);
+//! - [`separation`]: the gap at a probability over a suite, and the code
+//!   rules on it (SPEC §12);
 //! - [`physical`](crate::model::physical): physical units to Π-groups and back (SPEC §8);
 //! - [`similarity`]: spectra at several excitation levels and their master curve.
 
@@ -22,6 +24,7 @@ pub mod fragility;
 pub mod gap;
 pub mod limit_state;
 pub mod map;
+pub mod separation;
 pub mod similarity;
 pub mod spectrum;
 pub mod sweep;
