@@ -32,10 +32,11 @@
 //! exact gradient and Hessian reaches it from any start. It starts from the
 //! least-squares line through Φ⁻¹((k_l + ½)/(n_l + 1)) against t_l (weights
 //! n_l), with t centred on its weighted mean so that the two unknowns are
-//! nearly uncorrelated, and stops once a full Newton step moves each unknown
-//! by less than 1e-12 of its size (the quadratic convergence puts the next
-//! iterate at the rounding floor), or once a step cannot raise ℓ at all (a
-//! flat likelihood's floor; 3 to 10 iterations in the tests). ln Φ is exact far into both tails
+//! nearly uncorrelated. Once a Newton step moves each unknown by less than
+//! 1e-6 of its size, ℓ can no longer tell the iterates apart (it changes by
+//! about the square of that, relative), so steps are taken whole; they stop
+//! at 1e-12, or where they no longer shrink, the rounding floor of the
+//! gradient (a handful of iterations in the tests). ln Φ is exact far into both tails
 //! ([`normal::ln_cdf`]), so a poor start, or a level where p_l is 1e-300,
 //! cannot make the likelihood infinite.
 //!
@@ -97,8 +98,10 @@ pub enum Fragility {
     /// and the fit tends to β → 0 there. `below == above` when one level
     /// holds both outcomes: θ → that level.
     Separated { below: f64, above: f64 },
-    /// The fractions do not rise with intensity: the best fit over β > 0 is
-    /// the β → ∞ limit, the pooled `fraction` Σk/Σn at every level.
+    /// The fractions do not rise with intensity (the maximum over all
+    /// (a, b) has b ≤ 0, or η moves by less than 1e-9 over the levels): the
+    /// best fit over β > 0 is the β → ∞ limit, the pooled `fraction` Σk/Σn
+    /// at every level.
     NotIncreasing { fraction: f64 },
 }
 
@@ -179,13 +182,18 @@ pub fn fit(counts: &[LevelCount]) -> Fragility {
         })
         .collect();
     let Probit { a, b } = maximize(&points);
-    if b <= 0.0 {
+    let (theta, beta) = ((-a / b).exp(), 1.0 / b);
+    // η = a + b ln x moves by b·ln(x_max/x_min) over the levels: equal
+    // fractions give b = 0 but for rounding, and a curve that flat has no θ
+    // in floating point either.
+    let highest = run.iter().map(|c| c.level).fold(0.0, f64::max);
+    if b * (highest / lowest).ln() <= FLAT || !(theta.is_finite() && theta > 0.0) {
         return Fragility::NotIncreasing { fraction: pooled };
     }
     let binomial: f64 = run.iter().map(|c| ln_binomial(c.runs, c.exceeded)).sum();
     Fragility::Fitted {
-        theta: (-a / b).exp(),
-        beta: 1.0 / b,
+        theta,
+        beta,
         log_likelihood: log_likelihood(&points, 0.0, a, b) + binomial,
     }
 }
@@ -214,6 +222,11 @@ struct Probit {
 
 /// Relative size of the last Newton step (module docs).
 const STEP_TOLERANCE: f64 = 1e-12;
+/// Below this change of η over the levels the fitted curve is flat
+/// (rounding puts b near 1e-15 where the fractions are equal).
+const FLAT: f64 = 1e-9;
+/// Below this relative step, Newton's steps are taken whole (no line search).
+const FULL_STEPS: f64 = 1e-6;
 /// Newton iterations at most; a handful are used.
 const MAX_ITERATIONS: usize = 100;
 /// Armijo's sufficient-increase fraction of the line search.
@@ -253,6 +266,7 @@ fn maximize(points: &[Point]) -> Probit {
         (zw / total, uzw / uuw)
     };
     let mut value = log_likelihood(points, centre, c, b);
+    let mut last_size = f64::INFINITY;
     for _ in 0..MAX_ITERATIONS {
         // Gradient g and the negated Hessian [[h00, h01], [h01, h11]].
         let (mut g0, mut g1, mut h00, mut h01, mut h11) = (0.0, 0.0, 0.0, 0.0, 0.0);
@@ -278,31 +292,40 @@ fn maximize(points: &[Point]) -> Probit {
         } else {
             (g0, g1)
         };
-        if dc.abs() <= STEP_TOLERANCE * c.abs().max(1.0)
-            && db.abs() <= STEP_TOLERANCE * b.abs().max(1.0)
-        {
+        let size = (dc.abs() / c.abs().max(1.0)).max(db.abs() / b.abs().max(1.0));
+        if size <= STEP_TOLERANCE {
             c += dc;
             b += db;
             break;
         }
-        // Backtrack to Armijo's sufficient increase. A step that cannot raise
-        // ℓ at all means its rounding floor is reached (a flat likelihood, far
-        // in a tail, can hold the step above the tolerance there).
+        if size <= FULL_STEPS {
+            // Newton's own region: ℓ changes by about size² of itself, below
+            // its rounding, so steps are taken whole, and they shrink
+            // quadratically until the rounding of the gradient holds them.
+            if size >= last_size {
+                break;
+            }
+            c += dc;
+            b += db;
+            last_size = size;
+            continue;
+        }
+        // Backtrack to Armijo's sufficient increase.
         let ascent = g0 * dc + g1 * db;
         let mut step = 1.0;
-        let mut gained = false;
+        let mut moved = false;
         for _ in 0..MAX_HALVINGS {
             let trial = log_likelihood(points, centre, c + step * dc, b + step * db);
             if trial >= value + ARMIJO * step * ascent {
                 c += step * dc;
                 b += step * db;
-                gained = trial > value;
                 value = trial;
+                moved = true;
                 break;
             }
             step *= 0.5;
         }
-        if !gained {
+        if !moved {
             break;
         }
     }
@@ -530,6 +553,90 @@ mod tests {
         let (theta, beta) = ((-a / b).exp(), 1.0 / b);
         assert!((theta - THETA).abs() < 1e-12, "θ = {theta}");
         assert!((beta - BETA).abs() < 1e-12, "β = {beta}");
+    }
+
+    /// Scaling every level by s scales θ by s and leaves β and ln L; the
+    /// order of the levels does not matter.
+    #[test]
+    fn scale_and_order_invariance() {
+        let base = counts(50, &[0, 1, 4, 12, 20, 31, 35, 42, 44, 49]);
+        let (theta, beta, ln_l) = fitted(fit(&base));
+        let mut scaled: Vec<LevelCount> = base
+            .iter()
+            .map(|c| LevelCount {
+                level: 3.0 * c.level,
+                ..*c
+            })
+            .collect();
+        scaled.reverse();
+        let (theta3, beta3, ln_l3) = fitted(fit(&scaled));
+        assert!(
+            (theta3 / (3.0 * theta) - 1.0).abs() < 1e-12,
+            "{theta3} {theta} {beta3} {beta}"
+        );
+        assert!((beta3 / beta - 1.0).abs() < 1e-12);
+        assert!((ln_l3 - ln_l).abs() < 1e-10);
+    }
+
+    /// Small random suites (2 to 6 records, 2 to 6 levels over 0.05 … 2 g):
+    /// each gets a named case or a fit that no nearby (θ, β) beats, and the
+    /// named cases agree with the counts.
+    #[test]
+    fn small_random_suites_fit_or_say_why_not() {
+        let mut random = SplitMix64::new(7);
+        let mut fits = 0;
+        for _ in 0..2000 {
+            let runs = 2 + (random.unit() * 5.0) as usize;
+            let n_levels = 2 + (random.unit() * 5.0) as usize;
+            let (theta, beta) = (random.log_uniform(0.1, 1.0), random.uniform(0.2, 0.8));
+            let counts: Vec<LevelCount> = (0..n_levels)
+                .map(|_| {
+                    let level = random.log_uniform(0.05, 2.0);
+                    let p = probability(level, theta, beta);
+                    let exceeded = (0..runs).filter(|_| random.chance(p)).count();
+                    LevelCount {
+                        level,
+                        runs,
+                        exceeded,
+                    }
+                })
+                .collect();
+            match fit(&counts) {
+                Fragility::Fitted {
+                    theta,
+                    beta,
+                    log_likelihood,
+                } => {
+                    fits += 1;
+                    assert!(
+                        theta > 0.0 && beta > 0.0 && log_likelihood <= 0.0,
+                        "{theta} {beta} {log_likelihood} {counts:?}"
+                    );
+                    for (dt, db) in [(1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)] {
+                        let near = likelihood(
+                            &counts,
+                            theta * (1.0 + 1e-4 * dt),
+                            beta * (1.0 + 1e-4 * db),
+                        );
+                        assert!(near <= log_likelihood + 1e-12, "{counts:?}");
+                    }
+                }
+                Fragility::NeverExceeded => assert!(counts.iter().all(|c| c.exceeded == 0)),
+                Fragility::AlwaysExceeded => assert!(counts.iter().all(|c| c.exceeded == c.runs)),
+                Fragility::Separated { below, above } => {
+                    assert!(below <= above);
+                    assert!(counts.iter().all(|c| c.level >= below || c.exceeded == 0));
+                    assert!(
+                        counts
+                            .iter()
+                            .all(|c| c.level <= above || c.exceeded == c.runs)
+                    );
+                }
+                Fragility::NotIncreasing { fraction } => assert!(fraction > 0.0 && fraction < 1.0),
+                other => panic!("{other:?} from {counts:?}"),
+            }
+        }
+        assert!(fits > 500, "only {fits} fits");
     }
 
     /// (c) The cases without a fit are named, never fitted.
