@@ -36,9 +36,9 @@
 //! 1e-6 of its size, ℓ can no longer tell the iterates apart (it changes by
 //! about the square of that, relative), so steps are taken whole; they stop
 //! at 1e-12, or where they no longer shrink, the rounding floor of the
-//! gradient (a handful of iterations in the tests). ln Φ is exact far into both tails
-//! ([`normal::ln_cdf`]), so a poor start, or a level where p_l is 1e-300,
-//! cannot make the likelihood infinite.
+//! gradient (5 to 15 iterations in the tests). ln Φ is exact far into both
+//! tails ([`normal::ln_cdf`]), so a poor start, or a level where p_l is
+//! 1e-300, cannot make the likelihood infinite.
 //!
 //! # When there is no fit
 //!
@@ -93,10 +93,10 @@ pub enum Fragility {
     AlwaysExceeded,
     /// Every run was at one `level` (g), where a `fraction` of them exceeded.
     OneLevel { level: f64, fraction: f64 },
-    /// No run exceeded below `above`, every run exceeded above `below`
-    /// (below ≤ above, both in g): the limit state is crossed between them,
-    /// and the fit tends to β → 0 there. `below == above` when one level
-    /// holds both outcomes: θ → that level.
+    /// At every level below `above` no run exceeded, and at every level
+    /// above `below` every run did (below ≤ above, both in g): the limit
+    /// state is crossed between them, and the fit tends to β → 0 there.
+    /// `below == above` when one level holds both outcomes: θ → that level.
     Separated { below: f64, above: f64 },
     /// The fractions do not rise with intensity (the maximum over all
     /// (a, b) has b ≤ 0, or η moves by less than 1e-9 over the levels): the
@@ -307,6 +307,7 @@ fn maximize(points: &[Point]) -> Probit {
             }
             c += dc;
             b += db;
+            value = log_likelihood(points, centre, c, b);
             last_size = size;
             continue;
         }
