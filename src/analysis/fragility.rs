@@ -57,6 +57,43 @@
 //! - [`Fragility::NotIncreasing`]: the fractions fall, or do not rise, with
 //!   intensity: over β > 0 the likelihood is largest as β → ∞, one
 //!   probability at every level.
+//!
+//! # Use
+//!
+//! Count, at each level, the runs whose demands exceed a limit state, then
+//! fit. A fitted θ outside the levels run is an extrapolation.
+//!
+//! ```
+//! use pounding::analysis::fragility::{self, Fragility, LevelCount};
+//! use pounding::analysis::limit_state::{self, Observed, ductility};
+//!
+//! let limit = limit_state::parse_ductility("left:2").unwrap()[0];
+//! // The suite runner's demands: one run per record at each level (two here).
+//! let run = |peak_left| Observed {
+//!     pounded: true,
+//!     ductility: [ductility(peak_left, 0.1), None], // the right one is elastic
+//!     acceleration_g: [0.4, 0.2],
+//!     max_force_kn: 120.0,
+//! };
+//! let suite = [
+//!     (0.2, [run(0.1), run(0.25)]),
+//!     (0.4, [run(0.15), run(0.3)]),
+//!     (0.8, [run(0.5), run(0.3)]),
+//! ];
+//! let counts: Vec<LevelCount> = suite
+//!     .iter()
+//!     .map(|(level, runs)| LevelCount {
+//!         level: *level,
+//!         runs: runs.len(),
+//!         exceeded: runs.iter().filter(|o| limit.exceeded(o)).count(),
+//!     })
+//!     .collect();
+//! let Fragility::Fitted { theta, beta, .. } = fragility::fit(&counts) else {
+//!     panic!("no fit");
+//! };
+//! let half = fragility::probability(theta, theta, beta); // 0.5 at the median
+//! assert!(theta > 0.2 && theta < 0.8 && half == 0.5);
+//! ```
 
 use serde::Serialize;
 

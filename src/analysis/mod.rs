@@ -1,5 +1,7 @@
 //! Studies built from many runs: spectra (SPEC §7), physical units and
-//! self-similarity (SPEC §8).
+//! self-similarity (SPEC §8), the gap that prevents pounding (SPEC §11), and
+//! the statistics of a suite of records: fragility and the separation at a
+//! probability (SPEC §12).
 //!
 //! - [`spectrum`]: one point (pounding run, baseline, region);
 //! - [`grid`], [`family`], [`spectrum_spec`]: what a spectrum is asked for

@@ -7,8 +7,9 @@
 //! physical suite, whose records each have their own Π scale l_e = a_p/ω_p²
 //! (SPEC §8, §12); Π-units only when every record shares one a_p and ω_p.
 //! The frequencies enter the rules only through ω1/ω2, so Π_ω or rad/s will
-//! do. Each d_j is finite and ≥ 0 (a value of ∞, a record that would pound at
-//! any gap, is allowed and counted).
+//! do. Each d_j is a number ≥ 0: 0 for a record whose structures never
+//! approach (no gap needed); ∞ is allowed (a record that would pound at any
+//! gap) and, like 0, counted apart from the lognormal fit.
 //!
 //! - The gap that prevents pounding with probability p
 //!   ([`gap_at_probability`]): with d_(1) ≤ … ≤ d_(N) sorted,
@@ -109,7 +110,7 @@ pub struct LognormalFit {
     pub dispersion: f64,
     /// How many values are in the fit (finite and > 0).
     pub fitted: usize,
-    /// How many were 0 (never closer than the gap 0: no gap needed) and ∞.
+    /// How many were 0 (the structures never approach: no gap needed) and ∞.
     pub zeros: usize,
     pub infinite: usize,
 }
@@ -200,7 +201,7 @@ pub struct RuleOnSuite {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SeparationStudy {
     pub records: usize,
-    /// Records whose minimum gap is 0: they never pound at any gap.
+    /// Records whose minimum gap is 0: they pound at no gap ≥ 0.
     pub zero_gaps: usize,
     /// Median of the minimum gaps (linear between order statistics, SPEC §12).
     #[serde(serialize_with = "float_or_inf")]
