@@ -11,6 +11,8 @@
 //! approach (no gap needed); ∞ is allowed (a record that would pound at any
 //! gap) and, like 0, counted apart from the lognormal fit.
 //!
+//! - The probabilities asked for, from the command line
+//!   ([`parse_probabilities`]).
 //! - The gap that prevents pounding with probability p
 //!   ([`gap_at_probability`]): with d_(1) ≤ … ≤ d_(N) sorted,
 //!   ```text
@@ -31,6 +33,7 @@
 use serde::Serialize;
 
 use super::gap::CodeRules;
+use crate::model::params::echo;
 use crate::numerics::normal;
 use crate::output::report::{float_or_inf, option_float_or_inf};
 
@@ -62,6 +65,31 @@ fn rank(p: f64, n: usize) -> usize {
         product.ceil()
     };
     (k as usize).clamp(1, n)
+}
+
+/// A list of probabilities that cannot be read, as one line naming the
+/// flag, the item and what is allowed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub struct ProbabilityError(pub String);
+
+/// Reads the probabilities given to `flag` as a comma-separated list, each
+/// strictly between 0 and 1 (`0.5,0.9,0.99`), in the order given.
+pub fn parse_probabilities(flag: &str, text: &str) -> Result<Vec<f64>, ProbabilityError> {
+    text.split(',')
+        .map(|item| {
+            item.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|p| *p > 0.0 && *p < 1.0)
+                .ok_or_else(|| {
+                    ProbabilityError(format!(
+                        "{flag} `{}`: must be a probability strictly between 0 and 1, e.g. 0.5,0.9,0.99",
+                        echo::text(item.trim())
+                    ))
+                })
+        })
+        .collect()
 }
 
 /// Refuses minimum gaps that are NaN or negative (a caller's bug).
@@ -319,6 +347,23 @@ mod tests {
         }
         for (decimal, n, want) in [(0.1, 30, 3), (0.3, 10, 3), (0.6, 5, 3), (0.35, 20, 7)] {
             assert_eq!(rank(decimal, n), want, "{decimal}·{n}");
+        }
+    }
+
+    #[test]
+    fn parses_probabilities() {
+        assert_eq!(
+            parse_probabilities("--probability", "0.5, 0.9,0.99").unwrap(),
+            [0.5, 0.9, 0.99]
+        );
+        assert_eq!(
+            parse_probabilities("--probability", "0.5,1")
+                .unwrap_err()
+                .to_string(),
+            "--probability `1`: must be a probability strictly between 0 and 1, e.g. 0.5,0.9,0.99"
+        );
+        for bad in ["", "0", "-0.1", "nan", "0.5,", "half"] {
+            assert!(parse_probabilities("--p", bad).is_err(), "{bad:?}");
         }
     }
 
