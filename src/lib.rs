@@ -6,7 +6,8 @@
 //! from the bottom up (no module imports one above it):
 //! - [`output`]: writing files and streams by one set of rules (atomic
 //!   replacement, streaming to devices, broken pipes), and number formats;
-//! - [`numerics`]: generic integrators (the DOPRI5 pair), knowing no physics;
+//! - [`numerics`]: generic integrators (the DOPRI5 pair) and the normal
+//!   distribution, knowing no physics;
 //! - [`model`]: the ten Π-groups and run settings ([`model::Params`], one
 //!   parameter table), the bilinear spring, the contact laws, the excitation
 //!   and presets;
@@ -15,7 +16,8 @@
 //!   `method`, reporting to an [`solver::Observer`] and returning a
 //!   [`solver::RunResult`];
 //! - [`mod@reference`]: an independent DOPRI5 solution, the error axis of every check;
-//! - [`analysis`]: what is built from many runs (spectra, similarity);
+//! - [`analysis`]: what is built from many runs (spectra, similarity, the
+//!   gap, and a suite's fragility and separation at a probability);
 //! - [`accuracy`]: work-precision tables and the stress test;
 //! - [`figure`]: the paper's figures and the scenes as SVG or PNG files.
 //!

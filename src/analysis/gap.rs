@@ -67,7 +67,12 @@ impl CodeRules {
     /// The rules for peaks `u1`, `u2` of structures with frequencies
     /// Π_ω1, Π_ω2 and damping ratio Π_ξ.
     pub fn of(u1: f64, u2: f64, omega1: f64, omega2: f64, damping: f64) -> CodeRules {
-        let rho = correlation(omega1, omega2, damping);
+        CodeRules::with_correlation(u1, u2, correlation(omega1, omega2, damping))
+    }
+
+    /// The rules for peaks `u1`, `u2` with the double-difference rule's ρ
+    /// given (a suite's median peaks take the records' ρ).
+    pub fn with_correlation(u1: f64, u2: f64, rho: f64) -> CodeRules {
         CodeRules {
             absolute_sum: u1 + u2,
             srss: u1.hypot(u2),

@@ -1,5 +1,7 @@
 //! Studies built from many runs: spectra (SPEC §7), physical units and
-//! self-similarity (SPEC §8), suites of records (SPEC §12).
+//! self-similarity (SPEC §8), the gap that prevents pounding (SPEC §11),
+//! suites of records and their statistics: fragility and the separation at
+//! a probability (SPEC §12).
 //!
 //! - [`spectrum`]: one point (pounding run, baseline, region);
 //! - [`grid`], [`family`], [`spectrum_spec`]: what a spectrum is asked for
@@ -11,6 +13,10 @@
 //! - [`sweep`]: the engine that computes every curve in parallel;
 //! - [`map`]: region maps over two parameters (any Π key or μ);
 //! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
+//! - [`limit_state`]: what a run must do to count as exceeding (SPEC §12);
+//! - [`fragility`]: lognormal fragility by maximum likelihood (SPEC §12);
+//! - [`separation`]: the gap at a probability over a suite, and the code
+//!   rules on it (SPEC §12);
 //! - [`physical`](crate::model::physical): physical units to Π-groups and back (SPEC §8);
 //! - [`similarity`]: spectra at several excitation levels and their master curve;
 //! - [`demands`]: a run's demands (SPEC §6) in SI;
@@ -21,8 +27,11 @@
 pub mod baseline;
 pub mod batch;
 pub mod demands;
+pub mod fragility;
 pub mod gap;
+pub mod limit_state;
 pub mod map;
+pub mod separation;
 pub mod similarity;
 pub mod spectrum;
 pub mod statistics;

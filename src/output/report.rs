@@ -35,6 +35,14 @@ pub fn float_or_inf<S: serde::Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Err
     }
 }
 
+/// [`float_or_inf`] for a value that may be missing: `null` when `None`.
+pub fn option_float_or_inf<S: serde::Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+    match v {
+        Some(v) => float_or_inf(v, s),
+        None => s.serialize_none(),
+    }
+}
+
 /// A header line, then one line per row (RFC 4180 quoting where needed).
 pub fn csv(header: &[&str], rows: &[Vec<String>]) -> String {
     let mut out = String::new();
