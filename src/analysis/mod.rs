@@ -13,6 +13,8 @@
 //! - [`sweep`]: the engine that computes every curve in parallel;
 //! - [`map`]: region maps over two parameters (any Π key or μ);
 //! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
+//! - [`ida`]: every record at every intensity level, and the fragility of
+//!   each limit state fitted on it (SPEC §12);
 //! - [`limit_state`]: what a run must do to count as exceeding (SPEC §12);
 //! - [`fragility`]: lognormal fragility by maximum likelihood (SPEC §12);
 //! - [`separation`]: the gap at a probability over a suite, and the code
@@ -29,6 +31,7 @@ pub mod batch;
 pub mod demands;
 pub mod fragility;
 pub mod gap;
+pub mod ida;
 pub mod limit_state;
 pub mod map;
 pub mod separation;

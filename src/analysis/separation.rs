@@ -250,13 +250,7 @@ pub struct SeparationStudy {
 /// The median of `values`, linear between the two middle order statistics
 /// (numpy's default, SPEC §12). NaN when there are none.
 fn median(values: impl Iterator<Item = f64>) -> f64 {
-    let sorted = sorted(values);
-    let n = sorted.len();
-    if n == 0 {
-        return f64::NAN;
-    }
-    let (low, high) = (sorted[(n - 1) / 2], sorted[n / 2]);
-    if low == high { low } else { 0.5 * (low + high) }
+    super::statistics::quantile(&sorted(values), 0.5)
 }
 
 /// The separation study of `records` at `probabilities` (module docs).

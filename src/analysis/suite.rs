@@ -31,8 +31,7 @@ use crate::model::intensity::IntensityMeasure;
 use crate::model::physical::Physical;
 use crate::model::suite::SuiteMember;
 use crate::model::{ParamError, Params};
-use crate::solver::exact::ContactExtremes;
-use crate::solver::{RunResult, run_for_sweep, solve};
+use crate::solver::{RunResult, solve};
 
 /// How the records of a suite are scaled (SPEC §12).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -85,6 +84,9 @@ pub struct SuiteRun {
     /// The record's Π-groups and settings, as `pounding run` takes them.
     pub params: Params,
     pub result: RunResult,
+    /// The run without contact (gap = ∞, exact method), and its SI form.
+    pub free: RunResult,
+    pub free_si: RunSi,
     /// Π_d,min of SPEC §11 from the record's run without contact.
     pub min_gap: f64,
 }
@@ -135,6 +137,7 @@ pub fn member_params(
     scale: f64,
 ) -> Result<Params, SuiteRunError> {
     let motion = RecordMotion {
+        scale,
         amplitude: scale * member.record.peak,
         ..RecordMotion::new(member.record)
     };
@@ -176,21 +179,26 @@ pub fn plan(case: &SuiteCase, members: &[SuiteMember]) -> Result<Vec<MemberPlan>
 pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> SuiteRun {
     let params = plan.params;
     let result = solve(&params, &mut ());
-    let min_gap = match result.max_relative_displacement {
-        Some(top) => from_max_relative(top),
-        None => {
-            let free = run_for_sweep(&free_params(&params), ContactExtremes::None);
-            from_max_relative(free.max_relative_displacement.unwrap_or(f64::NAN))
-        }
+    // The same buildings without contact (gap = ∞), by the exact method:
+    // their demands are the no-pounding baseline of every comparison, their
+    // separate peaks what the code rules combine (SPEC §11), and their
+    // largest x1 − x2 is Π_d,min unless the pounding run had no impact
+    // (then it is its own no-pounding run).
+    let free = if params.pounding() {
+        solve(&free_params(&params), &mut ())
+    } else {
+        result.clone()
     };
-    let si = RunSi::of(
-        &case.physical,
-        // [`Physical::under_record`] names a_p and ω_p in the set.
-        params.record_amplitude,
-        params.record_omega,
-        &result,
-        min_gap,
+    let min_gap = from_max_relative(
+        result
+            .max_relative_displacement
+            .or(free.max_relative_displacement)
+            .unwrap_or(f64::NAN),
     );
+    // [`Physical::under_record`] names a_p and ω_p in the set.
+    let (ap, omega_p) = (params.record_amplitude, params.record_omega);
+    let si = RunSi::of(&case.physical, ap, omega_p, &result, min_gap);
+    let free_si = RunSi::of(&case.physical, ap, omega_p, &free, min_gap);
     SuiteRun {
         name: member.name.clone(),
         samples: member.record.acceleration.len(),
@@ -200,6 +208,8 @@ pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> 
         si,
         params,
         result,
+        free,
+        free_si,
         min_gap,
     }
 }

@@ -61,6 +61,8 @@ pub struct Case<'a> {
 pub struct RecordNumbers {
     pub samples: usize,
     pub record_dt: f64,
+    /// The factor s on its accelerations (1 as read).
+    pub record_scale: f64,
     pub a_p: f64,
     pub omega_p: f64,
 }
@@ -72,6 +74,7 @@ impl RecordNumbers {
             crate::model::Excitation::Record(m) => Some(RecordNumbers {
                 samples: m.record.acceleration.len(),
                 record_dt: m.record.dt,
+                record_scale: m.scale,
                 a_p: m.amplitude,
                 omega_p: m.omega,
             }),
@@ -80,14 +83,16 @@ impl RecordNumbers {
     }
 
     /// CSV columns of [`RecordNumbers`], empty cells for another excitation.
-    pub const COLUMNS: [&'static str; 4] = ["samples", "record_dt", "a_p", "omega_p"];
+    pub const COLUMNS: [&'static str; 5] =
+        ["samples", "record_dt", "record_scale", "a_p", "omega_p"];
 
     /// The cells of [`RecordNumbers::COLUMNS`] for `params`.
-    pub fn cells(params: &Params) -> [String; 4] {
+    pub fn cells(params: &Params) -> [String; 5] {
         match RecordNumbers::of(params) {
             Some(r) => [
                 r.samples.to_string(),
                 crate::output::Num(r.record_dt).to_string(),
+                crate::output::Num(r.record_scale).to_string(),
                 crate::output::Num(r.a_p).to_string(),
                 crate::output::Num(r.omega_p).to_string(),
             ],

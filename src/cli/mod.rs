@@ -15,6 +15,7 @@ pub mod budget;
 pub mod description;
 pub mod figure;
 pub mod gap;
+pub mod ida;
 pub mod map;
 pub mod output;
 pub mod params;
@@ -106,6 +107,9 @@ pub enum Command {
     /// One physical pair of buildings under a suite of records scaled to an
     /// intensity: the demands of every record and their statistics (SPEC §12).
     Suite(suite::SuiteArgs),
+    /// Incremental dynamic analysis: a suite at every intensity level, and the
+    /// lognormal fragility of each limit state with and without pounding (SPEC §12).
+    Ida(ida::IdaArgs),
     /// Open the terminal explorer (the default without a command).
     Tui(tui::TuiArgs),
     /// Work-precision table: run time against error for each method.
@@ -146,6 +150,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
         Some(Command::Gap(args)) => gap::execute(&args),
         Some(Command::Similarity(args)) => similarity::execute(&args),
         Some(Command::Suite(args)) => suite::execute(&args),
+        Some(Command::Ida(args)) => ida::execute(&args),
         Some(Command::Tui(args)) => tui::execute(&args),
         Some(Command::Bench(args)) => bench::execute(&args),
         Some(Command::Stress(args)) => stress::execute(&args),

@@ -142,7 +142,7 @@ pub fn execute(args: &SuiteArgs) -> Result<(), CliError> {
 
 /// One structure of one record, in SI and in Π (SPEC §6).
 #[derive(Debug, Serialize)]
-struct StructureRow {
+pub struct StructureRow {
     #[serde(flatten)]
     si: DemandsSi,
     /// The same demands in Π form (units of SPEC §1).
@@ -151,7 +151,7 @@ struct StructureRow {
 
 /// One record of the suite.
 #[derive(Debug, Serialize)]
-struct SuiteRow {
+pub struct SuiteRow {
     record: String,
     samples: usize,
     /// Sample interval DT (s).
@@ -164,6 +164,8 @@ struct SuiteRow {
     scales: Scales,
     left: StructureRow,
     right: StructureRow,
+    /// Both structures' demands (SI) in the run without contact (gap = ∞).
+    no_pounding: [DemandsSi; 2],
     impacts: usize,
     max_force_kn: f64,
     /// Π_d,min of SPEC §11 (m): the gap at which this record would not pound.
@@ -176,6 +178,102 @@ struct SuiteRow {
     reliable: bool,
     #[serde(skip_serializing_if = "Option::is_none")]
     unreliable_reason: Option<String>,
+}
+
+impl SuiteRow {
+    pub fn of(r: &SuiteRun) -> SuiteRow {
+        let unreliable_reason = r.result.unreliable();
+        SuiteRow {
+            record: r.name.clone(),
+            samples: r.samples,
+            dt: r.dt,
+            scale: r.scale,
+            intensity_g: r.intensity,
+            scales: r.si.scales,
+            left: StructureRow {
+                si: r.si.left,
+                pi: r.result.left,
+            },
+            right: StructureRow {
+                si: r.si.right,
+                pi: r.result.right,
+            },
+            no_pounding: [r.free_si.left, r.free_si.right],
+            impacts: r.result.impacts.len(),
+            max_force_kn: r.max_force_kn(),
+            min_gap_m: r.min_gap_m(),
+            min_gap: r.min_gap,
+            params: r.params,
+            reliable: unreliable_reason.is_none(),
+            unreliable_reason,
+        }
+    }
+
+    /// The CSV columns of a row, after `version` and `units`.
+    pub fn csv_header() -> Vec<&'static str> {
+        let mut h = vec![
+            "record",
+            "samples",
+            "dt",
+            "scale",
+            "intensity_measure",
+            "intensity_g",
+            "ap",
+            "omega_p",
+        ];
+        for side in SIDE_COLUMNS {
+            h.extend(side);
+        }
+        h.extend([
+            "impacts",
+            "max_force_kn",
+            "min_gap_m",
+            "min_gap",
+            "reliable",
+        ]);
+        h
+    }
+
+    /// The cells of [`SuiteRow::csv_header`]; `measure` names the IM.
+    pub fn csv_cells(&self, measure: &str) -> Vec<String> {
+        let r = self;
+        let mut row = vec![
+            r.record.clone(),
+            r.samples.to_string(),
+            num(r.dt),
+            num(r.scale),
+            measure.to_string(),
+            num(r.intensity_g),
+            num(r.scales.ap),
+            num(r.scales.omega_p),
+        ];
+        for s in [&r.left, &r.right] {
+            row.extend(
+                [
+                    s.si.peak_displacement_m,
+                    s.si.peak_velocity_m_s,
+                    s.si.peak_absolute_acceleration_g,
+                    s.si.ductility,
+                    s.si.residual_displacement_m,
+                    s.si.hysteretic_energy_kj,
+                    s.pi.peak_displacement,
+                    s.pi.peak_velocity,
+                    s.pi.peak_absolute_acceleration,
+                    s.pi.residual_displacement,
+                    s.pi.hysteretic_energy,
+                ]
+                .map(num),
+            );
+        }
+        row.extend([
+            r.impacts.to_string(),
+            num(r.max_force_kn),
+            num(r.min_gap_m),
+            num(r.min_gap),
+            r.reliable.to_string(),
+        ]);
+        row
+    }
 }
 
 /// The suite's scaling, said in words and numbers.
@@ -224,35 +322,7 @@ impl<'a> SuiteReport<'a> {
         elapsed_ms: f64,
     ) -> Self {
         let phys = &case.physical;
-        let records = runs
-            .iter()
-            .map(|r| {
-                let unreliable_reason = r.result.unreliable();
-                SuiteRow {
-                    record: r.name.clone(),
-                    samples: r.samples,
-                    dt: r.dt,
-                    scale: r.scale,
-                    intensity_g: r.intensity,
-                    scales: r.si.scales,
-                    left: StructureRow {
-                        si: r.demands(0),
-                        pi: r.result.left,
-                    },
-                    right: StructureRow {
-                        si: r.demands(1),
-                        pi: r.result.right,
-                    },
-                    impacts: r.result.impacts.len(),
-                    max_force_kn: r.max_force_kn(),
-                    min_gap_m: r.min_gap_m(),
-                    min_gap: r.min_gap,
-                    params: r.params,
-                    reliable: unreliable_reason.is_none(),
-                    unreliable_reason,
-                }
-            })
-            .collect();
+        let records = runs.iter().map(SuiteRow::of).collect();
         SuiteReport {
             provenance: Provenance::new(preset, UNITS),
             suite,
@@ -283,28 +353,8 @@ fn g4(v: f64) -> String {
 
 impl Report for SuiteReport<'_> {
     fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = vec![
-            "version",
-            "units",
-            "record",
-            "samples",
-            "dt",
-            "scale",
-            "intensity_measure",
-            "intensity_g",
-            "ap",
-            "omega_p",
-        ];
-        for side in SIDE_COLUMNS {
-            h.extend(side);
-        }
-        h.extend([
-            "impacts",
-            "max_force_kn",
-            "min_gap_m",
-            "min_gap",
-            "reliable",
-        ]);
+        let mut h = vec!["version", "units"];
+        h.extend(SuiteRow::csv_header());
         h
     }
 
@@ -312,43 +362,8 @@ impl Report for SuiteReport<'_> {
         self.records
             .iter()
             .map(|r| {
-                let mut row = vec![
-                    env!("CARGO_PKG_VERSION").to_string(),
-                    UNITS.to_string(),
-                    r.record.clone(),
-                    r.samples.to_string(),
-                    num(r.dt),
-                    num(r.scale),
-                    self.scaling.measure.clone(),
-                    num(r.intensity_g),
-                    num(r.scales.ap),
-                    num(r.scales.omega_p),
-                ];
-                for s in [&r.left, &r.right] {
-                    row.extend(
-                        [
-                            s.si.peak_displacement_m,
-                            s.si.peak_velocity_m_s,
-                            s.si.peak_absolute_acceleration_g,
-                            s.si.ductility,
-                            s.si.residual_displacement_m,
-                            s.si.hysteretic_energy_kj,
-                            s.pi.peak_displacement,
-                            s.pi.peak_velocity,
-                            s.pi.peak_absolute_acceleration,
-                            s.pi.residual_displacement,
-                            s.pi.hysteretic_energy,
-                        ]
-                        .map(num),
-                    );
-                }
-                row.extend([
-                    r.impacts.to_string(),
-                    num(r.max_force_kn),
-                    num(r.min_gap_m),
-                    num(r.min_gap),
-                    r.reliable.to_string(),
-                ]);
+                let mut row = vec![env!("CARGO_PKG_VERSION").to_string(), UNITS.to_string()];
+                row.extend(r.csv_cells(&self.scaling.measure));
                 row
             })
             .collect()
@@ -452,40 +467,45 @@ impl Report for SuiteReport<'_> {
              lognormal dispersion β",
             st.records, st.pounded
         );
-        let width = st
-            .demands
-            .iter()
-            .map(|d| d.demand.len() + d.unit.len() + 3)
-            .max()
-            .unwrap_or(10);
-        let _ = writeln!(
-            s,
-            "{:<width$} {:>10} {:>10} {:>10} {:>7}  excluded from β",
-            "demand", "median", "p16", "p84", "β"
-        );
-        for d in &st.demands {
-            let name = if d.unit.is_empty() {
-                d.demand.clone()
-            } else {
-                format!("{} ({})", d.demand, d.unit)
-            };
-            let _ = writeln!(
-                s,
-                "{:<width$} {:>10} {:>10} {:>10} {:>7}  {}",
-                name,
-                g4(d.summary.median),
-                g4(d.summary.p16),
-                g4(d.summary.p84),
-                if d.summary.dispersion.is_nan() {
-                    "-".to_string()
-                } else {
-                    format!("{:.3}", d.summary.dispersion)
-                },
-                d.summary.excluded()
-            );
-        }
+        statistics_table(&mut s, st);
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
         s
+    }
+}
+
+/// The statistics of a suite (SPEC §12), one line per demand.
+pub fn statistics_table(s: &mut String, st: &SuiteStatistics) {
+    let width = st
+        .demands
+        .iter()
+        .map(|d| d.demand.len() + d.unit.len() + 3)
+        .max()
+        .unwrap_or(10);
+    let _ = writeln!(
+        s,
+        "{:<width$} {:>10} {:>10} {:>10} {:>7}  excluded from β",
+        "demand", "median", "p16", "p84", "β"
+    );
+    for d in &st.demands {
+        let name = if d.unit.is_empty() {
+            d.demand.clone()
+        } else {
+            format!("{} ({})", d.demand, d.unit)
+        };
+        let _ = writeln!(
+            s,
+            "{:<width$} {:>10} {:>10} {:>10} {:>7}  {}",
+            name,
+            g4(d.summary.median),
+            g4(d.summary.p16),
+            g4(d.summary.p84),
+            if d.summary.dispersion.is_nan() {
+                "-".to_string()
+            } else {
+                format!("{:.3}", d.summary.dispersion)
+            },
+            d.summary.excluded()
+        );
     }
 }
 

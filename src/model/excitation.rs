@@ -62,11 +62,15 @@ impl Pulse {
     }
 }
 
-/// A recorded accelerogram scaled into Π form (SPEC §9): g(τ) = a(τ/ω_p)/a_p.
+/// A recorded accelerogram scaled into Π form (SPEC §9, §12):
+/// g(τ) = s·a(τ/ω_p)/a_p, the record scaled by s (1 as read).
 #[derive(Debug, Clone, Copy)]
 pub struct RecordMotion {
     pub record: &'static Record,
-    /// a_p in m/s² (default: the record's peak |a|).
+    /// The factor s on the record's accelerations (SPEC §12: a record scaled
+    /// to an intensity); 1 as read.
+    pub scale: f64,
+    /// a_p in m/s² (default: the scaled record's peak s·max|a|).
     pub amplitude: f64,
     /// ω_p in rad/s (default: the frequency of its largest Fourier amplitude).
     pub omega: f64,
@@ -75,6 +79,7 @@ pub struct RecordMotion {
 impl PartialEq for RecordMotion {
     fn eq(&self, other: &Self) -> bool {
         std::ptr::eq(self.record, other.record)
+            && self.scale == other.scale
             && self.amplitude == other.amplitude
             && self.omega == other.omega
     }
@@ -85,6 +90,7 @@ impl RecordMotion {
     pub fn new(record: &'static Record) -> Self {
         RecordMotion {
             record,
+            scale: 1.0,
             amplitude: if record.peak > 0.0 { record.peak } else { 1.0 },
             omega: record.dominant_omega,
         }
@@ -123,9 +129,9 @@ impl RecordMotion {
         let h = self.spacing();
         let k = self.interval(tau);
         if k >= 1 && k as f64 * h >= tau {
-            let slope = (a[k] - a[k - 1]) / (h * self.amplitude);
+            let slope = self.scale * (a[k] - a[k - 1]) / (h * self.amplitude);
             return [
-                a[k - 1] / self.amplitude + slope * (tau - (k - 1) as f64 * h),
+                self.scale * a[k - 1] / self.amplitude + slope * (tau - (k - 1) as f64 * h),
                 slope,
             ];
         }
@@ -142,8 +148,8 @@ impl RecordMotion {
             return [0.0, 0.0];
         }
         let h = self.spacing();
-        let slope = (a[k + 1] - a[k]) / (h * self.amplitude);
-        let g = a[k] / self.amplitude + slope * (tau - k as f64 * h);
+        let slope = self.scale * (a[k + 1] - a[k]) / (h * self.amplitude);
+        let g = self.scale * a[k] / self.amplitude + slope * (tau - k as f64 * h);
         [g, slope]
     }
 }
@@ -215,9 +221,14 @@ impl Excitation {
                     .to_string(),
             ),
             Excitation::Record(m) => Some(format!(
-                "{} samples at DT = {} s; a_p = {} m/s², ω_p = {} rad/s",
+                "{} samples at DT = {} s{}; a_p = {} m/s², ω_p = {} rad/s",
                 m.record.acceleration.len(),
                 m.record.dt,
+                if m.scale == 1.0 {
+                    String::new()
+                } else {
+                    format!(", scaled by {}", m.scale)
+                },
                 m.amplitude,
                 m.omega,
             )),
@@ -326,8 +337,8 @@ impl Excitation {
             }
             Excitation::Record(m) => {
                 let r = m.record;
-                let scale_v = m.omega / m.amplitude;
-                let scale_u = m.omega * m.omega / m.amplitude;
+                let scale_v = m.scale * m.omega / m.amplitude;
+                let scale_u = m.scale * m.omega * m.omega / m.amplitude;
                 let t = (tau / m.omega).clamp(0.0, r.duration());
                 let k = m.interval(t * m.omega);
                 let s = t - k as f64 * r.dt;

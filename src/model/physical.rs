@@ -316,6 +316,7 @@ impl Physical {
         };
         at_record.to_params(&Params {
             excitation: super::excitation::Excitation::Record(motion),
+            record_scale: motion.scale,
             record_amplitude: motion.amplitude,
             record_omega: motion.omega,
             ..*settings

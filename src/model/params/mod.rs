@@ -58,7 +58,11 @@ pub struct Params {
     /// Ground motion g(τ) (SPEC §2, §9).
     #[serde(default)]
     pub excitation: Excitation,
-    /// a_p of a recorded excitation in m/s² (0: the record's peak |a|).
+    /// s, the factor on a recorded excitation's accelerations (SPEC §12:
+    /// a record scaled to an intensity); 1 as read.
+    #[serde(default = "default_record_scale")]
+    pub record_scale: f64,
+    /// a_p of a recorded excitation in m/s² (0: the scaled record's peak s·max|a|).
     #[serde(default)]
     pub record_amplitude: f64,
     /// ω_p of a recorded excitation in rad/s (0: its dominant frequency).
@@ -89,6 +93,10 @@ pub struct Params {
 /// method's target of 1e-9, at 0.7 of the contact segments that 1e-14 takes.
 pub const CONTACT_TOLERANCE: f64 = 1e-11;
 
+fn default_record_scale() -> f64 {
+    1.0
+}
+
 fn default_contact_tolerance() -> f64 {
     CONTACT_TOLERANCE
 }
@@ -108,6 +116,7 @@ pub const SET1: Params = Params {
     hertz_stiffness: 0.0,
     model: ContactModel::ImprovedKelvin,
     excitation: Excitation::Sine,
+    record_scale: 1.0,
     record_amplitude: 0.0,
     record_omega: 0.0,
     method: Method::Newmark,
@@ -238,13 +247,17 @@ impl Params {
     }
 
     /// The excitation as the solvers take it: a record scaled by the set's
-    /// a_p and ω_p where they are given (SPEC §9), otherwise as named.
+    /// s, with its a_p (s·max|a| unless given) and ω_p (SPEC §9, §12),
+    /// otherwise as named.
     pub fn ground(&self) -> Excitation {
         match self.excitation {
             Excitation::Record(mut m) => {
-                if self.record_amplitude > 0.0 {
-                    m.amplitude = self.record_amplitude;
-                }
+                m.scale = self.record_scale;
+                m.amplitude = if self.record_amplitude > 0.0 {
+                    self.record_amplitude
+                } else {
+                    self.record_scale * m.amplitude
+                };
                 if self.record_omega > 0.0 {
                     m.omega = self.record_omega;
                 }

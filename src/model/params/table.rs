@@ -266,7 +266,24 @@ pub const FIELDS: &[Field] = &[
         },
         step: Step::Add(1.0),
     },
-    // a_p of a record (m/s²): 0 is its peak |a|; 1e3 m/s² is 100 g.
+    // s, the factor on a record's accelerations (a record scaled to an
+    // intensity, SPEC §12); 1e3 matches the largest scale of a suite list.
+    Field {
+        key: "record_scale",
+        symbol: "s",
+        ascii: "s",
+        meaning: "record scale factor",
+        group: Group::Setting,
+        kind: Kind::Number {
+            min: 1e-6,
+            max: 1e3,
+            inf: false,
+            get: |p| p.record_scale,
+            set: |p, v| p.record_scale = v,
+        },
+        step: Step::Times(1.258_925_411_794_167_3),
+    },
+    // a_p of a record (m/s²): 0 is the scaled record's peak; 1e3 m/s² is 100 g.
     Field {
         key: "record_amplitude",
         symbol: "a_p",

@@ -1,0 +1,337 @@
+//! `pounding ida`: incremental dynamic analysis of a suite (every record at
+//! every intensity level), the statistics per level, and the lognormal
+//! fragility of each limit state with and without pounding (SPEC §12). The
+//! study is [`crate::analysis::ida`]; this module parses, runs and prints.
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use clap::Args;
+use serde::Serialize;
+
+use super::CliError;
+use super::budget::{Work, run_steps};
+use super::description::Provenance;
+use super::output::{print, render};
+use super::progress::Progress;
+use super::suite::{SuiteArgs, SuiteRow, case_of, statistics_table};
+use crate::analysis::fragility::Fragility;
+use crate::analysis::ida::{
+    LimitStateFragility, fragilities, parse_levels, plan_levels, run_levels,
+};
+use crate::analysis::limit_state::{LimitState, parse_acceleration, parse_ductility, parse_force};
+use crate::analysis::suite::{SuiteRun, SuiteStatistics};
+use crate::model::Method;
+use crate::model::params::echo::g4;
+use crate::model::suite::SuiteSpec;
+use crate::output::report::Report;
+
+#[derive(Debug, Clone, Default, Args)]
+pub struct IdaArgs {
+    /// The preset, suite, intensity measure and output options of `pounding suite`.
+    #[command(flatten)]
+    pub suite: SuiteArgs,
+    /// Intensity levels in g: START:STOP:STEP (e.g. 0.05:1.0:0.05) or a
+    /// list X1,X2,…, ascending and > 0.
+    #[arg(long, value_name = "START:STOP:STEP")]
+    pub levels: String,
+    /// Ductility limit states, e.g. 2,4 or left:2,right:4 (either structure by default).
+    #[arg(long, value_name = "[SIDE:]MU,…")]
+    pub ductility: Option<String>,
+    /// Peak absolute acceleration limit states, e.g. 0.5g,1g (a bare number is m/s²).
+    #[arg(long, value_name = "[SIDE:]A,…")]
+    pub acceleration: Option<String>,
+    /// Peak impact force limit states in kN, e.g. 500.
+    #[arg(long, value_name = "KN,…")]
+    pub force: Option<String>,
+}
+
+fn usage(message: String) -> CliError {
+    CliError::Usage(message)
+}
+
+/// The limit states named on the command line (pounding always comes first).
+fn limit_states(args: &IdaArgs) -> Result<Vec<LimitState>, CliError> {
+    let mut states = vec![LimitState::Pounding];
+    for (text, parse) in [
+        (&args.ductility, parse_ductility as fn(&str) -> _),
+        (&args.acceleration, parse_acceleration),
+        (&args.force, parse_force),
+    ] {
+        if let Some(t) = text {
+            states.extend(parse(t).map_err(|e| usage(e.to_string()))?);
+        }
+    }
+    Ok(states)
+}
+
+pub fn execute(args: &IdaArgs) -> Result<(), CliError> {
+    if args.suite.level.is_some() {
+        return Err(usage(
+            "--level: an IDA runs every level of --levels; use `pounding suite` for one".into(),
+        ));
+    }
+    let levels = parse_levels(&args.levels).map_err(usage)?;
+    let states = limit_states(args)?;
+    let (preset, case) = case_of(&args.suite)?;
+    let spec = SuiteSpec::parse(&args.suite.suite).map_err(|e| usage(e.to_string()))?;
+    let members = spec.load().map_err(|e| usage(e.to_string()))?;
+    let plans = plan_levels(&case, &members, &levels).map_err(|e| usage(e.to_string()))?;
+    let work = Work {
+        steps: plans
+            .iter()
+            .flatten()
+            .map(|m| 2.0 * run_steps(&m.params))
+            .sum(),
+        rows: 0.0,
+    };
+    work.check("ida", args.suite.long.allow_long, false)?;
+    let progress = Progress::start(&work);
+    let start = Instant::now();
+    let runs = run_levels(&case, &members, &plans, &|r: &SuiteRun| {
+        progress.add(2.0 * run_steps(&r.params))
+    });
+    let fragility = fragilities(&levels, &runs, &states);
+    drop(progress);
+    let elapsed_ms = start.elapsed().as_secs_f64() * 1e3;
+
+    let report = IdaReport {
+        provenance: Provenance::new(&preset.name, UNITS),
+        suite: &args.suite.suite,
+        model: case.settings.model.name(),
+        method: case.settings.method,
+        measure: case.scaling.measure.to_string(),
+        records_per_level: members.len(),
+        levels: levels
+            .iter()
+            .zip(&runs)
+            .map(|(&level, at)| LevelReport {
+                level_g: level,
+                statistics: SuiteStatistics::of(at),
+                records: at.iter().map(SuiteRow::of).collect(),
+            })
+            .collect(),
+        fragility,
+        elapsed_ms,
+    };
+    print(&render(&report, args.suite.output.format)?)?;
+    let unreliable = runs
+        .iter()
+        .flatten()
+        .filter(|r| r.result.unreliable().is_some())
+        .count();
+    if unreliable > 0 && !args.suite.allow_unreliable {
+        return Err(CliError::Failed(format!(
+            "unreliable result for {unreliable} of {} runs (flagged in the output); \
+             pass --allow-unreliable to accept them",
+            runs.iter().map(Vec::len).sum::<usize>()
+        )));
+    }
+    Ok(())
+}
+
+const UNITS: &str = "SI (m, m/s, g, kN, kJ) for the demands, g for intensities; \
+                     Π-groups of SPEC §1 under `pi`";
+
+/// One intensity level: its statistics and its rows (those of `pounding
+/// suite --level` at that level).
+#[derive(Debug, Serialize)]
+struct LevelReport {
+    level_g: f64,
+    statistics: SuiteStatistics,
+    records: Vec<SuiteRow>,
+}
+
+/// `pounding ida` in every format.
+#[derive(Debug, Serialize)]
+struct IdaReport<'a> {
+    #[serde(flatten)]
+    provenance: Provenance<'a>,
+    suite: &'a str,
+    model: &'static str,
+    method: Method,
+    measure: String,
+    records_per_level: usize,
+    levels: Vec<LevelReport>,
+    /// Per limit state: counts at each level and the maximum-likelihood
+    /// lognormal fragility (SPEC §12), with pounding and without.
+    fragility: Vec<LimitStateFragility>,
+    elapsed_ms: f64,
+}
+
+/// A fragility in words: θ and β of a fit, or why there is none.
+pub fn describe(f: &Fragility) -> String {
+    match *f {
+        Fragility::Fitted { theta, beta, .. } => format!("θ = {} g, β = {:.3}", g4(theta), beta),
+        Fragility::TooFewRecords => "not fitted: fewer than two records".into(),
+        Fragility::NeverExceeded => "never exceeded".into(),
+        Fragility::AlwaysExceeded => "exceeded at every level".into(),
+        Fragility::OneLevel { level, fraction } => {
+            format!(
+                "one level only: {:.0} % at {} g",
+                100.0 * fraction,
+                g4(level)
+            )
+        }
+        Fragility::Separated { below, above } => {
+            format!(
+                "no fit: crossed between {} g and {} g",
+                g4(below),
+                g4(above)
+            )
+        }
+        Fragility::NotIncreasing { fraction } => {
+            format!(
+                "no fit: does not rise with intensity ({:.0} %)",
+                100.0 * fraction
+            )
+        }
+    }
+}
+
+impl Report for IdaReport<'_> {
+    fn csv_header(&self) -> Vec<&'static str> {
+        let mut h = vec!["version", "units", "level_g"];
+        h.extend(SuiteRow::csv_header());
+        h
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        let mut rows = Vec::new();
+        for l in &self.levels {
+            for r in &l.records {
+                let mut row = vec![
+                    env!("CARGO_PKG_VERSION").to_string(),
+                    UNITS.to_string(),
+                    super::output::num(l.level_g),
+                ];
+                row.extend(r.csv_cells(&self.measure));
+                rows.push(row);
+            }
+        }
+        rows
+    }
+
+    fn table(&self) -> String {
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "IDA of suite {} ({} records) at {} levels of {}, preset {}: {}, {} method",
+            self.suite,
+            self.records_per_level,
+            self.levels.len(),
+            self.measure,
+            self.provenance.preset,
+            self.model,
+            self.method.name()
+        );
+        let _ = writeln!(s);
+        // One line per level: the medians that matter, with the 16–84 % band of drift.
+        let _ = writeln!(
+            s,
+            "{:>8} {:>8} {:>22} {:>8} {:>8} {:>22} {:>8} {:>10}",
+            "level g",
+            "pounded",
+            "left u mm (16–84 %)",
+            "left μ",
+            "left A g",
+            "right u mm (16–84 %)",
+            "right μ",
+            "d_min mm"
+        );
+        for l in &self.levels {
+            let st = &l.statistics;
+            let get = |key: &str| {
+                st.demands
+                    .iter()
+                    .find(|d| d.demand == key)
+                    .map(|d| d.summary)
+            };
+            let band = |key: &str, unit: f64| {
+                get(key).map_or(String::new(), |d| {
+                    format!(
+                        "{} ({}–{})",
+                        g4(d.median * unit),
+                        g4(d.p16 * unit),
+                        g4(d.p84 * unit)
+                    )
+                })
+            };
+            let median =
+                |key: &str, unit: f64| get(key).map_or(String::new(), |d| g4(d.median * unit));
+            let _ = writeln!(
+                s,
+                "{:>8} {:>8} {:>22} {:>8} {:>8} {:>22} {:>8} {:>10}",
+                g4(l.level_g),
+                format!("{}/{}", st.pounded, st.records),
+                band("left.peak_displacement_m", 1e3),
+                median("left.ductility", 1.0),
+                median("left.peak_absolute_acceleration_g", 1.0),
+                band("right.peak_displacement_m", 1e3),
+                median("right.ductility", 1.0),
+                median("min_gap_m", 1e3)
+            );
+        }
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "fragility P(exceed | IM = x) = Φ(ln(x/θ)/β), maximum likelihood over all levels (SPEC §12)"
+        );
+        let width = self
+            .fragility
+            .iter()
+            .map(|f| f.limit_state.chars().count())
+            .max()
+            .unwrap_or(11)
+            .max(11);
+        let _ = writeln!(
+            s,
+            "{:<width$}  {:<36}  {}",
+            "limit state", "with pounding", "without pounding (gap = ∞)"
+        );
+        for f in &self.fragility {
+            let _ = writeln!(
+                s,
+                "{:<width$}  {:<36}  {}",
+                f.limit_state,
+                describe(&f.fragility),
+                f.no_pounding_fragility
+                    .as_ref()
+                    .map_or("-".to_string(), describe)
+            );
+        }
+        let _ = writeln!(s);
+        let _ = writeln!(s, "records exceeding each limit state, per level:");
+        let _ = write!(s, "{:<width$}", "level g");
+        for l in &self.levels {
+            let _ = write!(s, " {:>6}", g4(l.level_g));
+        }
+        let _ = writeln!(s);
+        for f in &self.fragility {
+            let _ = write!(s, "{:<width$}", f.limit_state);
+            for c in &f.counts {
+                let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
+            }
+            let _ = writeln!(s);
+            if let Some(free) = &f.no_pounding_counts {
+                let _ = write!(s, "{:<width$}", "  without pounding");
+                for c in free {
+                    let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
+                }
+                let _ = writeln!(s);
+            }
+        }
+        if let Some(last) = self.levels.last() {
+            let _ = writeln!(s);
+            let _ = writeln!(
+                s,
+                "statistics at the highest level, {} g ({} pounded):",
+                g4(last.level_g),
+                last.statistics.pounded
+            );
+            statistics_table(&mut s, &last.statistics);
+        }
+        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
+        s
+    }
+}
