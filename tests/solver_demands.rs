@@ -292,12 +292,11 @@ fn hysteretic_energy_is_the_spring_work_less_the_stored_energy() {
     );
     let reference = reference(&p, &ReferenceOptions::for_params(&p, 1e-12));
     let stiffness = [p.mass_ratio * p.omega1 * p.omega1, p.omega2 * p.omega2];
-    for i in 0..2 {
+    for (i, k) in stiffness.into_iter().enumerate() {
         let (x, z) = (
             reference.final_state[2 * i],
             reference.final_elastic_part[i],
         );
-        let k = stiffness[i];
         let force = p.alpha * k * x + (1.0 - p.alpha) * k * z;
         let expected = e.spring_by_structure[i] - force * force / (2.0 * k);
         let found = exact.structure(i).hysteretic_energy;

@@ -329,10 +329,14 @@ impl<'a> Run<'a> {
     fn track_accelerations(&mut self, y: &Vector) {
         let a = self.system.absolute_acceleration(&self.mode, y);
         let r = &mut self.result;
-        for i in 0..2 {
-            if a[i].abs() > r.peak_absolute_acceleration[i] {
-                r.peak_absolute_acceleration[i] = a[i].abs();
-                r.peak_absolute_acceleration_at[i] = self.tau;
+        let peaks = r
+            .peak_absolute_acceleration
+            .iter_mut()
+            .zip(&mut r.peak_absolute_acceleration_at);
+        for (a, (peak, at)) in a.iter().zip(peaks) {
+            if a.abs() > *peak {
+                *peak = a.abs();
+                *at = self.tau;
             }
         }
     }

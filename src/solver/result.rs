@@ -6,7 +6,11 @@ use crate::model::Method;
 
 /// Peak response of one structure: Π_u = max |x|, Π_v = max |ẋ| (SPEC §6),
 /// and the demands of SPEC §6 "Demands for performance studies".
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+///
+/// Two are equal when every number is: a quantity a run did not compute
+/// (NaN) equals another not computed, so that two runs of a sweep, which
+/// skips A and E_h, compare as the same result.
+#[derive(Debug, Clone, Copy, Default, Serialize)]
 pub struct StructurePeaks {
     pub peak_displacement: f64,
     pub peak_velocity: f64,
@@ -57,6 +61,22 @@ pub struct FinalSpring {
     pub force: f64,
     /// ∫ f_s ẋ dτ over the run; NaN where it was not integrated.
     pub work: f64,
+}
+
+impl PartialEq for StructurePeaks {
+    fn eq(&self, other: &Self) -> bool {
+        let same = |a: f64, b: f64| a == b || (a.is_nan() && b.is_nan());
+        same(self.peak_displacement, other.peak_displacement)
+            && same(self.peak_velocity, other.peak_velocity)
+            && same(
+                self.peak_absolute_acceleration,
+                other.peak_absolute_acceleration,
+            )
+            && same(self.ductility, other.ductility)
+            && same(self.residual_displacement, other.residual_displacement)
+            && same(self.hysteretic_energy, other.hysteretic_energy)
+            && self.yielded == other.yielded
+    }
 }
 
 impl StructurePeaks {

@@ -54,7 +54,7 @@ pub fn raise_absolute_acceleration(
     let swing = (s.damping * swing_v + k * swing_x + swing_f) * inv_m;
     *peak = peak.max(start.abs());
     // Cleared by the bound: no value on the segment can beat the peak.
-    if !(start.abs() + swing > *peak) {
+    if start.abs() + swing <= *peak {
         return;
     }
     let mut a = Series {

@@ -15,7 +15,8 @@
 //!
 //! Everything that changes the equations is an event located on the series
 //! to round-off ([`roots`]): contact onset and separation, yield, unloading.
-//! Peaks are the true maxima, located at the zeros of the rates ([`peaks`]). The loop and
+//! Peaks are the true maxima, located at the zeros of the rates ([`peaks`]), the
+//! peak absolute accelerations of SPEC §6 among them ([`acceleration`]). The loop and
 //! its accounting are in [`driver`]; the energy balance in [`energy`].
 //! A free segment in which bounds show that nothing can happen (no event, no
 //! new peak) is advanced by a precomputed transition matrix instead
