@@ -45,7 +45,9 @@ pub struct SuiteMember {
     /// `synthetic-001` (simulated).
     pub name: String,
     pub record: &'static Record,
-    /// The list file's scale factor on the record's accelerations; 1 otherwise.
+    /// The list file's scale factor on the record's accelerations; 1
+    /// otherwise. The member as listed has intensity `scale` ×
+    /// [`crate::model::intensity::IntensityMeasure::measure`] of `record`.
     pub scale: f64,
 }
 
