@@ -137,11 +137,23 @@ fn malformed_suites_name_the_file_and_line() {
             .contains("No such file or directory; must be a directory"),
         "{e}"
     );
+    // Notes beside the records are skipped; notes alone are no suite; a
+    // malformed record is an error naming it and its line.
     let mixed = dir.path().join("mixed");
     fs::create_dir(&mixed).unwrap();
-    write(&mixed, "notes.md", "# notes\nsome text\n");
+    write(&mixed, "notes.md", "# notes\nsome text, no samples\n");
     let e = error(mixed.to_str().unwrap());
-    assert!(e.to_string().contains("notes.md` line 2"), "{e}");
+    assert!(e.to_string().contains("holds no record file"), "{e}");
+    write(&mixed, "quake.csv", "0,0.1\n0.01,0.2\n");
+    let members = SuiteSpec::parse(mixed.to_str().unwrap())
+        .unwrap()
+        .load()
+        .unwrap();
+    assert_eq!(members.len(), 1);
+    assert_eq!(members[0].name, "quake.csv");
+    write(&mixed, "broken.csv", "0,0.1\n0.01,0.2\n0.02,oops\n");
+    let e = error(mixed.to_str().unwrap());
+    assert!(e.to_string().contains("broken.csv` line 3"), "{e}");
     assert!(!e.to_string().contains('\n'), "{e}");
 }
 

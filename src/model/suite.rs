@@ -1,9 +1,11 @@
 //! A suite of ground motions (SPEC §12): the records one physical pair of
 //! buildings is run under. A suite is named by one of
 //!
-//! - a directory: every record file in it, in name order (hidden files and
-//!   the suite list [`LIST_FILE`] are skipped; every other file must read
-//!   as a record, whatever its format, and a directory without one is an error);
+//! - a directory: every record file in it, in name order. Hidden files, the
+//!   suite list [`LIST_FILE`] and files that are not records (neither AT2
+//!   nor K-NET by their content, and without a single line of two numbers
+//!   `time, acceleration`: notes, a README) are skipped; a record file that
+//!   is malformed is an error, and so is a directory without a record;
 //! - a list file: one record a line, `PATH [SCALE]`, paths relative to the
 //!   list file's directory (a path may carry a unit, `PATH@UNIT`, as in
 //!   `record:PATH@UNIT`), lines starting with `#` and blank lines skipped;
@@ -18,7 +20,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use super::record::{self, Format, Record};
+use super::record::{self, Format, Record, columns};
 use super::simulated::{self, DEFAULT_SEED, MAX_COUNT, Simulation};
 
 /// The suite list `records synth` writes beside its records, skipped when a
@@ -43,7 +45,9 @@ pub struct SuiteMember {
     /// `synthetic-001` (simulated).
     pub name: String,
     pub record: &'static Record,
-    /// The list file's scale factor on the record's accelerations; 1 otherwise.
+    /// The list file's scale factor on the record's accelerations; 1
+    /// otherwise. The member as listed has intensity `scale` ×
+    /// [`crate::model::intensity::IntensityMeasure::measure`] of `record`.
     pub scale: f64,
 }
 
@@ -203,24 +207,35 @@ fn load_directory(dir: &Path) -> Result<Vec<SuiteMember>, SuiteError> {
             files.push((name.to_string(), path));
         }
     }
-    if files.is_empty() {
+    files.sort();
+    let mut members = Vec::new();
+    for (name, path) in files {
+        let path = utf8(&path, &source, 0)?;
+        let bytes = std::fs::read(&path).map_err(|e| {
+            fail(format!(
+                "{}: {}",
+                crate::output::shown(Path::new(&path)),
+                crate::output::reason(&e)
+            ))
+        })?;
+        let text = String::from_utf8_lossy(&bytes);
+        if Format::of(&path, &text) == Format::Columns && !columns::has_samples(&text) {
+            continue; // notes, a README: not a record
+        }
+        let record = record::load(&path).map_err(|e| fail(e.to_string()))?;
+        members.push(SuiteMember {
+            name,
+            record,
+            scale: 1.0,
+        });
+    }
+    if members.is_empty() {
         return Err(fail(format!(
-            "the directory holds no record file (hidden files and {LIST_FILE} are skipped)"
+            "the directory holds no record file (hidden files, {LIST_FILE} and \
+             files with no line `time, acceleration` are skipped)"
         )));
     }
-    files.sort();
-    files
-        .into_iter()
-        .map(|(name, path)| {
-            let path = utf8(&path, &source, 0)?;
-            let record = record::load(&path).map_err(|e| fail(e.to_string()))?;
-            Ok(SuiteMember {
-                name,
-                record,
-                scale: 1.0,
-            })
-        })
-        .collect()
+    Ok(members)
 }
 
 fn load_list(list: &Path) -> Result<Vec<SuiteMember>, SuiteError> {

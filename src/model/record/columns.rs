@@ -3,6 +3,23 @@
 
 use super::{MAX_SAMPLES, Record, RecordError, Units, cut};
 
+/// Whether any line of `text` (not a comment) is two numbers, as a plain
+/// record's samples are: a file without one is not a record at all.
+pub fn has_samples(text: &str) -> bool {
+    text.lines().any(|line| {
+        let t = line.trim();
+        !(t.starts_with('#') || t.starts_with('%')) && matches!(numbers(t)[..], [Some(_), Some(_)])
+    })
+}
+
+/// The fields of a line (commas or white space), each a finite number or not.
+fn numbers(line: &str) -> Vec<Option<f64>> {
+    line.split(|c: char| c == ',' || c.is_whitespace())
+        .filter(|f| !f.is_empty())
+        .map(|f| f.parse::<f64>().ok().filter(|v| v.is_finite()))
+        .collect()
+}
+
 /// Parses a plain record: one sample a line, `time, acceleration` (commas
 /// or white space), time in seconds from any start, equally spaced;
 /// a first line that is not two numbers is a header, and lines starting
@@ -19,14 +36,7 @@ pub fn parse_columns(path: &str, text: &str, units: Units) -> Result<Record, Rec
         if t.is_empty() || t.starts_with('#') || t.starts_with('%') {
             continue;
         }
-        let fields: Vec<&str> = t
-            .split(|c: char| c == ',' || c.is_whitespace())
-            .filter(|f| !f.is_empty())
-            .collect();
-        let numbers: Vec<Option<f64>> = fields
-            .iter()
-            .map(|f| f.parse::<f64>().ok().filter(|v| v.is_finite()))
-            .collect();
+        let numbers = numbers(t);
         match numbers.as_slice() {
             [Some(time), Some(a)] => {
                 if samples.len() == MAX_SAMPLES {
