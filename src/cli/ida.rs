@@ -33,7 +33,7 @@ pub struct IdaArgs {
     pub suite: SuiteArgs,
     /// Intensity levels in g: START:STOP:STEP (e.g. 0.05:1.0:0.05) or a
     /// list X1,X2,…, ascending and > 0.
-    #[arg(long, value_name = "START:STOP:STEP")]
+    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
     pub levels: String,
     /// Ductility limit states, e.g. 2,4 or left:2,right:4 (either structure by default).
     #[arg(long, value_name = "[SIDE:]MU,…")]
@@ -173,13 +173,16 @@ pub fn describe(f: &Fragility) -> String {
                 g4(level)
             )
         }
-        Fragility::Separated { below, above } => {
-            format!(
-                "no fit: crossed between {} g and {} g",
-                g4(below),
-                g4(above)
-            )
-        }
+        Fragility::Separated { below, above } if below == above => format!(
+            "no fit: none exceed below {} g, all above (θ → {} g, β → 0)",
+            g4(below),
+            g4(below)
+        ),
+        Fragility::Separated { below, above } => format!(
+            "no fit: crossed between {} g and {} g (β → 0)",
+            g4(below),
+            g4(above)
+        ),
         Fragility::NotIncreasing { fraction } => {
             format!(
                 "no fit: does not rise with intensity ({:.0} %)",

@@ -82,7 +82,8 @@ impl PartialEq for StructurePeaks {
 impl StructurePeaks {
     /// Sets the demands that follow from the peaks and the final state
     /// (SPEC §6, demands): μ = Π_u/Π_uy (∞ when elastic), r = (1 − Π_α)(x − z)
-    /// (0 when elastic), E_h = ∫ f_s ẋ dτ − f_s²/(2k).
+    /// (0 when elastic), E_h = ∫ f_s ẋ dτ − f_s²/(2k) (0 for a spring that
+    /// never yielded).
     pub fn settle(&mut self, end: &FinalSpring) {
         let elastic = !end.yield_displacement.is_finite();
         self.ductility = if elastic {
@@ -95,7 +96,15 @@ impl StructurePeaks {
         } else {
             (1.0 - end.alpha) * (end.displacement - end.elastic_part)
         };
-        self.hysteretic_energy = end.work - end.force * end.force / (2.0 * end.stiffness);
+        // A spring that never left its elastic range is conservative: its
+        // work is exactly the energy it stores, f_s²/(2k), so E_h = 0; the
+        // difference of the two computed terms would be round-off noise
+        // (±1e-14 of the input), whose sign and logarithm mean nothing.
+        self.hysteretic_energy = if self.yielded || end.work.is_nan() {
+            end.work - end.force * end.force / (2.0 * end.stiffness)
+        } else {
+            0.0
+        };
     }
 
     /// Raises A to |a| for an absolute acceleration a = ẍ + g at an instant.
