@@ -15,6 +15,7 @@ pub mod budget;
 pub mod description;
 pub mod figure;
 pub mod gap;
+pub mod gap_suite;
 pub mod ida;
 pub mod map;
 pub mod output;
