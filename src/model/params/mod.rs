@@ -433,7 +433,7 @@ mod tests {
         let text = SET1.to_string();
         assert!(text.starts_with("Π_m=0.5 Π_ω1=1.05 "), "{text}");
         assert!(text.contains(
-            " model=improved-kelvin g(τ)=sine a_p=0 ω_p=0 method=newmark tol=1e-11 cycles=8 Δτ=0.001"
+            " model=improved-kelvin g(τ)=sine s=1 a_p=0 ω_p=0 method=newmark tol=1e-11 cycles=8 Δτ=0.001"
         ));
         assert_eq!(text.split(' ').count(), FIELDS.len());
     }
