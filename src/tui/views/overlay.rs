@@ -22,7 +22,7 @@ pub const KEYS: [(&str, &str); 30] = [
     (", / .  (Ctrl+←/→)", "nudge by a tenth of a step"),
     ("Enter", "type an exact value (typing replaces it)"),
     ("Tab", "switch the active set"),
-    ("m", "toggle Kelvin / improved Kelvin"),
+    ("m", "Kelvin ↔ improved Kelvin (row: all six)"),
     ("r", "reset the active set to its preset"),
     ("1-9", "recall preset 1-9 into the active set"),
     ("p", "preset picker"),
