@@ -28,6 +28,7 @@ pub mod event;
 pub mod explorer;
 pub mod export;
 pub mod fields;
+pub mod fit;
 pub mod gapfill;
 pub mod jobs;
 pub mod layout;
