@@ -6,7 +6,8 @@
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers, MouseEvent, MouseEventKind};
 use pounding::model::preset::builtin;
 use pounding::tui::app::{App, Look, Mode};
-use pounding::tui::effects::{self, Effect, History};
+use pounding::tui::effects::{self, Effect};
+use pounding::tui::export::History;
 use pounding::tui::scene::Scene;
 use pounding::tui::ui;
 use pounding::tui::views::summary;

@@ -33,6 +33,7 @@ pub mod gapfill;
 pub mod jobs;
 pub mod layout;
 pub mod look;
+pub mod map_grid;
 pub mod pace;
 pub mod physical;
 pub mod presets;
