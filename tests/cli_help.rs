@@ -54,3 +54,29 @@ fn command_help_names_every_choice() {
 fn the_command_line_is_consistent() {
     Cli::command().debug_assert();
 }
+
+/// Each option appears once in a command's help (`figure` listed
+/// `--method` twice, its own and the shared one).
+#[test]
+fn no_option_is_listed_twice() {
+    for command in [
+        "run",
+        "spectrum",
+        "map",
+        "gap",
+        "similarity",
+        "figure",
+        "bench",
+        "stress",
+    ] {
+        let text = stdout(&succeeds(&[command, "--help"]));
+        let mut seen = std::collections::BTreeSet::new();
+        for line in text.lines() {
+            let Some(flag) = line.trim_start().strip_prefix("--") else {
+                continue;
+            };
+            let flag = flag.split([' ', '=']).next().unwrap();
+            assert!(seen.insert(flag.to_string()), "{command}: --{flag} twice");
+        }
+    }
+}
