@@ -93,6 +93,25 @@ fn expand(tree: &str) -> Vec<String> {
         .collect()
 }
 
+/// A `use` tree without its renames: `{a::X as Y, b}` → `{a::X, b}`.
+fn without_renames(tree: &str) -> String {
+    let mut out = String::new();
+    let mut words = tree.split_whitespace();
+    while let Some(w) = words.next() {
+        if w == "as" {
+            // Keep what closes after the new name: `Y},` → `},`.
+            let next = words.next().unwrap_or("");
+            out.extend(
+                next.chars()
+                    .skip_while(|c| c.is_alphanumeric() || *c == '_'),
+            );
+        } else {
+            out.push_str(w);
+        }
+    }
+    out
+}
+
 /// Every path a file's code names: its `use` trees and inline paths.
 fn paths(code: &str) -> Vec<(bool, String)> {
     let mut out = Vec::new();
@@ -108,8 +127,7 @@ fn paths(code: &str) -> Vec<(bool, String)> {
         let Some(end) = after.find(';') else { break };
         if at_start && !before.trim_end().ends_with("fn") {
             let public = before.trim_end().ends_with("pub") || before.trim_end().ends_with(')');
-            let tree = after[..end].split(" as ").next().unwrap();
-            for p in expand(tree) {
+            for p in expand(&without_renames(&after[..end])) {
                 out.push((public, p));
             }
         }
@@ -136,8 +154,9 @@ fn paths(code: &str) -> Vec<(bool, String)> {
     out
 }
 
-/// The absolute segments of `path` as seen from `module` (a parent's own path for `super`).
-fn absolute(path: &str, module: &[String], parent: bool) -> Option<Module> {
+/// The absolute segments of `path` as seen from `module` (`super` is the
+/// module above: for a parent file, above its folder).
+fn absolute(path: &str, module: &[String]) -> Option<Module> {
     let segs: Vec<&str> = path.split("::").filter(|s| !s.is_empty()).collect();
     let mut base: Module;
     let mut i = 0;
@@ -147,7 +166,6 @@ fn absolute(path: &str, module: &[String], parent: bool) -> Option<Module> {
             i = 1;
         }
         &"self" | &"super" => {
-            // A non-parent file's `self` is its own module; `super` its parent's.
             base = module.to_vec();
             if segs[0] == "self" {
                 i = 1;
@@ -156,7 +174,6 @@ fn absolute(path: &str, module: &[String], parent: bool) -> Option<Module> {
                 base.pop();
                 i += 1;
             }
-            let _ = parent;
         }
         _ => return None,
     }
@@ -205,7 +222,7 @@ fn graph() -> BTreeMap<Module, BTreeSet<Module>> {
                 || p.starts_with("super::")
                 || p.starts_with("self::")
             {
-                absolute(&p, m, true)
+                absolute(&p, m)
             } else if public {
                 let mut f = m.clone();
                 f.extend(p.split("::").map(String::from));
@@ -230,7 +247,7 @@ fn graph() -> BTreeMap<Module, BTreeSet<Module>> {
     for (m, (parent, text)) in &all {
         let e = edges.entry(m.clone()).or_default();
         for (_, p) in paths(&code(text)) {
-            let Some(abs) = absolute(&p, m, *parent) else {
+            let Some(abs) = absolute(&p, m) else {
                 continue;
             };
             let Some(to) = owner(&abs, &all, &reexports, 0) else {
@@ -289,12 +306,12 @@ fn no_two_files_import_each_other() {
 #[test]
 fn the_check_sees_imports_and_loops() {
     assert_eq!(
-        expand("super::{a::B, c::{D, E}}"),
+        expand(&without_renames("super::{a::B as F, c::{D, E}}")),
         ["super::a::B", "super::c::D", "super::c::E"]
     );
     let m = |s: &str| s.split("::").map(String::from).collect::<Module>();
     assert_eq!(
-        absolute("super::super::x::Y", &m("solver::exact::driver"), false),
+        absolute("super::super::x::Y", &m("solver::exact::driver")),
         Some(m("solver::x::Y"))
     );
     let found = paths("use super::batch::NewBaseline;\nfn f() { super::spectrum::combine(); }");
