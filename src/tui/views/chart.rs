@@ -478,10 +478,6 @@ fn header(
 ) -> u16 {
     let right = margin(buf, area);
     let second_row = area.height >= 7;
-    // A title wider than the chart gives up whole words and says so.
-    let room = usize::from(right.saturating_sub(area.x));
-    let (title, short_title) = (fit(title, room), fit(short_title, room));
-    let (title, short_title) = (title.as_str(), short_title.as_str());
     // Where the legend goes after `title`, and how many of its entries fit there.
     let place = |title: &str, compact: bool| {
         let end = area.x + width(title);
@@ -506,6 +502,10 @@ fn header(
         .into_iter()
         .find(|(t, c)| Some(score(t, *c)) == best)
         .unwrap_or((title, false));
+    // A title wider than the chart even without its scaling gives up whole
+    // words and says so.
+    let title = fit(title, usize::from(right.saturating_sub(area.x)));
+    let title = title.as_str();
     let (row, fitting) = place(title, compact);
     put(buf, area.x, area.y, title, Style::new(), right);
     let mut x = right - legend_width(&entries[..fitting], compact);

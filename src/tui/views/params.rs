@@ -124,10 +124,14 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     } else {
         "parameters (Tab switches set)"
     };
-    let title = format!(
-        " {} ",
-        fit(title, usize::from(area.width).saturating_sub(4))
-    );
+    // Between the corners: padded when it fits so, else touching them, else
+    // its whole words and "…".
+    let room = usize::from(area.width).saturating_sub(2);
+    let title = match title.chars().count() {
+        n if n + 2 <= room => format!(" {title} "),
+        n if n <= room => title.to_string(),
+        _ => fit(title, room),
+    };
     let table = Table::new(rows, widths(wide))
         .header(Row::new(head).style(Style::new().add_modifier(Modifier::UNDERLINED)))
         .block(Block::bordered().title(title));
