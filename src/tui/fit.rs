@@ -38,7 +38,8 @@ pub fn short_law(text: &str) -> Option<&'static str> {
 }
 
 /// `text` in at most `width` characters: whole when it fits; else the
-/// words that fit before a "…"; else its first characters and "…".
+/// words that fit before a "…" (not ending inside a bracket they open);
+/// else its first characters and "…".
 pub fn fit(text: &str, width: usize) -> String {
     let n = text.chars().count();
     if n <= width {
@@ -50,11 +51,19 @@ pub fn fit(text: &str, width: usize) -> String {
     let room = width - 1;
     let head: String = text.chars().take(room).collect();
     let at_word_end = text.chars().nth(room) == Some(' ');
-    let kept = match head.rfind(' ') {
+    let mut kept = match head.rfind(' ') {
         _ if at_word_end => head.trim_end(),
         Some(i) if !head[..i].trim_end().is_empty() => head[..i].trim_end(),
         _ => head.as_str(),
     };
+    // A bracket left open gives up what it began: "stiffness…", not
+    // "stiffness (0:…".
+    if kept.matches('(').count() > kept.matches(')').count()
+        && let Some(i) = kept.rfind('(')
+        && !kept[..i].trim_end().is_empty()
+    {
+        kept = kept[..i].trim_end();
+    }
     format!("{kept}…")
 }
 
@@ -79,10 +88,8 @@ mod tests {
             fit("Hertz stiffness (0: from e)", 30),
             "Hertz stiffness (0: from e)"
         );
-        assert_eq!(
-            fit("Hertz stiffness (0: from e)", 24),
-            "Hertz stiffness (0:…"
-        );
+        assert_eq!(fit("Hertz stiffness (0: from e)", 24), "Hertz stiffness…");
+        assert_eq!(fit("a (b) c (d e f)", 12), "a (b) c…");
         assert_eq!(fit("Hertz stiffness (0: from e)", 16), "Hertz stiffness…");
         assert_eq!(fit("Hertz stiffness", 4), "Her…");
         assert_eq!(fit("abc", 0), "");
