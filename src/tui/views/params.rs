@@ -186,11 +186,13 @@ pub fn render_info(app: &App, frame: &mut Frame, area: Rect) {
         lines.push(Line::from(format!("→ {}", groups.join("  "))));
     } else {
         let f = &FIELDS[app.selected];
+        // A choice's names, `a|b|c`, spaced so that the box wraps between
+        // them rather than inside one.
         lines.push(Line::from(format!(
             "{} {} {}, step {}",
             f.symbol,
             f.meaning,
-            f.range(),
+            f.range().replace('|', " | "),
             f.step
         )));
         lines.push(Line::from(format!("μ = Π_ω2/Π_ω1 = {:.4}", p.mu())));
