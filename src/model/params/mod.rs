@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 use std::fmt;
 
-use super::contact::ContactModel;
+use super::contact::{ContactConstants, ContactModel};
 use super::excitation::Excitation;
 use super::method::Method;
 
@@ -343,6 +343,21 @@ impl fmt::Display for Params {
             write!(f, "{sep}{}={}", field.symbol, field.text(self))?;
         }
         Ok(())
+    }
+}
+
+/// The contact law's constants of a parameter set. It lives here, beside
+/// the parameters, so that the contact laws need not know the parameter set.
+impl ContactConstants {
+    pub fn of(p: &Params) -> Self {
+        ContactConstants {
+            model: p.model,
+            mass_ratio: p.mass_ratio,
+            contact_omega: p.contact_omega,
+            restitution: p.restitution,
+            hertz_stiffness: p.hertz_stiffness(),
+            min_impact_velocity: p.min_impact_velocity,
+        }
     }
 }
 

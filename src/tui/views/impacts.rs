@@ -14,6 +14,7 @@ use ratatui::widgets::{Cell, Paragraph, Row, Table, TableState};
 use super::units::Units;
 use crate::solver::RunResult;
 use crate::tui::app::App;
+use crate::tui::fit::fit;
 use crate::tui::worker::Slot;
 
 /// A number in at most 6 characters.
@@ -119,7 +120,10 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     let table = Table::new(rows, widths)
         .column_spacing(1)
         .header(header)
-        .block(ratatui::widgets::Block::new().title(app.look.text(&title)))
+        .block(
+            ratatui::widgets::Block::new()
+                .title(fit(&app.look.text(&title), usize::from(table_area.width))),
+        )
         .row_highlight_style(Style::new().add_modifier(Modifier::REVERSED));
     let mut state = TableState::default().with_selected(app.view.selected_impact(&r.impacts));
     frame.render_stateful_widget(table, table_area, &mut state);
@@ -146,10 +150,11 @@ fn energy(app: &App, r: &RunResult, u: &Units, frame: &mut Frame, area: Rect) {
     ];
     let biggest = terms.iter().fold(0f64, |m, t| m.max(t.1.abs())).max(1e-300);
     let bar_width = area.width.saturating_sub(11 + 9) as f64;
-    let mut lines = vec![Line::from(app.look.text(&format!(
+    let title = app.look.text(&format!(
         "energy [{}], residual {:.0e}",
         u.energy_unit, e.residual
-    )))];
+    ));
+    let mut lines = vec![Line::from(fit(&title, usize::from(area.width)))];
     for (name, v) in terms {
         let n = ((v.abs() / biggest) * bar_width).round() as usize;
         let bar = if app.look.ascii { "#" } else { "█" }.repeat(n);
