@@ -11,31 +11,12 @@ use ratatui::style::{Modifier, Style};
 use ratatui::text::Line;
 use ratatui::widgets::{Cell, Paragraph, Row, Table, TableState};
 
+use super::compact::{fit as fit_parts, num, pair};
 use super::units::Units;
 use crate::solver::RunResult;
 use crate::tui::app::App;
 use crate::tui::fit::fit;
 use crate::tui::worker::Slot;
-
-/// A number in at most 6 characters.
-pub fn num(v: f64) -> String {
-    let a = v.abs();
-    if v == 0.0 {
-        "0".into()
-    } else if !v.is_finite() {
-        format!("{v}")
-    } else if !(1e-3..1e5).contains(&a) {
-        format!("{v:.0e}")
-    } else if a >= 1000.0 {
-        format!("{v:.0}")
-    } else if a >= 100.0 {
-        format!("{v:.1}")
-    } else if a >= 10.0 {
-        format!("{v:.2}")
-    } else {
-        format!("{v:.3}")
-    }
-}
 
 pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     let Some(run) = app.shown(Slot::Set(app.active)) else {
@@ -164,7 +145,7 @@ fn energy(app: &App, r: &RunResult, u: &Units, frame: &mut Frame, area: Rect) {
         )));
     }
     let (left, right) = (&r.left, &r.right);
-    let pair = super::summary::pair;
+    let pair = pair;
     let demands = [
         pair(
             "A",
@@ -178,7 +159,7 @@ fn energy(app: &App, r: &RunResult, u: &Units, frame: &mut Frame, area: Rect) {
             right.residual_displacement * u.length,
         ),
     ];
-    let demands = super::summary::fit(&demands, area.width as usize);
+    let demands = fit_parts(&demands, area.width as usize);
     lines.push(Line::from(app.look.text(&demands)));
     frame.render_widget(Paragraph::new(lines), area);
 }
