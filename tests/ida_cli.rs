@@ -158,3 +158,45 @@ fn bad_levels_and_limit_states_are_refused() {
     a.extend(["--levels", "0.1,0.2", "--im", "sa:0"]);
     fails(&a, 2, &["sa:0"]);
 }
+
+#[test]
+fn pounding_counts_follow_the_separation_of_the_elastic_pair() {
+    // Below yielding the pair without contact is linear, so each record's
+    // Π_d,min in m grows in proportion to its scale: d(x) = d(0.3 g)·x/0.3.
+    // A record pounds at the 25 mm joint exactly when d(x) > 25 mm, so the
+    // IDA's pounding counts follow from one `gap --suite` at 0.3 g.
+    let gap = json(&[
+        "gap",
+        "--preset",
+        "two-buildings",
+        "--suite",
+        "synthetic:8@4",
+        "--im",
+        "sa:0.95",
+        "--level",
+        "0.3",
+        "--format",
+        "json",
+    ]);
+    let d: Vec<f64> = gap["records"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["min_gap_m"].as_f64().unwrap())
+        .collect();
+    let v = ida("0.06:0.16:0.02", &[]);
+    let counts = v["fragility"][0]["counts"].as_array().unwrap();
+    let mut mixed = 0;
+    for c in counts {
+        let x = c["level"].as_f64().unwrap();
+        let scaled: Vec<f64> = d.iter().map(|d| d * x / 0.3).collect();
+        assert!(
+            scaled.iter().all(|s| (s - 0.025).abs() > 1e-9),
+            "a grazing record"
+        );
+        let expected = scaled.iter().filter(|s| **s > 0.025).count() as u64;
+        assert_eq!(c["exceeded"].as_u64().unwrap(), expected, "at {x} g");
+        mixed += usize::from(expected > 0 && expected < d.len() as u64);
+    }
+    assert!(mixed >= 2, "the levels straddle the joint");
+}

@@ -174,7 +174,7 @@ pub fn describe(f: &Fragility) -> String {
             )
         }
         Fragility::Separated { below, above } if below == above => format!(
-            "no fit: none exceed below {} g, all above (θ → {} g, β → 0)",
+            "no fit: mixed only at {} g (θ → {} g, β → 0)",
             g4(below),
             g4(below)
         ),
