@@ -323,3 +323,71 @@ fn bad_suites_and_levels_are_refused() {
         &["--excitation"],
     );
 }
+
+/// A K-NET record (NIED's 17-line header, eight counts to a line): a
+/// decaying 1.75 Hz tone.
+fn knet_text() -> String {
+    let mut text = "Origin Time       2008/06/14 08:43:00
+Lat.              39.030
+Long.             140.880
+Depth. (km)       8
+Mag.              7.2
+Station Code      IWT010
+Station Lat.      39.0100
+Station Long.     140.8983
+Station Height(m) 280
+Record Time       2008/06/14 08:43:53
+Sampling Freq(Hz) 100Hz
+Duration Time(s)  60
+Dir.              E-W
+Scale Factor      7845(gal)/8223790
+Max. Acc. (gal)   1433.283
+Last Correction   2008/06/14 08:43:38
+Memo.
+"
+    .to_string();
+    let counts: Vec<i64> = (0..800)
+        .map(|k| {
+            let t = k as f64 * 0.01;
+            (250_000.0 * (-0.4 * t).exp() * (11.0 * t).sin()).round() as i64
+        })
+        .collect();
+    for line in counts.chunks(8) {
+        let cells: Vec<String> = line.iter().map(|c| format!("{c:>8}")).collect();
+        text.push_str(&cells.join(""));
+        text.push('\n');
+    }
+    text
+}
+
+#[test]
+fn a_directory_of_at2_and_knet_records_is_a_suite() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy("presets/synthetic.at2", dir.path().join("a-synthetic.at2")).unwrap();
+    std::fs::write(dir.path().join("IWT0100806140843.EW"), knet_text()).unwrap();
+    std::fs::write(dir.path().join("notes.md"), "not a record\n").unwrap();
+    let v = json(&[
+        "suite",
+        "--preset",
+        "two-buildings",
+        "--suite",
+        dir.path().to_str().unwrap(),
+        "--im",
+        "sa:0.95",
+        "--level",
+        "0.3",
+        "--format",
+        "json",
+    ]);
+    let names: Vec<&str> = rows(&v)
+        .iter()
+        .map(|r| r["record"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["IWT0100806140843.EW", "a-synthetic.at2"]);
+    let knet = &rows(&v)[0];
+    assert_eq!(knet["samples"], 800);
+    assert_eq!(knet["dt"], 0.01);
+    for row in rows(&v) {
+        assert!((row["intensity_g"].as_f64().unwrap() - 0.3).abs() < 1e-12);
+    }
+}
