@@ -24,7 +24,9 @@
 //! - [`demands`]: a run's demands (SPEC §6) in SI;
 //! - [`suite`]: one pair of physical buildings under a suite of records,
 //!   each scaled to an intensity (SPEC §12), and [`statistics`], the
-//!   median, percentiles and dispersion of a demand over a suite.
+//!   median, percentiles and dispersion of a demand over a suite;
+//! - [`suite_map`]: P(pounding) and the median amplification over two
+//!   physical quantities of the buildings, under a suite (SPEC §12).
 
 pub mod baseline;
 pub mod batch;
@@ -39,6 +41,7 @@ pub mod similarity;
 pub mod spectrum;
 pub mod statistics;
 pub mod suite;
+pub mod suite_map;
 pub mod sweep;
 
 pub use crate::model::{family, grid, spectrum_spec};

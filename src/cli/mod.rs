@@ -18,6 +18,7 @@ pub mod gap;
 pub mod gap_suite;
 pub mod ida;
 pub mod map;
+pub mod map_suite;
 pub mod output;
 pub mod params;
 pub mod progress;
