@@ -112,3 +112,33 @@ fn a_pi_override_is_refused_where_the_record_sets_the_pi_groups() {
         &["gap", "[physical]"],
     );
 }
+
+#[test]
+fn every_output_under_a_record_names_its_numbers() {
+    let record = "record:presets/synthetic.at2";
+    for args in [
+        vec!["run", "--excitation", record],
+        vec!["spectrum", "--excitation", record, "--omega1", "1:1.2:0.1"],
+        vec![
+            "map",
+            "--excitation",
+            record,
+            "--x",
+            "omega1=1:1.1:0.1",
+            "--y",
+            "gap=0.2:0.3:0.1",
+        ],
+        vec!["gap", "--excitation", record],
+    ] {
+        let mut a = args.clone();
+        a.extend(["--format", "json"]);
+        let v = json(&a);
+        assert_eq!(v["samples"], 1000, "{args:?}");
+        assert_eq!(v["record_dt"], 0.01, "{args:?}");
+        assert!(
+            (v["a_p"].as_f64().unwrap() - 0.3 * G).abs() < 1e-9,
+            "{args:?}"
+        );
+        assert!(v["omega_p"].as_f64().unwrap() > 0.0, "{args:?}");
+    }
+}

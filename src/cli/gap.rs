@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
-use super::description::{DIMENSIONLESS, Provenance};
+use super::description::{DIMENSIONLESS, Provenance, RecordNumbers};
 use super::map::{AxisReport, resolve_mu};
 use super::output::{FormatArg, num, print, render};
 use super::output::{param_cells, param_columns};
@@ -152,6 +152,9 @@ pub struct GapReport<'a> {
     params: &'a Params,
     /// The no-pounding runs are always made by the exact method.
     method: Method,
+    /// A record's samples, DT, scale, a_p and ω_p, as numbers.
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    record: Option<RecordNumbers>,
     #[serde(skip_serializing_if = "Option::is_none")]
     x: Option<AxisReport>,
     /// μ of a sweep: Π_ω2 = μ Π_ω1 where Π_ω1 is the axis.
@@ -190,6 +193,7 @@ impl<'a> GapReport<'a> {
             provenance: Provenance::new(preset, DIMENSIONLESS),
             params: p,
             method: free_params(p).method,
+            record: RecordNumbers::of(p),
             x: axis.map(AxisReport::of),
             mu: None,
             points,
