@@ -6,27 +6,8 @@ mod common;
 
 use std::fs;
 
-use common::{fails, json};
+use common::{KNET_HEADER as HEADER, fails, json, knet_text};
 use pounding::model::record::{self, Format, STANDARD_GRAVITY};
-
-const HEADER: &str = "Origin Time       2008/06/14 08:43:00
-Lat.              39.030
-Long.             140.880
-Depth. (km)       8
-Mag.              7.2
-Station Code      IWT010
-Station Lat.      39.0100
-Station Long.     140.8983
-Station Height(m) 280
-Record Time       2008/06/14 08:43:53
-Sampling Freq(Hz) 100Hz
-Duration Time(s)  60
-Dir.              E-W
-Scale Factor      7845(gal)/8223790
-Max. Acc. (gal)   1433.283
-Last Correction   2008/06/14 08:43:38
-Memo.
-";
 
 /// Counts of a decaying tone, eight to a line as NIED writes them.
 fn counts() -> Vec<i64> {
@@ -36,16 +17,6 @@ fn counts() -> Vec<i64> {
             (250_000.0 * (-0.8 * t).exp() * (11.0 * t).sin()).round() as i64 + 1234
         })
         .collect()
-}
-
-fn knet_text(counts: &[i64]) -> String {
-    let mut text = HEADER.to_string();
-    for line in counts.chunks(8) {
-        let cells: Vec<String> = line.iter().map(|c| format!("{c:>8}")).collect();
-        text.push_str(&cells.join(""));
-        text.push('\n');
-    }
-    text
 }
 
 #[test]

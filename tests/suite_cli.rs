@@ -324,47 +324,22 @@ fn bad_suites_and_levels_are_refused() {
     );
 }
 
-/// A K-NET record (NIED's 17-line header, eight counts to a line): a
-/// decaying 1.75 Hz tone.
-fn knet_text() -> String {
-    let mut text = "Origin Time       2008/06/14 08:43:00
-Lat.              39.030
-Long.             140.880
-Depth. (km)       8
-Mag.              7.2
-Station Code      IWT010
-Station Lat.      39.0100
-Station Long.     140.8983
-Station Height(m) 280
-Record Time       2008/06/14 08:43:53
-Sampling Freq(Hz) 100Hz
-Duration Time(s)  60
-Dir.              E-W
-Scale Factor      7845(gal)/8223790
-Max. Acc. (gal)   1433.283
-Last Correction   2008/06/14 08:43:38
-Memo.
-"
-    .to_string();
+/// A K-NET record: a decaying 1.75 Hz tone of 800 samples.
+fn knet_tone() -> String {
     let counts: Vec<i64> = (0..800)
         .map(|k| {
             let t = k as f64 * 0.01;
             (250_000.0 * (-0.4 * t).exp() * (11.0 * t).sin()).round() as i64
         })
         .collect();
-    for line in counts.chunks(8) {
-        let cells: Vec<String> = line.iter().map(|c| format!("{c:>8}")).collect();
-        text.push_str(&cells.join(""));
-        text.push('\n');
-    }
-    text
+    common::knet_text(&counts)
 }
 
 #[test]
 fn a_directory_of_at2_and_knet_records_is_a_suite() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::copy("presets/synthetic.at2", dir.path().join("a-synthetic.at2")).unwrap();
-    std::fs::write(dir.path().join("IWT0100806140843.EW"), knet_text()).unwrap();
+    std::fs::write(dir.path().join("IWT0100806140843.EW"), knet_tone()).unwrap();
     std::fs::write(dir.path().join("notes.md"), "not a record\n").unwrap();
     let v = json(&[
         "suite",

@@ -161,10 +161,29 @@ pub struct MemberPlan {
 /// Plans every member before any run (a zero record, Π-groups out of range
 /// fail here), so that a bad suite fails at once and names the record.
 pub fn plan(case: &SuiteCase, members: &[SuiteMember]) -> Result<Vec<MemberPlan>, SuiteRunError> {
+    let scales = scales(members, &case.scaling)?;
+    replan(case, members, &scales)
+}
+
+/// Each member's (scale, intensity) under `scaling`: they depend on the
+/// records only, so a study of many buildings measures each record once.
+pub fn scales(
+    members: &[SuiteMember],
+    scaling: &Scaling,
+) -> Result<Vec<(f64, f64)>, SuiteRunError> {
+    members.iter().map(|m| scale_of(m, scaling)).collect()
+}
+
+/// [`plan`] with the members' scales already measured ([`scales`]).
+pub fn replan(
+    case: &SuiteCase,
+    members: &[SuiteMember],
+    scales: &[(f64, f64)],
+) -> Result<Vec<MemberPlan>, SuiteRunError> {
     members
         .iter()
-        .map(|m| {
-            let (scale, intensity) = scale_of(m, &case.scaling)?;
+        .zip(scales)
+        .map(|(m, &(scale, intensity))| {
             Ok(MemberPlan {
                 scale,
                 intensity,

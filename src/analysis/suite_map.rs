@@ -18,7 +18,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::statistics::quantile;
-use super::suite::{MemberPlan, SuiteCase, SuiteRun, SuiteRunError, plan, run_member};
+use super::suite::{MemberPlan, SuiteCase, SuiteRun, SuiteRunError, replan, run_member, scales};
 use crate::model::params::echo;
 use crate::model::physical::Physical;
 use crate::model::suite::SuiteMember;
@@ -181,9 +181,14 @@ pub fn plan_cells(
     cells: &[(f64, f64, SuiteCase)],
     members: &[SuiteMember],
 ) -> Result<Vec<Vec<MemberPlan>>, (f64, f64, SuiteRunError)> {
+    let Some((x0, y0, first)) = cells.first() else {
+        return Ok(Vec::new());
+    };
+    // The scaling depends on the records alone: measured once for all cells.
+    let scales = scales(members, &first.scaling).map_err(|e| (*x0, *y0, e))?;
     cells
         .iter()
-        .map(|(x, y, case)| plan(case, members).map_err(|e| (*x, *y, e)))
+        .map(|(x, y, case)| replan(case, members, &scales).map_err(|e| (*x, *y, e)))
         .collect()
 }
 

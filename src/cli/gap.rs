@@ -32,16 +32,10 @@ pub struct GapArgs {
     /// Frequency ratio μ, Π_ω2 = μ Π_ω1 on an omega1 axis [default: the preset's, else omega2/omega1].
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub mu: Option<String>,
-    /// Over a suite of records (as `pounding suite --suite`): each record's
-    /// minimum gap, the gap at each --probability and the code rules (SPEC §12).
-    #[arg(long, value_name = "SUITE")]
-    pub suite: Option<String>,
-    /// With --suite: the intensity measure, pga or sa:T [default: pga].
-    #[arg(long, value_name = "pga|sa:T")]
-    pub im: Option<String>,
-    /// With --suite: scale each record so that its intensity measure equals X (g).
-    #[arg(long, value_name = "X", allow_hyphen_values = true)]
-    pub level: Option<String>,
+    /// A suite of records instead of one set: each record's minimum gap, the
+    /// gap at each --probability and the code rules (SPEC §12).
+    #[command(flatten)]
+    pub records: super::suite::SuiteOptions,
     /// With --suite: probabilities of not pounding, each in (0, 1) [default: 0.5,0.84,0.9].
     #[arg(long, value_name = "P,…", allow_hyphen_values = true)]
     pub probability: Option<String>,
@@ -52,34 +46,18 @@ pub struct GapArgs {
 }
 
 pub fn execute(args: &GapArgs) -> Result<(), CliError> {
-    if let Some(suite) = &args.suite {
+    let others = [("--probability", args.probability.is_some())];
+    if let Some(suite_args) = args
+        .records
+        .request(&args.params, args.output, args.long, &others)?
+    {
         if args.x.is_some() {
             return Err(CliError::Usage(
                 "--x: a suite's separation is for the preset's buildings; drop --x or --suite"
                     .into(),
             ));
         }
-        let suite_args = super::suite::SuiteArgs {
-            params: args.params.clone(),
-            suite: suite.clone(),
-            im: args.im.clone(),
-            level: args.level.clone(),
-            output: args.output,
-            long: args.long,
-            allow_unreliable: true,
-        };
         return super::gap_suite::execute(&suite_args, args.probability.as_deref());
-    }
-    for (flag, given) in [
-        ("--im", args.im.is_some()),
-        ("--level", args.level.is_some()),
-        ("--probability", args.probability.is_some()),
-    ] {
-        if given {
-            return Err(CliError::Usage(format!(
-                "{flag}: applies to a suite of records; give --suite SUITE"
-            )));
-        }
     }
     let (preset, mut p) = args.params.resolve()?;
     // Π_d,min is taken on the exact method's own series, whatever --method says.

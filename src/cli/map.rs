@@ -35,19 +35,13 @@ pub struct MapArgs {
     /// Frequency ratio μ, Π_ω2 = μ Π_ω1 on an omega1 axis [default: the preset's, else omega2/omega1].
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub mu: Option<String>,
-    /// Over a suite of records (as `pounding suite --suite`): --x and --y
-    /// are then physical quantities of the preset's [physical] table (m1, m2,
-    /// period1, period2, yield1, yield2, gap, damping, alpha, contact_omega,
-    /// restitution), and each cell gives P(pounding) and the median
-    /// amplification of the left building's drift (SPEC §12).
-    #[arg(long, value_name = "SUITE")]
-    pub suite: Option<String>,
-    /// With --suite: the intensity measure, pga or sa:T [default: pga].
-    #[arg(long, value_name = "pga|sa:T")]
-    pub im: Option<String>,
-    /// With --suite: scale each record so that its intensity measure equals X (g).
-    #[arg(long, value_name = "X", allow_hyphen_values = true)]
-    pub level: Option<String>,
+    /// A suite of records instead of one set: --x and --y are then physical
+    /// quantities of the preset's [physical] table (m1, m2, period1, period2,
+    /// yield1, yield2, gap, damping, alpha, contact_omega, restitution), and
+    /// each cell gives P(pounding) and the median amplification of the left
+    /// building's drift (SPEC §12).
+    #[command(flatten)]
+    pub records: super::suite::SuiteOptions,
     #[command(flatten)]
     pub output: FormatArg,
     #[command(flatten)]
@@ -55,27 +49,11 @@ pub struct MapArgs {
 }
 
 pub fn execute(args: &MapArgs) -> Result<(), CliError> {
-    if let Some(suite) = &args.suite {
-        let suite_args = super::suite::SuiteArgs {
-            params: args.params.clone(),
-            suite: suite.clone(),
-            im: args.im.clone(),
-            level: args.level.clone(),
-            output: args.output,
-            long: args.long,
-            allow_unreliable: true,
-        };
+    if let Some(suite_args) = args
+        .records
+        .request(&args.params, args.output, args.long, &[])?
+    {
         return super::map_suite::execute(&suite_args, &args.x, &args.y);
-    }
-    for (flag, given) in [
-        ("--im", args.im.is_some()),
-        ("--level", args.level.is_some()),
-    ] {
-        if given {
-            return Err(CliError::Usage(format!(
-                "{flag}: applies to a suite of records; give --suite SUITE"
-            )));
-        }
     }
     let (preset, p) = args.params.resolve_for_many()?;
     let usage = |e: crate::analysis::map::MapError| CliError::Usage(e.to_string());

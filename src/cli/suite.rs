@@ -50,6 +50,56 @@ pub struct SuiteArgs {
     pub allow_unreliable: bool,
 }
 
+/// `--suite`, `--im` and `--level` for a command that runs one set or,
+/// given `--suite`, a suite of records (`gap`, `map`).
+#[derive(Debug, Clone, Default, Args)]
+pub struct SuiteOptions {
+    /// Over a suite of records, as `pounding suite --suite` takes it.
+    #[arg(long, value_name = "SUITE")]
+    pub suite: Option<String>,
+    /// With --suite: the intensity measure, pga or sa:T [default: pga].
+    #[arg(long, value_name = "pga|sa:T")]
+    pub im: Option<String>,
+    /// With --suite: scale each record so that its intensity measure equals X (g).
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub level: Option<String>,
+}
+
+impl SuiteOptions {
+    /// The suite request, with the command's own options, or `None`
+    /// without `--suite`; `others` names the suite-only flags given (by
+    /// their flags) that are refused without it.
+    pub fn request(
+        &self,
+        params: &ParamArgs,
+        output: FormatArg,
+        long: LongArg,
+        others: &[(&str, bool)],
+    ) -> Result<Option<SuiteArgs>, CliError> {
+        let Some(suite) = &self.suite else {
+            let flags = [
+                ("--im", self.im.is_some()),
+                ("--level", self.level.is_some()),
+            ];
+            if let Some((flag, _)) = flags.iter().chain(others).find(|(_, given)| *given) {
+                return Err(usage(format!(
+                    "{flag}: applies to a suite of records; give --suite SUITE"
+                )));
+            }
+            return Ok(None);
+        };
+        Ok(Some(SuiteArgs {
+            params: params.clone(),
+            suite: suite.clone(),
+            im: self.im.clone(),
+            level: self.level.clone(),
+            output,
+            long,
+            allow_unreliable: true,
+        }))
+    }
+}
+
 fn usage(message: String) -> CliError {
     CliError::Usage(message)
 }

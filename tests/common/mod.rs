@@ -128,3 +128,35 @@ pub fn isolated_impact(model: ContactModel, e: f64, mass_ratio: f64) -> Params {
     p.validate().unwrap();
     p
 }
+
+/// NIED's 17-line K-NET header (scale factor 7845 gal / 8223790 counts,
+/// 100 Hz), as the record tests write it.
+pub const KNET_HEADER: &str = "Origin Time       2008/06/14 08:43:00
+Lat.              39.030
+Long.             140.880
+Depth. (km)       8
+Mag.              7.2
+Station Code      IWT010
+Station Lat.      39.0100
+Station Long.     140.8983
+Station Height(m) 280
+Record Time       2008/06/14 08:43:53
+Sampling Freq(Hz) 100Hz
+Duration Time(s)  60
+Dir.              E-W
+Scale Factor      7845(gal)/8223790
+Max. Acc. (gal)   1433.283
+Last Correction   2008/06/14 08:43:38
+Memo.
+";
+
+/// A K-NET file of `counts` under [`KNET_HEADER`], eight to a line as NIED writes them.
+pub fn knet_text(counts: &[i64]) -> String {
+    let mut text = KNET_HEADER.to_string();
+    for line in counts.chunks(8) {
+        let cells: Vec<String> = line.iter().map(|c| format!("{c:>8}")).collect();
+        text.push_str(&cells.join(""));
+        text.push('\n');
+    }
+    text
+}
