@@ -14,6 +14,7 @@ pub mod bench;
 pub mod budget;
 pub mod description;
 pub mod figure;
+pub mod figure_risk;
 pub mod gap;
 pub mod gap_suite;
 pub mod ida;
