@@ -107,7 +107,7 @@ fn bad_input_is_one_line_and_exit_2() {
         ),
         (
             &["figure", "fig3", "--method", "euler"],
-            "--method: unknown method `euler`",
+            "invalid value 'euler' for '--method",
         ),
         (
             &["figure", "fig3", "--preset", "set2"],

@@ -241,6 +241,55 @@ fn full_stdout_is_exit_1_with_a_message() {
     }
 }
 
+/// A stdout closed before the start (`>&-`) is a failed write, exit 1 with
+/// one line, for every command that prints; `Stdio::null()` would not do
+/// (it is an open `/dev/null`), so a shell closes fd 1 and execs the binary.
+#[test]
+fn closed_stdout_is_exit_1_with_a_message() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("h.svg");
+    let cases: [&[&str]; 9] = [
+        &["run", "--format", "json"],
+        &["run", "--history", "-"],
+        &["spectrum", "--omega1", "0.5:1.5:0.5"],
+        &["map", "--x", "omega1=0.5:1:0.5", "--y", "mu=1:2:1"],
+        &["gap", "--x", "omega1=0.5:1:0.5"],
+        &[
+            "similarity",
+            "--omega1",
+            "0.5:1:0.5",
+            "--ap",
+            "0.2g",
+            "--omega-p",
+            "6",
+        ],
+        &["stress", "--cases", "0"],
+        &[
+            "bench", "--preset", "set1", "--model", "kelvin", "--method", "exact",
+        ],
+        &["figure", "history", "--out", path_str(&svg)],
+    ];
+    for args in cases {
+        let o = Command::new("sh")
+            .arg("-c")
+            .arg(r#"exec "$0" "$@" >&-"#)
+            .arg(BIN)
+            .args(args)
+            .stdin(Stdio::null())
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {}", text(&o.stderr));
+        assert_one_line(&o, &["stdout", "Bad file descriptor"]);
+    }
+    // An open /dev/null is a reader that wants nothing: success.
+    let o = Command::new(BIN)
+        .args(["run", "--format", "json"])
+        .stdout(Stdio::null())
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+}
+
 /// Peak resident memory of a live process, in kB (Linux).
 fn peak_rss_kb(pid: u32) -> Option<u64> {
     let status = fs::read_to_string(format!("/proc/{pid}/status")).ok()?;

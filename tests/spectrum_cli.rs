@@ -67,12 +67,20 @@ fn csv_has_one_row_per_point() {
     ]));
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines.len(), 1 + 2 * 3);
-    // Every row carries its family member, the grid and the whole parameter set.
-    assert!(lines[0].starts_with("family,omega1_grid,mu,mass_ratio,omega1,omega2,"));
+    // Every row carries what the JSON says first (version, preset, units),
+    // its family member, the grid and the whole parameter set.
+    assert!(
+        lines[0]
+            .starts_with("version,preset,units,family,omega1_grid,mu,mass_ratio,omega1,omega2,")
+    );
     assert!(lines[0].ends_with(",impacts,region,min_gap_no_pounding"));
     let columns = lines[0].split(',').count();
     assert!(lines.iter().all(|l| l.split(',').count() == columns));
-    assert!(lines[4].starts_with("mass_ratio=0.9,0.1:0.3:0.1,"));
+    let head = format!(
+        "{},set1,dimensionless (Π-groups of SPEC §1),mass_ratio=0.9,0.1:0.3:0.1,",
+        env!("CARGO_PKG_VERSION")
+    );
+    assert!(lines[4].starts_with(&head), "{}", lines[4]);
     let header: Vec<&str> = lines[0].split(',').collect();
     let row: Vec<&str> = lines[4].split(',').collect();
     let cell = |key: &str| row[header.iter().position(|h| *h == key).unwrap()];
@@ -126,5 +134,32 @@ fn bad_input_is_one_line_and_exit_2() {
         let mut all = vec!["spectrum"];
         all.extend(args);
         fails(&all, 2, &[needle]);
+    }
+}
+
+/// The spectrum, map and gap CSVs say in every row what their JSON says
+/// first: the version, the preset and the units.
+#[test]
+fn csv_rows_carry_version_preset_and_units_as_the_json_does() {
+    for args in [
+        &["spectrum", "--omega1", "0.5:1:0.5"][..],
+        &["map", "--x", "omega1=0.5:1:0.5", "--y", "mu=1:2:1"][..],
+        &["gap", "--x", "omega1=0.5:1:0.5"][..],
+    ] {
+        let v = json(&[args, &["--preset", "set2", "--format", "json"]].concat());
+        let csv = stdout(&succeeds(
+            &[args, &["--preset", "set2", "--format", "csv"]].concat(),
+        ));
+        let lines: Vec<&str> = csv.lines().collect();
+        assert!(lines.len() > 1, "{args:?}");
+        let header: Vec<&str> = lines[0].split(',').collect();
+        assert_eq!(header[..3], ["version", "preset", "units"], "{args:?}");
+        for line in &lines[1..] {
+            let row: Vec<&str> = line.split(',').collect();
+            assert_eq!(row.len(), header.len(), "{args:?}");
+            for (i, key) in ["version", "preset", "units"].iter().enumerate() {
+                assert_eq!(row[i], v[key].as_str().unwrap(), "{args:?} {key}");
+            }
+        }
     }
 }

@@ -70,6 +70,7 @@ fn every_row_is_the_run_of_its_record_bit_for_bit() {
     for row in rows(&v) {
         let path = file_of(dir.path(), row);
         let ap = row["ap"].as_f64().unwrap();
+        let scale = row["scale"].as_f64().unwrap();
         let run = json(&[
             "run",
             "--preset",
@@ -79,7 +80,7 @@ fn every_row_is_the_run_of_its_record_bit_for_bit() {
             "--excitation",
             &format!("record:{}", path.display()),
             "--set",
-            &format!("record_amplitude={ap}"),
+            &format!("record_scale={scale}"),
             "--format",
             "json",
         ]);

@@ -6,7 +6,8 @@
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers, MouseEvent, MouseEventKind};
 use pounding::model::preset::builtin;
 use pounding::tui::app::{App, Look, Mode};
-use pounding::tui::effects::{self, Effect, History};
+use pounding::tui::effects::{self, Effect};
+use pounding::tui::export::History;
 use pounding::tui::scene::Scene;
 use pounding::tui::ui;
 use pounding::tui::views::summary;
@@ -159,6 +160,141 @@ fn every_scene_at_three_sizes_has_no_touching_labels() {
             assert!(bad.is_empty(), "{name} at {size:?}: {bad:?}\n{s}");
             insta::assert_snapshot!(format!("{name}_{}x{}", size.0, size.1), s);
         }
+    }
+}
+
+/// The full texts a pane or title may show: every row's meaning and
+/// symbol, every name a choice row can hold, the physical rows, the panes'
+/// titles and the laws scene's titles.
+fn full_texts() -> Vec<String> {
+    use pounding::model::params::{FIELDS, Kind};
+    use pounding::tui::scene::Laws;
+    let mut texts = vec![
+        "parameters (Tab switches set)".to_string(),
+        "physical units (u: Π-groups)".to_string(),
+    ];
+    for f in FIELDS {
+        texts.extend([f.meaning.to_string(), f.symbol.to_string()]);
+        if let Kind::Choice { names, .. } = f.kind {
+            // `record:PATH` names a form, not a text the pane shows.
+            texts.extend(
+                names
+                    .iter()
+                    .filter(|n| !n.contains(':'))
+                    .map(|n| n.to_string()),
+            );
+        }
+    }
+    for r in &pounding::tui::physical::ROWS {
+        texts.push(format!("moves {}", r.moves));
+    }
+    let own = pounding::model::ContactModel::ImprovedKelvin;
+    let mut laws = Laws::Paper;
+    for _ in 0..8 {
+        texts.push(format!("f_p(δ) {} (b)", laws.title(own)));
+        laws = laws.next(own);
+    }
+    texts
+}
+
+/// Places where a text of `texts` is shown cut: a prefix of it (six
+/// characters at least, starting a token, trailing spaces left out)
+/// followed on screen by neither the rest of it nor "…", but by a space, a
+/// border or the line's end. A line that ends at one of the text's spaces
+/// is the info box wrapping, not a cut; another text sharing a prefix goes
+/// on with a letter or digit, or is one whole word of it.
+fn cut_texts(screen: &str, texts: &[String]) -> Vec<String> {
+    let mut bad = Vec::new();
+    for line in screen.lines() {
+        let c: Vec<char> = line.chars().collect();
+        for t in texts {
+            let t: Vec<char> = t.chars().collect();
+            for i in 0..c.len() {
+                if i > 0 && c[i - 1].is_alphanumeric() {
+                    continue;
+                }
+                let mut m = c[i..].iter().zip(&t).take_while(|(a, b)| a == b).count();
+                if m == t.len() {
+                    continue;
+                }
+                while m > 0 && t[m - 1] == ' ' {
+                    m -= 1;
+                }
+                if m < 6 {
+                    continue;
+                }
+                let next = c.get(i + m).copied();
+                let goes_on = next.is_some_and(|n| n == '…' || n.is_alphanumeric());
+                let wraps = t[m] == ' ' && c[i + m..].iter().all(|n| *n == ' ');
+                // One whole word then a space is another text's word
+                // ("damping" of the energy terms), not this one cut.
+                let one_word = t[m] == ' ' && !t[..m].contains(&' ');
+                // A prefix that is itself a whole text ("moves Π_m" of m1,
+                // beside m2's "moves Π_m and the force scale").
+                let whole = texts.contains(&t[..m].iter().collect());
+                if !goes_on && !wraps && !one_word && !whole {
+                    bad.push(c[i..(i + m + 1).min(c.len())].iter().collect());
+                }
+            }
+        }
+    }
+    bad
+}
+
+#[test]
+fn no_label_meaning_value_or_title_is_cut_without_an_ellipsis() {
+    let texts = full_texts();
+    for size in [(60, 20), (80, 24), (120, 40)] {
+        let mut screens = scene_screens(size);
+        // Set 1 Kelvin beside set 2's improved Kelvin, then set 2 at each
+        // law with a long name.
+        let mut a = app(size);
+        key(&mut a, KeyCode::Char('m'));
+        settle(&mut a);
+        screens.push(("kelvin vs improved".into(), screen(&a)));
+        key(&mut a, KeyCode::Tab);
+        for model in ["hertzdamp", "hunt-crossley"] {
+            a.sets[1].params.set("model", model).unwrap();
+            settle(&mut a);
+            screens.push((model.into(), screen(&a)));
+        }
+        for (name, s) in screens {
+            let bad = cut_texts(&s, &texts);
+            assert!(bad.is_empty(), "{name} at {size:?}: {bad:?}\n{s}");
+        }
+    }
+    // At 80×24 a Kelvin set and an improved Kelvin set read apart.
+    let mut a = app((80, 24));
+    key(&mut a, KeyCode::Char('m'));
+    settle(&mut a);
+    let s = screen(&a);
+    let row = s.lines().find(|l| l.contains("model")).unwrap();
+    assert!(row.contains("kelvin") && row.contains("IK"), "{row}");
+}
+
+#[test]
+fn the_cut_check_finds_what_it_should() {
+    let texts = full_texts();
+    for bad in [
+        "│Π_K       Hertz stiffness (0: from 0         0        │",
+        "│model     improved  improved │",
+        "f_p [m2·a_p]                 f_p(δ) paper pair (b",
+        "┌ parameters (Tab switches set┐f_p",
+    ] {
+        assert!(!cut_texts(bad, &texts).is_empty(), "{bad}");
+    }
+    for good in [
+        "│Π_K       Hertz stiffness (0:… 0         0        │",
+        "│model     IK        kelvin   │",
+        "f_p [m2·a_p]            f_p(δ) paper pair…",
+        "┌ parameters (Tab…) ┐",
+        "Π_uy2 right yield displacement [0.001,  ",
+    ] {
+        assert!(
+            cut_texts(good, &texts).is_empty(),
+            "{good}: {:?}",
+            cut_texts(good, &texts)
+        );
     }
 }
 

@@ -34,7 +34,8 @@ fn figure_curves(method: Method) -> Vec<(&'static str, Vec<CurveSpec>, Vec<f64>)
         .iter()
         .map(|&name| {
             let preset = preset::builtin(name).expect("figure presets are built in");
-            let own = PresetSpectrum::of(&preset).expect("built-in spectrum tables are valid");
+            let own = PresetSpectrum::of(preset.spectrum.as_ref(), preset.params)
+                .expect("built-in spectrum tables are valid");
             let p = Params {
                 method,
                 ..preset.params

@@ -9,7 +9,6 @@
 
 use std::collections::HashMap;
 
-use super::batch::NewBaseline;
 use crate::model::Params;
 use crate::solver::{RunResult, StructurePeaks};
 
@@ -119,6 +118,18 @@ impl BaselineCache {
         }
         self.insert(p, b.peaks);
     }
+}
+
+/// A baseline a batch ([`super::batch`]) obtained.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NewBaseline {
+    /// Index of a point (the first) with this baseline's key.
+    pub point: usize,
+    pub peaks: FreePeaks,
+    /// Whether the run that gave it reached τ_end.
+    pub completed: bool,
+    /// Taken from a pounding run with no impact, not from a run of its own.
+    pub from_pounding: bool,
 }
 
 #[cfg(test)]

@@ -12,23 +12,11 @@ use std::collections::HashMap;
 
 use rayon::prelude::*;
 
-use super::baseline::{BaselineKey, FreePeaks};
+use super::baseline::{BaselineKey, FreePeaks, NewBaseline};
 use super::spectrum::baseline_params;
 use crate::model::Params;
 use crate::solver::exact::ContactExtremes;
 use crate::solver::{RunResult, run_for_sweep};
-
-/// A baseline this batch obtained.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct NewBaseline {
-    /// Index of a point (the first) with this baseline's key.
-    pub point: usize,
-    pub peaks: FreePeaks,
-    /// Whether the run that gave it reached τ_end.
-    pub completed: bool,
-    /// Taken from a pounding run with no impact, not from a run of its own.
-    pub from_pounding: bool,
-}
 
 /// What a batch computed.
 #[derive(Debug, Clone, Default)]

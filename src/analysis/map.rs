@@ -20,8 +20,9 @@ use std::fmt;
 
 use serde::Serialize;
 
+use super::baseline::NewBaseline;
 use super::baseline::{BaselineCache, BaselineKey, FreePeaks};
-use super::batch::{NewBaseline, run_points};
+use super::batch::run_points;
 use super::gap::from_max_relative;
 use super::spectrum::{Region, eight_peaks};
 use crate::model::family::MU;

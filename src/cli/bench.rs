@@ -20,7 +20,7 @@ pub struct BenchArgs {
     /// Preset to measure (repeatable) [default: set1 and set2].
     #[arg(long, value_name = "NAME|PATH")]
     pub preset: Vec<String>,
-    /// Contact model (repeatable) [default: both].
+    /// Contact law of the paper's pair, kelvin or improved-kelvin (repeatable) [default: both].
     #[arg(long, value_parser = ["kelvin", "improved-kelvin"])]
     pub model: Vec<String>,
     #[command(flatten)]

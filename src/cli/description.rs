@@ -32,6 +32,19 @@ impl<'a> Provenance<'a> {
             units,
         }
     }
+
+    /// The CSV columns that say the same as the JSON's first keys, so a row
+    /// read alone names its program, preset and units.
+    pub const CSV_COLUMNS: [&'static str; 3] = ["version", "preset", "units"];
+
+    /// The cells of [`Provenance::CSV_COLUMNS`].
+    pub fn csv_cells(&self) -> Vec<String> {
+        vec![
+            self.version.to_string(),
+            self.preset.to_string(),
+            self.units.to_string(),
+        ]
+    }
 }
 
 /// The parameter set a report is about, with the names of its contact law,

@@ -34,9 +34,6 @@ pub struct FigureArgs {
     /// Canvas height in pixels.
     #[arg(long, value_name = "H")]
     pub height: Option<String>,
-    /// Integrator: newmark or exact (spectra run thousands of cases: exact is far faster).
-    #[arg(long, value_name = "M", default_value = "exact")]
-    pub method: String,
     /// The Π_ω1 grid of a spectrum figure START:STOP:STEP [default: the preset's, else 0.1:3.0:0.01].
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
     pub omega1: Option<String>,
@@ -109,8 +106,13 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
     } else {
         Some(args.name.parse::<FigureName>()?)
     };
+    // `--method` is the shared option's: exact unless named (spectra run
+    // thousands of cases, and exact is far faster).
     let method: Method = args
+        .params
         .method
+        .as_deref()
+        .unwrap_or("exact")
         .parse()
         .map_err(|e| usage(format!("--method: {e}")))?;
     let size = figure::check_size(
@@ -158,12 +160,7 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
         suite: None,
     };
     if let Some(n) = name.filter(|n| n.is_risk()) {
-        options.suite = Some(figure_risk::study(
-            &args.risk,
-            &args.params,
-            &args.method,
-            n,
-        )?);
+        options.suite = Some(figure_risk::study(&args.risk, &args.params, n)?);
     } else if let Some(n) = name.filter(|n| !n.is_paper()) {
         let plan = SpectrumPlan::resolve(
             &args.params,

@@ -95,13 +95,12 @@ impl RiskArgs {
 }
 
 /// The suite study of figure `name` (ida, fragility or separation) on the
-/// buildings of `params`, run with `method`, checked and planned: a record
+/// buildings and settings of `params`, checked and planned: a record
 /// that cannot be scaled, or work beyond the budget without `--allow-long`,
 /// is refused before any run.
 pub fn study(
     risk: &RiskArgs,
     params: &ParamArgs,
-    method: &str,
     name: FigureName,
 ) -> Result<SuiteStudy, CliError> {
     risk.check_applies(Some(name), name.name())?;
@@ -111,11 +110,8 @@ pub fn study(
              with [physical], e.g. --preset two-buildings --suite synthetic:20"
         ))
     })?;
-    let mut params = params.clone();
-    // The figure's --method is the suite's integrator.
-    params.method = Some(method.to_string());
     let suite_args = SuiteArgs {
-        params,
+        params: params.clone(),
         suite: suite.clone(),
         im: risk.im.clone(),
         level: risk.level.clone(),

@@ -311,7 +311,8 @@ impl<'a> GapReport<'a> {
 
 impl Report for GapReport<'_> {
     fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = param_columns();
+        let mut h = Provenance::CSV_COLUMNS.to_vec();
+        h.extend(param_columns());
         h.extend([
             "free_left_peak_displacement",
             "free_right_peak_displacement",
@@ -334,7 +335,8 @@ impl Report for GapReport<'_> {
             .iter()
             .map(|pt| {
                 let g = &pt.gap;
-                let mut row = param_cells(&pt.params);
+                let mut row = self.provenance.csv_cells();
+                row.extend(param_cells(&pt.params));
                 row.extend(
                     [
                         g.free_left.peak_displacement,

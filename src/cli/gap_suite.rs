@@ -5,22 +5,17 @@
 //! [`crate::analysis::separation`]. This module parses, runs and prints.
 
 use std::fmt::Write as _;
-use std::time::Instant;
 
 use serde::Serialize;
 
 use super::CliError;
-use super::budget::{Work, run_steps};
 use super::description::Provenance;
 use super::output::{num, print, render};
-use super::progress::Progress;
-use super::suite::{SuiteArgs, case_of};
+use super::suite::{Ran, SuiteArgs, run};
 use crate::analysis::separation::{
     RecordGap, SeparationStudy, parse_probabilities, probability_of_pounding, study,
 };
-use crate::analysis::suite::{SuiteRun, plan, run_suite};
 use crate::model::params::echo::g4;
-use crate::model::suite::SuiteSpec;
 use crate::output::report::Report;
 
 /// The probabilities reported when `--probability` is not given.
@@ -39,22 +34,12 @@ pub fn execute(suite_args: &SuiteArgs, probability: Option<&str>) -> Result<(), 
     )
     .map_err(|e| usage(e.to_string()))?;
     let suite = suite_args.suite.as_str();
-    let (preset, case) = case_of(suite_args)?;
-    let members = SuiteSpec::parse(suite)
-        .and_then(|s| s.load())
-        .map_err(|e| usage(e.to_string()))?;
-    let plans = plan(&case, &members).map_err(|e| usage(e.to_string()))?;
-    let work = Work {
-        steps: plans.iter().map(|m| 2.0 * run_steps(&m.params)).sum(),
-        rows: 0.0,
-    };
-    work.check("gap --suite", suite_args.long.allow_long, false)?;
-    let progress = Progress::start(&work);
-    let start = Instant::now();
-    let runs = run_suite(&case, &members, &plans, &|r: &SuiteRun| {
-        progress.add(2.0 * run_steps(&r.params))
-    });
-    drop(progress);
+    let Ran {
+        preset,
+        case,
+        runs,
+        elapsed_ms,
+    } = run(suite_args, "gap --suite")?;
     let records: Vec<RecordGap> = runs.iter().map(RecordGap::of).collect();
     if let Some(r) = runs.iter().find(|r| !r.free.completed) {
         return Err(CliError::Failed(format!(
@@ -85,7 +70,7 @@ pub fn execute(suite_args: &SuiteArgs, probability: Option<&str>) -> Result<(), 
             })
             .collect(),
         study: study(&records, &probabilities),
-        elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
+        elapsed_ms,
     };
     print(&render(&report, suite_args.output.format)?)
 }

@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
-use super::description::Description;
+use super::description::{Description, Provenance};
 use super::output::{FormatArg, PEAK_COLUMNS, num, param_cells, param_columns, print, render};
 use super::params::ParamArgs;
 use super::progress::Progress;
@@ -198,7 +198,8 @@ const RESULT_COLUMNS: [&str; 10] = [
 impl Report for MapReport<'_> {
     /// Every row carries the cell's whole parameter set, μ and its results.
     fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = param_columns();
+        let mut h = Provenance::CSV_COLUMNS.to_vec();
+        h.extend(param_columns());
         h.extend(PEAK_COLUMNS);
         h.extend(RESULT_COLUMNS);
         h
@@ -208,7 +209,8 @@ impl Report for MapReport<'_> {
         self.cells
             .iter()
             .map(|c| {
-                let mut row = param_cells(&self.plan.at(c.x, c.y));
+                let mut row = self.description.provenance.csv_cells();
+                row.extend(param_cells(&self.plan.at(c.x, c.y)));
                 row.extend(c.peaks().map(num));
                 row.extend([c.left_amplification, c.right_amplification].map(num));
                 row.push(c.region.name().to_string());

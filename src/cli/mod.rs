@@ -82,9 +82,12 @@ impl From<crate::model::PresetError> for CliError {
     name = "pounding",
     version,
     about = "Pounding of two adjacent inelastic SDOF structures, in Buckingham-Π form",
-    long_about = "Pounding of two adjacent inelastic SDOF structures under sinusoidal ground \
-                  acceleration (Kelvin or improved Kelvin contact, bilinear hysteresis, \
-                  Newmark-β). Without a command it opens the terminal explorer."
+    long_about = "Pounding of two adjacent inelastic SDOF structures with bilinear hysteresis, \
+                  in Buckingham-Π form. Ground motion: a sine, the cycloidal pulses A, B, C1 \
+                  and C2, or a recorded accelerogram (PEER .AT2 or plain time-acceleration \
+                  columns). Contact laws: kelvin, improved-kelvin, hertz, hertzdamp, jankowski, \
+                  hunt-crossley. Methods: Newmark-β (average acceleration) or the exact \
+                  event-driven one. Without a command it opens the terminal explorer."
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -114,9 +117,9 @@ pub enum Command {
     Ida(ida::IdaArgs),
     /// Open the terminal explorer (the default without a command).
     Tui(tui::TuiArgs),
-    /// Work-precision table: run time against error for each method.
+    /// Work-precision table: run time against error for each method (Newmark-β schemes, exact).
     Bench(bench::BenchArgs),
-    /// Numerical stress test over corner and random parameter sets.
+    /// Numerical stress test over corner and random parameter sets (Kelvin and improved Kelvin).
     Stress(stress::StressArgs),
     /// The paper's figures and the scenes as SVG or PNG files.
     Figure(figure::FigureArgs),

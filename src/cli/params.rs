@@ -22,11 +22,13 @@ pub struct ParamArgs {
     #[arg(long, value_parser = ["kelvin", "improved-kelvin", "hertz", "hertzdamp", "jankowski", "hunt-crossley"])]
     pub model: Option<String>,
     /// Ground motion (SPEC §9): sine, pulse-a, pulse-b, pulse-c1, pulse-c2, or
-    /// record:PATH for a PEER NGA .AT2 file.
+    /// record:PATH for a recorded accelerogram: a PEER NGA .AT2 file (in g), or
+    /// plain columns of time (s) and acceleration, record:PATH@UNIT with UNIT
+    /// g, m/s2 or cm/s2 [default unit: g].
     #[arg(long, value_name = "NAME|record:PATH")]
     pub excitation: Option<String>,
-    /// Integrator: newmark (the paper's, default of `run`) or exact (event-driven;
-    /// default of the commands that run many cases).
+    /// Integrator: newmark (Newmark-β, the paper's; default of `run`) or exact
+    /// (event-driven; default of the commands that run many cases).
     #[arg(long, value_parser = ["newmark", "exact"])]
     pub method: Option<String>,
     /// Newmark time step Δτ.

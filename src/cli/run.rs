@@ -11,12 +11,14 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
-use super::description::{Case, DIMENSIONLESS, Provenance};
+use super::description::{Case, DIMENSIONLESS, Provenance, RecordNumbers};
 use super::output::{FormatArg, num, param_cells, param_columns, print, render};
 use super::params::ParamArgs;
 use super::progress::{Progress, Tracked};
 use crate::accuracy::timing::median;
-use crate::model::{Method, Params};
+use crate::analysis::demands::{DemandsSi, RunSi};
+use crate::model::physical::Physical;
+use crate::model::{Excitation, Method, Params, Preset};
 use crate::output::report::Report;
 use crate::output::{Num, Target};
 use crate::solver::{CsvHistory, Impact, RunResult, StructurePeaks, error_vs_exact, solve};
@@ -105,6 +107,7 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
     };
     let mut report = RunReport::new(&preset.name, &p, &result, elapsed_ms, args.repeat, min_gap);
     report.error_vs_exact = error;
+    report.si = si_of(&preset, &p, &result, min_gap);
     let text = render(&report, args.output.format)?;
     if history_to_stdout {
         // Stdout carries the history alone.
@@ -121,6 +124,18 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
         }
         _ => Ok(()),
     }
+}
+
+/// The run's demands in SI for a preset with a `[physical]` table: m2 from
+/// the table, a_p and ω_p the run's (a record's own under a record, else
+/// the table's), so that Π results times these scales are the buildings'.
+fn si_of(preset: &Preset, p: &Params, r: &RunResult, min_gap: f64) -> Option<RunSi> {
+    let physical = Physical::from_table(preset.physical.as_ref()?).ok()?;
+    let (ap, omega_p) = match p.ground() {
+        Excitation::Record(m) => (m.amplitude, m.omega),
+        _ => (physical.ap, physical.omega_p),
+    };
+    Some(RunSi::of(&physical, ap, omega_p, r, min_gap))
 }
 
 /// The summary of one run, in every format (SPEC §6).
@@ -155,6 +170,10 @@ pub struct RunReport<'a> {
     /// Π_d,min of SPEC §11: the smallest gap at which these structures
     /// would never touch, from an exact run without contact.
     pub min_gap_no_pounding: f64,
+    /// With a preset's `[physical]` table (SPEC §8): the demands in SI, at
+    /// the a_p and ω_p of the run (a record's own under a record, SPEC §12).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub si: Option<RunSi>,
     /// False when the result should not be trusted; `unreliable_reason` says why.
     reliable: bool,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -194,6 +213,7 @@ impl<'a> RunReport<'a> {
             unconverged_steps: r.unconverged_steps,
             error_vs_exact: None,
             min_gap_no_pounding,
+            si: None,
             reliable: unreliable_reason.is_none(),
             unreliable_reason,
             elapsed_ms,
@@ -262,10 +282,87 @@ impl RunReport<'_> {
             s,
             "A = max |ẍ + g| (in a_p), μ = Π_u/Π_uy, r = residual displacement, E_h = hysteretic energy (SPEC §6)"
         );
+        if let Some(si) = &self.si {
+            let sc = &si.scales;
+            let _ = writeln!(
+                s,
+                "in SI, at a_p = {} m/s² ({} g), ω_p = {} rad/s, l_e = {} mm:",
+                g4(sc.ap),
+                g4(sc.ap / crate::model::physical::G),
+                g4(sc.omega_p),
+                g4(sc.length * 1e3)
+            );
+            let _ = writeln!(
+                s,
+                "{:<10} {:>10} {:>10} {:>10} {:>8} {:>10} {:>10}",
+                "structure", "u mm", "v m/s", "A g", "μ", "r mm", "E_h kJ"
+            );
+            for (label, d) in [("left (1)", &si.left), ("right (2)", &si.right)] {
+                let _ = writeln!(
+                    s,
+                    "{label:<10} {:>10} {:>10} {:>10} {:>8} {:>10} {:>10}",
+                    g4(d.peak_displacement_m * 1e3),
+                    g4(d.peak_velocity_m_s),
+                    g4(d.peak_absolute_acceleration_g),
+                    fixed(d.ductility, 3),
+                    g4(d.residual_displacement_m * 1e3),
+                    g4(d.hysteretic_energy_kj)
+                );
+            }
+            let _ = writeln!(
+                s,
+                "max force {} kN; gap that prevents pounding {} mm",
+                g4(si.max_force_kn),
+                g4(si.min_gap_m * 1e3)
+            );
+        }
     }
 }
 
+/// The CSV columns of the demands in SI, empty without `[physical]`.
+const SI_COLUMNS: [&str; 12] = [
+    "left_peak_displacement_m",
+    "left_peak_velocity_m_s",
+    "left_peak_absolute_acceleration_g",
+    "left_residual_displacement_m",
+    "left_hysteretic_energy_kj",
+    "right_peak_displacement_m",
+    "right_peak_velocity_m_s",
+    "right_peak_absolute_acceleration_g",
+    "right_residual_displacement_m",
+    "right_hysteretic_energy_kj",
+    "max_force_kn",
+    "min_gap_m",
+];
+
+/// The cells of [`SI_COLUMNS`].
+fn si_cells(si: Option<&RunSi>) -> Vec<String> {
+    let Some(si) = si else {
+        return vec![String::new(); SI_COLUMNS.len()];
+    };
+    let side = |d: &DemandsSi| {
+        [
+            d.peak_displacement_m,
+            d.peak_velocity_m_s,
+            d.peak_absolute_acceleration_g,
+            d.residual_displacement_m,
+            d.hysteretic_energy_kj,
+        ]
+    };
+    let mut cells: Vec<String> = side(&si.left)
+        .into_iter()
+        .chain(side(&si.right))
+        .map(num)
+        .collect();
+    cells.extend([num(si.max_force_kn), num(si.min_gap_m)]);
+    cells
+}
+
 /// `v` to `digits` decimals, or `inf`/`nan` as [`Num`] writes them.
+fn g4(v: f64) -> String {
+    crate::model::params::echo::g4(v)
+}
+
 fn fixed(v: f64, digits: usize) -> String {
     if v.is_finite() {
         format!("{v:.digits$}")
@@ -281,8 +378,10 @@ impl Report for RunReport<'_> {
         let mut h = vec!["preset"];
         h.extend(param_columns());
         h.extend(["excitation_note"]);
+        h.extend(RecordNumbers::COLUMNS);
         h.extend(LEFT_COLUMNS);
         h.extend(RIGHT_COLUMNS);
+        h.extend(SI_COLUMNS);
         h.extend([
             "impacts",
             "max_force",
@@ -306,8 +405,10 @@ impl Report for RunReport<'_> {
             ..*self.case.params
         }));
         row.extend([self.case.excitation_note.clone().unwrap_or_default()]);
+        row.extend(RecordNumbers::cells(self.case.params));
         row.extend(structure_cells(l));
         row.extend(structure_cells(r));
+        row.extend(si_cells(self.si.as_ref()));
         row.extend([
             self.impacts.to_string(),
             num(self.max_force),

@@ -9,7 +9,7 @@ use clap::Args;
 
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
-use super::description::Description;
+use super::description::{Description, Provenance};
 use super::output::{FormatArg, num, print, render};
 use super::output::{PEAK_COLUMNS, param_cells, param_columns};
 use super::params::ParamArgs;
@@ -259,7 +259,8 @@ impl Report for SpectrumReport<'_> {
     /// parameter set (model, excitation and method among them), then its
     /// dimensionless results.
     fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = vec!["family", "omega1_grid"];
+        let mut h = Provenance::CSV_COLUMNS.to_vec();
+        h.extend(["family", "omega1_grid"]);
         h.extend(param_columns());
         h.extend(PEAK_COLUMNS);
         h.extend(["impacts", "region", "min_gap_no_pounding"]);
@@ -275,7 +276,8 @@ impl Report for SpectrumReport<'_> {
                 .as_ref()
                 .map_or(String::new(), |m| format!("{}={}", m.key, m.text.trim()));
             for pt in c.points {
-                let mut row = vec![family.clone(), self.omega1_grid.clone()];
+                let mut row = self.description.provenance.csv_cells();
+                row.extend([family.clone(), self.omega1_grid.clone()]);
                 row.extend(param_cells(&at_omega(&spec.params, pt.omega1, spec.mu)));
                 row.extend(pt.peaks().map(num));
                 row.push(pt.impacts.to_string());

@@ -98,27 +98,50 @@ pub fn case_of(args: &SuiteArgs) -> Result<(crate::model::Preset, SuiteCase), Cl
     ))
 }
 
-pub fn execute(args: &SuiteArgs) -> Result<(), CliError> {
+/// A suite that ran: its preset, study, runs (in suite order) and wall time.
+pub struct Ran {
+    pub preset: crate::model::Preset,
+    pub case: SuiteCase,
+    pub runs: Vec<SuiteRun>,
+    pub elapsed_ms: f64,
+}
+
+/// Loads the suite of `args`, plans every record before any run (a zero
+/// record or Π-groups out of range fail at once, naming the record), and
+/// runs them in parallel with progress; `what` names the request in the
+/// work bound's message.
+pub fn run(args: &SuiteArgs, what: &str) -> Result<Ran, CliError> {
     let (preset, case) = case_of(args)?;
     let spec = SuiteSpec::parse(&args.suite).map_err(|e| usage(e.to_string()))?;
     let members = spec.load().map_err(|e| usage(e.to_string()))?;
-    // Every record is planned before any run: a zero record or Π-groups out
-    // of range fail at once, naming the record.
     let plans = plan(&case, &members).map_err(|e| usage(e.to_string()))?;
     // Each record is one pounding run and at most one run without contact.
     let work = Work {
         steps: plans.iter().map(|m| 2.0 * run_steps(&m.params)).sum(),
         rows: 0.0,
     };
-    work.check("suite", args.long.allow_long, false)?;
+    work.check(what, args.long.allow_long, false)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
     let runs = run_suite(&case, &members, &plans, &|r: &SuiteRun| {
         progress.add(2.0 * run_steps(&r.params))
     });
     drop(progress);
-    let elapsed_ms = start.elapsed().as_secs_f64() * 1e3;
+    Ok(Ran {
+        preset,
+        case,
+        runs,
+        elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
+    })
+}
 
+pub fn execute(args: &SuiteArgs) -> Result<(), CliError> {
+    let Ran {
+        preset,
+        case,
+        runs,
+        elapsed_ms,
+    } = run(args, "suite")?;
     let report = SuiteReport::new(&preset.name, &args.suite, &case, &runs, elapsed_ms);
     print(&render(&report, args.output.format)?)?;
     let unreliable: Vec<String> = runs

@@ -161,7 +161,9 @@ pub struct ContactForce {
     pub d_rate: f64,
 }
 
-/// What a contact law needs besides δ and δ̇ (SPEC §4, §10).
+/// What a contact law needs besides δ and δ̇ (SPEC §4, §10), taken from a
+/// parameter set by `ContactConstants::of` (in [`super::params`], which
+/// owns the parameters and names the law they use).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactConstants {
     pub model: ContactModel,
@@ -174,17 +176,6 @@ pub struct ContactConstants {
 }
 
 impl ContactConstants {
-    pub fn of(p: &super::Params) -> Self {
-        ContactConstants {
-            model: p.model,
-            mass_ratio: p.mass_ratio,
-            contact_omega: p.contact_omega,
-            restitution: p.restitution,
-            hertz_stiffness: p.hertz_stiffness(),
-            min_impact_velocity: p.min_impact_velocity,
-        }
-    }
-
     /// The law of a contact that began with approach velocity `approach_velocity`.
     pub fn law(&self, approach_velocity: f64) -> ContactLaw {
         let m_bar = self.mass_ratio / (1.0 + self.mass_ratio);

@@ -55,14 +55,14 @@ pub struct PresetSpectrum {
 }
 
 impl PresetSpectrum {
-    /// The spectrum of `preset` (its parameters as they are); the message
-    /// of the table's or the family's error otherwise.
-    pub fn of(preset: &super::preset::Preset) -> Result<PresetSpectrum, String> {
-        let spec = match &preset.spectrum {
+    /// The spectrum a preset's `[spectrum]` table (if any) gives at its
+    /// parameters `p` (as they are); the message of the table's or the
+    /// family's error otherwise.
+    pub fn of(table: Option<&toml::Table>, p: Params) -> Result<PresetSpectrum, String> {
+        let spec = match table {
             Some(t) => SpectrumSpec::from_table(t).map_err(|e| e.to_string())?,
             None => SpectrumSpec::default(),
         };
-        let p = preset.params;
         let family = match &spec.family {
             Some((key, values)) => {
                 Some(Family::new(super::family::FLAG, key, values, &p).map_err(|e| e.to_string())?)

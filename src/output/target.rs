@@ -50,6 +50,7 @@ impl Target {
     /// everything that can be checked before any work is done.
     pub fn open(path: &Path) -> Result<Target, OutputError> {
         if path.as_os_str() == "-" {
+            super::stdout::check_open()?;
             return Ok(Target::stdout());
         }
         let name = shown(path);

@@ -11,17 +11,17 @@ use crossterm::event::{
     KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
 };
 
-use super::effects::{Done, Effect, History};
-use super::export;
+use super::effects::{Done, Effect};
+use super::export::{self, History};
 use super::fields::{FIELDS, StepSize, nudged_text};
 use super::jobs::{Jobs, Need};
 use super::layout;
+use super::map_grid;
 use super::physical::{self, Base};
 use super::presets;
 use super::scene::MAP_Y;
 use super::scene::{Scene, View};
 use super::text_field::{FieldKey, TextField};
-use super::views::map as map_view;
 use super::worker::{Job, MapSpec, Output, RunOutput, RunSpec, Slot, SpectrumSpec};
 use crate::analysis::map::{Axis, MapPlan};
 use crate::figure::FigureName;
@@ -280,9 +280,9 @@ impl App {
         if !mu.is_finite() {
             return None;
         }
-        let (columns, rows) = map_view::grid_size(layout::scene(self.size), self.look);
+        let (columns, rows) = map_grid::grid_size(layout::scene(self.size), self.look);
         let key = MAP_Y[self.view.map_y % MAP_Y.len()];
-        let [lo, hi] = map_view::y_range(key, p);
+        let [lo, hi] = map_grid::y_range(key, p);
         let axis = |key: &'static str, lo: f64, hi: f64, n: usize| Axis {
             key,
             grid: Grid {
@@ -291,7 +291,7 @@ impl App {
                 step: (hi - lo) / (n.max(2) - 1) as f64,
             },
         };
-        let [x0, x1] = map_view::X_RANGE;
+        let [x0, x1] = map_grid::X_RANGE;
         Some(MapSpec {
             plan: MapPlan {
                 base: Params {
@@ -582,7 +582,7 @@ impl App {
         let (c, r) = self
             .view
             .map_cursor
-            .unwrap_or_else(|| map_view::own_cell(&spec, self.active_params()));
+            .unwrap_or_else(|| map_grid::own_cell(&spec, self.active_params()));
         let (c, r) = match key {
             '[' => (c.saturating_sub(1), r),
             ']' => ((c + 1).min(nx - 1), r),

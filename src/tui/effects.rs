@@ -6,20 +6,10 @@
 
 use std::path::{Path, PathBuf};
 
-use super::export;
+use super::export::{self, History};
 use super::presets;
-use super::trace::Trace;
 use crate::figure::{self, FigureName, Format, Options};
 use crate::model::{Params, Preset};
-
-/// Which history an export writes.
-#[derive(Debug, Clone, PartialEq)]
-pub enum History {
-    /// Every step of the run, as `pounding run --history`.
-    Full,
-    /// The decimated history on screen: per bucket, minimum and maximum.
-    Shown(Box<Trace>),
-}
 
 /// Work for the main loop.
 #[derive(Debug, Clone, PartialEq)]

@@ -7,12 +7,20 @@
 use std::io::Write;
 use std::path::Path;
 
-use super::effects::History;
 use super::trace::Trace;
 use crate::model::Params;
 use crate::output::{Num, OutputError, Target};
 use crate::solver::observer::CHANNEL_NAMES;
 use crate::solver::{CsvHistory, solve};
+
+/// Which history an export writes.
+#[derive(Debug, Clone, PartialEq)]
+pub enum History {
+    /// Every step of the run, as `pounding run --history`.
+    Full,
+    /// The decimated history on screen: per bucket, minimum and maximum.
+    Shown(Box<Trace>),
+}
 
 /// Approximate bytes of one row of the full history CSV (ten numbers).
 pub const BYTES_PER_ROW: f64 = 190.0;

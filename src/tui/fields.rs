@@ -33,7 +33,8 @@ pub fn value_text(p: &Params, f: &Field) -> String {
 /// when the row cannot be nudged from its value (an infinite one). A choice
 /// moves to the next (or previous) name. A number moves by its row's
 /// [`Step`]: added, rounded to 1e-9 so repeated nudges print cleanly; or
-/// multiplied (×r, Shift ×r², fine ×r^{1/10}), to four significant digits.
+/// multiplied (×r, Shift ×r², fine ×r^{1/10}), to four significant digits;
+/// Π_K's 0 ("derived") from the derived value, another 0 not at all.
 pub fn nudged_text(p: &Params, f: &Field, direction: f64, size: StepSize) -> Option<String> {
     match f.kind {
         Kind::Choice { names, get, .. } => {
@@ -62,6 +63,14 @@ pub fn nudged_text(p: &Params, f: &Field, direction: f64, size: StepSize) -> Opt
                     Some(format!("{}", (next * 1e9).round() / 1e9))
                 }
                 Step::Times(r) => {
+                    // A factor cannot move 0. Π_K = 0 means "derived from
+                    // Π_ωcon": its nudge starts from the derived value, the
+                    // one the run uses, and sets it explicitly.
+                    let v = match (v, f.key) {
+                        (0.0, "hertz_stiffness") => p.hertz_stiffness(),
+                        (0.0, _) => return None,
+                        _ => v,
+                    };
                     let power = match size {
                         StepSize::Fine => 0.1,
                         StepSize::Normal => 1.0,
@@ -106,6 +115,42 @@ mod tests {
         )
         .unwrap();
         assert_eq!(p.contact_tolerance, 1e-12);
+    }
+
+    /// Π_ωcon and Π_K span decades: a nudge multiplies them. Π_K = 0
+    /// (derived from Π_ωcon) moves from the derived value, both ways, and
+    /// a nudge back returns to it (written out).
+    #[test]
+    fn contact_frequency_and_hertz_stiffness_are_nudged_by_factors() {
+        let omega = row("contact_omega");
+        assert_eq!(
+            nudged_text(&SET1, omega, 1.0, StepSize::Normal).unwrap(),
+            "100"
+        );
+        assert_eq!(
+            nudged_text(&SET1, omega, -1.0, StepSize::Coarse).unwrap(),
+            "12.5"
+        );
+        let k = row("hertz_stiffness");
+        assert_eq!(SET1.hertz_stiffness, 0.0);
+        let derived = SET1.hertz_stiffness();
+        for direction in [1.0, -1.0] {
+            let text = nudged_text(&SET1, k, direction, StepSize::Normal).unwrap();
+            let mut p = SET1;
+            p.set("hertz_stiffness", &text).unwrap();
+            let ratio = p.hertz_stiffness / derived;
+            let want = 2f64.powf(direction);
+            assert!((ratio / want - 1.0).abs() < 1e-3, "{text}: ×{ratio}");
+            let back = nudged_text(&p, k, -direction, StepSize::Normal).unwrap();
+            p.set("hertz_stiffness", &back).unwrap();
+            assert!((p.hertz_stiffness / derived - 1.0).abs() < 1e-3, "{back}");
+        }
+        // An explicit Π_K moves by the factor itself.
+        let p = Params {
+            hertz_stiffness: 400.0,
+            ..SET1
+        };
+        assert_eq!(nudged_text(&p, k, 1.0, StepSize::Normal).unwrap(), "800");
     }
 
     #[test]

@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 use std::fmt;
 
-use super::contact::ContactModel;
+use super::contact::{ContactConstants, ContactModel};
 use super::excitation::Excitation;
 use super::method::Method;
 
@@ -346,6 +346,21 @@ impl fmt::Display for Params {
     }
 }
 
+/// The contact law's constants of a parameter set. It lives here, beside
+/// the parameters, so that the contact laws need not know the parameter set.
+impl ContactConstants {
+    pub fn of(p: &Params) -> Self {
+        ContactConstants {
+            model: p.model,
+            mass_ratio: p.mass_ratio,
+            contact_omega: p.contact_omega,
+            restitution: p.restitution,
+            hertz_stiffness: p.hertz_stiffness(),
+            min_impact_velocity: p.min_impact_velocity,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -433,7 +448,7 @@ mod tests {
         let text = SET1.to_string();
         assert!(text.starts_with("Π_m=0.5 Π_ω1=1.05 "), "{text}");
         assert!(text.contains(
-            " model=improved-kelvin g(τ)=sine a_p=0 ω_p=0 method=newmark tol=1e-11 cycles=8 Δτ=0.001"
+            " model=improved-kelvin g(τ)=sine s=1 a_p=0 ω_p=0 method=newmark tol=1e-11 cycles=8 Δτ=0.001"
         ));
         assert_eq!(text.split(' ').count(), FIELDS.len());
     }

@@ -174,7 +174,9 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.contact_omega,
             set: |p, v| p.contact_omega = v,
         },
-        step: Step::Add(5.0),
+        // It spans six decades, and the contact's stiffness goes as its
+        // square: a nudge doubles or halves it.
+        step: Step::Times(2.0),
     },
     // Π_e: the improved Kelvin damping 3(1−e)/(2e) grows without bound as
     // e → 0. At 1e-3 Π_u1 = 3.094 is within 1.3 % of the Kelvin element's
@@ -229,7 +231,9 @@ pub const FIELDS: &[Field] = &[
             get: |p| p.hertz_stiffness,
             set: |p, v| p.hertz_stiffness = v,
         },
-        step: Step::Add(100.0),
+        // Twenty decades: a nudge doubles or halves the force. From 0 it
+        // starts at the derived value the run uses (see `nudged_text`).
+        step: Step::Times(2.0),
     },
     // The contact element of SPEC §4 and §10.
     Field {

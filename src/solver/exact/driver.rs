@@ -36,6 +36,7 @@ use super::energy::Work;
 use super::peaks::{raise_abs_max, raise_max};
 use super::quiet::{Majorants, QuietStep, stays_above, stays_below};
 use super::roots::{fires_at_start, first_crossing};
+use super::segment::{Event, Segment};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
 
@@ -152,17 +153,6 @@ impl ExactOptions {
             ..ExactOptions::default()
         }
     }
-}
-
-/// Which event ends a segment.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Event {
-    Onset,
-    Separation,
-    /// Structure i reaches z = sign · Π_uy.
-    Yield(usize, f64),
-    /// Structure i, yielded, turns back.
-    Unload(usize),
 }
 
 /// Runs `p` (which must have passed [`Params::validate`]) with the exact method.
@@ -951,28 +941,6 @@ impl<'a> Run<'a> {
             .then_some(self.max_relative_displacement);
         self.result
     }
-}
-
-/// One segment's series and its earliest event.
-#[derive(Default)]
-pub struct Segment {
-    pub x: [Series; 2],
-    pub v: [Series; 2],
-    /// f_p, in contact ([`Segment::force`]).
-    force: Series,
-    /// σ(x1 − x2 − Π_d) as [`Segment::write_gap_function`] last wrote it:
-    /// out of contact the penetration δ (σ = 1), the onset's event function;
-    /// in contact the opening −δ (σ = −1), negative while the structures
-    /// overlap and positive once they separate: separation's event function,
-    /// whose minimum is the maximum penetration.
-    gap_function: Series,
-    contact: bool,
-    /// Σ_{k≥1} |c_k| h^k of x1, x2, ẋ1, ẋ2 over the segment's full length h:
-    /// how far each can move from its start value, a bound that clears most
-    /// event functions and peaks without a search.
-    pub swing: [f64; 4],
-    /// Where the segment ends: its full length, or the earliest event.
-    end: (f64, Option<Event>),
 }
 
 impl Segment {

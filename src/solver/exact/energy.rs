@@ -9,8 +9,8 @@
 //! the solver's own bookkeeping.
 
 use super::super::result::EnergyBalance;
-use super::driver::Segment;
 use super::dynamics::{Branch, Structure};
+use super::segment::Segment;
 use super::series::Series;
 
 /// Gauss–Legendre nodes and weights on [0, 1], 8 points (written to 17

@@ -19,6 +19,7 @@ use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
 
 use super::ticks::{self, LABEL_WIDTH};
+use crate::tui::fit::fit;
 use crate::tui::look::Look;
 
 /// Columns left of the plot: the tick labels and the axis line.
@@ -464,7 +465,8 @@ fn legend_width(entries: &[(String, String, Style)], compact: bool) -> u16 {
 /// legend on a second row when both do not fit and the chart is tall
 /// enough. Where they still do not fit, the legend closes up (a one-cell
 /// sample, one space between entries), then the title gives up its scaling
-/// (`short_title`, kept where the chart is wide enough for it); entries that
+/// (`short_title`, kept where the chart is wide enough for it), and a title
+/// wider than the chart ends with "…" after its last whole word; entries that
 /// still do not fit are left out rather than drawn over each other. Returns
 /// the rows used.
 fn header(
@@ -500,6 +502,10 @@ fn header(
         .into_iter()
         .find(|(t, c)| Some(score(t, *c)) == best)
         .unwrap_or((title, false));
+    // A title wider than the chart even without its scaling gives up whole
+    // words and says so.
+    let title = fit(title, usize::from(right.saturating_sub(area.x)));
+    let title = title.as_str();
     let (row, fitting) = place(title, compact);
     put(buf, area.x, area.y, title, Style::new(), right);
     let mut x = right - legend_width(&entries[..fitting], compact);

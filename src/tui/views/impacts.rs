@@ -11,30 +11,12 @@ use ratatui::style::{Modifier, Style};
 use ratatui::text::Line;
 use ratatui::widgets::{Cell, Paragraph, Row, Table, TableState};
 
+use super::compact::{fit as fit_parts, num, pair};
 use super::units::Units;
 use crate::solver::RunResult;
 use crate::tui::app::App;
+use crate::tui::fit::fit;
 use crate::tui::worker::Slot;
-
-/// A number in at most 6 characters.
-pub fn num(v: f64) -> String {
-    let a = v.abs();
-    if v == 0.0 {
-        "0".into()
-    } else if !v.is_finite() {
-        format!("{v}")
-    } else if !(1e-3..1e5).contains(&a) {
-        format!("{v:.0e}")
-    } else if a >= 1000.0 {
-        format!("{v:.0}")
-    } else if a >= 100.0 {
-        format!("{v:.1}")
-    } else if a >= 10.0 {
-        format!("{v:.2}")
-    } else {
-        format!("{v:.3}")
-    }
-}
 
 pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     let Some(run) = app.shown(Slot::Set(app.active)) else {
@@ -119,7 +101,10 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     let table = Table::new(rows, widths)
         .column_spacing(1)
         .header(header)
-        .block(ratatui::widgets::Block::new().title(app.look.text(&title)))
+        .block(
+            ratatui::widgets::Block::new()
+                .title(fit(&app.look.text(&title), usize::from(table_area.width))),
+        )
         .row_highlight_style(Style::new().add_modifier(Modifier::REVERSED));
     let mut state = TableState::default().with_selected(app.view.selected_impact(&r.impacts));
     frame.render_stateful_widget(table, table_area, &mut state);
@@ -146,10 +131,11 @@ fn energy(app: &App, r: &RunResult, u: &Units, frame: &mut Frame, area: Rect) {
     ];
     let biggest = terms.iter().fold(0f64, |m, t| m.max(t.1.abs())).max(1e-300);
     let bar_width = area.width.saturating_sub(11 + 9) as f64;
-    let mut lines = vec![Line::from(app.look.text(&format!(
+    let title = app.look.text(&format!(
         "energy [{}], residual {:.0e}",
         u.energy_unit, e.residual
-    )))];
+    ));
+    let mut lines = vec![Line::from(fit(&title, usize::from(area.width)))];
     for (name, v) in terms {
         let n = ((v.abs() / biggest) * bar_width).round() as usize;
         let bar = if app.look.ascii { "#" } else { "█" }.repeat(n);
@@ -159,7 +145,7 @@ fn energy(app: &App, r: &RunResult, u: &Units, frame: &mut Frame, area: Rect) {
         )));
     }
     let (left, right) = (&r.left, &r.right);
-    let pair = super::summary::pair;
+    let pair = pair;
     let demands = [
         pair(
             "A",
@@ -173,7 +159,7 @@ fn energy(app: &App, r: &RunResult, u: &Units, frame: &mut Frame, area: Rect) {
             right.residual_displacement * u.length,
         ),
     ];
-    let demands = super::summary::fit(&demands, area.width as usize);
+    let demands = fit_parts(&demands, area.width as usize);
     lines.push(Line::from(app.look.text(&demands)));
     frame.render_widget(Paragraph::new(lines), area);
 }

@@ -1,6 +1,7 @@
 //! One file per part of the screen; each is a pure function of the state.
 
 pub mod chart;
+pub mod compact;
 pub mod history;
 pub mod impacts;
 pub mod laws;

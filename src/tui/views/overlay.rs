@@ -22,7 +22,7 @@ pub const KEYS: [(&str, &str); 30] = [
     (", / .  (Ctrl+←/→)", "nudge by a tenth of a step"),
     ("Enter", "type an exact value (typing replaces it)"),
     ("Tab", "switch the active set"),
-    ("m", "toggle Kelvin / improved Kelvin"),
+    ("m", "Kelvin ↔ improved Kelvin (row: all six)"),
     ("r", "reset the active set to its preset"),
     ("1-9", "recall preset 1-9 into the active set"),
     ("p", "preset picker"),
@@ -76,10 +76,19 @@ fn boxed(app: &App, frame: &mut Frame, area: Rect, title: &str, lines: Vec<Strin
 }
 
 pub fn help(app: &App, frame: &mut Frame, area: Rect) {
-    let lines: Vec<String> = KEYS
-        .iter()
-        .map(|(k, what)| format!("{k:>18}  {what}"))
-        .collect();
+    // The keys; under `m`, the short forms a narrow pane gives the laws'
+    // names, high enough to show on a 24-row screen.
+    let mut lines = Vec::new();
+    for (k, what) in KEYS {
+        lines.push(format!("{k:>18}  {what}"));
+        if k == "m" {
+            lines.extend(
+                crate::tui::fit::short_laws_legend()
+                    .into_iter()
+                    .map(|(short, name)| format!("{short:>18}  law {name}")),
+            );
+        }
+    }
     // Taller than the screen: two columns side by side when wide enough.
     let rows = area.height.saturating_sub(2) as usize;
     if lines.len() > rows && area.width >= 124 {

@@ -7,7 +7,7 @@
 //! μ, a Δτ warning, and in the physical view the Π-groups that follow.
 
 use ratatui::Frame;
-use ratatui::layout::{Constraint, Rect};
+use ratatui::layout::{Constraint, Flex, Layout, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Cell, Paragraph, Row, Table, Wrap};
@@ -15,6 +15,7 @@ use ratatui::widgets::{Block, Cell, Paragraph, Row, Table, Wrap};
 use crate::model::params::echo;
 use crate::tui::app::{App, Mode};
 use crate::tui::fields::FIELDS;
+use crate::tui::fit::{fit, fit_value};
 use crate::tui::physical::ROWS;
 
 const SYMBOL: u16 = 9;
@@ -30,11 +31,18 @@ fn widths(wide: bool) -> Vec<Constraint> {
     w
 }
 
-fn short_value(text: String) -> String {
-    match text.as_str() {
-        "improved-kelvin" => "improved".into(),
-        _ => text,
-    }
+/// The widths the table gives its columns in `area` (as ratatui's `Table`
+/// lays them out: inside the border, one space between columns), so that
+/// each cell is fitted to its column rather than cut by it.
+fn column_widths(area: Rect, wide: bool) -> Vec<usize> {
+    let inner = Block::bordered().inner(area);
+    Layout::horizontal(widths(wide))
+        .flex(Flex::Start)
+        .spacing(1)
+        .split(inner)
+        .iter()
+        .map(|r| usize::from(r.width))
+        .collect()
 }
 
 /// The symbol and meaning of pane row `r`.
@@ -54,6 +62,8 @@ fn row_names(app: &App, r: usize) -> (String, String) {
 
 pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     let wide = area.width >= 50;
+    let columns = column_widths(area, wide);
+    let value_width = columns[columns.len() - 1];
     let selected = Style::new().add_modifier(Modifier::REVERSED);
     let heading = |i: usize| {
         let mark = if app.sets[i].modified().is_empty() {
@@ -71,27 +81,27 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         } else {
             Style::new()
         };
-        Cell::from(text).style(style)
+        Cell::from(fit(&text, value_width)).style(style)
     };
     let mut head = vec![Cell::from("")];
     if wide {
-        head.push(Cell::from("meaning"));
+        head.push(Cell::from(fit("meaning", columns[1])));
     }
     head.extend([heading(0), heading(1)]);
     let visible = crate::tui::layout::visible_rows(area.height);
     let offset = crate::tui::layout::pane_offset(visible, app.selected);
     let rows = (offset..app.pane_rows()).take(visible).map(|r| {
         let (symbol, meaning) = row_names(app, r);
-        let mut cells = vec![Cell::from(app.look.text(&symbol))];
+        let mut cells = vec![Cell::from(fit(&app.look.text(&symbol), columns[0]))];
         if wide {
-            cells.push(Cell::from(app.look.text(&meaning)));
+            cells.push(Cell::from(fit(&app.look.text(&meaning), columns[1])));
         }
         for i in 0..2 {
-            let mut text = short_value(app.row_text(i, r));
+            let mut text = fit_value(&app.row_text(i, r), value_width);
             let mut style = Style::new();
             if i == app.active && r == app.selected {
                 if let Mode::Editing(field) = &app.mode {
-                    text = field.shown(VALUE as usize);
+                    text = field.shown(value_width);
                     if field.error.is_some() && app.look.color {
                         style = style.fg(Color::Red);
                     }
@@ -110,9 +120,17 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         Row::new(cells)
     });
     let title = if app.physical_view() {
-        " physical units (u: Π-groups) "
+        "physical units (u: Π-groups)"
     } else {
-        " parameters (Tab switches set) "
+        "parameters (Tab switches set)"
+    };
+    // Between the corners: padded when it fits so, else touching them, else
+    // its whole words and "…".
+    let room = usize::from(area.width).saturating_sub(2);
+    let title = match title.chars().count() {
+        n if n + 2 <= room => format!(" {title} "),
+        n if n <= room => title.to_string(),
+        _ => fit(title, room),
     };
     let table = Table::new(rows, widths(wide))
         .header(Row::new(head).style(Style::new().add_modifier(Modifier::UNDERLINED)))
@@ -168,11 +186,13 @@ pub fn render_info(app: &App, frame: &mut Frame, area: Rect) {
         lines.push(Line::from(format!("→ {}", groups.join("  "))));
     } else {
         let f = &FIELDS[app.selected];
+        // A choice's names, `a|b|c`, spaced so that the box wraps between
+        // them rather than inside one.
         lines.push(Line::from(format!(
             "{} {} {}, step {}",
             f.symbol,
             f.meaning,
-            f.range(),
+            f.range().replace('|', " | "),
             f.step
         )));
         lines.push(Line::from(format!("μ = Π_ω2/Π_ω1 = {:.4}", p.mu())));

@@ -9,34 +9,13 @@ use ratatui::layout::Rect;
 use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
+use super::compact::{fit, num, pair};
 use super::history::{FP, FS1, FS2, V1, V2, X1, X2};
-use super::impacts::num;
 use super::units::Units;
 use crate::solver::StructurePeaks;
 use crate::tui::app::App;
 use crate::tui::scene::Scene;
 use crate::tui::worker::{RunOutput, Slot};
-
-/// Joins `parts` with spaces, as many as fit in `width`.
-pub fn fit(parts: &[String], width: usize) -> String {
-    let mut out = String::new();
-    for p in parts {
-        let extra = p.chars().count() + usize::from(!out.is_empty());
-        if out.chars().count() + extra > width {
-            break;
-        }
-        if !out.is_empty() {
-            out.push(' ');
-        }
-        out.push_str(p);
-    }
-    out
-}
-
-/// `name left/right`, each number in at most 6 characters.
-pub fn pair(name: &str, left: f64, right: f64) -> String {
-    format!("{name} {}/{}", num(left), num(right))
-}
 
 /// One run in one line of at most `width` characters.
 pub fn line(label: &str, run: &RunOutput, u: &Units, current: bool, width: usize) -> String {
