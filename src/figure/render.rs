@@ -336,9 +336,9 @@ fn ranges(panel: &Panel) -> ((f64, f64), (f64, f64)) {
     if let (Some(x), Some(y)) = (panel.x_range, panel.y_range) {
         return (x, y);
     }
-    let guides = panel.guides.iter().filter_map(|g| match g.at {
-        GuideAt::X(x) => Some((x, f64::NAN)),
-        GuideAt::Y(y) => Some((f64::NAN, y)),
+    let guides = panel.guides.iter().map(|g| match g.at {
+        GuideAt::X(x) => (x, f64::NAN),
+        GuideAt::Y(y) => (f64::NAN, y),
     });
     let all = || {
         panel
