@@ -469,3 +469,71 @@ pub fn separation_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
         ),
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::figure::spec::LegendEntry;
+
+    /// A riser and a tread per finite record; a zero rises at 0, an
+    /// infinite gap never arrives (the curve ends below 1).
+    #[test]
+    fn step_curve_rises_one_record_at_a_time() {
+        let third = 1.0 / 3.0;
+        assert_eq!(
+            step_curve(&[1.0, 0.0, f64::INFINITY], 2.0),
+            vec![
+                (0.0, 0.0),
+                (0.0, 0.0),
+                (0.0, third),
+                (1.0, third),
+                (1.0, 2.0 * third),
+                (2.0, 2.0 * third),
+            ]
+        );
+    }
+
+    /// A fit's line and its markers share one legend entry; a limit state
+    /// with no fit has markers only.
+    #[test]
+    fn a_fit_and_its_markers_share_one_legend_entry() {
+        let counts = [
+            LevelCount {
+                level: 0.2,
+                runs: 4,
+                exceeded: 1,
+            },
+            LevelCount {
+                level: 0.4,
+                runs: 4,
+                exceeded: 2,
+            },
+            LevelCount {
+                level: 0.8,
+                runs: 4,
+                exceeded: 3,
+            },
+        ];
+        let fit = fragility::fit(&counts);
+        let fitted = fragility_series("ductility>2", None, 0, Stroke::Solid, &counts, &fit, 1.0);
+        let never = Fragility::NeverExceeded;
+        let bare = fragility_series("force>500kN", None, 1, Stroke::Solid, &counts, &never, 1.0);
+        assert_eq!(fitted.len(), 2);
+        assert_eq!(bare.len(), 1);
+        let mut panel = Panel::new(0, "", "x", "y");
+        panel.series.extend(fitted.into_iter().chain(bare));
+        let fig = Figure {
+            title: String::new(),
+            panels: vec![panel],
+            caption: String::new(),
+        };
+        let legend = fig.legend();
+        assert_eq!(legend.len(), 2, "{legend:?}");
+        let LegendEntry::Line { line, markers, .. } = &legend[0] else {
+            panic!("{legend:?}");
+        };
+        assert_eq!((*line, *markers), (Some(Pen::Line), true));
+        assert!(legend[0].label().starts_with("ductility>2: θ = "));
+        assert_eq!(legend[1].label(), "force>500kN: never exceeded");
+    }
+}
