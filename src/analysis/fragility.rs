@@ -97,6 +97,7 @@
 
 use serde::Serialize;
 
+use crate::model::params::echo;
 use crate::numerics::normal;
 
 /// The counts at one intensity level.
@@ -145,6 +146,41 @@ pub enum Fragility {
 /// P(exceed | IM = x) = Φ(ln(x/θ)/β) (SPEC §12): 0 at x = 0.
 pub fn probability(x: f64, theta: f64, beta: f64) -> f64 {
     normal::cdf((x / theta).ln() / beta)
+}
+
+/// A fragility in words: θ and β of a fit, or why there is none.
+pub fn describe(f: &Fragility) -> String {
+    match *f {
+        Fragility::Fitted { theta, beta, .. } => {
+            format!("θ = {} g, β = {:.3}", echo::g4(theta), beta)
+        }
+        Fragility::TooFewRecords => "not fitted: fewer than two records".into(),
+        Fragility::NeverExceeded => "never exceeded".into(),
+        Fragility::AlwaysExceeded => "exceeded at every level".into(),
+        Fragility::OneLevel { level, fraction } => {
+            format!(
+                "one level only: {:.0} % at {} g",
+                100.0 * fraction,
+                echo::g4(level)
+            )
+        }
+        Fragility::Separated { below, above } if below == above => format!(
+            "no fit: mixed only at {} g (θ → {} g, β → 0)",
+            echo::g4(below),
+            echo::g4(below)
+        ),
+        Fragility::Separated { below, above } => format!(
+            "no fit: crossed between {} g and {} g (β → 0)",
+            echo::g4(below),
+            echo::g4(above)
+        ),
+        Fragility::NotIncreasing { fraction } => {
+            format!(
+                "no fit: does not rise with intensity ({:.0} %)",
+                100.0 * fraction
+            )
+        }
+    }
 }
 
 /// The maximum-likelihood fragility of `counts`, or why there is none (the

@@ -33,6 +33,7 @@
 use serde::Serialize;
 
 use super::gap::CodeRules;
+use super::suite::SuiteRun;
 use crate::model::params::echo;
 use crate::numerics::normal;
 use crate::output::report::{float_or_inf, option_float_or_inf};
@@ -49,6 +50,21 @@ pub struct RecordGap {
     pub omega1: f64,
     pub omega2: f64,
     pub damping: f64,
+}
+
+impl RecordGap {
+    /// A suite record's minimum gap and separate peaks in m, from its run
+    /// without contact (frequencies in Π_ω: only their ratio enters).
+    pub fn of(run: &SuiteRun) -> RecordGap {
+        RecordGap {
+            min_gap: run.min_gap_m(),
+            peak_left: run.free_si.left.peak_displacement_m,
+            peak_right: run.free_si.right.peak_displacement_m,
+            omega1: run.params.omega1,
+            omega2: run.params.omega2,
+            damping: run.params.damping,
+        }
+    }
 }
 
 /// The rank ⌈pN⌉ in 1 ..= N. When pN is an integer written in decimal
@@ -174,6 +190,22 @@ pub fn lognormal_fit(values: &[f64]) -> Option<LognormalFit> {
 }
 
 impl LognormalFit {
+    /// The fitted probability that a record needs no more than `gap`,
+    /// P(d_j ≤ d) = (Z + F·Φ((ln d − μ)/β))/N, the inverse of
+    /// [`LognormalFit::gap_at_probability`]: Z/N at d = 0, (Z + F)/N as d → ∞.
+    pub fn probability(&self, gap: f64) -> f64 {
+        let (zeros, fitted) = (self.zeros as f64, self.fitted as f64);
+        let total = zeros + fitted + self.infinite as f64;
+        let within = if gap <= 0.0 {
+            0.0
+        } else if gap.is_infinite() {
+            1.0
+        } else {
+            normal::cdf((gap / self.median).ln() / self.dispersion)
+        };
+        (zeros + fitted * within) / total
+    }
+
     /// The gap that prevents pounding with probability p under the fit:
     ///
     /// ```text
@@ -412,6 +444,20 @@ mod tests {
         assert_eq!(fit.infinite, 1);
         assert_eq!(fit.gap_at_probability(0.8), f64::INFINITY);
         assert!(lognormal_fit(&[0.0, 2.0]).is_none());
+    }
+
+    /// The fitted probability inverts the fitted gap, zeros and infinities
+    /// keeping their shares.
+    #[test]
+    fn lognormal_probability_inverts_the_gap() {
+        let e = std::f64::consts::E;
+        let fit = lognormal_fit(&[0.0, 1.0, e, e * e, e * e * e, f64::INFINITY]).unwrap();
+        assert_eq!(fit.probability(0.0), 1.0 / 6.0);
+        assert_eq!(fit.probability(f64::INFINITY), 5.0 / 6.0);
+        for p in [0.2, 0.5, 0.7, 0.8] {
+            let d = fit.gap_at_probability(p);
+            assert!((fit.probability(d) - p).abs() < 1e-12, "p = {p}");
+        }
     }
 
     #[test]

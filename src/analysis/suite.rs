@@ -44,7 +44,7 @@ pub struct Scaling {
 }
 
 /// A suite study: the buildings, the run settings and the scaling.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SuiteCase {
     /// The buildings in SI (the preset's `[physical]` table).
     pub physical: Physical,

@@ -7,6 +7,7 @@ use std::time::Instant;
 use clap::Args;
 
 use super::CliError;
+use super::figure_risk::{self, RiskArgs};
 use super::params::ParamArgs;
 use super::spectrum::SpectrumPlan;
 use crate::figure::{self, FigureError, FigureName, Format, Options, Scene, SpectrumInput};
@@ -17,7 +18,8 @@ const DEFAULT_SIZE: (u32, u32) = (1200, 900);
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct FigureArgs {
-    /// fig3 … fig10 (the paper's), a scene (history, loops, contact-laws, spectrum), or `all`.
+    /// fig3 … fig10 (the paper's), a scene (history, loops, contact-laws,
+    /// spectrum, map), a suite study (ida, fragility, separation), or `all`.
     #[arg(value_name = "NAME")]
     pub name: String,
     /// Output file [default: NAME.FORMAT]; with `all`, a directory [default: figures].
@@ -43,6 +45,9 @@ pub struct FigureArgs {
     pub family: Option<String>,
     #[command(flatten)]
     pub params: ParamArgs,
+    /// The suite study of ida, fragility and separation.
+    #[command(flatten)]
+    pub risk: RiskArgs,
 }
 
 fn usage(msg: impl std::fmt::Display) -> CliError {
@@ -141,6 +146,9 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
             args.name
         )));
     }
+    if !name.is_some_and(FigureName::is_risk) {
+        args.risk.check_applies(name, &args.name)?;
+    }
     let grid = match &args.omega1 {
         Some(text) => Some(text.parse().map_err(|e| usage(&e))?),
         None => None,
@@ -149,8 +157,11 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
         method,
         grid,
         scene: Scene::default(),
+        suite: None,
     };
-    if let Some(n) = name.filter(|n| !n.is_paper()) {
+    if let Some(n) = name.filter(|n| n.is_risk()) {
+        options.suite = Some(figure_risk::study(&args.risk, &args.params, n)?);
+    } else if let Some(n) = name.filter(|n| !n.is_paper()) {
         let plan = SpectrumPlan::resolve(
             &args.params,
             args.omega1.as_deref(),

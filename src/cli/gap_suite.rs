@@ -40,17 +40,7 @@ pub fn execute(suite_args: &SuiteArgs, probability: Option<&str>) -> Result<(), 
         runs,
         elapsed_ms,
     } = run(suite_args, "gap --suite")?;
-    let records: Vec<RecordGap> = runs
-        .iter()
-        .map(|r| RecordGap {
-            min_gap: r.min_gap_m(),
-            peak_left: r.free_si.left.peak_displacement_m,
-            peak_right: r.free_si.right.peak_displacement_m,
-            omega1: r.params.omega1,
-            omega2: r.params.omega2,
-            damping: r.params.damping,
-        })
-        .collect();
+    let records: Vec<RecordGap> = runs.iter().map(RecordGap::of).collect();
     if let Some(r) = runs.iter().find(|r| !r.free.completed) {
         return Err(CliError::Failed(format!(
             "record `{}`: the run without contact stopped before its end; its minimum gap \

@@ -15,7 +15,7 @@ use super::description::Provenance;
 use super::output::{print, render};
 use super::progress::Progress;
 use super::suite::{SuiteArgs, SuiteRow, case_of, statistics_table};
-use crate::analysis::fragility::Fragility;
+use crate::analysis::fragility::describe;
 use crate::analysis::ida::{
     LimitStateFragility, fragilities, parse_levels, plan_levels, run_levels,
 };
@@ -35,6 +35,14 @@ pub struct IdaArgs {
     /// list X1,X2,…, ascending and > 0.
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
     pub levels: String,
+    #[command(flatten)]
+    pub limits: LimitStateArgs,
+}
+
+/// The limit states beside pounding (SPEC §12), as `ida` and `figure
+/// fragility` take them.
+#[derive(Debug, Clone, Default, Args)]
+pub struct LimitStateArgs {
     /// Ductility limit states, e.g. 2,4 or left:2,right:4 (either structure by default).
     #[arg(long, value_name = "[SIDE:]MU,…")]
     pub ductility: Option<String>,
@@ -50,19 +58,21 @@ fn usage(message: String) -> CliError {
     CliError::Usage(message)
 }
 
-/// The limit states named on the command line (pounding always comes first).
-fn limit_states(args: &IdaArgs) -> Result<Vec<LimitState>, CliError> {
-    let mut states = vec![LimitState::Pounding];
-    for (text, parse) in [
-        (&args.ductility, parse_ductility as fn(&str) -> _),
-        (&args.acceleration, parse_acceleration),
-        (&args.force, parse_force),
-    ] {
-        if let Some(t) = text {
-            states.extend(parse(t).map_err(|e| usage(e.to_string()))?);
+impl LimitStateArgs {
+    /// The limit states named, after the pounding limit state.
+    pub fn parse(&self) -> Result<Vec<LimitState>, CliError> {
+        let mut states = vec![LimitState::Pounding];
+        for (text, parse) in [
+            (&self.ductility, parse_ductility as fn(&str) -> _),
+            (&self.acceleration, parse_acceleration),
+            (&self.force, parse_force),
+        ] {
+            if let Some(t) = text {
+                states.extend(parse(t).map_err(|e| usage(e.to_string()))?);
+            }
         }
+        Ok(states)
     }
-    Ok(states)
 }
 
 pub fn execute(args: &IdaArgs) -> Result<(), CliError> {
@@ -72,7 +82,7 @@ pub fn execute(args: &IdaArgs) -> Result<(), CliError> {
         ));
     }
     let levels = parse_levels(&args.levels).map_err(usage)?;
-    let states = limit_states(args)?;
+    let states = args.limits.parse()?;
     let (preset, case) = case_of(&args.suite)?;
     let spec = SuiteSpec::parse(&args.suite.suite).map_err(|e| usage(e.to_string()))?;
     let members = spec.load().map_err(|e| usage(e.to_string()))?;
@@ -157,39 +167,6 @@ struct IdaReport<'a> {
     /// lognormal fragility (SPEC §12), with pounding and without.
     fragility: Vec<LimitStateFragility>,
     elapsed_ms: f64,
-}
-
-/// A fragility in words: θ and β of a fit, or why there is none.
-pub fn describe(f: &Fragility) -> String {
-    match *f {
-        Fragility::Fitted { theta, beta, .. } => format!("θ = {} g, β = {:.3}", g4(theta), beta),
-        Fragility::TooFewRecords => "not fitted: fewer than two records".into(),
-        Fragility::NeverExceeded => "never exceeded".into(),
-        Fragility::AlwaysExceeded => "exceeded at every level".into(),
-        Fragility::OneLevel { level, fraction } => {
-            format!(
-                "one level only: {:.0} % at {} g",
-                100.0 * fraction,
-                g4(level)
-            )
-        }
-        Fragility::Separated { below, above } if below == above => format!(
-            "no fit: mixed only at {} g (θ → {} g, β → 0)",
-            g4(below),
-            g4(below)
-        ),
-        Fragility::Separated { below, above } => format!(
-            "no fit: crossed between {} g and {} g (β → 0)",
-            g4(below),
-            g4(above)
-        ),
-        Fragility::NotIncreasing { fraction } => {
-            format!(
-                "no fit: does not rise with intensity ({:.0} %)",
-                100.0 * fraction
-            )
-        }
-    }
 }
 
 impl Report for IdaReport<'_> {

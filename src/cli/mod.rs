@@ -14,6 +14,7 @@ pub mod bench;
 pub mod budget;
 pub mod description;
 pub mod figure;
+pub mod figure_risk;
 pub mod gap;
 pub mod gap_suite;
 pub mod ida;
@@ -122,7 +123,7 @@ pub enum Command {
     /// Numerical stress test over corner and random parameter sets (Kelvin and improved Kelvin).
     Stress(stress::StressArgs),
     /// The paper's figures and the scenes as SVG or PNG files.
-    Figure(figure::FigureArgs),
+    Figure(Box<figure::FigureArgs>),
     /// Ground-motion records for suites: `records synth` writes simulated ones (SPEC §12).
     Records(records::RecordsArgs),
 }

@@ -6,6 +6,7 @@
 //! - [`runs`]: the runs behind it, with the chosen integrator;
 //! - [`history`]: Figures 3–6 and the scenes `history`, `loops`, `contact-laws`;
 //! - [`spectra`]: Figures 7–10 and the scene `spectrum`, regions shaded;
+//! - [`risk`]: a suite study's IDA curves, fragility curves and separation;
 //! - [`caption`]: the caption line (every Π, the law, the method);
 //! - [`render`]: plotters, SVG and bitmap back ends;
 //! - [`font`]: the embedded typeface (no system fonts needed);
@@ -21,6 +22,7 @@ pub mod font;
 pub mod history;
 pub mod map;
 pub mod render;
+pub mod risk;
 pub mod runs;
 pub mod spec;
 pub mod spectra;
@@ -31,7 +33,8 @@ use std::str::FromStr;
 use crate::analysis::grid::Grid;
 use crate::model::{Method, Params};
 
-pub use spec::{Band, Figure, LegendEntry, Panel, Series, Stroke};
+pub use risk::SuiteStudy;
+pub use spec::{Band, Figure, LegendEntry, Panel, Pen, Series, Stroke};
 pub use spectra::SpectrumInput;
 
 /// Why a figure could not be made.
@@ -63,6 +66,9 @@ pub enum FigureName {
     ContactLaws,
     Spectrum,
     Map,
+    Ida,
+    Fragility,
+    Separation,
 }
 
 impl FigureName {
@@ -76,6 +82,13 @@ impl FigureName {
         FigureName::Fig8,
         FigureName::Fig9,
         FigureName::Fig10,
+    ];
+    /// The figures of a suite study (SPEC §11, §12), drawn from
+    /// [`Options::suite`].
+    pub const RISK: [FigureName; 3] = [
+        FigureName::Ida,
+        FigureName::Fragility,
+        FigureName::Separation,
     ];
     /// The scenes, drawn for any parameter set.
     pub const SCENES: [FigureName; 5] = [
@@ -101,11 +114,19 @@ impl FigureName {
             FigureName::ContactLaws => "contact-laws",
             FigureName::Spectrum => "spectrum",
             FigureName::Map => "map",
+            FigureName::Ida => "ida",
+            FigureName::Fragility => "fragility",
+            FigureName::Separation => "separation",
         }
     }
 
     pub fn is_paper(self) -> bool {
         FigureName::PAPER.contains(&self)
+    }
+
+    /// Whether the figure draws a suite study.
+    pub fn is_risk(self) -> bool {
+        FigureName::RISK.contains(&self)
     }
 
     /// Whether the figure is a spectrum (many runs; its grid can be set).
@@ -126,6 +147,7 @@ impl FigureName {
         let names: Vec<&str> = FigureName::PAPER
             .iter()
             .chain(&FigureName::SCENES)
+            .chain(&FigureName::RISK)
             .map(|n| n.name())
             .collect();
         format!("{}, all", names.join(", "))
@@ -144,6 +166,7 @@ impl FromStr for FigureName {
         FigureName::PAPER
             .iter()
             .chain(&FigureName::SCENES)
+            .chain(&FigureName::RISK)
             .copied()
             .find(|n| n.name() == s.trim())
             .ok_or_else(|| {
@@ -199,6 +222,8 @@ pub struct Options {
     /// grid previews them quickly).
     pub grid: Option<Grid>,
     pub scene: Scene,
+    /// The suite study of `ida`, `fragility` and `separation`.
+    pub suite: Option<SuiteStudy>,
 }
 
 /// Computes a figure.
@@ -241,6 +266,18 @@ pub fn build(name: FigureName, options: &Options) -> Result<Figure, FigureError>
             spectra::family_figure(&format!("{}: response spectra", input.name), &input, m)
         }
         FigureName::Map => map::map_scene(&scene.name, &scene.params, options.grid, m),
+        FigureName::Ida | FigureName::Fragility | FigureName::Separation => {
+            let study = options.suite.as_ref().ok_or_else(|| {
+                FigureError::Input(format!(
+                    "figure {name}: draws a suite study; give --preset (with [physical]) and --suite"
+                ))
+            })?;
+            match name {
+                FigureName::Ida => risk::ida_figure(study),
+                FigureName::Fragility => risk::fragility_figure(study),
+                _ => risk::separation_figure(study),
+            }
+        }
     }
 }
 

@@ -6,13 +6,14 @@
 //! Sizes scale with the canvas, from a 1200 × 900 reference.
 
 use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::FigureError;
 use super::font::{self, FAMILY};
-use super::spec::{Figure, LegendEntry, Panel, Stroke};
+use super::spec::{Figure, GuideAt, LegendEntry, Panel, Pen, Stroke};
 use crate::analysis::spectrum::Region;
 
 /// Smallest and largest canvas side, in pixels.
@@ -41,6 +42,20 @@ pub fn series_color(index: usize, stroke: Stroke) -> RGBColor {
             RGBColor(dark(r), dark(g), dark(b))
         }
     }
+}
+
+/// The grey of a faint series (one record of many).
+const FAINT: RGBColor = RGBColor(150, 150, 150);
+
+/// The colour of a guide: its palette colour, else a dark grey.
+fn guide_color(color: Option<usize>) -> RGBColor {
+    color.map_or(RGBColor(90, 90, 90), |c| series_color(c, Stroke::Solid))
+}
+
+/// The fill of a shaded area: a light tint of its palette colour (the
+/// dashed shade would turn grey when this light).
+fn area_color(color: usize, _stroke: Stroke) -> RGBAColor {
+    series_color(color, Stroke::Solid).mix(0.2)
 }
 
 /// The shading of a spectral region.
@@ -241,21 +256,50 @@ fn draw_legend_entry<DB: DrawingBackend>(
     look: &Look,
 ) -> DrawResult<DB> {
     let sample = [(x, y), (x + look.px(36.0), y)];
+    let half = look.px(7.0);
     match entry {
-        LegendEntry::Line { color, stroke, .. } => {
-            let style = series_color(*color, *stroke).stroke_width(look.px(2.5).max(1) as u32);
-            match stroke {
-                Stroke::Solid => area.draw(&PathElement::new(sample.to_vec(), style))?,
-                Stroke::Dashed => area.draw(&DashedPathElement::new(
+        LegendEntry::Line {
+            color,
+            stroke,
+            line,
+            markers,
+            ..
+        } => {
+            let (rgb, width) = match line {
+                Some(Pen::Faint) => (FAINT, look.px(1.2).max(1) as u32),
+                _ => (series_color(*color, *stroke), look.px(2.5).max(1) as u32),
+            };
+            let style = rgb.stroke_width(width);
+            match (line, stroke) {
+                (None, _) => {}
+                (Some(_), Stroke::Solid) => area.draw(&PathElement::new(sample.to_vec(), style))?,
+                (Some(_), Stroke::Dashed) => area.draw(&DashedPathElement::new(
                     sample,
                     look.px(7.0),
                     look.px(4.0),
                     style,
                 ))?,
             }
+            if *markers {
+                draw_marker(area, (x + look.px(18.0), y), *color, *stroke, look)?;
+            }
+        }
+        LegendEntry::Area { color, stroke, .. } => {
+            area.draw(&Rectangle::new(
+                [(x, y - half), (x + look.px(36.0), y + half)],
+                area_color(*color, *stroke).filled(),
+            ))?;
+        }
+        LegendEntry::Guide { color, .. } => {
+            let style = guide_color(*color).stroke_width(look.px(1.5).max(1) as u32);
+            area.draw(&DashedPathElement::new(
+                sample,
+                look.px(3.0),
+                look.px(3.0),
+                style,
+            ))?;
         }
         LegendEntry::Region(r) => {
-            let half = look.px(7.0);
             area.draw(&Rectangle::new(
                 [(x, y - half), (x + look.px(36.0), y + half)],
                 region_color(*r).filled(),
@@ -266,20 +310,54 @@ fn draw_legend_entry<DB: DrawingBackend>(
     area.draw(&Text::new(entry.label(), (x + look.px(44.0), y), style))
 }
 
+/// An observed value: a filled circle (solid series) or a hollow one (dashed).
+fn draw_marker<DB: DrawingBackend>(
+    area: &Area<DB>,
+    at: (i32, i32),
+    color: usize,
+    stroke: Stroke,
+    look: &Look,
+) -> DrawResult<DB> {
+    area.draw(&marker(at, color, stroke, look))
+}
+
+fn marker<C>(at: C, color: usize, stroke: Stroke, look: &Look) -> Circle<C, i32> {
+    let rgb = series_color(color, stroke);
+    let style = match stroke {
+        Stroke::Solid => rgb.filled(),
+        Stroke::Dashed => rgb.stroke_width(look.px(1.8).max(1) as u32),
+    };
+    Circle::new(at, look.px(4.5).max(2), style)
+}
+
 /// The x range (fixed or the data's) and a y range padded by 6 % (from 0
 /// when every value is positive and the smallest is near 0).
 fn ranges(panel: &Panel) -> ((f64, f64), (f64, f64)) {
     if let (Some(x), Some(y)) = (panel.x_range, panel.y_range) {
         return (x, y);
     }
-    let all = || panel.series.iter().flat_map(|s| s.points.iter().copied());
+    let guides = panel.guides.iter().map(|g| match g.at {
+        GuideAt::X(x) => (x, f64::NAN),
+        GuideAt::Y(y) => (f64::NAN, y),
+    });
+    let all = || {
+        panel
+            .series
+            .iter()
+            .flat_map(|s| s.points.iter().copied())
+            .chain(panel.areas.iter().flat_map(|a| a.outline.iter().copied()))
+            .chain(guides.clone())
+            .filter(|(x, y)| x.is_finite() || y.is_finite())
+    };
     let (x0, x1) = panel.x_range.unwrap_or_else(|| {
-        all().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (x, _)| {
-            (a.min(x), b.max(x))
-        })
+        all()
+            .filter(|(x, _)| x.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (x, _)| {
+                (a.min(x), b.max(x))
+            })
     });
     let (mut y0, mut y1) = all()
-        .filter(|(x, y)| *x >= x0 && *x <= x1 && y.is_finite())
+        .filter(|(x, y)| (x.is_nan() || (*x >= x0 && *x <= x1)) && y.is_finite())
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (_, y)| {
             (a.min(y), b.max(y))
         });
@@ -337,14 +415,28 @@ fn draw_panel<DB: DrawingBackend>(area: &Area<DB>, panel: &Panel, look: &Look) -
             region_color(c.region).filled(),
         )
     }))?;
-    let width = look.px(2.0).max(1) as u32;
+    for a in &panel.areas {
+        chart.draw_series(std::iter::once(Polygon::new(
+            a.outline.clone(),
+            area_color(a.color, a.stroke).filled(),
+        )))?;
+    }
+    draw_guides(&mut chart, panel, look, ((x0, x1), (y0, y1)))?;
     for s in &panel.series {
-        let style = series_color(s.color, s.stroke).stroke_width(width);
+        let (rgb, width) = match s.pen {
+            Pen::Faint => (FAINT, look.px(1.0).max(1) as u32),
+            _ => (series_color(s.color, s.stroke), look.px(2.0).max(1) as u32),
+        };
+        let style = rgb.stroke_width(width);
         let points = s
             .points
             .iter()
             .copied()
             .filter(|(x, y)| x.is_finite() && y.is_finite());
+        if s.pen == Pen::Markers {
+            chart.draw_series(points.map(|p| marker(p, s.color, s.stroke, look)))?;
+            continue;
+        }
         match s.stroke {
             Stroke::Solid if look.segments => {
                 let points: Vec<(f64, f64)> = points.collect();
@@ -358,14 +450,96 @@ fn draw_panel<DB: DrawingBackend>(area: &Area<DB>, panel: &Panel, look: &Look) -
                 chart.draw_series(LineSeries::new(points, style))?;
             }
             Stroke::Dashed => {
-                chart.draw_series(DashedLineSeries::new(
-                    points,
-                    look.px(8.0),
-                    look.px(5.0),
-                    style,
-                ))?;
+                let (dash, space) = match s.pen {
+                    Pen::Faint => (look.px(5.0), look.px(4.0)),
+                    _ => (look.px(8.0), look.px(5.0)),
+                };
+                chart.draw_series(DashedLineSeries::new(points, dash, space, style))?;
             }
         }
+    }
+    Ok(())
+}
+
+type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// The guides of a panel: dashed thin lines across it, each with its tag.
+/// Vertical guides' tags stand at the top, right of the line, in the first
+/// row where they overlap no tag already placed; horizontal ones' at the
+/// left, above the line.
+fn draw_guides<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    panel: &Panel,
+    look: &Look,
+    ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
+) -> DrawResult<DB> {
+    let font = look.font(13.0);
+    let row_h = look.px(13.0 * 1.35);
+    let pad = look.px(4.0);
+    // Pixel spans taken by tags, per row.
+    let mut rows: Vec<Vec<(i32, i32)>> = Vec::new();
+    let mut vertical: Vec<_> = panel
+        .guides
+        .iter()
+        .filter_map(|g| match g.at {
+            GuideAt::X(x) if x.is_finite() && x >= x0 && x <= x1 => Some((x, g)),
+            _ => None,
+        })
+        .collect();
+    vertical.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let area = chart.plotting_area().strip_coord_spec();
+    for (x, g) in vertical {
+        let style = guide_color(g.color).stroke_width(look.px(1.5).max(1) as u32);
+        chart.draw_series(std::iter::once(DashedPathElement::new(
+            vec![(x, y0), (x, y1)],
+            look.px(3.0),
+            look.px(3.0),
+            style,
+        )))?;
+        let (px, top) = chart.backend_coord(&(x, y1));
+        let w = area.estimate_text_size(&g.tag, &font)?.0 as i32;
+        let (from, to) = (px + pad, px + pad + w);
+        let row = match rows
+            .iter()
+            .position(|r| r.iter().all(|&(a, b)| to + pad < a || from > b + pad))
+        {
+            Some(i) => i,
+            None => {
+                rows.push(Vec::new());
+                rows.len() - 1
+            }
+        };
+        rows[row].push((from, to));
+        let (ox, oy) = area.get_base_pixel();
+        area.draw(&Text::new(
+            g.tag.clone(),
+            (from - ox, top - oy + pad + row_h * row as i32),
+            font.clone()
+                .color(&guide_color(g.color))
+                .pos(Pos::new(HPos::Left, VPos::Top)),
+        ))?;
+    }
+    for g in &panel.guides {
+        let GuideAt::Y(y) = g.at else { continue };
+        if !(y.is_finite() && y >= y0 && y <= y1) {
+            continue;
+        }
+        let style = guide_color(g.color).stroke_width(look.px(1.5).max(1) as u32);
+        chart.draw_series(std::iter::once(DashedPathElement::new(
+            vec![(x0, y), (x1, y)],
+            look.px(3.0),
+            look.px(3.0),
+            style,
+        )))?;
+        let (left, py) = chart.backend_coord(&(x0, y));
+        let (ox, oy) = area.get_base_pixel();
+        area.draw(&Text::new(
+            g.tag.clone(),
+            (left - ox + pad, py - oy - look.px(2.0)),
+            font.clone()
+                .color(&guide_color(g.color))
+                .pos(Pos::new(HPos::Left, VPos::Bottom)),
+        ))?;
     }
     Ok(())
 }

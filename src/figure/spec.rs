@@ -12,15 +12,31 @@ pub enum Stroke {
     Dashed,
 }
 
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Pen {
+    /// A line in its palette colour.
+    Line,
+    /// A thin grey line, one of many alike (each record of a suite); its
+    /// colour index is not used.
+    Faint,
+    /// A marker at each point and no line (observed values): filled when
+    /// solid, hollow when dashed.
+    Markers,
+}
+
 /// One curve of a panel.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
-    /// Legend text; series with the same label and style share one legend entry.
+    /// Legend text; series with the same label, colour and stroke share one
+    /// legend entry (a line with a marker when one is a line and the other
+    /// markers).
     pub label: String,
     /// Index into the figure palette; a dashed series of the same index is
     /// drawn in a darker shade of the same hue.
     pub color: usize,
     pub stroke: Stroke,
+    pub pen: Pen,
     pub points: Vec<(f64, f64)>,
 }
 
@@ -35,8 +51,15 @@ impl Series {
             label: label.into(),
             color,
             stroke,
+            pen: Pen::Line,
             points,
         }
+    }
+
+    /// The same series drawn with `pen`.
+    pub fn with_pen(mut self, pen: Pen) -> Self {
+        self.pen = pen;
+        self
     }
 
     /// The key of this series' legend entry.
@@ -52,6 +75,36 @@ pub struct Band {
     pub region: Region,
     pub from: f64,
     pub to: f64,
+}
+
+/// A shaded area of a panel (a 16–84 % band): the polygon `outline`,
+/// filled with a light tint of the colour of series `color`, `stroke`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Area {
+    /// Legend text (one entry per distinct label, colour and stroke).
+    pub label: String,
+    pub color: usize,
+    pub stroke: Stroke,
+    pub outline: Vec<(f64, f64)>,
+}
+
+/// Where a guide lies: x = value (vertical) or y = value (horizontal).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GuideAt {
+    X(f64),
+    Y(f64),
+}
+
+/// A straight reference line across a panel (a gap, a code rule, a
+/// probability), a thin line in palette colour `color` (`None`: grey), with
+/// a short `tag` written beside it and a `label` in the legend (none when
+/// empty).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Guide {
+    pub at: GuideAt,
+    pub color: Option<usize>,
+    pub tag: String,
+    pub label: String,
 }
 
 /// One cell of a region map: a rectangle of the (x, y) plane in one region.
@@ -74,6 +127,10 @@ pub struct Panel {
     pub bands: Vec<Band>,
     /// Region-map cells, drawn under the series.
     pub cells: Vec<Cell>,
+    /// Shaded areas, drawn under the series.
+    pub areas: Vec<Area>,
+    /// Reference lines, drawn under the series.
+    pub guides: Vec<Guide>,
     /// A fixed x range; `None` spans the data.
     pub x_range: Option<(f64, f64)>,
     /// A fixed y range; `None` spans the data.
@@ -90,6 +147,8 @@ impl Panel {
             series: Vec::new(),
             bands: Vec::new(),
             cells: Vec::new(),
+            areas: Vec::new(),
+            guides: Vec::new(),
             x_range: None,
             y_range: None,
         }
@@ -108,10 +167,25 @@ pub struct Figure {
 /// One entry of the figure's shared legend.
 #[derive(Debug, Clone, PartialEq)]
 pub enum LegendEntry {
+    /// A series: its line (`Pen::Line` or `Pen::Faint`; `None` for markers
+    /// only) and whether markers go with it.
     Line {
         label: String,
         color: usize,
         stroke: Stroke,
+        line: Option<Pen>,
+        markers: bool,
+    },
+    /// A shaded area.
+    Area {
+        label: String,
+        color: usize,
+        stroke: Stroke,
+    },
+    /// A reference line.
+    Guide {
+        label: String,
+        color: Option<usize>,
     },
     Region(Region),
 }
@@ -119,7 +193,9 @@ pub enum LegendEntry {
 impl LegendEntry {
     pub fn label(&self) -> String {
         match self {
-            LegendEntry::Line { label, .. } => label.clone(),
+            LegendEntry::Line { label, .. }
+            | LegendEntry::Area { label, .. }
+            | LegendEntry::Guide { label, .. } => label.clone(),
             LegendEntry::Region(r) => region_label(*r).to_string(),
         }
     }
@@ -136,19 +212,51 @@ pub fn region_label(r: Region) -> &'static str {
 
 impl Figure {
     /// The shared legend: each distinct series (label, colour, stroke) once,
-    /// in order of first appearance, then each shaded region once.
+    /// in order of first appearance, then each shaded area, each labelled
+    /// guide and each shaded region once.
     pub fn legend(&self) -> Vec<LegendEntry> {
         let mut seen = Vec::new();
-        let mut entries = Vec::new();
+        let mut entries: Vec<LegendEntry> = Vec::new();
         for s in self.panels.iter().flat_map(|p| &p.series) {
             let key = s.legend_key();
-            if !seen.contains(&key) {
-                seen.push(key);
-                entries.push(LegendEntry::Line {
-                    label: s.label.clone(),
-                    color: s.color,
-                    stroke: s.stroke,
-                });
+            let index = match seen.iter().position(|k| *k == key) {
+                Some(i) => i,
+                None => {
+                    seen.push(key);
+                    entries.push(LegendEntry::Line {
+                        label: s.label.clone(),
+                        color: s.color,
+                        stroke: s.stroke,
+                        line: None,
+                        markers: false,
+                    });
+                    entries.len() - 1
+                }
+            };
+            if let LegendEntry::Line { line, markers, .. } = &mut entries[index] {
+                match s.pen {
+                    Pen::Markers => *markers = true,
+                    pen => *line = line.or(Some(pen)),
+                }
+            }
+        }
+        for a in self.panels.iter().flat_map(|p| &p.areas) {
+            let entry = LegendEntry::Area {
+                label: a.label.clone(),
+                color: a.color,
+                stroke: a.stroke,
+            };
+            if !entries.contains(&entry) {
+                entries.push(entry);
+            }
+        }
+        for g in self.panels.iter().flat_map(|p| &p.guides) {
+            let entry = LegendEntry::Guide {
+                label: g.label.clone(),
+                color: g.color,
+            };
+            if !g.label.is_empty() && !entries.contains(&entry) {
+                entries.push(entry);
             }
         }
         for r in [Region::Amplification, Region::Suppression] {

@@ -99,6 +99,7 @@ fn write_figure(name: FigureName, title: &str, params: &Params, path: &Path) -> 
             params: *params,
             spectrum: None,
         },
+        suite: None,
     };
     let bytes = figure::build(name, &options)
         .and_then(|fig| figure::encode(&fig, Format::Svg, (1200, 900)));

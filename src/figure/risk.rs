@@ -1,0 +1,539 @@
+//! Figures of a suite study (SPEC §11, §12): the IDA curves, the fragility
+//! curves and the separation at a probability. The runs and the statistics
+//! are [`crate::analysis`]'s (`suite`, `ida`, [`fragility`],
+//! [`separation`]); this module only turns them into a [`Figure`].
+//!
+//! - [`ida_figure`]: IM against the left structure's peak drift, one faint
+//!   curve per record, the median and the 16–84 % band, with pounding
+//!   (solid, blue) and without (gap = ∞; dashed, orange). IM is vertical,
+//!   demand horizontal (Vamvatsikos and Cornell 2002).
+//! - [`fragility_figure`]: P(exceed | IM = x) = Φ(ln(x/θ)/β) of each limit
+//!   state, fitted (lines) and observed k/n (markers), with pounding solid
+//!   and without dashed; a limit state with no fit shows its markers and
+//!   says why in the legend.
+//! - [`separation_figure`]: the empirical distribution of the records'
+//!   Π_d,min (mm), its lognormal fit, the gap at each probability asked, the
+//!   preset's gap and the code rules on the median peaks.
+
+use crate::analysis::fragility::{self, Fragility, LevelCount, describe};
+use crate::analysis::ida::{LimitStateFragility, fragilities, plan_levels, run_levels};
+use crate::analysis::limit_state::LimitState;
+use crate::analysis::separation::{self, RecordGap, probability_of_pounding};
+use crate::analysis::statistics::Summary;
+use crate::analysis::suite::{SuiteCase, SuiteRun, plan, run_suite};
+use crate::model::intensity::IntensityMeasure;
+use crate::model::params::echo::g4;
+use crate::model::suite::SuiteMember;
+
+use super::FigureError;
+use super::caption::num;
+use super::spec::{Area, Figure, Guide, GuideAt, Panel, Pen, Series, Stroke};
+
+/// A suite study to draw: the buildings and scaling, the records, and what
+/// each figure asks of them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SuiteStudy {
+    /// The preset's name and the suite as given (`synthetic:20`, a path), for
+    /// the title and caption.
+    pub preset: String,
+    pub suite: String,
+    pub case: SuiteCase,
+    pub members: Vec<SuiteMember>,
+    /// The IDA's intensity levels (g), ascending (ida, fragility).
+    pub levels: Vec<f64>,
+    /// The limit states beside pounding (fragility).
+    pub states: Vec<LimitState>,
+    /// The probabilities of non-pounding asked for (separation).
+    pub probabilities: Vec<f64>,
+}
+
+/// Colours (palette indices) of the runs with and without pounding.
+const WITH: usize = 0;
+const WITHOUT: usize = 1;
+
+/// The axis label of an intensity measure, in g.
+pub fn intensity_label(measure: IntensityMeasure) -> String {
+    match measure {
+        IntensityMeasure::Pga => "PGA (g)".into(),
+        IntensityMeasure::Sa { period } => format!("Sa(T = {} s, ξ = 5 %) (g)", num(period)),
+    }
+}
+
+fn run_error(r: &SuiteRun) -> Option<FigureError> {
+    if let Some(why) = r.result.unreliable() {
+        return Some(FigureError::Run(format!("record `{}`: {why}", r.name)));
+    }
+    (!r.free.completed).then(|| {
+        FigureError::Run(format!(
+            "record `{}`: the run without contact stopped before its end",
+            r.name
+        ))
+    })
+}
+
+/// Every record at every level (level by level), or the first run that
+/// cannot be trusted.
+fn ida_runs(study: &SuiteStudy) -> Result<Vec<Vec<SuiteRun>>, FigureError> {
+    if study.levels.is_empty() {
+        return Err(FigureError::Input("an IDA needs --levels".into()));
+    }
+    let plans = plan_levels(&study.case, &study.members, &study.levels)
+        .map_err(|e| FigureError::Input(e.to_string()))?;
+    let runs = run_levels(&study.case, &study.members, &plans, &|_: &SuiteRun| {});
+    match runs.iter().flatten().find_map(run_error) {
+        Some(e) => Err(e),
+        None => Ok(runs),
+    }
+}
+
+/// The buildings, the suite and the scaling, for every caption.
+fn caption(study: &SuiteStudy, scaling: &str) -> String {
+    let phys = &study.case.physical;
+    let period = |i: usize| g4(std::f64::consts::TAU / phys.omega[i]);
+    let mm = |v: f64| {
+        if v.is_finite() {
+            format!("{} mm", g4(v * 1e3))
+        } else {
+            "inf".into()
+        }
+    };
+    format!(
+        "{}: T1 = {} s, T2 = {} s, m1 = {} t, m2 = {} t, u_y1 = {}, u_y2 = {}, gap = {}; \
+         suite {} ({} records), {scaling}; {} contact; {} method",
+        study.preset,
+        period(0),
+        period(1),
+        g4(phys.mass[0] / 1e3),
+        g4(phys.mass[1] / 1e3),
+        mm(phys.yield_displacement[0]),
+        mm(phys.yield_displacement[1]),
+        mm(phys.gap),
+        study.suite,
+        study.members.len(),
+        study.case.settings.model,
+        study.case.settings.method.name(),
+    )
+}
+
+/// A one-panel figure of `study`, titled by its `kind`, with the caption
+/// of the buildings and suite followed by `note`.
+fn figure(kind: &str, study: &SuiteStudy, panel: Panel, note: &str) -> Figure {
+    Figure {
+        title: format!(
+            "{kind}: {} under suite {} ({} records)",
+            study.preset,
+            study.suite,
+            study.members.len()
+        ),
+        panels: vec![panel],
+        caption: caption(study, note),
+    }
+}
+
+fn levels_text(study: &SuiteStudy) -> String {
+    let (first, last) = (study.levels[0], study.levels[study.levels.len() - 1]);
+    format!(
+        "each record scaled to {} = {}–{} g ({} levels)",
+        study.case.scaling.measure,
+        g4(first),
+        g4(last),
+        study.levels.len()
+    )
+}
+
+/// IDA curves of the left structure's peak drift (mm) against IM (g).
+pub fn ida_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
+    let runs = ida_runs(study)?;
+    let drift = |r: &SuiteRun, pounding: bool| {
+        let si = if pounding { &r.si } else { &r.free_si };
+        si.left.peak_displacement_m * 1e3
+    };
+    let mut panel = Panel::new(
+        0,
+        "Left structure",
+        "Peak drift of the left structure u1,max (mm)",
+        &intensity_label(study.case.scaling.measure),
+    );
+    let styles = [
+        (true, WITH, Stroke::Solid, "with pounding"),
+        (false, WITHOUT, Stroke::Dashed, "without pounding (gap = ∞)"),
+    ];
+    let mut medians = Vec::new();
+    for &(pounding, color, stroke, name) in &styles {
+        for j in 0..study.members.len() {
+            let mut points = vec![(0.0, 0.0)];
+            points.extend(
+                study
+                    .levels
+                    .iter()
+                    .zip(&runs)
+                    .map(|(&x, at)| (drift(&at[j], pounding), x)),
+            );
+            panel.series.push(
+                Series::new(format!("each record, {name}"), color, stroke, points)
+                    .with_pen(Pen::Faint),
+            );
+        }
+        let summaries: Vec<(f64, Summary)> = study
+            .levels
+            .iter()
+            .zip(&runs)
+            .map(|(&x, at)| {
+                let drifts: Vec<f64> = at.iter().map(|r| drift(r, pounding)).collect();
+                (x, Summary::of(&drifts))
+            })
+            .collect();
+        let mut outline = vec![(0.0, 0.0)];
+        outline.extend(summaries.iter().map(|(x, s)| (s.p16, *x)));
+        outline.extend(summaries.iter().rev().map(|(x, s)| (s.p84, *x)));
+        panel.areas.push(Area {
+            label: format!("16–84 %, {name}"),
+            color,
+            stroke,
+            outline,
+        });
+        let mut median = vec![(0.0, 0.0)];
+        median.extend(summaries.iter().map(|(x, s)| (s.median, *x)));
+        medians.push(Series::new(
+            format!("median, {name}"),
+            color,
+            stroke,
+            median,
+        ));
+    }
+    // The medians go over every record's curve.
+    panel.series.extend(medians);
+    let gap = study.case.physical.gap;
+    if gap.is_finite() {
+        panel.guides.push(Guide {
+            at: GuideAt::X(gap * 1e3),
+            color: None,
+            tag: format!("gap {} mm", g4(gap * 1e3)),
+            label: String::new(),
+        });
+    }
+    Ok(figure(
+        "IDA",
+        study,
+        panel,
+        &format!(
+            "{}; curves: peak drift of the left structure at each level, \
+             median and 16–84 % over the records",
+            levels_text(study)
+        ),
+    ))
+}
+
+/// The observed fractions k/n of `counts` as (x, k/n).
+fn observed(counts: &[LevelCount]) -> Vec<(f64, f64)> {
+    counts
+        .iter()
+        .filter(|c| c.runs > 0)
+        .map(|c| (c.level, c.exceeded as f64 / c.runs as f64))
+        .collect()
+}
+
+/// A fitted curve over (0, x_max], or none.
+fn fitted_curve(f: &Fragility, x_max: f64) -> Option<Vec<(f64, f64)>> {
+    let Fragility::Fitted { theta, beta, .. } = *f else {
+        return None;
+    };
+    const POINTS: usize = 240;
+    Some(
+        (1..=POINTS)
+            .map(|i| {
+                let x = x_max * i as f64 / POINTS as f64;
+                (x, fragility::probability(x, theta, beta))
+            })
+            .collect(),
+    )
+}
+
+/// One limit state's series in one style: the fit (if any) and the markers,
+/// sharing one legend entry that gives θ, β or why there is no fit.
+fn fragility_series(
+    state: &str,
+    name: Option<&str>,
+    color: usize,
+    stroke: Stroke,
+    counts: &[LevelCount],
+    fit: &Fragility,
+    x_max: f64,
+) -> Vec<Series> {
+    let label = match name {
+        Some(name) => format!("{state}, {name}: {}", describe(fit)),
+        None => format!("{state}: {}", describe(fit)),
+    };
+    let mut series = Vec::new();
+    if let Some(points) = fitted_curve(fit, x_max) {
+        series.push(Series::new(label.clone(), color, stroke, points));
+    }
+    series.push(Series::new(label, color, stroke, observed(counts)).with_pen(Pen::Markers));
+    series
+}
+
+/// P(exceed | IM) of the pounding limit state and each limit state asked,
+/// with pounding (solid) and without (dashed).
+pub fn fragility_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
+    let runs = ida_runs(study)?;
+    let curves: Vec<LimitStateFragility> = fragilities(&study.levels, &runs, &study.states);
+    let x_max = 1.05 * study.levels[study.levels.len() - 1];
+    let mut panel = Panel::new(
+        0,
+        "Fragility: P(exceed | IM = x) = Φ(ln(x/θ)/β)",
+        &intensity_label(study.case.scaling.measure),
+        "P(exceed)",
+    );
+    for (i, c) in curves.iter().enumerate() {
+        // The pounding limit state exists with pounding only.
+        let with = c.no_pounding_fragility.is_some().then_some("with pounding");
+        panel.series.extend(fragility_series(
+            &c.limit_state,
+            with,
+            i,
+            Stroke::Solid,
+            &c.counts,
+            &c.fragility,
+            x_max,
+        ));
+        if let (Some(counts), Some(fit)) = (&c.no_pounding_counts, &c.no_pounding_fragility) {
+            panel.series.extend(fragility_series(
+                &c.limit_state,
+                Some("without pounding"),
+                i,
+                Stroke::Dashed,
+                counts,
+                fit,
+                x_max,
+            ));
+        }
+    }
+    panel.x_range = Some((0.0, x_max));
+    panel.y_range = Some((-0.03, 1.03));
+    Ok(figure(
+        "Fragility",
+        study,
+        panel,
+        &format!(
+            "{}; lines: maximum-likelihood lognormal fits (SPEC §12), markers: \
+             observed fractions k/n; solid with pounding, dashed without (gap = ∞)",
+            levels_text(study)
+        ),
+    ))
+}
+
+/// The records' empirical distribution of `gaps` (mm) as a step curve from
+/// 0 to `x_max`.
+fn step_curve(gaps: &[f64], x_max: f64) -> Vec<(f64, f64)> {
+    let mut sorted: Vec<f64> = gaps.iter().copied().filter(|d| d.is_finite()).collect();
+    sorted.sort_by(f64::total_cmp);
+    let n = gaps.len() as f64;
+    let mut points = vec![(0.0, 0.0)];
+    for (k, d) in sorted.iter().enumerate() {
+        points.push((*d, k as f64 / n));
+        points.push((*d, (k + 1) as f64 / n));
+    }
+    points.push((x_max, sorted.len() as f64 / n));
+    points
+}
+
+/// The separation study of one suite at one scaling: the distribution of
+/// Π_d,min (mm), the gap at each probability, the preset's gap and the code
+/// rules on the median peaks.
+pub fn separation_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
+    let plans = plan(&study.case, &study.members).map_err(|e| FigureError::Input(e.to_string()))?;
+    let runs = run_suite(&study.case, &study.members, &plans, &|_: &SuiteRun| {});
+    if let Some(e) = runs.iter().find_map(run_error) {
+        return Err(e);
+    }
+    let records: Vec<RecordGap> = runs.iter().map(RecordGap::of).collect();
+    let gaps: Vec<f64> = records.iter().map(|r| r.min_gap).collect();
+    let result = separation::study(&records, &study.probabilities);
+    let gap = study.case.physical.gap;
+    let mm = 1e3;
+    // The x axis reaches past every finite value drawn.
+    let largest = gaps
+        .iter()
+        .copied()
+        .chain(result.rules.iter().map(|r| r.at_median_peaks))
+        .chain([gap])
+        .filter(|v| v.is_finite())
+        .fold(0.0f64, f64::max);
+    let x_max = 1.1 * mm * largest.max(1e-6);
+
+    let mut panel = Panel::new(
+        0,
+        "Minimum separation of each record, Π_d,min (SPEC §11)",
+        "Separation d (mm)",
+        "P(Π_d,min ≤ d): share of records that do not pound",
+    );
+    panel.series.push(Series::new(
+        format!("records (empirical, N = {})", gaps.len()),
+        0,
+        Stroke::Solid,
+        step_curve(&gaps.iter().map(|d| d * mm).collect::<Vec<_>>(), x_max),
+    ));
+    if let Some(fit) = result.lognormal {
+        const POINTS: usize = 300;
+        let points = (0..=POINTS)
+            .map(|i| {
+                let d = x_max * i as f64 / POINTS as f64;
+                (d, fit.probability(d / mm))
+            })
+            .collect();
+        panel.series.push(Series::new(
+            format!(
+                "lognormal fit: median {} mm, β = {:.3}",
+                g4(fit.median * mm),
+                fit.dispersion
+            ),
+            1,
+            Stroke::Solid,
+            points,
+        ));
+    }
+    let marks: Vec<(f64, f64)> = result
+        .at_probability
+        .iter()
+        .filter(|a| a.empirical.is_finite())
+        .map(|a| (a.empirical * mm, a.probability))
+        .collect();
+    panel.series.push(
+        Series::new("gap at probability p: d_(⌈pN⌉)", 0, Stroke::Solid, marks)
+            .with_pen(Pen::Markers),
+    );
+    for a in &result.at_probability {
+        let length = |d: f64| {
+            if d.is_finite() {
+                format!("{} mm", g4(d * mm))
+            } else {
+                "∞".into()
+            }
+        };
+        let value = match a.lognormal {
+            Some(d) => format!("{} (lognormal {})", length(a.empirical), length(d)),
+            None => length(a.empirical),
+        };
+        panel.guides.push(Guide {
+            at: GuideAt::Y(a.probability),
+            color: None,
+            tag: format!("p = {}: {value}", num(a.probability)),
+            label: String::new(),
+        });
+    }
+    if gap.is_finite() {
+        panel.guides.push(Guide {
+            at: GuideAt::X(gap * mm),
+            color: None,
+            tag: "gap".into(),
+            label: format!(
+                "the preset's gap: {} mm, P(pounding) = {}",
+                g4(gap * mm),
+                g4(probability_of_pounding(&gaps, gap))
+            ),
+        });
+    }
+    for (i, r) in result.rules.iter().enumerate() {
+        panel.guides.push(Guide {
+            at: GuideAt::X(r.at_median_peaks * mm),
+            color: Some(2 + i),
+            tag: r.rule.to_string(),
+            label: format!(
+                "{} on the median peaks: {} mm, P(pounding) = {}",
+                r.rule,
+                g4(r.at_median_peaks * mm),
+                g4(r.pounding_probability)
+            ),
+        });
+    }
+    panel.x_range = Some((0.0, x_max));
+    panel.y_range = Some((0.0, 1.04));
+    let scaling = match study.case.scaling.level {
+        Some(x) => format!(
+            "each record scaled to {} = {} g",
+            study.case.scaling.measure,
+            g4(x)
+        ),
+        None => "records at their list's scale".into(),
+    };
+    Ok(figure(
+        "Separation",
+        study,
+        panel,
+        &format!(
+            "{scaling}; Π_d,min of each record from its run without contact; \
+             code rules on the median peaks of the separate structures ({} mm, {} mm; ρ = {:.3})",
+            g4(result.median_peaks[0] * mm),
+            g4(result.median_peaks[1] * mm),
+            result.correlation
+        ),
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::figure::spec::LegendEntry;
+
+    /// A riser and a tread per finite record; a zero rises at 0, an
+    /// infinite gap never arrives (the curve ends below 1).
+    #[test]
+    fn step_curve_rises_one_record_at_a_time() {
+        let third = 1.0 / 3.0;
+        assert_eq!(
+            step_curve(&[1.0, 0.0, f64::INFINITY], 2.0),
+            vec![
+                (0.0, 0.0),
+                (0.0, 0.0),
+                (0.0, third),
+                (1.0, third),
+                (1.0, 2.0 * third),
+                (2.0, 2.0 * third),
+            ]
+        );
+    }
+
+    /// A fit's line and its markers share one legend entry; a limit state
+    /// with no fit has markers only.
+    #[test]
+    fn a_fit_and_its_markers_share_one_legend_entry() {
+        let counts = [
+            LevelCount {
+                level: 0.2,
+                runs: 4,
+                exceeded: 1,
+            },
+            LevelCount {
+                level: 0.4,
+                runs: 4,
+                exceeded: 2,
+            },
+            LevelCount {
+                level: 0.8,
+                runs: 4,
+                exceeded: 3,
+            },
+        ];
+        let fit = fragility::fit(&counts);
+        let fitted = fragility_series("ductility>2", None, 0, Stroke::Solid, &counts, &fit, 1.0);
+        let never = Fragility::NeverExceeded;
+        let bare = fragility_series("force>500kN", None, 1, Stroke::Solid, &counts, &never, 1.0);
+        assert_eq!(fitted.len(), 2);
+        assert_eq!(bare.len(), 1);
+        let mut panel = Panel::new(0, "", "x", "y");
+        panel.series.extend(fitted.into_iter().chain(bare));
+        let fig = Figure {
+            title: String::new(),
+            panels: vec![panel],
+            caption: String::new(),
+        };
+        let legend = fig.legend();
+        assert_eq!(legend.len(), 2, "{legend:?}");
+        let LegendEntry::Line { line, markers, .. } = &legend[0] else {
+            panic!("{legend:?}");
+        };
+        assert_eq!((*line, *markers), (Some(Pen::Line), true));
+        assert!(legend[0].label().starts_with("ductility>2: θ = "));
+        assert_eq!(legend[1].label(), "force>500kN: never exceeded");
+    }
+}

@@ -1,0 +1,282 @@
+//! `pounding figure ida|fragility|separation` end to end: each writes a
+//! well-formed SVG with the series its suite study implies (one faint
+//! curve per record, a median and a band with and without pounding; k/n
+//! markers at every level for each limit state; an empirical step curve of
+//! N records with its lognormal fit), axis labels that name the quantity
+//! and its unit, and a PNG variant; bad input is one line and exit 2.
+
+mod common;
+
+use common::{fails, succeeds};
+
+/// The preset and suite of every test: five or twenty simulated records
+/// (made in memory), Sa(0.95 s), the two-buildings pair.
+const SUITE: [&str; 6] = [
+    "--preset",
+    "two-buildings",
+    "--suite",
+    "synthetic:20",
+    "--im",
+    "sa:0.95",
+];
+
+/// The grey of the records' curves (`figure::render`), and the palette's
+/// first two colours: blue (with pounding) and orange (the lognormal fit;
+/// without pounding its darker shade).
+const FAINT: &str = "#969696";
+const BLUE: &str = "#0072B2";
+const ORANGE: &str = "#D55E00";
+const DARK_ORANGE: &str = "#753400";
+
+/// What the tests count in an SVG: its texts, and its polylines (stroke,
+/// number of points), polygons (fill) and circles.
+struct Svg {
+    texts: Vec<String>,
+    polylines: Vec<(String, usize)>,
+    polygons: Vec<String>,
+    circles: usize,
+}
+
+impl Svg {
+    fn read(path: &std::path::Path) -> Svg {
+        let text = std::fs::read_to_string(path).unwrap();
+        let doc = roxmltree::Document::parse(&text).expect("the SVG is well-formed XML");
+        assert_eq!(doc.root_element().tag_name().name(), "svg");
+        let named = |name: &'static str| {
+            doc.descendants()
+                .filter(move |n| n.tag_name().name() == name)
+        };
+        Svg {
+            texts: named("text")
+                .map(|n| n.text().unwrap_or("").trim().to_string())
+                .collect(),
+            polylines: named("polyline")
+                .map(|n| {
+                    let points = n.attribute("points").unwrap_or("").split_whitespace();
+                    (
+                        n.attribute("stroke").unwrap_or("").to_string(),
+                        points.count(),
+                    )
+                })
+                .collect(),
+            polygons: named("polygon")
+                .map(|n| n.attribute("fill").unwrap_or("").to_string())
+                .collect(),
+            circles: named("circle").count(),
+        }
+    }
+
+    /// The number of points of each polyline of `stroke` with more than
+    /// three: whole curves. A legend sample has two points, and so has a
+    /// dash, or three where it turns a corner of a curve of long segments.
+    fn curves(&self, stroke: &str) -> Vec<usize> {
+        self.polylines
+            .iter()
+            .filter(|(s, n)| s == stroke && *n > 3)
+            .map(|(_, n)| *n)
+            .collect()
+    }
+
+    /// Polylines of `stroke`: curves, dashes and legend samples.
+    fn strokes(&self, stroke: &str) -> usize {
+        self.polylines.iter().filter(|(s, _)| s == stroke).count()
+    }
+
+    fn has_text(&self, text: &str) -> bool {
+        self.texts.iter().any(|t| t == text)
+    }
+
+    fn texts_starting(&self, start: &str) -> Vec<&String> {
+        self.texts.iter().filter(|t| t.starts_with(start)).collect()
+    }
+}
+
+/// Runs `figure NAME` with the suite and `extra`, writing `file` in a
+/// temporary directory, and reads the SVG back.
+fn draw(name: &str, extra: &[&str]) -> Svg {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join(format!("{name}.svg"));
+    let mut args = vec!["figure", name, "--out", out.to_str().unwrap()];
+    args.extend(SUITE);
+    args.extend(extra);
+    succeeds(&args);
+    Svg::read(&out)
+}
+
+#[test]
+fn ida_has_a_curve_per_record_and_a_median_and_band_in_each_style() {
+    let levels = ["0.1", "0.2", "0.4", "0.6"];
+    let svg = draw("ida", &["--levels", &levels.join(",")]);
+    // Each record's curve with pounding is one grey polyline from the
+    // origin through every level; without pounding, grey dashes.
+    let records = svg.curves(FAINT);
+    assert_eq!(records, vec![1 + levels.len(); 20], "{records:?}");
+    assert!(
+        svg.strokes(FAINT) > 2 * 20,
+        "dashed records without pounding"
+    );
+    // The median with pounding: one blue curve; without: orange dashes.
+    assert_eq!(svg.curves(BLUE), vec![1 + levels.len()]);
+    assert!(svg.strokes(DARK_ORANGE) > 2);
+    // The two 16–84 % bands, blue and orange.
+    assert_eq!(svg.polygons, vec![BLUE, ORANGE]);
+    for entry in [
+        "each record, with pounding",
+        "each record, without pounding (gap = ∞)",
+        "median, with pounding",
+        "median, without pounding (gap = ∞)",
+        "16–84 %, with pounding",
+        "16–84 %, without pounding (gap = ∞)",
+    ] {
+        assert!(svg.has_text(entry), "legend `{entry}` in {:?}", svg.texts);
+    }
+    // IM vertical in g, drift horizontal in mm; the gap marked.
+    assert!(svg.has_text("Sa(T = 0.95 s, ξ = 5 %) (g)"));
+    assert!(svg.has_text("Peak drift of the left structure u1,max (mm)"));
+    assert!(svg.has_text("gap 25 mm"), "{:?}", svg.texts);
+}
+
+#[test]
+fn fragility_has_markers_at_every_level_and_a_legend_per_state_and_style() {
+    let svg = draw(
+        "fragility",
+        &["--levels", "0.1:1.0:0.1", "--ductility", "2"],
+    );
+    // Pounding (with pounding only) and ductility > 2 with and without:
+    // three sets of ten markers, and one marker in each legend entry.
+    assert_eq!(svg.circles, 3 * 10 + 3);
+    let pounding = svg.texts_starting("pounding: ");
+    let with = svg.texts_starting("ductility>2 (either), with pounding: ");
+    let without = svg.texts_starting("ductility>2 (either), without pounding: ");
+    assert_eq!((pounding.len(), with.len(), without.len()), (1, 1, 1));
+    // Both ductility fits exist for this suite (`pounding ida` gives θ and
+    // β): a fitted curve each, solid orange and dashed dark orange.
+    assert!(with[0].contains("θ = ") && without[0].contains("θ = "));
+    assert_eq!(svg.curves(ORANGE), vec![240]);
+    assert!(svg.strokes(DARK_ORANGE) > 10);
+    // Pounding happens at every level above the first: no fit, said why.
+    assert!(pounding[0].contains("no fit"), "{}", pounding[0]);
+    assert!(svg.has_text("P(exceed)"));
+    assert!(svg.has_text("Sa(T = 0.95 s, ξ = 5 %) (g)"));
+}
+
+#[test]
+fn separation_has_the_step_curve_the_fit_and_every_guide() {
+    let svg = draw(
+        "separation",
+        &["--level", "0.3", "--probability", "0.5,0.9"],
+    );
+    // The empirical distribution of 20 records: from (0, 0), a riser and a
+    // tread per record, out to the edge (none needs 0 or ∞ here).
+    assert_eq!(svg.curves(BLUE), vec![2 + 2 * 20]);
+    // The lognormal fit, and a marker at each probability's gap (and one
+    // in the legend).
+    assert_eq!(svg.curves(ORANGE), vec![301]);
+    assert_eq!(svg.circles, 2 + 1);
+    for tag in ["ABS", "SRSS", "DDC", "gap"] {
+        assert!(svg.has_text(tag), "tag `{tag}` in {:?}", svg.texts);
+    }
+    for start in ["p = 0.5: ", "p = 0.9: ", "ABS on the median peaks: "] {
+        assert_eq!(svg.texts_starting(start).len(), 1, "`{start}`");
+    }
+    assert_eq!(svg.texts_starting("the preset's gap: 25 mm").len(), 1);
+    assert!(svg.has_text("Separation d (mm)"));
+    assert!(
+        svg.has_text("P(Π_d,min ≤ d): share of records that do not pound"),
+        "{:?}",
+        svg.texts
+    );
+}
+
+#[test]
+fn png_variant_writes_a_png_of_the_requested_size() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("separation.png");
+    let mut args = vec![
+        "figure",
+        "separation",
+        "--out",
+        out.to_str().unwrap(),
+        "--width",
+        "900",
+        "--height",
+        "600",
+    ];
+    args.extend(SUITE);
+    succeeds(&args);
+    let img = image::open(&out).expect("PNG decodes").to_rgb8();
+    assert_eq!((img.width(), img.height()), (900, 600));
+    assert!(img.pixels().any(|p| p.0 != [255, 255, 255]));
+}
+
+#[test]
+fn bad_input_is_one_line_and_exit_2() {
+    let suite = ["--suite", "synthetic:5"];
+    let physical = ["--preset", "two-buildings"];
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            [&["figure", "ida", "--levels", "0.1,0.2"][..], &suite].concat(),
+            "has no [physical] table",
+        ),
+        (
+            [
+                &["figure", "ida", "--levels", "0.2,0.1"][..],
+                &suite,
+                &physical,
+            ]
+            .concat(),
+            "--levels 0.2,0.1: levels must be strictly ascending",
+        ),
+        (
+            [&["figure", "fragility"][..], &suite, &physical].concat(),
+            "figure fragility: needs --levels",
+        ),
+        (
+            [&["figure", "ida", "--levels", "0.1"][..], &physical].concat(),
+            "figure ida: needs --suite",
+        ),
+        (
+            [
+                &["figure", "separation", "--levels", "0.1"][..],
+                &suite,
+                &physical,
+            ]
+            .concat(),
+            "--levels applies to figure ida, fragility, not separation",
+        ),
+        (
+            [
+                &["figure", "ida", "--levels", "0.1", "--ductility", "2"][..],
+                &suite,
+                &physical,
+            ]
+            .concat(),
+            "--ductility applies to figure fragility, not ida",
+        ),
+        (
+            [
+                &["figure", "fragility", "--levels", "0.1", "--ductility", "x"][..],
+                &suite,
+                &physical,
+            ]
+            .concat(),
+            "--ductility",
+        ),
+        (
+            [
+                &["figure", "separation", "--probability", "1.5"][..],
+                &suite,
+                &physical,
+            ]
+            .concat(),
+            "--probability `1.5`",
+        ),
+        (
+            vec!["figure", "fig3", "--suite", "synthetic:5"],
+            "--suite applies to figure ida, fragility, separation, not fig3",
+        ),
+    ];
+    for (args, expected) in cases {
+        fails(&args, 2, &[expected]);
+    }
+}
