@@ -34,8 +34,9 @@ use super::contact_rk::ContactSystem;
 use super::dynamics::{Branch, ContactRecurrence, Structure, free_series, step_for};
 use super::energy::Work;
 use super::peaks::{raise_abs_max, raise_max};
-use super::quiet::{Majorants, QuietStep, stays_above, stays_below};
+use super::quiet::{Bands, Majorants, QuietStep, stays_below};
 use super::roots::{fires_at_start, first_crossing};
+use super::sample::{self, Limits, SampleMajorants, SampleMap};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
 
@@ -104,6 +105,11 @@ pub struct ExactOptions {
     /// loose contact tolerance), so spectra, maps and the peaks-only bench
     /// skip it; A_i is then NaN in the result, never a value that looks measured.
     pub absolute_acceleration: bool,
+    /// Advance the quiet sample intervals of a record (and of its free tail)
+    /// by the linear map of [`super::sample`] where bounds show nothing can
+    /// happen in them. Off, every interval takes the segments' series: the
+    /// same results to round-off, kept so that tests can compare the two.
+    pub quiet_samples: bool,
 }
 
 /// The extremes of each contact a run locates besides the four peaks.
@@ -135,6 +141,7 @@ impl Default for ExactOptions {
             contact_tolerance: crate::model::params::CONTACT_TOLERANCE,
             extremes: ContactExtremes::All,
             absolute_acceleration: true,
+            quiet_samples: true,
         }
     }
 }
@@ -208,6 +215,12 @@ struct Run<'a> {
     /// rotation through each segment's angle.
     phasor: [f64; 2],
     phasor_tau: f64,
+    /// The record's quiet-sample maps, per structure and branch kind, where
+    /// the excitation is a record sampled finely enough ([`SampleMap::new`]).
+    samples: Option<[[SampleMap; 2]; 2]>,
+    /// (τ, k): the instant at which the last quiet sample ended and the
+    /// sample interval k that starts there.
+    sample_cursor: (f64, usize),
     /// The long quiet segment is not tried again before this instant after it failed.
     long_quiet_from: f64,
     /// Rotations since the phasor was last taken from sin_cos.
@@ -266,6 +279,22 @@ impl<'a> Run<'a> {
             } else {
                 [None, None]
             },
+            samples: match options.excitation {
+                Excitation::Record(m) if options.quiet_samples => {
+                    let h = m.record.dt * m.omega;
+                    let map = |s: &Structure, k: f64| {
+                        SampleMap::new(s, k, h, FREE_DEGREE, options.energy)
+                    };
+                    let maps =
+                        structures.map(|s| [map(&s, s.stiffness), map(&s, s.alpha * s.stiffness)]);
+                    match maps {
+                        [[Some(a), Some(b)], [Some(c), Some(d)]] => Some([[a, b], [c, d]]),
+                        _ => None,
+                    }
+                }
+                _ => None,
+            },
+            sample_cursor: (f64::NAN, 0),
             phasor: [0.0, 1.0],
             phasor_tau: f64::NAN,
             long_quiet_from: 0.0,
@@ -333,13 +362,18 @@ impl<'a> Run<'a> {
             }
             let excitation = self.options.excitation;
             let to_end = tau_end - self.tau;
-            // With no samples and no work integrals to take, a quiet free segment needs no series.
-            if !O::RECORDS
-                && !self.options.energy
-                && self.contact.is_none()
-                && (self.quiet_segment::<0>(to_end) || self.quiet_segment::<1>(to_end))
-            {
-                continue;
+            // With no samples to hand over, a quiet free segment needs no
+            // series; nor, with its work in closed form, a record's quiet sample.
+            if !O::RECORDS && self.contact.is_none() {
+                let quiet = if self.samples.is_some() {
+                    self.quiet_sample(to_end)
+                } else {
+                    !self.options.energy
+                        && (self.quiet_segment::<0>(to_end) || self.quiet_segment::<1>(to_end))
+                };
+                if quiet {
+                    continue;
+                }
             }
             let reach = (tau_end - self.tau).min(excitation.next_break(self.tau) - self.tau);
             excitation.taylor(self.tau, &mut ground.c[..=ground.degree]);
@@ -422,51 +456,22 @@ impl<'a> Run<'a> {
             } else {
                 f64::INFINITY
             };
+            let bands = Bands::new(
+                self.branch[i],
+                self.structures[i].yield_displacement,
+                px,
+                pv,
+                pa,
+            );
             // The swing bounds first; the majorants only where they fail.
-            let within_x = |lo: f64, hi: f64| x - sx > lo && x + sx < hi;
-            let within_v = |lo: f64, hi: f64| v - sv > lo && v + sv < hi;
             // ẍ + g = Q/m − (c/m) ẋ − (K/m) x within its running peak.
             let accel = load - t.damping * v - t.stiffness * x;
             let within_a = accel.abs() + t.damping * sv + t.stiffness * sx < pa;
-            let uy = self.structures[i].yield_displacement;
-            let swings_clear = within_x(-px, px)
-                && within_v(-pv, pv)
-                && within_a
-                && match self.branch[i] {
-                    Branch::Elastic { offset } => {
-                        !uy.is_finite() || within_x(offset - uy, offset + uy)
-                    }
-                    // A yielded spring stays yielded while sign · ẋ > 0.
-                    Branch::Yielded { sign } => sign * v - sv > 0.0,
-                };
-            if !swings_clear {
+            if !(within_a && bands.hold_by_swings(x, v, [sx, sv])) {
                 let m = Majorants::new(t, x, v, phasor, load, [sx, sv]);
-                let between =
-                    |m: &[f64; 4], lo: f64, hi: f64| stays_below(m, hi, h) && stays_above(m, lo, h);
-                // x within its running peak and, on an elastic branch, within
-                // the yield surface: one band, the tighter of the two on each side.
-                let (x_lo, x_hi) = match self.branch[i] {
-                    Branch::Elastic { offset } if uy.is_finite() => {
-                        ((-px).max(offset - uy), px.min(offset + uy))
-                    }
-                    _ => (-px, px),
-                };
-                // ẋ within its running peak and, while yielded, on the
-                // loading side (sign · ẋ > 0): again one band.
-                let (v_lo, v_hi) = match self.branch[i] {
-                    Branch::Yielded { sign } if sign > 0.0 => (0.0, pv),
-                    Branch::Yielded { .. } => (-pv, 0.0),
-                    Branch::Elastic { .. } => (-pv, pv),
-                };
-                let clear = between(&m.x, x_lo, x_hi)
-                    && between(&m.v, v_lo, v_hi)
-                    && (within_a
-                        || between(
-                            &acceleration::majorant(&m.x, &m.v, t.stiffness, t.damping, load),
-                            -pa,
-                            pa,
-                        ));
-                if !clear {
+                let a = (!within_a)
+                    .then(|| acceleration::majorant(&m.x, &m.v, t.stiffness, t.damping, load));
+                if !bands.hold_by_majorants(&m.x, &m.v, a, h) {
                     return false;
                 }
                 local[i] = Some(m.x);
@@ -503,6 +508,118 @@ impl<'a> Run<'a> {
         self.phasor = [s * ch + c * sh, c * ch - s * sh];
         self.phasor_tau = self.tau;
         self.turns += 1;
+        true
+    }
+
+    /// Advances one sample interval of a record [τ_k, τ_{k+1}] (or an interval
+    /// of the same length in the free tail after it) by the maps of
+    /// [`super::sample`] if bounds show that no event can happen in it and
+    /// no peak can rise; returns whether it did. Only from a sample: an
+    /// interval begun elsewhere (after an event) is left to the series.
+    fn quiet_sample(&mut self, to_end: f64) -> bool {
+        let Some(maps) = &self.samples else {
+            return false;
+        };
+        let h = maps[0][0].length;
+        let Excitation::Record(motion) = self.options.excitation else {
+            return false;
+        };
+        // Sample k of the record: known where the last quiet sample ended,
+        // else located (and g then taken at τ itself).
+        let at_cursor = self.tau == self.sample_cursor.0;
+        let k = if at_cursor {
+            self.sample_cursor.1
+        } else {
+            motion.interval(self.tau)
+        };
+        let (end, ground, next_k) = match motion.at_sample(k) {
+            Some((next, ground)) => {
+                // The interval's length is h to the rounding of τ: a longer or
+                // shorter one (begun after an event) is not this map's.
+                if !((next - self.tau - h).abs() <= 8.0 * f64::EPSILON * next) {
+                    return false;
+                }
+                let ground = if at_cursor {
+                    ground
+                } else {
+                    self.options.excitation.phasor(self.tau)
+                };
+                (next, ground, k + 1)
+            }
+            // The free tail after the record: g = 0.
+            None => (self.tau + h, [0.0; 2], k),
+        };
+        if !(end - self.tau < to_end) {
+            return false;
+        }
+        let mut cleared = [None; 2];
+        for i in 0..2 {
+            let peaks = self.result.structure(i);
+            let limits = Limits {
+                displacement: peaks.peak_displacement,
+                velocity: peaks.peak_velocity,
+                absolute_acceleration: if self.options.absolute_acceleration {
+                    peaks.peak_absolute_acceleration
+                } else {
+                    f64::INFINITY
+                },
+                branch: self.branch[i],
+                yield_displacement: self.structures[i].yield_displacement,
+            };
+            let map = &maps[i][self.branch[i].kind()];
+            match sample::clear(map, self.x[i], self.v[i], ground, self.loads[i], &limits) {
+                Some(c) => cleared[i] = Some(c),
+                None => return false,
+            }
+        }
+        let [Some(a), Some(b)] = cleared else {
+            return false;
+        };
+        // x1 − x2 must stay below the gap (no onset) and, until a first
+        // impact, below its running maximum (the minimum gap of SPEC §11).
+        let ceiling = if self.result.impacts.is_empty() {
+            self.p.gap.min(self.max_relative_displacement)
+        } else {
+            self.p.gap
+        };
+        let relative = self.x[0] - self.x[1];
+        if !(relative + a.swing_x + b.swing_x < ceiling) {
+            let [ma, mb] = [(0, a), (1, b)].map(|(i, c)| {
+                c.majorant_x.unwrap_or_else(|| {
+                    let map = &maps[i][self.branch[i].kind()];
+                    SampleMajorants::new(
+                        map,
+                        self.x[i],
+                        self.v[i],
+                        ground,
+                        self.loads[i],
+                        map.swing(&map.inputs(self.x[i], self.v[i], ground, self.loads[i]).0),
+                    )
+                    .x
+                })
+            });
+            let gap_majorant = [ma[0] - mb[0], ma[1] - mb[1], ma[2] - mb[2], ma[3] + mb[3]];
+            if !stays_below(&gap_majorant, ceiling, h) {
+                return false;
+            }
+        }
+        if self.options.energy {
+            let terms = [(0, a), (1, b)].map(|(i, c)| {
+                let map = &maps[i][self.branch[i].kind()];
+                sample::work(
+                    map,
+                    self.structures[i].mass,
+                    &c.inputs,
+                    self.loads[i],
+                    [self.x[i], c.end[0]],
+                )
+            });
+            self.work.add_quiet(terms);
+        }
+        self.x = [a.end[0], b.end[0]];
+        self.v = [a.end[1], b.end[1]];
+        self.tau = end;
+        self.sample_cursor = (end, next_k);
         true
     }
 

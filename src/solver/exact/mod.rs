@@ -41,6 +41,7 @@ pub mod energy;
 pub mod peaks;
 pub mod quiet;
 pub mod roots;
+pub mod sample;
 pub mod series;
 
 pub use driver::{ContactExtremes, ExactOptions, simulate};
