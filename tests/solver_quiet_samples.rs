@@ -87,9 +87,17 @@ fn assert_agree(label: &str, quiet: &RunResult, series: &RunResult, tol: f64) {
             close(a.start, b.start, tol) && close(a.end, b.end, tol),
             "{label}: {a:?} vs {b:?}"
         );
+        // v₀² = 2 δ̈ (max δ − 0) near a graze, where v₀ itself carries
+        // round-off of the state divided by v₀: compare the square.
         assert!(
-            close(a.approach_velocity, b.approach_velocity, tol),
-            "{label}"
+            close(
+                a.approach_velocity.powi(2),
+                b.approach_velocity.powi(2),
+                tol
+            ),
+            "{label}: v₀ {} vs {}",
+            a.approach_velocity,
+            b.approach_velocity
         );
         assert!(close(a.peak_force, b.peak_force, 1e-10), "{label}");
     }

@@ -426,7 +426,8 @@ impl Bands {
     /// By the swings: x ± s_x and ẋ ± s_v inside their bands.
     #[inline]
     pub fn hold_by_swings(&self, x: f64, v: f64, [sx, sv]: [f64; 2]) -> bool {
-        x - sx > self.x[0] && x + sx < self.x[1] && v - sv > self.v[0] && v + sv < self.v[1]
+        // Non-short-circuit: four comparisons and no branches.
+        (x - sx > self.x[0]) & (x + sx < self.x[1]) & (v - sv > self.v[0]) & (v + sv < self.v[1])
     }
 
     /// By the cubic majorants of x and ẋ over (0, h], and of ẍ + g where

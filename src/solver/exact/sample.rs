@@ -130,7 +130,7 @@ impl SampleMap {
     /// The inputs of an interval for a structure at (x, ẋ) with load Q/m on
     /// this branch under g = g_k + s t, and the equilibrium x* they were
     /// taken from (0 where K = 0, the load then an input of its own).
-    #[inline]
+    #[inline(always)]
     pub fn inputs(&self, x: f64, v: f64, [g, slope]: [f64; 2], load: f64) -> ([f64; INPUTS], f64) {
         if self.stiffness > 0.0 {
             let equilibrium = load * self.inverse_stiffness;
@@ -141,7 +141,7 @@ impl SampleMap {
     }
 
     /// (x, ẋ) at the interval's end.
-    #[inline]
+    #[inline(always)]
     pub fn advance(&self, inputs: &[f64; INPUTS], equilibrium: f64) -> [f64; 2] {
         let mut y = [equilibrium, 0.0];
         for (u, e) in inputs.iter().zip(&self.end) {
@@ -151,8 +151,30 @@ impl SampleMap {
         y
     }
 
+    /// One interval by the swing bounds alone: whether they keep x, ẋ and
+    /// |ẍ + g| inside `bands`, the state at the end, the inputs and the
+    /// swing of x. Computed whole, without branches, for the tight loop of
+    /// quiet samples.
+    #[inline(always)]
+    pub fn swing_step(
+        &self,
+        x: f64,
+        v: f64,
+        ground: [f64; 2],
+        load: f64,
+        bands: &Bands,
+    ) -> (bool, [f64; 2], [f64; INPUTS], f64) {
+        let (inputs, equilibrium) = self.inputs(x, v, ground, load);
+        let [sx, sv] = self.swing(&inputs);
+        let accel = load - self.damping * v - self.stiffness * x;
+        let clear = (accel.abs() + self.damping * sv + self.stiffness * sx
+            < bands.absolute_acceleration)
+            & bands.hold_by_swings(x, v, [sx, sv]);
+        (clear, self.advance(&inputs, equilibrium), inputs, sx)
+    }
+
     /// Bounds of |x − x₀| and |ẋ − ẋ₀| over the interval: Σ_j |input_j| swing_j.
-    #[inline]
+    #[inline(always)]
     pub fn swing(&self, inputs: &[f64; INPUTS]) -> [f64; 2] {
         let mut s = [0.0; 2];
         for (u, w) in inputs.iter().zip(&self.swing) {
@@ -255,15 +277,17 @@ pub fn work(
 }
 
 /// One structure's sample cleared by [`clear`]: its state at the interval's
-/// end, the swing of x over the interval, and its cubic majorant where the
-/// swing alone did not clear it.
+/// end, the inputs and swings of the interval, the cubic majorant of x where
+/// it was made, and the running peaks (Π_u, Π_v, A) raised to the interval's
+/// where they rose at one of its ends.
 #[derive(Debug, Clone, Copy)]
 pub struct Cleared {
     pub end: [f64; 2],
     /// The interval's inputs, for [`work`].
     pub inputs: [f64; INPUTS],
-    pub swing_x: f64,
+    pub swing: [f64; 2],
     pub majorant_x: Option<[f64; 4]>,
+    pub peaks: [f64; 3],
 }
 
 /// What one structure must not reach inside a quiet sample: its running
@@ -278,12 +302,31 @@ pub struct Limits {
     pub yield_displacement: f64,
 }
 
+/// Whether q stays strictly below `hi` with room for the round-off of q.
+#[inline]
+pub fn below(q: f64, hi: f64) -> bool {
+    hi - q > 4.0 * f64::EPSILON * q.abs()
+}
+
 /// Whether, inside the interval, structure state (x, ẋ) under g = g_k + s t
-/// with load Q/m stays strictly inside `limits`: |x| below Π_u, |ẋ| below
-/// Π_v, |ẍ + g| = |Q/m − (c/m) ẋ − (K/m) x| below A; on an elastic branch
-/// |x − p| below Π_uy (no yield), yielded σ ẋ > 0 (no unloading). The swing
-/// bounds first; the cubic majorants only where they fail. `None`: not
-/// shown quiet, the interval is left to the series.
+/// with load Q/m keeps clear of every event: on an elastic branch |x − p|
+/// below Π_uy (no yield), yielded σ ẋ > 0 (no unloading); and whether each
+/// of |x|, |ẋ| and |ẍ + g| = |Q/m − (c/m) ẋ − (K/m) x| either stays below its
+/// running peak or peaks at an end of the interval. Each quantity is taken
+/// by the first of three tests that clears it:
+///
+/// 1. its swing bound keeps it inside its band (the peak, and the yield
+///    surface or the loading side);
+/// 2. it is monotone on the interval, its rate keeping one sign by the
+///    rate's own swing bound (ẋ for x; ẍ for ẋ, |ẍ − ẍ₀| ≤ (c/m) s_v +
+///    (K/m) s_x + |s| h; (ẍ + g)' = −(c/m) ẍ − (K/m) ẋ for the acceleration):
+///    its extremes are then its end values, the event bands are checked
+///    there, and the peak is raised to the end value (a true maximum, not a
+///    sample of one);
+/// 3. its cubic majorant keeps it inside its band.
+///
+/// `None`: not shown quiet, the interval is left to the series, which
+/// locates the peak or event inside it.
 #[inline]
 pub fn clear(
     map: &SampleMap,
@@ -304,25 +347,86 @@ pub fn clear(
         limits.velocity,
         limits.absolute_acceleration,
     );
+    let (c, k) = (map.damping, map.stiffness);
     let bands = Bands::new(limits.branch, limits.yield_displacement, px, pv, pa);
     // ẍ + g = Q/m − (c/m) ẋ − (K/m) x out of contact: g does not enter.
-    let accel = load - map.damping * v - map.stiffness * x;
-    let within_a = accel.abs() + map.damping * sv + map.stiffness * sx < pa;
-    let mut majorant_x = None;
-    if !(within_a && bands.hold_by_swings(x, v, [sx, sv])) {
-        let m = SampleMajorants::new(map, x, v, ground, load, [sx, sv]);
-        let a = (!within_a)
-            .then(|| acceleration::majorant(&m.x, &m.v, map.stiffness, map.damping, load));
-        if !bands.hold_by_majorants(&m.x, &m.v, a, h) {
-            return None;
+    let accel = load - c * v - k * x;
+    let within_a = accel.abs() + c * sv + k * sx < pa;
+    let end = map.advance(&inputs, equilibrium);
+    let mut peaks = [px, pv, pa];
+    if within_a && bands.hold_by_swings(x, v, [sx, sv]) {
+        return Some(Cleared {
+            end,
+            inputs,
+            swing: [sx, sv],
+            majorant_x: None,
+            peaks,
+        });
+    }
+    let uy = limits.yield_displacement;
+    // The event bands alone (no peak): x inside the yield surface, ẋ on the loading side.
+    let (x_lo, x_hi) = match limits.branch {
+        Branch::Elastic { offset } if uy.is_finite() => (offset - uy, offset + uy),
+        _ => (f64::NEG_INFINITY, f64::INFINITY),
+    };
+    let (v_lo, v_hi) = match limits.branch {
+        Branch::Yielded { sign } if sign > 0.0 => (0.0, f64::INFINITY),
+        Branch::Yielded { .. } => (f64::NEG_INFINITY, 0.0),
+        Branch::Elastic { .. } => (f64::NEG_INFINITY, f64::INFINITY),
+    };
+    let mut majorants = None;
+    let mut majorant = || {
+        *majorants.get_or_insert_with(|| SampleMajorants::new(map, x, v, ground, load, [sx, sv]))
+    };
+    let between = |m: &[f64; 4], [lo, hi]: [f64; 2]| {
+        super::quiet::stays_below(m, hi, h) && super::quiet::stays_above(m, lo, h)
+    };
+    // x: monotone while ẋ keeps its sign.
+    let x_clear = (x - sx > bands.x[0] && x + sx < bands.x[1])
+        || (v.abs() > sv && below(x_lo, end[0]) && below(end[0], x_hi) && {
+            peaks[0] = px.max(end[0].abs());
+            true
+        })
+        || between(&majorant().x, bands.x);
+    if !x_clear {
+        return None;
+    }
+    // ẋ: monotone while ẍ keeps its sign.
+    let accel_change = c * sv + k * sx + ground[1].abs() * h;
+    let a0 = accel - ground[0];
+    let v_clear = (v - sv > bands.v[0] && v + sv < bands.v[1])
+        || (a0.abs() > accel_change
+            && below(v_lo, v)
+            && below(v, v_hi)
+            && below(v_lo, end[1])
+            && below(end[1], v_hi)
+            && {
+                peaks[1] = pv.max(end[1].abs());
+                true
+            })
+        || between(&majorant().v, bands.v);
+    if !v_clear {
+        return None;
+    }
+    // ẍ + g: monotone while −(c/m) ẍ − (K/m) ẋ keeps its sign.
+    let a_clear = within_a
+        || (-c * a0 - k * v).abs() > c * accel_change + k * sv && {
+            peaks[2] = pa.max((load - c * end[1] - k * end[0]).abs());
+            true
         }
-        majorant_x = Some(m.x);
+        || {
+            let m = majorant();
+            between(&acceleration::majorant(&m.x, &m.v, k, c, load), [-pa, pa])
+        };
+    if !a_clear {
+        return None;
     }
     Some(Cleared {
-        end: map.advance(&inputs, equilibrium),
+        end,
         inputs,
-        swing_x: sx,
-        majorant_x,
+        swing: [sx, sv],
+        majorant_x: majorants.map(|m| m.x),
+        peaks,
     })
 }
 
