@@ -217,7 +217,7 @@ fn an_onset_within_1e_9_of_a_sample_is_located_as_before() {
         unreachable!()
     };
     let h = m.record.dt * m.omega;
-    let first = exact::simulate(&base, &peaks_only(&base), &mut ()).impacts[0].clone();
+    let first = exact::simulate(&base, &peaks_only(&base), &mut ()).impacts[0];
     let k = (first.start / h).round();
     let gap = [k, k - 1.0, k + 1.0]
         .iter()

@@ -41,7 +41,7 @@ impl NigamJennings {
         };
         let h = m.record.dt * m.omega;
         let zeta = p.damping;
-        if !(zeta < 1.0) || m.record.acceleration.len() < 2 {
+        if zeta.is_nan() || zeta >= 1.0 || m.record.acceleration.len() < 2 {
             return None;
         }
         let tail_length = p.tau_end() - m.end();

@@ -248,7 +248,7 @@ impl SampleMajorants {
 /// ∫ g ẋ   = g_k (x₁ − x₀) + s ∫ t ẋ,    ∫ t ẋ = Σ_j input_j ∫ t u_j',
 /// ∫ ẋ²    = Σ_{j,l} input_j input_l ∫ u_j' u_l'.
 /// ```
-#[inline]
+#[inline(always)]
 pub fn work(
     map: &SampleMap,
     mass: f64,
@@ -260,14 +260,15 @@ pub fn work(
     let dx = x1 - x0;
     let mut moment = 0.0;
     let mut square = 0.0;
+    // The Gram matrix is symmetric: Σ_j u_j (G_jj u_j + 2 Σ_{l<j} G_jl u_l).
     for j in 0..INPUTS {
         moment += inputs[j] * map.moment[j];
         let row = &map.gram[j];
         let mut r = 0.0;
-        for l in 0..INPUTS {
+        for l in 0..j {
             r += row[l] * inputs[l];
         }
-        square += inputs[j] * r;
+        square += inputs[j] * (row[j] * inputs[j] + 2.0 * r);
     }
     [
         -mass * (g * dx + slope * moment),
