@@ -8,12 +8,16 @@
 //! - [`plot`]: error against time on log–log axes in Braille;
 //! - [`stress`]: the corner and random cases of `pounding stress` and the
 //!   invariants each must keep;
-//! - [`random`]: a small seeded generator for the random cases.
+//! - [`random`]: a small seeded generator for the random cases;
+//! - [`floor`] and [`record_speed`]: the exact method under a record against
+//!   the plain Nigam–Jennings pass over its samples (`bench --excitation`).
 
 pub mod figure_spectra;
+pub mod floor;
 pub mod method;
 pub mod plot;
 pub mod random;
+pub mod record_speed;
 pub mod stress;
 pub mod timing;
 pub mod work_precision;

@@ -36,11 +36,21 @@ pub struct BenchArgs {
     /// Only this method's rows (newmark: its three schemes; exact) [default: every method].
     #[arg(long, value_parser = ["newmark", "exact"])]
     pub method: Option<String>,
+    /// Instead of the table: the exact method under this record against the
+    /// plain Nigam–Jennings pass over its samples (the floor), side by side,
+    /// for the first preset [default: set1] elastic apart, inelastic apart and
+    /// pounding. `record:PATH`, or `synthetic:N` for one simulated record of
+    /// N samples at DT = 0.005 s (seed 1, as `records synth`).
+    #[arg(long, value_name = "record:PATH|synthetic:N")]
+    pub excitation: Option<String>,
 }
 
 pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
     if args.spectra {
         return spectra(args);
+    }
+    if let Some(excitation) = &args.excitation {
+        return record_speed(args, excitation);
     }
     let names = if args.preset.is_empty() {
         vec!["set1".to_string(), "set2".to_string()]
@@ -121,6 +131,140 @@ fn spectra(args: &BenchArgs) -> Result<(), CliError> {
             .collect(),
     };
     super::output::print(&render(&report, args.output.format)?)
+}
+
+/// `bench --excitation`: the exact method under a record against the floor.
+fn record_speed(args: &BenchArgs, spec: &str) -> Result<(), CliError> {
+    use crate::accuracy::record_speed::rows;
+    use crate::model::{Excitation, RecordMotion};
+    let excitation = match spec.trim().strip_prefix("synthetic:") {
+        Some(n) => {
+            let samples: usize =
+                n.parse().ok().filter(|&n| n >= 11).ok_or_else(|| {
+                    CliError::Usage(format!("synthetic:N needs N ≥ 11, not `{n}`"))
+                })?;
+            let simulation = crate::model::simulated::Simulation {
+                dt: 0.005,
+                duration: 0.005 * (samples - 1) as f64,
+                ..Default::default()
+            };
+            simulation
+                .validate()
+                .map_err(|e| CliError::Usage(e.to_string()))?;
+            let record = simulation.record(spec, crate::model::simulated::DEFAULT_SEED, 1);
+            Excitation::Record(RecordMotion::new(crate::model::record::intern(record)))
+        }
+        None => Excitation::parse(spec)
+            .map_err(|e| CliError::Usage(format!("--excitation {spec}: {e}")))?,
+    };
+    let dirs: Vec<_> = user_preset_dir(None).into_iter().collect();
+    let name = args.preset.first().map_or("set1", String::as_str);
+    let preset = Preset::find(name, &dirs)?;
+    let p = crate::model::Params {
+        excitation,
+        ..preset.params
+    };
+    p.validate()?;
+    let rows = rows(&p).ok_or_else(|| {
+        CliError::Usage(format!(
+            "--excitation {spec}: not a record (record:PATH or synthetic:N)"
+        ))
+    })?;
+    let report = RecordSpeedReport {
+        version: env!("CARGO_PKG_VERSION"),
+        preset: preset.name.clone(),
+        excitation: spec.to_string(),
+        units: "ms of wall time per run (median after a warm-up); ns per sample interval (record and free tail); ratio = ms / floor_ms",
+        rows,
+    };
+    super::output::print(&render(&report, args.output.format)?)
+}
+
+/// `bench --excitation` in every format.
+#[derive(Debug, Serialize)]
+struct RecordSpeedReport {
+    version: &'static str,
+    preset: String,
+    excitation: String,
+    units: &'static str,
+    rows: Vec<crate::accuracy::record_speed::RecordRow>,
+}
+
+impl Report for RecordSpeedReport {
+    fn table(&self) -> String {
+        let mut s = format!(
+            "{} under {} ({} intervals): exact method against the Nigam–Jennings floor ({} ms)\n\
+             {:<24} {:<6} {:>10} {:>10} {:>9} {:>7} {:>8} {:>11}\n",
+            self.preset,
+            self.excitation,
+            self.rows.first().map_or(0, |r| r.intervals),
+            self.rows
+                .first()
+                .map_or(String::new(), |r| format!("{:.4}", r.floor_ms)),
+            "case",
+            "run",
+            "series ms",
+            "ms",
+            "ns/intvl",
+            "×floor",
+            "impacts",
+            "Δpeaks",
+        );
+        for r in &self.rows {
+            let _ = writeln!(
+                s,
+                "{:<24} {:<6} {:>10.4} {:>10.4} {:>9.1} {:>7.2} {:>8} {:>11.1e}",
+                r.case,
+                r.run,
+                r.series_ms,
+                r.ms,
+                r.ns_per_interval,
+                r.ratio,
+                r.impacts,
+                r.peak_difference
+            );
+        }
+        s
+    }
+
+    fn csv_header(&self) -> Vec<&'static str> {
+        vec![
+            "preset",
+            "excitation",
+            "case",
+            "run",
+            "intervals",
+            "series_ms",
+            "ms",
+            "ns_per_interval",
+            "floor_ms",
+            "ratio",
+            "impacts",
+            "peak_difference",
+        ]
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        self.rows
+            .iter()
+            .map(|r| {
+                vec![
+                    self.preset.clone(),
+                    self.excitation.clone(),
+                    r.case.to_string(),
+                    r.run.to_string(),
+                    r.intervals.to_string(),
+                    num(r.series_ms),
+                    num(r.ms),
+                    num(r.ns_per_interval),
+                    num(r.floor_ms),
+                    num(r.ratio),
+                    r.impacts.to_string(),
+                    num(r.peak_difference),
+                ]
+            })
+            .collect()
+    }
 }
 
 /// The work-precision table in every format.

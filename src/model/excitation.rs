@@ -110,7 +110,7 @@ impl RecordMotion {
     /// The sample interval [k, k+1] holding τ (k = N − 1 past the end),
     /// chosen so that (k + 1)·spacing > τ.
     #[inline]
-    fn interval(&self, tau: f64) -> usize {
+    pub fn interval(&self, tau: f64) -> usize {
         let last = self.record.acceleration.len() - 1;
         let h = self.spacing();
         let mut k = (tau / h).floor().max(0.0) as usize;
@@ -118,6 +118,24 @@ impl RecordMotion {
             k += 1;
         }
         k.min(last)
+    }
+
+    /// For a run standing at τ = k·spacing, the start of sample interval
+    /// k < N − 1: its end τ_{k+1} and (g, dg/dτ) at τ_k, the values that
+    /// [`Excitation::next_break`] and [`Excitation::phasor`] give there
+    /// (computed as they compute them), without locating the interval.
+    #[inline]
+    pub fn at_sample(&self, k: usize) -> Option<(f64, [f64; 2])> {
+        let a = &self.record.acceleration;
+        if k + 1 >= a.len() {
+            return None;
+        }
+        let h = self.spacing();
+        let slope = self.scale * (a[k + 1] - a[k]) / (h * self.amplitude);
+        Some((
+            (k + 1) as f64 * h,
+            [self.scale * a[k] / self.amplitude, slope],
+        ))
     }
 
     /// (g, dg/dτ) at τ as the limit from the left: on a sample τ_k the

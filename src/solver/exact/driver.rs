@@ -34,14 +34,33 @@ use super::contact_rk::ContactSystem;
 use super::dynamics::{Branch, ContactRecurrence, Structure, free_series, step_for};
 use super::energy::Work;
 use super::peaks::{raise_abs_max, raise_max};
-use super::quiet::{Majorants, QuietStep, stays_above, stays_below};
+use super::quiet::{Bands, Majorants, QuietStep, stays_below};
 use super::roots::{fires_at_start, first_crossing};
 use super::segment::{Event, Segment};
+use super::sample::{self, Limits, SampleMajorants, SampleMap};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
 
 /// Degree of the series out of contact.
 const FREE_DEGREE: usize = 20;
+/// Degree of a free series over a segment of Ω L = `reach` ≤ 1 (in units
+/// of [`FREE_REACH`]/Ω): the least n at which the first term left out,
+/// about (Ω L)^{n+1}/(n+1)! of the motion, is below 3e-18 (Ω L ≤ 1/8: 10;
+/// ≤ 1/4: 12; ≤ 1/2: 15), else [`FREE_DEGREE`]. Used where a record's
+/// sample intervals cut the segments short (the ground series is then of
+/// degree 1).
+fn short_free_degree(reach: f64) -> usize {
+    if reach <= 0.125 {
+        10
+    } else if reach <= 0.25 {
+        12
+    } else if reach <= 0.5 {
+        15
+    } else {
+        FREE_DEGREE
+    }
+}
+
 /// Segment length out of contact in units of 1/Ω, Ω the fastest free rate
 /// (structures and excitation): the last term is then about 1/21! ≈ 2e-20 of
 /// the motion, below round-off.
@@ -105,6 +124,11 @@ pub struct ExactOptions {
     /// loose contact tolerance), so spectra, maps and the peaks-only bench
     /// skip it; A_i is then NaN in the result, never a value that looks measured.
     pub absolute_acceleration: bool,
+    /// Advance the quiet sample intervals of a record (and of its free tail)
+    /// by the linear map of [`super::sample`] where bounds show nothing can
+    /// happen in them. Off, every interval takes the segments' series: the
+    /// same results to round-off, kept so that tests can compare the two.
+    pub quiet_samples: bool,
 }
 
 /// The extremes of each contact a run locates besides the four peaks.
@@ -136,6 +160,7 @@ impl Default for ExactOptions {
             contact_tolerance: crate::model::params::CONTACT_TOLERANCE,
             extremes: ContactExtremes::All,
             absolute_acceleration: true,
+            quiet_samples: true,
         }
     }
 }
@@ -198,6 +223,12 @@ struct Run<'a> {
     /// rotation through each segment's angle.
     phasor: [f64; 2],
     phasor_tau: f64,
+    /// The record's quiet-sample maps, per structure and branch kind, where
+    /// the excitation is a record sampled finely enough ([`SampleMap::new`]).
+    samples: Option<[[SampleMap; 2]; 2]>,
+    /// (τ, k): the instant at which the last quiet sample ended and the
+    /// sample interval k that starts there.
+    sample_cursor: (f64, usize),
     /// The long quiet segment is not tried again before this instant after it failed.
     long_quiet_from: f64,
     /// Rotations since the phasor was last taken from sin_cos.
@@ -256,6 +287,22 @@ impl<'a> Run<'a> {
             } else {
                 [None, None]
             },
+            samples: match options.excitation {
+                Excitation::Record(m) if options.quiet_samples => {
+                    let h = m.record.dt * m.omega;
+                    let map = |s: &Structure, k: f64| {
+                        SampleMap::new(s, k, h, FREE_DEGREE, options.energy)
+                    };
+                    let maps =
+                        structures.map(|s| [map(&s, s.stiffness), map(&s, s.alpha * s.stiffness)]);
+                    match maps {
+                        [[Some(a), Some(b)], [Some(c), Some(d)]] => Some([[a, b], [c, d]]),
+                        _ => None,
+                    }
+                }
+                _ => None,
+            },
+            sample_cursor: (f64::NAN, 0),
             phasor: [0.0, 1.0],
             phasor_tau: f64::NAN,
             long_quiet_from: 0.0,
@@ -323,13 +370,18 @@ impl<'a> Run<'a> {
             }
             let excitation = self.options.excitation;
             let to_end = tau_end - self.tau;
-            // With no samples and no work integrals to take, a quiet free segment needs no series.
-            if !O::RECORDS
-                && !self.options.energy
-                && self.contact.is_none()
-                && (self.quiet_segment::<0>(to_end) || self.quiet_segment::<1>(to_end))
-            {
-                continue;
+            // With no samples to hand over, a quiet free segment needs no
+            // series; nor, with its work in closed form, a record's quiet sample.
+            if !O::RECORDS && self.contact.is_none() {
+                let quiet = if self.samples.is_some() {
+                    self.quiet_sample(to_end)
+                } else {
+                    !self.options.energy
+                        && (self.quiet_segment::<0>(to_end) || self.quiet_segment::<1>(to_end))
+                };
+                if quiet {
+                    continue;
+                }
             }
             let reach = (tau_end - self.tau).min(excitation.next_break(self.tau) - self.tau);
             excitation.taylor(self.tau, &mut ground.c[..=ground.degree]);
@@ -412,51 +464,22 @@ impl<'a> Run<'a> {
             } else {
                 f64::INFINITY
             };
+            let bands = Bands::new(
+                self.branch[i],
+                self.structures[i].yield_displacement,
+                px,
+                pv,
+                pa,
+            );
             // The swing bounds first; the majorants only where they fail.
-            let within_x = |lo: f64, hi: f64| x - sx > lo && x + sx < hi;
-            let within_v = |lo: f64, hi: f64| v - sv > lo && v + sv < hi;
             // ẍ + g = Q/m − (c/m) ẋ − (K/m) x within its running peak.
             let accel = load - t.damping * v - t.stiffness * x;
             let within_a = accel.abs() + t.damping * sv + t.stiffness * sx < pa;
-            let uy = self.structures[i].yield_displacement;
-            let swings_clear = within_x(-px, px)
-                && within_v(-pv, pv)
-                && within_a
-                && match self.branch[i] {
-                    Branch::Elastic { offset } => {
-                        !uy.is_finite() || within_x(offset - uy, offset + uy)
-                    }
-                    // A yielded spring stays yielded while sign · ẋ > 0.
-                    Branch::Yielded { sign } => sign * v - sv > 0.0,
-                };
-            if !swings_clear {
+            if !(within_a && bands.hold_by_swings(x, v, [sx, sv])) {
                 let m = Majorants::new(t, x, v, phasor, load, [sx, sv]);
-                let between =
-                    |m: &[f64; 4], lo: f64, hi: f64| stays_below(m, hi, h) && stays_above(m, lo, h);
-                // x within its running peak and, on an elastic branch, within
-                // the yield surface: one band, the tighter of the two on each side.
-                let (x_lo, x_hi) = match self.branch[i] {
-                    Branch::Elastic { offset } if uy.is_finite() => {
-                        ((-px).max(offset - uy), px.min(offset + uy))
-                    }
-                    _ => (-px, px),
-                };
-                // ẋ within its running peak and, while yielded, on the
-                // loading side (sign · ẋ > 0): again one band.
-                let (v_lo, v_hi) = match self.branch[i] {
-                    Branch::Yielded { sign } if sign > 0.0 => (0.0, pv),
-                    Branch::Yielded { .. } => (-pv, 0.0),
-                    Branch::Elastic { .. } => (-pv, pv),
-                };
-                let clear = between(&m.x, x_lo, x_hi)
-                    && between(&m.v, v_lo, v_hi)
-                    && (within_a
-                        || between(
-                            &acceleration::majorant(&m.x, &m.v, t.stiffness, t.damping, load),
-                            -pa,
-                            pa,
-                        ));
-                if !clear {
+                let a = (!within_a)
+                    .then(|| acceleration::majorant(&m.x, &m.v, t.stiffness, t.damping, load));
+                if !bands.hold_by_majorants(&m.x, &m.v, a, h) {
                     return false;
                 }
                 local[i] = Some(m.x);
@@ -496,6 +519,221 @@ impl<'a> Run<'a> {
         true
     }
 
+    /// Advances one sample interval of a record [τ_k, τ_{k+1}] (or an interval
+    /// of the same length in the free tail after it) by the maps of
+    /// [`super::sample`] if bounds show that no event can happen in it and
+    /// no peak can rise; returns whether it did. Only from a sample: an
+    /// interval begun elsewhere (after an event) is left to the series.
+    fn quiet_sample(&mut self, to_end: f64) -> bool {
+        let Some(maps) = &self.samples else {
+            return false;
+        };
+        let h = maps[0][0].length;
+        let Excitation::Record(motion) = self.options.excitation else {
+            return false;
+        };
+        // Sample k of the record: known where the last quiet sample ended,
+        // else located (and g then taken at τ itself).
+        let at_cursor = self.tau == self.sample_cursor.0;
+        let k = if at_cursor {
+            self.sample_cursor.1
+        } else {
+            motion.interval(self.tau)
+        };
+        let (end, ground, next_k) = match motion.at_sample(k) {
+            Some((next, ground)) => {
+                // The interval's length is h to the rounding of τ: a longer or
+                // shorter one (begun after an event) is not this map's.
+                if !((next - self.tau - h).abs() <= 8.0 * f64::EPSILON * next) {
+                    return false;
+                }
+                let ground = if at_cursor {
+                    ground
+                } else {
+                    self.options.excitation.phasor(self.tau)
+                };
+                (next, ground, k + 1)
+            }
+            // The free tail after the record: g = 0.
+            None => (self.tau + h, [0.0; 2], k),
+        };
+        if !(end - self.tau < to_end) {
+            return false;
+        }
+        let mut cleared = [None; 2];
+        for i in 0..2 {
+            let peaks = self.result.structure(i);
+            let limits = Limits {
+                displacement: peaks.peak_displacement,
+                velocity: peaks.peak_velocity,
+                absolute_acceleration: if self.options.absolute_acceleration {
+                    peaks.peak_absolute_acceleration
+                } else {
+                    f64::INFINITY
+                },
+                branch: self.branch[i],
+                yield_displacement: self.structures[i].yield_displacement,
+            };
+            let map = &maps[i][self.branch[i].kind()];
+            match sample::clear(map, self.x[i], self.v[i], ground, self.loads[i], &limits) {
+                Some(c) => cleared[i] = Some(c),
+                None => return false,
+            }
+        }
+        let [Some(a), Some(b)] = cleared else {
+            return false;
+        };
+        // x1 − x2 must stay below the gap (no onset) and, until a first
+        // impact, below its running maximum (the minimum gap of SPEC §11).
+        let ceiling = if self.result.impacts.is_empty() {
+            self.p.gap.min(self.max_relative_displacement)
+        } else {
+            self.p.gap
+        };
+        let relative = self.x[0] - self.x[1];
+        let mut max_relative = self.max_relative_displacement;
+        let rate = self.v[0] - self.v[1];
+        if relative + a.swing[0] + b.swing[0] < ceiling {
+            // Clear by the swings.
+        } else if rate.abs() > a.swing[1] + b.swing[1] {
+            // x1 − x2 monotone: its largest value is at an end, below the gap,
+            // and it raises Π_d,min there.
+            let top = relative.max(a.end[0] - b.end[0]);
+            if !sample::below(top, self.p.gap) {
+                return false;
+            }
+            if self.result.impacts.is_empty() {
+                max_relative = max_relative.max(top);
+            }
+        } else {
+            let [ma, mb] = [(0, a), (1, b)].map(|(i, c)| {
+                c.majorant_x.unwrap_or_else(|| {
+                    let map = &maps[i][self.branch[i].kind()];
+                    SampleMajorants::new(
+                        map,
+                        self.x[i],
+                        self.v[i],
+                        ground,
+                        self.loads[i],
+                        map.swing(&map.inputs(self.x[i], self.v[i], ground, self.loads[i]).0),
+                    )
+                    .x
+                })
+            });
+            let gap_majorant = [ma[0] - mb[0], ma[1] - mb[1], ma[2] - mb[2], ma[3] + mb[3]];
+            if !stays_below(&gap_majorant, ceiling, h) {
+                return false;
+            }
+        }
+        if self.options.energy {
+            let terms = [(0, a), (1, b)].map(|(i, c)| {
+                let map = &maps[i][self.branch[i].kind()];
+                sample::work(
+                    map,
+                    self.structures[i].mass,
+                    &c.inputs,
+                    self.loads[i],
+                    [self.x[i], c.end[0]],
+                )
+            });
+            self.work.add_quiet(terms);
+        }
+        self.max_relative_displacement = max_relative;
+        for (i, c) in [(0, a), (1, b)] {
+            let peaks = self.result.structure_mut(i);
+            peaks.peak_displacement = c.peaks[0];
+            peaks.peak_velocity = c.peaks[1];
+            if self.options.absolute_acceleration {
+                peaks.peak_absolute_acceleration = c.peaks[2];
+            }
+        }
+        self.x = [a.end[0], b.end[0]];
+        self.v = [a.end[1], b.end[1]];
+        self.tau = end;
+        self.sample_cursor = (end, next_k);
+        self.quiet_run(to_end - h);
+        true
+    }
+
+    /// After a quiet sample, the samples that follow it while the swing
+    /// bounds alone clear them, in one tight loop: nothing rose in the
+    /// quiet sample, so the running peaks, the branches and the ceiling of
+    /// x1 − x2 stand still, and their bands are made once. The first sample
+    /// these bounds do not clear is left to [`Run::quiet_sample`] (with its
+    /// majorants) or the series. Stops before the next poll of the observer.
+    fn quiet_run(&mut self, to_end: f64) {
+        let (Some(maps), Excitation::Record(motion)) = (&self.samples, self.options.excitation)
+        else {
+            return;
+        };
+        let tau_end = self.tau + to_end;
+        let h = maps[0][0].length;
+        let [m0, m1] = [0, 1].map(|i| &maps[i][self.branch[i].kind()]);
+        let [b0, b1] = [0, 1].map(|i| {
+            let peaks = self.result.structure(i);
+            Bands::new(
+                self.branch[i],
+                self.structures[i].yield_displacement,
+                peaks.peak_displacement,
+                peaks.peak_velocity,
+                if self.options.absolute_acceleration {
+                    peaks.peak_absolute_acceleration
+                } else {
+                    f64::INFINITY
+                },
+            )
+        });
+        let loads = self.loads;
+        let ceiling = if self.result.impacts.is_empty() {
+            self.p.gap.min(self.max_relative_displacement)
+        } else {
+            self.p.gap
+        };
+        let energy = self.options.energy;
+        let masses = [self.structures[0].mass, self.structures[1].mass];
+        let (mut x, mut v, mut tau) = (self.x, self.v, self.tau);
+        let (mut k, mut taken) = (self.sample_cursor.1, 0);
+        let budget = POLL_EVERY - 1 - self.segments % POLL_EVERY;
+        while taken < budget {
+            let (end, ground, next_k) = match motion.at_sample(k) {
+                Some((next, ground)) => {
+                    if !((next - tau - h).abs() <= 8.0 * f64::EPSILON * next) {
+                        break;
+                    }
+                    (next, ground, k + 1)
+                }
+                None => (tau + h, [0.0; 2], k),
+            };
+            if !(end < tau_end) {
+                break;
+            }
+            let (ok0, e0, in0, s0) = m0.swing_step(x[0], v[0], ground, loads[0], &b0);
+            let (ok1, e1, in1, s1) = m1.swing_step(x[1], v[1], ground, loads[1], &b1);
+            if !(ok0 & ok1) {
+                break;
+            }
+            if !(x[0] - x[1] + s0 + s1 < ceiling) {
+                break;
+            }
+            if energy {
+                self.work.add_quiet([
+                    sample::work(m0, masses[0], &in0, loads[0], [x[0], e0[0]]),
+                    sample::work(m1, masses[1], &in1, loads[1], [x[1], e1[0]]),
+                ]);
+            }
+            x = [e0[0], e1[0]];
+            v = [e0[1], e1[1]];
+            tau = end;
+            k = next_k;
+            taken += 1;
+        }
+        self.x = x;
+        self.v = v;
+        self.tau = tau;
+        self.sample_cursor = (tau, k);
+        self.segments += taken;
+    }
+
     /// The excitation's phasor at τ for a quiet segment: rotated on from the
     /// last quiet segment when this one follows it, else evaluated afresh
     /// (and afresh every [`PHASOR_TURNS`] rotations, which bounds the
@@ -512,16 +750,23 @@ impl<'a> Run<'a> {
 
     /// Both structures out of contact, each on its own branch.
     fn free_segment(&self, ground: &Series, reach: f64, segment: &mut Segment) {
+        let length = self.free_step.min(reach);
+        // A record's sample intervals are short: their series need fewer terms.
+        let degree = if self.samples.is_some() {
+            short_free_degree(length / self.free_step)
+        } else {
+            FREE_DEGREE
+        };
         free_series(
             &self.structures,
             self.branch,
             self.x,
             self.v,
             ground,
-            FREE_DEGREE,
+            degree,
             &mut segment.x,
         );
-        segment.open(self.free_step.min(reach), false);
+        segment.open(length, false);
         if self.p.gap.is_finite() {
             let delta0 = self.x[0] - self.x[1] - self.p.gap;
             if delta0 + segment.swing[0] + segment.swing[1] >= 0.0 {

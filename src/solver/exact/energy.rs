@@ -90,6 +90,17 @@ impl Work {
         self.max_input = self.max_input.max(self.input.abs());
     }
 
+    /// Adds the work of both structures over a quiet sample interval, each
+    /// [input, damping, spring] from [`super::sample::work`].
+    pub fn add_quiet(&mut self, terms: [[f64; 3]; 2]) {
+        let [a, b] = terms;
+        self.input += a[0] + b[0];
+        self.damping += a[1] + b[1];
+        self.spring[0] += a[2];
+        self.spring[1] += b[2];
+        self.max_input = self.max_input.max(self.input.abs());
+    }
+
     /// The balance at the end of the run, with final velocities `v` and the
     /// kinetic energy `initial` the run started with.
     pub fn balance(&self, mass: [f64; 2], v: [f64; 2], initial: f64) -> EnergyBalance {

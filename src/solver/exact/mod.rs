@@ -42,6 +42,7 @@ pub mod peaks;
 pub mod quiet;
 pub mod roots;
 pub mod segment;
+pub mod sample;
 pub mod series;
 
 pub use driver::{ContactExtremes, ExactOptions, simulate};

@@ -27,7 +27,7 @@
 //! vibration has decayed, a stiff structure moves like its small steady
 //! response, whatever its own rate.
 
-use super::dynamics::{Structure, oscillator};
+use super::dynamics::{Branch, Structure, oscillator};
 use super::roots::cleared;
 use super::series::Series;
 
@@ -385,6 +385,65 @@ impl Majorants {
             x: [x, v, 0.5 * a0, margin * jerk / 6.0],
             v: [v, a0, 0.5 * j0, margin * snap / 6.0],
         }
+    }
+}
+
+/// What x, ẋ and |ẍ + g| of one structure must stay strictly inside for a
+/// stretch to be quiet: x within its running peak Π_u and, on an elastic
+/// branch, within the yield surface (one band, the tighter of the two on
+/// each side); ẋ within its running peak Π_v and, while yielded, on the
+/// loading side σ ẋ > 0 (no unloading); |ẍ + g| below its running peak A
+/// (∞ where A is not located).
+#[derive(Debug, Clone, Copy)]
+pub struct Bands {
+    pub x: [f64; 2],
+    pub v: [f64; 2],
+    pub absolute_acceleration: f64,
+}
+
+impl Bands {
+    /// From the branch, Π_uy, and the running peaks Π_u, Π_v and A.
+    #[inline]
+    pub fn new(branch: Branch, uy: f64, px: f64, pv: f64, pa: f64) -> Self {
+        let x = match branch {
+            Branch::Elastic { offset } if uy.is_finite() => {
+                [(-px).max(offset - uy), px.min(offset + uy)]
+            }
+            _ => [-px, px],
+        };
+        let v = match branch {
+            Branch::Yielded { sign } if sign > 0.0 => [0.0, pv],
+            Branch::Yielded { .. } => [-pv, 0.0],
+            Branch::Elastic { .. } => [-pv, pv],
+        };
+        Bands {
+            x,
+            v,
+            absolute_acceleration: pa,
+        }
+    }
+
+    /// By the swings: x ± s_x and ẋ ± s_v inside their bands.
+    #[inline]
+    pub fn hold_by_swings(&self, x: f64, v: f64, [sx, sv]: [f64; 2]) -> bool {
+        // Non-short-circuit: four comparisons and no branches.
+        (x - sx > self.x[0]) & (x + sx < self.x[1]) & (v - sv > self.v[0]) & (v + sv < self.v[1])
+    }
+
+    /// By the cubic majorants of x and ẋ over (0, h], and of ẍ + g where
+    /// `accel` is given (its swing bound having failed).
+    #[inline]
+    pub fn hold_by_majorants(
+        &self,
+        x: &[f64; 4],
+        v: &[f64; 4],
+        accel: Option<[f64; 4]>,
+        h: f64,
+    ) -> bool {
+        let between =
+            |m: &[f64; 4], [lo, hi]: [f64; 2]| stays_below(m, hi, h) && stays_above(m, lo, h);
+        let pa = self.absolute_acceleration;
+        between(x, self.x) && between(v, self.v) && accel.is_none_or(|a| between(&a, [-pa, pa]))
     }
 }
 

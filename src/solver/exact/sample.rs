@@ -1,0 +1,529 @@
+//! Quiet samples of a recorded accelerogram by a linear map (SPEC §9).
+//!
+//! Between two samples a record's g is linear, g(τ_k + t) = g_k + s t. Out of
+//! contact, on a fixed branch, each structure obeys
+//! ẍ = Q/m − (c/m) ẋ − (K/m) x − g (SPEC §2–3), so its state y = (x, ẋ) one
+//! sample interval h later is linear in its inputs (the Nigam–Jennings
+//! recurrence):
+//!
+//! ```text
+//! y(τ_k + h) = (x*, 0) + Σ_j input_j · e_j,
+//! inputs = (x − x*, ẋ, g_k, s, Q/m),   x* = Q/K the branch's equilibrium,
+//! ```
+//!
+//! where e_j is unit response j at h (the load input is used only where
+//! K = 0 and there is no equilibrium). The five unit responses are computed
+//! once per structure and branch kind as series summed to round-off, which
+//! asks Ω h ≤ 1 (Ω the structure's fastest rate); a record sampled more
+//! coarsely than that is left to the segments' series.
+//!
+//! The same superposition bounds how far x and ẋ move inside the interval,
+//! |x(τ_k + t) − x(τ_k)| ≤ Σ_j |input_j| swing_j with swing_j = Σ_{n≥1}
+//! |u_{j,n}| h^n, and, where that swing alone cannot clear a band, the cubic
+//! majorants of [`SampleMajorants`] (Taylor's theorem with a bound of the
+//! third derivative) clear it near an extremum. A sample whose bounds keep
+//! every event function negative and every peak below its running value is
+//! quiet, and is advanced by the map alone.
+
+use super::acceleration;
+use super::dynamics::{Branch, Structure, oscillator};
+use super::quiet::Bands;
+use super::series::{MAX_DEGREE, Series};
+
+/// Number of inputs: x − x*, ẋ, g_k, s, Q/m.
+pub const INPUTS: usize = 5;
+
+/// The unit responses of one structure on one branch kind over one sample interval.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SampleMap {
+    /// The interval h = DT·ω_p.
+    pub length: f64,
+    /// (x, ẋ) at h for each unit input.
+    end: [[f64; 2]; INPUTS],
+    /// (swing of x, swing of ẋ) over [0, h] for each unit input.
+    swing: [[f64; 2]; INPUTS],
+    /// ∫₀ʰ t ẋ dt of each unit response, and the Gram matrix
+    /// ∫₀ʰ ẋ_j ẋ_l dt of their rates: the work integrals of [`work`].
+    moment: [f64; INPUTS],
+    gram: [[f64; INPUTS]; INPUTS],
+    /// K/m and c/m of the branch, and 1/(K/m) (0 where K = 0).
+    pub stiffness: f64,
+    pub damping: f64,
+    inverse_stiffness: f64,
+}
+
+impl SampleMap {
+    /// For stiffness `k` (k or Π_α k) on structure `s` over the interval `h`,
+    /// with series of degree `n`; `None` where Ω h > 1, where the series
+    /// would not sum to round-off.
+    /// The work integrals' moments and Gram matrix are made only `with_work`
+    /// (a run that integrates the energy); else they are zero.
+    pub fn new(s: &Structure, k: f64, h: f64, n: usize, with_work: bool) -> Option<Self> {
+        if !(h > 0.0 && h * s.rate <= 1.0) {
+            return None;
+        }
+        let inv_m = 1.0 / s.mass;
+        let (c, k) = (s.damping * inv_m, k * inv_m);
+        let zero = Series {
+            degree: n,
+            ..Series::default()
+        };
+        let (mut constant, mut ramp) = (zero, zero);
+        constant.c[0] = 1.0;
+        ramp.c[1] = 1.0;
+        let units = [
+            oscillator(c, k, 0.0, 1.0, 0.0, &zero, n),
+            oscillator(c, k, 0.0, 0.0, 1.0, &zero, n),
+            oscillator(c, k, 0.0, 0.0, 0.0, &constant, n),
+            oscillator(c, k, 0.0, 0.0, 0.0, &ramp, n),
+            oscillator(c, k, 1.0, 0.0, 0.0, &zero, n),
+        ];
+        let mut end = [[0.0; 2]; INPUTS];
+        let mut swing = [[0.0; 2]; INPUTS];
+        let mut rates = [Series::default(); INPUTS];
+        let mut moment = [0.0; INPUTS];
+        for (j, u) in units.iter().enumerate() {
+            let du = &mut rates[j];
+            let (sx, sv) = u.derivative_and_swings_into(h, du);
+            end[j] = [u.value(h), du.value(h)];
+            swing[j] = [sx, sv];
+        }
+        let mut gram = [[0.0; INPUTS]; INPUTS];
+        if with_work {
+            // h^e/e for e = 1 … 2n + 2.
+            let mut power = [0.0; 2 * MAX_DEGREE + 3];
+            let mut p = 1.0;
+            for (e, w) in power.iter_mut().enumerate().skip(1) {
+                p *= h;
+                *w = p / e as f64;
+            }
+            for j in 0..INPUTS {
+                let du = &rates[j];
+                // ∫₀ʰ t Σ d_a t^a dt = Σ d_a h^{a+2}/(a+2), smallest terms first.
+                moment[j] = (0..=du.degree).rev().map(|a| du.c[a] * power[a + 2]).sum();
+                for l in 0..=j {
+                    let (p, q) = (&rates[j], &rates[l]);
+                    // ∫₀ʰ Σ p_a t^a Σ q_b t^b dt = Σ p_a q_b h^{a+b+1}/(a+b+1).
+                    let mut sum = 0.0;
+                    for a in (0..=p.degree).rev() {
+                        for b in (0..=q.degree).rev() {
+                            sum += p.c[a] * q.c[b] * power[a + b + 1];
+                        }
+                    }
+                    gram[j][l] = sum;
+                    gram[l][j] = sum;
+                }
+            }
+        }
+        Some(SampleMap {
+            length: h,
+            end,
+            swing,
+            moment,
+            gram,
+            stiffness: k,
+            damping: c,
+            inverse_stiffness: if k > 0.0 { 1.0 / k } else { 0.0 },
+        })
+    }
+
+    /// The inputs of an interval for a structure at (x, ẋ) with load Q/m on
+    /// this branch under g = g_k + s t, and the equilibrium x* they were
+    /// taken from (0 where K = 0, the load then an input of its own).
+    #[inline(always)]
+    pub fn inputs(&self, x: f64, v: f64, [g, slope]: [f64; 2], load: f64) -> ([f64; INPUTS], f64) {
+        if self.stiffness > 0.0 {
+            let equilibrium = load * self.inverse_stiffness;
+            ([x - equilibrium, v, g, slope, 0.0], equilibrium)
+        } else {
+            ([x, v, g, slope, load], 0.0)
+        }
+    }
+
+    /// (x, ẋ) at the interval's end.
+    #[inline(always)]
+    pub fn advance(&self, inputs: &[f64; INPUTS], equilibrium: f64) -> [f64; 2] {
+        let mut y = [equilibrium, 0.0];
+        for (u, e) in inputs.iter().zip(&self.end) {
+            y[0] += u * e[0];
+            y[1] += u * e[1];
+        }
+        y
+    }
+
+    /// One interval by the swing bounds alone: whether they keep x, ẋ and
+    /// |ẍ + g| inside `bands`, the state at the end, the inputs and the
+    /// swing of x. Computed whole, without branches, for the tight loop of
+    /// quiet samples.
+    #[inline(always)]
+    pub fn swing_step(
+        &self,
+        x: f64,
+        v: f64,
+        ground: [f64; 2],
+        load: f64,
+        bands: &Bands,
+    ) -> (bool, [f64; 2], [f64; INPUTS], f64) {
+        let (inputs, equilibrium) = self.inputs(x, v, ground, load);
+        let [sx, sv] = self.swing(&inputs);
+        let accel = load - self.damping * v - self.stiffness * x;
+        let clear = (accel.abs() + self.damping * sv + self.stiffness * sx
+            < bands.absolute_acceleration)
+            & bands.hold_by_swings(x, v, [sx, sv]);
+        (clear, self.advance(&inputs, equilibrium), inputs, sx)
+    }
+
+    /// Bounds of |x − x₀| and |ẋ − ẋ₀| over the interval: Σ_j |input_j| swing_j.
+    #[inline(always)]
+    pub fn swing(&self, inputs: &[f64; INPUTS]) -> [f64; 2] {
+        let mut s = [0.0; 2];
+        for (u, w) in inputs.iter().zip(&self.swing) {
+            s[0] += u.abs() * w[0];
+            s[1] += u.abs() * w[1];
+        }
+        // The bounds are sums of products: allow for their own round-off.
+        s.map(|v| v * (1.0 + 1e-12))
+    }
+}
+
+/// Cubic majorants of x and ẋ of one structure over a sample interval:
+/// q(t) ≤ q₀ + q₁ t + q₂ t² + M t³ on [0, h], and −q likewise with q₀, q₁,
+/// q₂ negated (Taylor's theorem, M bounding |q'''|/6). With
+/// ẍ = Q/m − (c/m) ẋ − (K/m) x − g and g = g_k + s t (g'' = 0 inside):
+///
+/// ```text
+/// ẍ₀ = Q/m − (c/m) ẋ₀ − (K/m) x₀ − g_k,     x⁽³⁾₀ = −(c/m) ẍ₀ − (K/m) ẋ₀ − s,
+/// |ẍ| ≤ A = (c/m) V + (K/m) X + G,   X ≥ |x − x*|, V ≥ |ẋ|, G = max(|g_k|, |g_k + s h|)
+/// |x⁽³⁾| ≤ J = (c/m) A + (K/m) V + |s|,   |x⁽⁴⁾| ≤ (c/m) J + (K/m) A
+/// ```
+///
+/// (where K = 0, |Q/m| joins A).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SampleMajorants {
+    pub x: [f64; 4],
+    pub v: [f64; 4],
+}
+
+impl SampleMajorants {
+    /// From the map (its K/m and c/m), the state (x, ẋ), (g_k, s), the
+    /// branch's Q/m and the swings of [`SampleMap::swing`].
+    #[inline]
+    pub fn new(
+        map: &SampleMap,
+        x: f64,
+        v: f64,
+        [g, slope]: [f64; 2],
+        load: f64,
+        swing: [f64; 2],
+    ) -> Self {
+        let (stiffness, damping, h) = (map.stiffness, map.damping, map.length);
+        let a0 = load - damping * v - stiffness * x - g;
+        let j0 = -damping * a0 - stiffness * v - slope;
+        let (from_equilibrium, free_load) = if stiffness > 0.0 {
+            ((x - load * map.inverse_stiffness).abs(), 0.0)
+        } else {
+            (0.0, load.abs())
+        };
+        let reach_x = from_equilibrium + swing[0];
+        let reach_v = v.abs() + swing[1];
+        let ground = g.abs().max((g + slope * h).abs());
+        let accel = damping * reach_v + stiffness * reach_x + free_load + ground;
+        let jerk = damping * accel + stiffness * reach_v + slope.abs();
+        let snap = damping * jerk + stiffness * accel;
+        // The bounds are sums of products: allow for their own round-off.
+        let margin = 1.0 + 1e-12;
+        SampleMajorants {
+            x: [x, v, 0.5 * a0, margin * jerk / 6.0],
+            v: [v, a0, 0.5 * j0, margin * snap / 6.0],
+        }
+    }
+}
+
+/// The work of one structure over a quiet interval (SPEC §6), per m2 a_p²/ω_p²:
+/// (input −m ∫ g ẋ, damping c ∫ ẋ², spring ∫ f_s ẋ), in closed form from
+/// the interval's inputs (x − x*, ẋ, g_k, s, Q/m) and its end displacement:
+///
+/// ```text
+/// ∫ f_s ẋ = ∫ m((K/m) x − Q/m) ẋ = m (x₁ − x₀) ((K/m)(x₀ + x₁)/2 − Q/m)   (f_s affine on the branch)
+/// ∫ g ẋ   = g_k (x₁ − x₀) + s ∫ t ẋ,    ∫ t ẋ = Σ_j input_j ∫ t u_j',
+/// ∫ ẋ²    = Σ_{j,l} input_j input_l ∫ u_j' u_l'.
+/// ```
+#[inline(always)]
+pub fn work(
+    map: &SampleMap,
+    mass: f64,
+    inputs: &[f64; INPUTS],
+    load: f64,
+    [x0, x1]: [f64; 2],
+) -> [f64; 3] {
+    let (g, slope) = (inputs[2], inputs[3]);
+    let dx = x1 - x0;
+    let mut moment = 0.0;
+    let mut square = 0.0;
+    // The Gram matrix is symmetric: Σ_j u_j (G_jj u_j + 2 Σ_{l<j} G_jl u_l).
+    for j in 0..INPUTS {
+        moment += inputs[j] * map.moment[j];
+        let row = &map.gram[j];
+        let mut r = 0.0;
+        for l in 0..j {
+            r += row[l] * inputs[l];
+        }
+        square += inputs[j] * (row[j] * inputs[j] + 2.0 * r);
+    }
+    [
+        -mass * (g * dx + slope * moment),
+        mass * map.damping * square,
+        mass * dx * (map.stiffness * 0.5 * (x0 + x1) - load),
+    ]
+}
+
+/// One structure's sample cleared by [`clear`]: its state at the interval's
+/// end, the inputs and swings of the interval, the cubic majorant of x where
+/// it was made, and the running peaks (Π_u, Π_v, A) raised to the interval's
+/// where they rose at one of its ends.
+#[derive(Debug, Clone, Copy)]
+pub struct Cleared {
+    pub end: [f64; 2],
+    /// The interval's inputs, for [`work`].
+    pub inputs: [f64; INPUTS],
+    pub swing: [f64; 2],
+    pub majorant_x: Option<[f64; 4]>,
+    pub peaks: [f64; 3],
+}
+
+/// What one structure must not reach inside a quiet sample: its running
+/// peaks Π_u, Π_v and A (∞ where A is not located), and its branch with
+/// its yield displacement Π_uy.
+#[derive(Debug, Clone, Copy)]
+pub struct Limits {
+    pub displacement: f64,
+    pub velocity: f64,
+    pub absolute_acceleration: f64,
+    pub branch: Branch,
+    pub yield_displacement: f64,
+}
+
+/// Whether q stays strictly below `hi` with room for the round-off of q.
+#[inline]
+pub fn below(q: f64, hi: f64) -> bool {
+    hi - q > 4.0 * f64::EPSILON * q.abs()
+}
+
+/// Whether, inside the interval, structure state (x, ẋ) under g = g_k + s t
+/// with load Q/m keeps clear of every event: on an elastic branch |x − p|
+/// below Π_uy (no yield), yielded σ ẋ > 0 (no unloading); and whether each
+/// of |x|, |ẋ| and |ẍ + g| = |Q/m − (c/m) ẋ − (K/m) x| either stays below its
+/// running peak or peaks at an end of the interval. Each quantity is taken
+/// by the first of three tests that clears it:
+///
+/// 1. its swing bound keeps it inside its band (the peak, and the yield
+///    surface or the loading side);
+/// 2. it is monotone on the interval, its rate keeping one sign by the
+///    rate's own swing bound (ẋ for x; ẍ for ẋ, |ẍ − ẍ₀| ≤ (c/m) s_v +
+///    (K/m) s_x + |s| h; (ẍ + g)' = −(c/m) ẍ − (K/m) ẋ for the acceleration):
+///    its extremes are then its end values, the event bands are checked
+///    there, and the peak is raised to the end value (a true maximum, not a
+///    sample of one);
+/// 3. its cubic majorant keeps it inside its band.
+///
+/// `None`: not shown quiet, the interval is left to the series, which
+/// locates the peak or event inside it.
+#[inline]
+pub fn clear(
+    map: &SampleMap,
+    x: f64,
+    v: f64,
+    ground: [f64; 2],
+    load: f64,
+    limits: &Limits,
+) -> Option<Cleared> {
+    let h = map.length;
+    let (inputs, equilibrium) = map.inputs(x, v, ground, load);
+    let [sx, sv] = map.swing(&inputs);
+    if !(sx + sv).is_finite() {
+        return None;
+    }
+    let (px, pv, pa) = (
+        limits.displacement,
+        limits.velocity,
+        limits.absolute_acceleration,
+    );
+    let (c, k) = (map.damping, map.stiffness);
+    let bands = Bands::new(limits.branch, limits.yield_displacement, px, pv, pa);
+    // ẍ + g = Q/m − (c/m) ẋ − (K/m) x out of contact: g does not enter.
+    let accel = load - c * v - k * x;
+    let within_a = accel.abs() + c * sv + k * sx < pa;
+    let end = map.advance(&inputs, equilibrium);
+    let mut peaks = [px, pv, pa];
+    if within_a && bands.hold_by_swings(x, v, [sx, sv]) {
+        return Some(Cleared {
+            end,
+            inputs,
+            swing: [sx, sv],
+            majorant_x: None,
+            peaks,
+        });
+    }
+    let uy = limits.yield_displacement;
+    // The event bands alone (no peak): x inside the yield surface, ẋ on the loading side.
+    let (x_lo, x_hi) = match limits.branch {
+        Branch::Elastic { offset } if uy.is_finite() => (offset - uy, offset + uy),
+        _ => (f64::NEG_INFINITY, f64::INFINITY),
+    };
+    let (v_lo, v_hi) = match limits.branch {
+        Branch::Yielded { sign } if sign > 0.0 => (0.0, f64::INFINITY),
+        Branch::Yielded { .. } => (f64::NEG_INFINITY, 0.0),
+        Branch::Elastic { .. } => (f64::NEG_INFINITY, f64::INFINITY),
+    };
+    let mut majorants = None;
+    let mut majorant = || {
+        *majorants.get_or_insert_with(|| SampleMajorants::new(map, x, v, ground, load, [sx, sv]))
+    };
+    let between = |m: &[f64; 4], [lo, hi]: [f64; 2]| {
+        super::quiet::stays_below(m, hi, h) && super::quiet::stays_above(m, lo, h)
+    };
+    // x: monotone while ẋ keeps its sign.
+    let x_clear = (x - sx > bands.x[0] && x + sx < bands.x[1])
+        || (v.abs() > sv && below(x_lo, end[0]) && below(end[0], x_hi) && {
+            peaks[0] = px.max(end[0].abs());
+            true
+        })
+        || between(&majorant().x, bands.x);
+    if !x_clear {
+        return None;
+    }
+    // ẋ: monotone while ẍ keeps its sign.
+    let accel_change = c * sv + k * sx + ground[1].abs() * h;
+    let a0 = accel - ground[0];
+    let v_clear = (v - sv > bands.v[0] && v + sv < bands.v[1])
+        || (a0.abs() > accel_change
+            && below(v_lo, v)
+            && below(v, v_hi)
+            && below(v_lo, end[1])
+            && below(end[1], v_hi)
+            && {
+                peaks[1] = pv.max(end[1].abs());
+                true
+            })
+        || between(&majorant().v, bands.v);
+    if !v_clear {
+        return None;
+    }
+    // ẍ + g: monotone while −(c/m) ẍ − (K/m) ẋ keeps its sign.
+    let a_clear = within_a
+        || (-c * a0 - k * v).abs() > c * accel_change + k * sv && {
+            peaks[2] = pa.max((load - c * end[1] - k * end[0]).abs());
+            true
+        }
+        || {
+            let m = majorant();
+            between(&acceleration::majorant(&m.x, &m.v, k, c, load), [-pa, pa])
+        };
+    if !a_clear {
+        return None;
+    }
+    Some(Cleared {
+        end,
+        inputs,
+        swing: [sx, sv],
+        majorant_x: majorants.map(|m| m.x),
+        peaks,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::SET1;
+
+    /// The map and the bounds against the series of the whole state under
+    /// g = g_k + s t, on an elastic branch (about its equilibrium) and one with K = 0.
+    #[test]
+    fn the_map_matches_the_series_of_the_whole_state_and_the_bounds_hold() {
+        let s = Structure::pair(&SET1)[1];
+        let h = 0.1;
+        let (x0, v0, g, slope, load) = (0.3, -1.2, 0.7, -4.0, 0.05);
+        let mut ground = Series {
+            degree: 20,
+            ..Series::default()
+        };
+        ground.c[0] = g;
+        ground.c[1] = slope;
+        let inv_m = 1.0 / s.mass;
+        for k in [s.stiffness, 0.0] {
+            let map = SampleMap::new(&s, k, h, 20, true).expect("Ω h ≤ 1");
+            let whole = oscillator(s.damping * inv_m, k * inv_m, load, x0, v0, &ground, 20);
+            let (inputs, eq) = map.inputs(x0, v0, [g, slope], load);
+            let [x, v] = map.advance(&inputs, eq);
+            let (xs, vs) = whole.value_slope(h);
+            assert!(
+                (x - xs).abs() < 1e-15 && (v - vs).abs() < 1e-14,
+                "{x} {xs} {v} {vs}"
+            );
+            let [sx, sv] = map.swing(&inputs);
+            let m = SampleMajorants::new(&map, x0, v0, [g, slope], load, [sx, sv]);
+            let cubic = |c: &[f64; 4], sign: f64, u: f64| {
+                sign * (c[0] + u * (c[1] + u * c[2])) + c[3] * u * u * u
+            };
+            for i in 0..=40 {
+                let u = h * i as f64 / 40.0;
+                let (xi, vi) = whole.value_slope(u);
+                assert!((xi - x0).abs() <= sx && (vi - v0).abs() <= sv);
+                for sign in [1.0, -1.0] {
+                    assert!(sign * xi <= cubic(&m.x, sign, u) + 1e-15, "x at {u}");
+                    assert!(sign * vi <= cubic(&m.v, sign, u) + 1e-15, "v at {u}");
+                }
+            }
+        }
+    }
+
+    /// The closed-form work against 8-point Gauss–Legendre on many pieces of the series.
+    #[test]
+    fn the_work_of_an_interval_matches_quadrature() {
+        let s = Structure::pair(&SET1)[0];
+        let h = 0.1;
+        let (x0, v0, g, slope) = (0.3, -1.2, 0.7, -4.0);
+        let mut ground = Series {
+            degree: 20,
+            ..Series::default()
+        };
+        ground.c[0] = g;
+        ground.c[1] = slope;
+        let inv_m = 1.0 / s.mass;
+        for (k, load) in [(s.stiffness, 0.02), (0.0, 0.05)] {
+            let map = SampleMap::new(&s, k, h, 20, true).expect("Ω h ≤ 1");
+            let whole = oscillator(s.damping * inv_m, k * inv_m, load, x0, v0, &ground, 20);
+            let (inputs, eq) = map.inputs(x0, v0, [g, slope], load);
+            let [x1, _] = map.advance(&inputs, eq);
+            let [input, damping, spring] = work(&map, s.mass, &inputs, load, [x0, x1]);
+            // Simpson on 2000 pieces.
+            let n = 2000;
+            let (mut qi, mut qd, mut qs) = (0.0, 0.0, 0.0);
+            for j in 0..=n {
+                let t = h * j as f64 / n as f64;
+                let w = if j == 0 || j == n {
+                    1.0
+                } else if j % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
+                let (x, v) = whole.value_slope(t);
+                let gt = g + slope * t;
+                qi += w * -s.mass * gt * v;
+                qd += w * s.damping * v * v;
+                qs += w * s.mass * (k * inv_m * x - load) * v;
+            }
+            let f = h / (3.0 * n as f64);
+            for (a, b) in [(input, qi * f), (damping, qd * f), (spring, qs * f)] {
+                assert!((a - b).abs() < 1e-13, "{a} vs {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_coarse_interval_is_left_to_the_series() {
+        let s = Structure::pair(&SET1)[1];
+        assert!(SampleMap::new(&s, s.stiffness, 2.0 / s.rate, 20, false).is_none());
+    }
+}
