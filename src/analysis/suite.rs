@@ -24,7 +24,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::demands::{DemandsSi, RunSi};
-use super::gap::{free_params, from_max_relative};
+use super::gap::{free_run, from_max_relative};
 use super::statistics::Summary;
 use crate::model::excitation::RecordMotion;
 use crate::model::intensity::IntensityMeasure;
@@ -204,7 +204,7 @@ pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> 
     // largest x1 − x2 is Π_d,min unless the pounding run had no impact
     // (then it is its own no-pounding run).
     let free = if params.pounding() {
-        solve(&free_params(&params), &mut ())
+        free_run(&params)
     } else {
         result.clone()
     };

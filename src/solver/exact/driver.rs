@@ -36,8 +36,8 @@ use super::energy::Work;
 use super::peaks::{raise_abs_max, raise_max};
 use super::quiet::{Bands, Majorants, QuietStep, stays_below};
 use super::roots::{fires_at_start, first_crossing};
-use super::segment::{Event, Segment};
 use super::sample::{self, Limits, SampleMajorants, SampleMap};
+use super::segment::{Event, Segment};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
 

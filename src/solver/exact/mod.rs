@@ -41,8 +41,8 @@ pub mod energy;
 pub mod peaks;
 pub mod quiet;
 pub mod roots;
-pub mod segment;
 pub mod sample;
+pub mod segment;
 pub mod series;
 
 pub use driver::{ContactExtremes, ExactOptions, simulate};
