@@ -37,6 +37,7 @@ pub mod map_grid;
 pub mod pace;
 pub mod physical;
 pub mod presets;
+pub mod risk_job;
 pub mod scene;
 pub mod short_codes;
 pub mod terminal;

@@ -38,6 +38,7 @@ pub fn render(app: &App, frame: &mut Frame) {
             Scene::Spectrum => views::spectrum::render(app, frame, a.scene),
             Scene::Impacts => views::impacts::render(app, frame, a.scene),
             Scene::Map => views::map::render(app, frame, a.scene),
+            Scene::Risk => views::risk::render(app.jobs.risk.as_ref(), app.look, frame, a.scene),
         }
         views::summary::render(app, frame, a.summary);
         footer(app, frame, a.footer);
@@ -104,7 +105,7 @@ pub fn key_bar(app: &App, width: usize) -> String {
             "←→ nudge",
             "Enter type",
             "Tab set",
-            "t f v c w i a scenes",
+            "t f v c w i a x scenes",
             "[ ] cursor",
             "z zoom",
             "p preset",

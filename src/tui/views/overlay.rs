@@ -14,7 +14,7 @@ use crate::tui::text_field::TextField;
 use crate::tui::worker::Slot;
 
 /// Every key, as the help overlay and the README list them.
-pub const KEYS: [(&str, &str); 30] = [
+pub const KEYS: [(&str, &str); 31] = [
     ("?", "this help (any key closes it)"),
     ("↑/↓, k/j", "select a parameter"),
     ("←/→, h/l, -/+", "nudge it by one step"),
@@ -39,6 +39,7 @@ pub const KEYS: [(&str, &str); 30] = [
     ("w", "scene: spectrum against Π_ω1"),
     ("i", "scene: impact table and energy terms"),
     ("a", "scene: map (y axis, o ratio, [ ]{ })"),
+    ("x", "scene: risk over a suite ([ ] design level)"),
     ("u", "physical units (presets with [physical])"),
     ("[ / ]", "move the time cursor ({ } by ten)"),
     ("n / N", "cursor to the next / previous impact"),
