@@ -1015,3 +1015,92 @@ fn only_the_risk_scene_runs_a_suite() {
     assert!(st.stale && !st.full);
     assert!(screen(&a).contains("computing…"));
 }
+
+/// The worker sends the coarse picture first, then the whole suite; a
+/// newer job cancels the full pass, and nothing of the old job's full pass
+/// arrives. The pass times are printed for the record (`cargo test
+/// --release --test tui_app risk -- --nocapture`).
+#[test]
+fn a_risk_picture_comes_coarse_first_and_a_newer_job_cancels_it() {
+    use pounding::tui::risk_job::{RiskOutput, spec_of};
+    use std::time::{Duration, Instant};
+    let (tx, rx) = std::sync::mpsc::channel();
+    let w = Worker::start(move |o| {
+        let _ = tx.send((Instant::now(), o));
+    });
+    let risk = |g, level| Job {
+        generation: g,
+        risk: Some(spec_of(&pounding::model::SET1, None, level)),
+        ..Job::default()
+    };
+    // Job 1 runs to the end (the suite is generated on its first use).
+    let start = Instant::now();
+    w.submit(risk(1, 0.3));
+    let mut passes = Vec::new();
+    loop {
+        let (at, o) = rx.recv_timeout(Duration::from_secs(60)).unwrap();
+        match o {
+            Output::Risk {
+                output: RiskOutput::Picture { picture, full },
+                ..
+            } => passes.push((at - start, picture.records, picture.drift.len(), full)),
+            Output::Done { cancelled, .. } => {
+                assert!(!cancelled);
+                break;
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+    assert_eq!(passes.len(), 2, "{passes:?}");
+    assert_eq!((passes[0].1, passes[0].2, passes[0].3), (6, 4, false));
+    assert_eq!((passes[1].1, passes[1].2, passes[1].3), (20, 10, true));
+    // Job 2 at another level: its coarse pass, then job 3 at once.
+    let start = Instant::now();
+    w.submit(risk(2, 0.25));
+    let (coarse_at, o) = rx.recv_timeout(Duration::from_secs(60)).unwrap();
+    assert!(
+        matches!(
+            o,
+            Output::Risk {
+                generation: 2,
+                output: RiskOutput::Picture { full: false, .. }
+            }
+        ),
+        "{o:?}"
+    );
+    w.submit(Job {
+        generation: 3,
+        ..Job::default()
+    });
+    let mut ended = false;
+    while let Ok((at, o)) = rx.recv_timeout(Duration::from_secs(60)) {
+        match o {
+            Output::Risk {
+                generation: 2,
+                output: RiskOutput::Picture { full: true, .. },
+            } => {
+                panic!("the cancelled job's full pass arrived")
+            }
+            Output::Done {
+                generation: 2,
+                cancelled,
+            } => {
+                assert!(cancelled);
+                eprintln!(
+                    "risk job 2: coarse pass {:.0} ms, cancelled {:.0} ms after job 3 came",
+                    (coarse_at - start).as_secs_f64() * 1e3,
+                    (at - coarse_at).as_secs_f64() * 1e3
+                );
+                ended = true;
+            }
+            Output::Done { generation: 3, .. } => break,
+            _ => {}
+        }
+    }
+    assert!(ended);
+    eprintln!(
+        "risk job 1 (suite generated first): coarse pass {:.0} ms, whole suite {:.0} ms",
+        passes[0].0.as_secs_f64() * 1e3,
+        passes[1].0.as_secs_f64() * 1e3
+    );
+}
