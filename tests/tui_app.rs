@@ -350,6 +350,27 @@ fn ascii_layout_has_no_other_characters() {
     assert!(screen(&a).contains("Pi_xi"));
 }
 
+/// The risk scene in ASCII: θ, β and 2π spelled out, bars and markers plain.
+#[test]
+fn the_risk_scene_in_ascii_spells_its_symbols() {
+    let mut a = app((80, 24));
+    a.look.ascii = true;
+    typed(&mut a, "x[[[[");
+    settle(&mut a);
+    let s = screen(&a);
+    assert!(s.is_ascii(), "{s}");
+    assert!(s.contains("theta 0.1") && s.contains(" beta 0.1"), "{s}");
+    assert!(s.contains("w_p 2pi"), "{s}");
+    // `g` says there is no figure of this scene rather than asking for a path.
+    key(&mut a, KeyCode::Char('g'));
+    assert_eq!(a.mode, Mode::Normal);
+    assert!(
+        a.status.as_deref().unwrap().contains("no SVG"),
+        "{:?}",
+        a.status
+    );
+}
+
 #[test]
 fn overlays_use_markers_in_the_legend_without_colour() {
     let mut a = app((120, 40));
