@@ -498,7 +498,7 @@ fn resizing_to_1x1_and_back_does_not_panic() {
     let mut t = Terminal::new(TestBackend::new(120, 40)).unwrap();
     for scene in Scene::ALL {
         a.view.scene = scene;
-        a.mode = Mode::Help;
+        a.mode = Mode::Help { top: 0 };
         for (w, h) in [
             (1, 1),
             (2, 1),
@@ -1123,5 +1123,35 @@ fn a_risk_picture_comes_coarse_first_and_a_newer_job_cancels_it() {
         "risk job 1 (suite generated first): coarse pass {:.0} ms, whole suite {:.0} ms",
         passes[0].0.as_secs_f64() * 1e3,
         passes[1].0.as_secs_f64() * 1e3
+    );
+}
+
+/// At 80×24 the help is taller than the screen: ↑↓ and Space scroll it to
+/// its last keys (the risk scene's among them), any other key closes it.
+#[test]
+fn the_help_scrolls_to_its_last_keys() {
+    let mut a = app((80, 24));
+    settle(&mut a);
+    key(&mut a, KeyCode::Char('?'));
+    let s = screen(&a);
+    assert!(s.contains("keys 1–") && s.contains("this help"), "{s}");
+    assert!(!s.contains("Ctrl-C"), "{s}");
+    for _ in 0..3 {
+        key(&mut a, KeyCode::Char(' '));
+    }
+    let s = screen(&a);
+    assert!(s.contains("x  scene: risk over a suite"), "{s}");
+    assert!(
+        s.contains("Ctrl-C  quit at once") && s.contains("of 34 (↑↓ scroll)"),
+        "{s}"
+    );
+    key(&mut a, KeyCode::Up);
+    assert!(matches!(a.mode, Mode::Help { .. }));
+    key(&mut a, KeyCode::Char('x'));
+    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(
+        a.view.scene,
+        Scene::History,
+        "a key that closes the help does nothing else"
     );
 }

@@ -76,7 +76,10 @@ pub enum Mode {
     Normal,
     /// Typing an exact value into the selected row.
     Editing(TextField),
-    Help,
+    /// The key list, scrolled to its line `top` where it is taller than the screen.
+    Help {
+        top: usize,
+    },
     /// Choosing a preset for the active set.
     Picker {
         selected: usize,
@@ -403,7 +406,21 @@ impl App {
         }
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal => return self.on_normal_key(key),
-            Mode::Help => {}
+            Mode::Help { top } => {
+                // ↑↓ (and the page keys) scroll a help taller than the
+                // screen; any other key closes it.
+                let max = super::keys::help_top_max(self.size.1);
+                let top = match key.code {
+                    KeyCode::Down | KeyCode::Char('j') => Some(top + 1),
+                    KeyCode::Up | KeyCode::Char('k') => Some(top.saturating_sub(1)),
+                    KeyCode::PageDown | KeyCode::Char(' ') => Some(top + 10),
+                    KeyCode::PageUp => Some(top.saturating_sub(10)),
+                    _ => None,
+                };
+                if let Some(top) = top {
+                    self.mode = Mode::Help { top: top.min(max) };
+                }
+            }
             Mode::Editing(field) => self.on_edit_key(key, field),
             Mode::Picker { selected } => self.on_picker_key(key, selected),
             Mode::SaveName(field) => return self.on_save_key(key, field),
@@ -512,7 +529,7 @@ impl App {
                     path: TextField::new(&path, PATH_MAX),
                 };
             }
-            KeyCode::Char('?') => self.mode = Mode::Help,
+            KeyCode::Char('?') => self.mode = Mode::Help { top: 0 },
             KeyCode::Char('b') if self.view.scene == Scene::Laws => {
                 self.view.laws = self.view.laws.next(self.model());
             }

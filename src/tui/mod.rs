@@ -31,6 +31,7 @@ pub mod fields;
 pub mod fit;
 pub mod gapfill;
 pub mod jobs;
+pub mod keys;
 pub mod layout;
 pub mod look;
 pub mod map_grid;

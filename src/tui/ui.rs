@@ -44,7 +44,7 @@ pub fn render(app: &App, frame: &mut Frame) {
         footer(app, frame, a.footer);
         use views::overlay;
         match &app.mode {
-            Mode::Help => overlay::help(app, frame, area),
+            Mode::Help { top } => overlay::help(app, *top, frame, area),
             Mode::Picker { selected } => overlay::picker(app, *selected, frame, area),
             Mode::SaveName(field) => overlay::save_name(app, field, frame, area),
             Mode::ConfirmOverwrite { name } => overlay::confirm(app, name, frame, area),
