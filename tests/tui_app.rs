@@ -54,6 +54,12 @@ fn screen(a: &App) -> String {
     s
 }
 
+/// Loads the built-in preset `name` into the active set.
+fn recall(a: &mut App, name: &str) {
+    let index = a.presets.iter().position(|p| p.name == name).unwrap();
+    a.recall(index);
+}
+
 fn key(a: &mut App, code: KeyCode) -> Option<Effect> {
     a.on_key(KeyEvent::new(code, KeyModifiers::NONE))
 }
@@ -119,6 +125,7 @@ fn scene_screens(size: (u16, u16)) -> Vec<(String, String)> {
         ("impacts", "i"),
         ("map", "a"),
         ("map_ratio", "o"),
+        ("risk", "x"),
     ] {
         if name == "overlay" || name == "map_ratio" {
             key(&mut a, KeyCode::Char('o'));
@@ -140,12 +147,7 @@ fn scene_screens(size: (u16, u16)) -> Vec<(String, String)> {
     settle(&mut a);
     out.push(("cursor".into(), screen(&a)));
     let mut b = app(size);
-    let two = b
-        .presets
-        .iter()
-        .position(|p| p.name == "two-buildings")
-        .unwrap();
-    b.recall(two);
+    recall(&mut b, "two-buildings");
     key(&mut b, KeyCode::Char('u'));
     settle(&mut b);
     out.push(("physical".into(), screen(&b)));
@@ -188,6 +190,14 @@ fn full_texts() -> Vec<String> {
     for r in &pounding::tui::physical::ROWS {
         texts.push(format!("moves {}", r.moves));
     }
+    // The risk scene's note and the fixed parts of its titles.
+    use pounding::tui::views::risk;
+    texts.extend([
+        risk::REFERENCE_NOTE.to_string(),
+        "left drift [mm] (16–84 %)".to_string(),
+        "P(pounding | IM) no fit:".to_string(),
+        "at d ".to_string(),
+    ]);
     let own = pounding::model::ContactModel::ImprovedKelvin;
     let mut laws = Laws::Paper;
     for _ in 0..8 {
@@ -340,6 +350,27 @@ fn ascii_layout_has_no_other_characters() {
     assert!(screen(&a).contains("Pi_xi"));
 }
 
+/// The risk scene in ASCII: θ, β and 2π spelled out, bars and markers plain.
+#[test]
+fn the_risk_scene_in_ascii_spells_its_symbols() {
+    let mut a = app((80, 24));
+    a.look.ascii = true;
+    typed(&mut a, "x[[[[");
+    settle(&mut a);
+    let s = screen(&a);
+    assert!(s.is_ascii(), "{s}");
+    assert!(s.contains("theta 0.1") && s.contains(" beta 0.1"), "{s}");
+    assert!(s.contains("w_p 2pi"), "{s}");
+    // `g` says there is no figure of this scene rather than asking for a path.
+    key(&mut a, KeyCode::Char('g'));
+    assert_eq!(a.mode, Mode::Normal);
+    assert!(
+        a.status.as_deref().unwrap().contains("no SVG"),
+        "{:?}",
+        a.status
+    );
+}
+
 #[test]
 fn overlays_use_markers_in_the_legend_without_colour() {
     let mut a = app((120, 40));
@@ -467,7 +498,7 @@ fn resizing_to_1x1_and_back_does_not_panic() {
     let mut t = Terminal::new(TestBackend::new(120, 40)).unwrap();
     for scene in Scene::ALL {
         a.view.scene = scene;
-        a.mode = Mode::Help;
+        a.mode = Mode::Help { top: 0 };
         for (w, h) in [
             (1, 1),
             (2, 1),
@@ -537,7 +568,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
             // Seconds of work: the grid swept over 250 times.
             grid: (0..50_000).map(|i| 0.2 + 0.02 * (i % 200) as f64).collect(),
         }),
-        map: None,
+        ..Job::default()
     };
     w.submit(spectrum(1));
     // Wait until job 1 runs, then ask for 2, 3, 4 at once.
@@ -554,8 +585,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
             buckets: 100,
             window: [0.0, p.tau_end()],
         }],
-        spectrum: None,
-        map: None,
+        ..Job::default()
     };
     w.submit(last);
     let mut done = Vec::new();
@@ -839,10 +869,10 @@ fn physical_view_edits_metres_and_the_groups_follow() {
 fn the_laws_scene_computes_only_the_laws_it_shows() {
     let mut a = app((80, 24));
     typed(&mut a, "v");
-    assert_eq!(a.needed().0.len(), 2);
+    assert_eq!(a.needed().runs.len(), 2);
     // All six: the set's own run and five others, each law in its own model.
     key(&mut a, KeyCode::Char('b'));
-    let (runs, _, _) = a.needed();
+    let runs = a.needed().runs;
     assert_eq!(runs.len(), 6);
     let mut models: Vec<_> = runs.iter().map(|r| r.params.model.name()).collect();
     models.sort();
@@ -850,7 +880,7 @@ fn the_laws_scene_computes_only_the_laws_it_shows() {
     assert_eq!(models.len(), 6);
     // The set's law against one other.
     key(&mut a, KeyCode::Char('b'));
-    let (runs, _, _) = a.needed();
+    let runs = a.needed().runs;
     assert_eq!(runs.len(), 2);
     assert!(runs.iter().any(|r| r.slot == Slot::Set(0)));
 }
@@ -889,4 +919,239 @@ fn the_map_rows_come_coarse_first_and_each_once() {
     let mut sorted = order.clone();
     sorted.sort();
     assert_eq!(sorted, (0..30).collect::<Vec<_>>());
+}
+
+/// The two-buildings set in the risk scene at design level `level` (g).
+fn risk_app(size: (u16, u16), level_steps_down: usize) -> App {
+    let mut a = app(size);
+    recall(&mut a, "two-buildings");
+    key(&mut a, KeyCode::Char('x'));
+    for _ in 0..level_steps_down {
+        key(&mut a, KeyCode::Char('['));
+    }
+    settle(&mut a);
+    a
+}
+
+/// P(pounding) over `synthetic:20` at `level` of the buildings
+/// `physical`, computed here from the library's suite runs: the fraction
+/// of records whose Π_d,min exceeds the gap, and that count.
+fn direct_probability(
+    physical: pounding::model::physical::Physical,
+    settings: pounding::model::Params,
+    level: f64,
+) -> (f64, usize, Vec<f64>) {
+    use pounding::analysis::separation::probability_of_pounding;
+    use pounding::analysis::suite::{Scaling, SuiteCase, plan, run_suite};
+    use pounding::model::intensity::IntensityMeasure;
+    use pounding::model::suite::SuiteSpec;
+    let members = SuiteSpec::parse("synthetic:20").unwrap().load().unwrap();
+    let case = SuiteCase {
+        physical,
+        settings: pounding::model::Params {
+            method: pounding::model::Method::Exact,
+            ..settings
+        },
+        scaling: Scaling {
+            measure: IntensityMeasure::Sa { period: 0.95 },
+            level: Some(level),
+        },
+    };
+    let plans = plan(&case, &members).unwrap();
+    let runs = run_suite(&case, &members, &plans, &|_| ());
+    let gaps: Vec<f64> = runs.iter().map(|r| r.min_gap_m()).collect();
+    let p = probability_of_pounding(&gaps, physical.gap);
+    let k = gaps.iter().filter(|&&d| d > physical.gap).count();
+    (p, k, gaps)
+}
+
+/// The probability the risk scene prints at the set's gap is the
+/// library's `probability_of_pounding` of the suite's Π_d,min computed
+/// here, for the preset's own buildings (its `[physical]` table, Sa at
+/// T1 = 0.95 s, 0.1 g) and after a nudge of the gap Π_d, which moves the
+/// buildings' gap and nothing else.
+#[test]
+fn the_risk_scene_prints_the_librarys_probability_at_the_sets_gap() {
+    use pounding::model::physical::Physical;
+    let mut a = risk_app((80, 24), 4);
+    assert_eq!(a.view.risk_level, 0.1);
+    let preset = a.sets[0].preset.clone();
+    let physical = Physical::from_table(preset.physical.as_ref().unwrap()).unwrap();
+    let (p, k, gaps) = direct_probability(physical, preset.params, 0.1);
+    assert!(0 < k && k < 20, "a mixed level: {k}");
+    let s = screen(&a);
+    let shown = format!("P(pounding) {p:.2} ({k}/20) at d 25 mm");
+    assert!(s.contains(&shown), "{shown}\n{s}");
+    assert!(
+        s.contains("IM Sa(0.95 s)") && s.contains("design 0.1 g"),
+        "{s}"
+    );
+    let picture = a.jobs.risk.as_ref().unwrap().picture.as_ref().unwrap();
+    assert_eq!(picture.probability_at_gap(), p);
+    for (shown, direct) in picture.min_gaps_m.iter().zip(&gaps) {
+        assert!((shown - direct).abs() <= 1e-9 * direct, "{shown} {direct}");
+    }
+    // A wider gap Π_d: the buildings' gap follows at the preset's base
+    // (a_p = 0.5 g, ω_p = 2π rad/s), and fewer records pound.
+    for _ in 0..9 {
+        key(&mut a, KeyCode::Char('j'));
+    }
+    assert_eq!(pounding::model::params::FIELDS[a.selected].key, "gap");
+    key(&mut a, KeyCode::Char('L'));
+    settle(&mut a);
+    let gap_m = a.sets[0].params.gap * 0.5 * 9.80665 / (std::f64::consts::TAU).powi(2);
+    let wider = Physical {
+        gap: gap_m,
+        ..physical
+    };
+    let (p2, k2, _) = direct_probability(wider, preset.params, 0.1);
+    assert!(k2 < k, "{k2} {k}");
+    let s = screen(&a);
+    let shown = format!("P(pounding) {p2:.2} ({k2}/20)");
+    assert!(s.contains(&shown), "{shown}\n{s}");
+}
+
+/// The risk scene computes suites only when shown, and a change of the
+/// design level starts a new picture that keeps the old one on screen
+/// (stale) until its first pass arrives.
+#[test]
+fn only_the_risk_scene_runs_a_suite() {
+    let mut a = app((80, 24));
+    for scene in ["t", "f", "v", "c", "w", "i", "a"] {
+        typed(&mut a, scene);
+        assert!(a.needed().risk.is_none(), "{scene}");
+    }
+    typed(&mut a, "x");
+    let spec = a.needed().risk.unwrap();
+    assert!(spec.reference);
+    assert_eq!(spec.levels.len(), 10);
+    assert_eq!(spec.levels[4], spec.design_level);
+    settle(&mut a);
+    let st = a.jobs.risk.as_ref().unwrap();
+    assert!(st.full && !st.stale && st.picture.as_ref().unwrap().records == 20);
+    key(&mut a, KeyCode::Char(']'));
+    let job = a.job().unwrap();
+    assert_eq!(job.risk.unwrap().design_level, 0.35);
+    let st = a.jobs.risk.as_ref().unwrap();
+    assert!(st.stale && !st.full);
+    assert!(screen(&a).contains("computing…"));
+}
+
+/// The worker sends the coarse picture first, then the whole suite; a
+/// newer job cancels the full pass, and nothing of the old job's full pass
+/// arrives. The pass times are printed for the record (`cargo test
+/// --release --test tui_app risk -- --nocapture`).
+#[test]
+fn a_risk_picture_comes_coarse_first_and_a_newer_job_cancels_it() {
+    use pounding::tui::risk_job::{RiskOutput, spec_of};
+    use std::time::{Duration, Instant};
+    let (tx, rx) = std::sync::mpsc::channel();
+    let w = Worker::start(move |o| {
+        let _ = tx.send((Instant::now(), o));
+    });
+    let risk = |g, level| Job {
+        generation: g,
+        risk: Some(spec_of(&pounding::model::SET1, None, level)),
+        ..Job::default()
+    };
+    // Job 1 runs to the end (the suite is generated on its first use).
+    let start = Instant::now();
+    w.submit(risk(1, 0.3));
+    let mut passes = Vec::new();
+    loop {
+        let (at, o) = rx.recv_timeout(Duration::from_secs(60)).unwrap();
+        match o {
+            Output::Risk {
+                output: RiskOutput::Picture { picture, full },
+                ..
+            } => passes.push((at - start, picture.records, picture.drift.len(), full)),
+            Output::Done { cancelled, .. } => {
+                assert!(!cancelled);
+                break;
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+    assert_eq!(passes.len(), 2, "{passes:?}");
+    assert_eq!((passes[0].1, passes[0].2, passes[0].3), (6, 4, false));
+    assert_eq!((passes[1].1, passes[1].2, passes[1].3), (20, 10, true));
+    // Job 2 at another level: its coarse pass, then job 3 at once.
+    let start = Instant::now();
+    w.submit(risk(2, 0.25));
+    let (coarse_at, o) = rx.recv_timeout(Duration::from_secs(60)).unwrap();
+    assert!(
+        matches!(
+            o,
+            Output::Risk {
+                generation: 2,
+                output: RiskOutput::Picture { full: false, .. }
+            }
+        ),
+        "{o:?}"
+    );
+    w.submit(Job {
+        generation: 3,
+        ..Job::default()
+    });
+    let mut ended = false;
+    while let Ok((at, o)) = rx.recv_timeout(Duration::from_secs(60)) {
+        match o {
+            Output::Risk {
+                generation: 2,
+                output: RiskOutput::Picture { full: true, .. },
+            } => {
+                panic!("the cancelled job's full pass arrived")
+            }
+            Output::Done {
+                generation: 2,
+                cancelled,
+            } => {
+                assert!(cancelled);
+                eprintln!(
+                    "risk job 2: coarse pass {:.0} ms, cancelled {:.0} ms after job 3 came",
+                    (coarse_at - start).as_secs_f64() * 1e3,
+                    (at - coarse_at).as_secs_f64() * 1e3
+                );
+                ended = true;
+            }
+            Output::Done { generation: 3, .. } => break,
+            _ => {}
+        }
+    }
+    assert!(ended);
+    eprintln!(
+        "risk job 1 (suite generated first): coarse pass {:.0} ms, whole suite {:.0} ms",
+        passes[0].0.as_secs_f64() * 1e3,
+        passes[1].0.as_secs_f64() * 1e3
+    );
+}
+
+/// At 80×24 the help is taller than the screen: ↑↓ and Space scroll it to
+/// its last keys (the risk scene's among them), any other key closes it.
+#[test]
+fn the_help_scrolls_to_its_last_keys() {
+    let mut a = app((80, 24));
+    settle(&mut a);
+    key(&mut a, KeyCode::Char('?'));
+    let s = screen(&a);
+    assert!(s.contains("keys 1–") && s.contains("this help"), "{s}");
+    assert!(!s.contains("Ctrl-C"), "{s}");
+    for _ in 0..3 {
+        key(&mut a, KeyCode::Char(' '));
+    }
+    let s = screen(&a);
+    assert!(s.contains("x  scene: risk over a suite"), "{s}");
+    assert!(
+        s.contains("Ctrl-C  quit at once") && s.contains("of 34 (↑↓ scroll)"),
+        "{s}"
+    );
+    key(&mut a, KeyCode::Up);
+    assert!(matches!(a.mode, Mode::Help { .. }));
+    key(&mut a, KeyCode::Char('x'));
+    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(
+        a.view.scene,
+        Scene::History,
+        "a key that closes the help does nothing else"
+    );
 }

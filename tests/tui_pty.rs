@@ -2,8 +2,9 @@
 //! vt100 screen): keys, Esc and a split escape sequence that must not quit,
 //! the picker scrolling, typed entry, the export prompt, exit statuses on
 //! signals, no temporary file left after SIGKILL during saves, and the
-//! bytes sent per nudge and per scene switch; and its refusal to start
-//! without a terminal.
+//! bytes sent per nudge and per scene switch, the risk scene's first and
+//! full pictures after a key, timed; and its refusal to start without a
+//! terminal.
 
 use std::io::{Read, Write};
 use std::sync::{Arc, Mutex};
@@ -81,16 +82,17 @@ struct Session {
 
 impl Session {
     fn start(cols: u16, rows: u16, config: &std::path::Path, cwd: &std::path::Path) -> Session {
-        Session::start_with(cols, rows, config, cwd, false)
+        Session::start_with(cols, rows, config, cwd, false, &[])
     }
 
-    /// As [`Session::start`], with NO_COLOR set when `no_color`.
+    /// As [`Session::start`], with NO_COLOR set when `no_color`, and `args`.
     fn start_with(
         cols: u16,
         rows: u16,
         config: &std::path::Path,
         cwd: &std::path::Path,
         no_color: bool,
+        args: &[&str],
     ) -> Session {
         let pty = native_pty_system()
             .openpty(PtySize {
@@ -101,6 +103,7 @@ impl Session {
             })
             .unwrap();
         let mut cmd = CommandBuilder::new(BIN);
+        cmd.args(args);
         cmd.env("TERM", "xterm-256color");
         cmd.env("LANG", "C.UTF-8");
         cmd.env("XDG_CONFIG_HOME", config);
@@ -316,7 +319,7 @@ fn saves_killed_with_sigkill_leave_no_temporary_file_after_the_next_start() {
 /// between two computed values), and per scene switch (f v c w i a t).
 fn bytes_at_80x24(no_color: bool) -> (Vec<usize>, Vec<usize>, Vec<usize>) {
     let dir = scratch(if no_color { "bytes-nc" } else { "bytes" });
-    let mut s = Session::start_with(80, 24, &dir, &dir, no_color);
+    let mut s = Session::start_with(80, 24, &dir, &dir, no_color, &[]);
     s.wait_for("impacts 9");
     s.send(b"j");
     s.settle(0, Duration::from_millis(400));
@@ -369,4 +372,67 @@ fn bytes_per_nudge_and_per_scene_switch_at_80x24() {
             assert!(*bytes < limit, "{look}: switch to {key}: {switches:?}");
         }
     }
+}
+
+/// Milliseconds from `keys` until the screen shows the risk scene's first
+/// picture of the new spec (`new(screen)` holds and the design line does
+/// not say "computing…"), and until the whole suite is drawn (nothing
+/// computing, no "first pass").
+fn risk_times(s: &mut Session, keys: &[u8], new: impl Fn(&str) -> bool) -> (f64, f64) {
+    let start = Instant::now();
+    s.send(keys);
+    let mut first = None;
+    loop {
+        let text = s.screen.lock().unwrap().screen().contents();
+        let design = text.lines().find(|l| l.contains("design ")).unwrap_or("");
+        let ms = start.elapsed().as_secs_f64() * 1e3;
+        let drawn = text.contains("P(pounding)") && new(&text);
+        if first.is_none() && drawn && !design.contains("computing…") {
+            first = Some(ms);
+        }
+        if drawn && !text.contains("computing…") && !text.contains("first pass") {
+            return (first.unwrap_or(ms), ms);
+        }
+        assert!(ms < 30_000.0, "the risk picture never completed:\n{text}");
+        std::thread::sleep(Duration::from_millis(2));
+    }
+}
+
+/// The risk scene at 80×24 in a pty, two-buildings: the first picture and
+/// the whole suite after the key that opens it (the suite is generated
+/// then), after `]` (design level 0.35 g) and after a nudge of the gap,
+/// printed for the record (`cargo test --release --test tui_pty risk --
+/// --nocapture`). The first picture is drawn once the job has run for the
+/// pace's grace (100 ms) unless it ends before.
+#[test]
+fn the_risk_scene_draws_a_first_pass_then_the_whole_suite() {
+    let dir = scratch("risk");
+    let mut s = Session::start_with(80, 24, &dir, &dir, false, &["--left", "two-buildings"]);
+    s.wait_for("impacts");
+    let opened = risk_times(&mut s, b"x", |t| t.contains("design 0.3 g"));
+    let level = risk_times(&mut s, b"]", |t| t.contains("design 0.35 g"));
+    // Π_d is the tenth row: nine down, then a nudge of ten steps, which
+    // changes the gap in the probability's title.
+    s.send(b"jjjjjjjjj");
+    std::thread::sleep(Duration::from_millis(300));
+    let title = |t: &str| {
+        t.lines()
+            .find_map(|l| {
+                l.split_once("P(pounding) ")
+                    .map(|(_, r)| r.trim().to_string())
+            })
+            .unwrap_or_default()
+    };
+    let before = title(&s.screen.lock().unwrap().screen().contents());
+    let gap = risk_times(&mut s, b"L", |t| title(t) != before);
+    for (what, (first, full)) in [
+        ("x opens the scene", opened),
+        ("] design level", level),
+        ("L gap nudge", gap),
+    ] {
+        eprintln!("risk scene, {what}: first picture {first:.0} ms, whole suite {full:.0} ms");
+        assert!(first <= full && full < 20_000.0, "{what}: {first} {full}");
+    }
+    s.send(b"\x03");
+    s.exit_status();
 }

@@ -25,6 +25,8 @@
 //! - [`suite`]: one pair of physical buildings under a suite of records,
 //!   each scaled to an intensity (SPEC §12), and [`statistics`], the
 //!   median, percentiles and dispersion of a demand over a suite;
+//! - [`risk`]: the risk picture of one pair over a suite: P(pounding)
+//!   against the gap, the IDA of the left drift and the pounding fragility;
 //! - [`suite_map`]: P(pounding) and the median amplification over two
 //!   physical quantities of the buildings, under a suite (SPEC §12).
 
@@ -36,6 +38,7 @@ pub mod gap;
 pub mod ida;
 pub mod limit_state;
 pub mod map;
+pub mod risk;
 pub mod separation;
 pub mod similarity;
 pub mod spectrum;

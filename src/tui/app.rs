@@ -19,6 +19,7 @@ use super::layout;
 use super::map_grid;
 use super::physical::{self, Base};
 use super::presets;
+use super::risk_job::{self, RiskSpec};
 use super::scene::MAP_Y;
 use super::scene::{Scene, View};
 use super::text_field::{FieldKey, TextField};
@@ -75,7 +76,10 @@ pub enum Mode {
     Normal,
     /// Typing an exact value into the selected row.
     Editing(TextField),
-    Help,
+    /// The key list, scrolled to its line `top` where it is taller than the screen.
+    Help {
+        top: usize,
+    },
     /// Choosing a preset for the active set.
     Picker {
         selected: usize,
@@ -231,8 +235,8 @@ impl App {
         };
         let active = set(self.active, buckets);
         match self.view.scene {
-            Scene::History | Scene::Impacts => (vec![active], None, None),
-            Scene::Loops => (vec![set(self.active, LOOP_BUCKETS)], None, None),
+            Scene::History | Scene::Impacts => Need::runs(vec![active]),
+            Scene::Loops => Need::runs(vec![set(self.active, LOOP_BUCKETS)]),
             Scene::Laws => {
                 let own = self.model();
                 let runs = self
@@ -249,11 +253,18 @@ impl App {
                         run
                     })
                     .collect();
-                (runs, None, None)
+                Need::runs(runs)
             }
-            Scene::Sets => (vec![set(0, buckets), set(1, buckets)], None, None),
+            Scene::Sets => Need::runs(vec![set(0, buckets), set(1, buckets)]),
             // The summary under the map shows the set's own run, as under a spectrum.
-            Scene::Map => (vec![active], None, self.map_spec()),
+            Scene::Map => Need {
+                map: self.map_spec(),
+                ..Need::runs(vec![active])
+            },
+            Scene::Risk => Need {
+                risk: Some(self.risk_spec()),
+                ..Need::runs(vec![active])
+            },
             Scene::Spectrum => {
                 let p = self.active_params();
                 let mu = p.mu();
@@ -266,9 +277,19 @@ impl App {
                     mu,
                     grid: spectrum_grid(),
                 };
-                (vec![active], mu.is_finite().then_some(spec), None)
+                Need {
+                    spectrum: mu.is_finite().then_some(spec),
+                    ..Need::runs(vec![active])
+                }
             }
         }
+    }
+
+    /// The risk picture the risk scene asks for: the active set's
+    /// buildings (its preset's base, or the reference one) at the design level.
+    pub fn risk_spec(&self) -> RiskSpec {
+        let s = &self.sets[self.active];
+        risk_job::spec_of(&s.params, s.base, self.view.risk_level)
     }
 
     /// The map the map scene asks for: Π_ω1 across as many columns as the
@@ -385,7 +406,21 @@ impl App {
         }
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal => return self.on_normal_key(key),
-            Mode::Help => {}
+            Mode::Help { top } => {
+                // ↑↓ (and the page keys) scroll a help taller than the
+                // screen; any other key closes it.
+                let max = super::keys::help_top_max(self.size.1);
+                let top = match key.code {
+                    KeyCode::Down | KeyCode::Char('j') => Some(top + 1),
+                    KeyCode::Up | KeyCode::Char('k') => Some(top.saturating_sub(1)),
+                    KeyCode::PageDown | KeyCode::Char(' ') => Some(top + 10),
+                    KeyCode::PageUp => Some(top.saturating_sub(10)),
+                    _ => None,
+                };
+                if let Some(top) = top {
+                    self.mode = Mode::Help { top: top.min(max) };
+                }
+            }
             Mode::Editing(field) => self.on_edit_key(key, field),
             Mode::Picker { selected } => self.on_picker_key(key, selected),
             Mode::SaveName(field) => return self.on_save_key(key, field),
@@ -482,13 +517,19 @@ impl App {
                     confirmed: false,
                 };
             }
+            KeyCode::Char('g') if self.view.scene == Scene::Risk => {
+                self.status = Some(
+                    "no SVG of the risk scene: pounding ida and pounding gap --suite give its numbers"
+                        .into(),
+                );
+            }
             KeyCode::Char('g') => {
                 let path = self.default_path("svg");
                 self.mode = Mode::Figure {
                     path: TextField::new(&path, PATH_MAX),
                 };
             }
-            KeyCode::Char('?') => self.mode = Mode::Help,
+            KeyCode::Char('?') => self.mode = Mode::Help { top: 0 },
             KeyCode::Char('b') if self.view.scene == Scene::Laws => {
                 self.view.laws = self.view.laws.next(self.model());
             }
@@ -501,6 +542,9 @@ impl App {
             }
             KeyCode::Char(c @ ('[' | ']' | '{' | '}')) if self.view.scene == Scene::Map => {
                 self.move_map_cursor(c);
+            }
+            KeyCode::Char(c @ ('[' | ']')) if self.view.scene == Scene::Risk => {
+                self.view.risk_level = risk_job::stepped(self.view.risk_level, c == ']');
             }
             KeyCode::Char('o') if self.view.scene == Scene::Spectrum => {
                 self.view.velocity = !self.view.velocity;
@@ -892,6 +936,8 @@ impl App {
             Scene::Laws => FigureName::ContactLaws,
             Scene::Map => FigureName::Map,
             Scene::Spectrum => FigureName::Spectrum,
+            // No figure of its own (`g` says so): the set's histories.
+            Scene::Risk => FigureName::History,
         };
         (name, p)
     }

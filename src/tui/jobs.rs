@@ -2,15 +2,53 @@
 //! and spectrum points that came back, a small cache so that switching back
 //! to a scene or set costs nothing, and which results are current.
 
+use super::risk_job::{RiskOutput, RiskSpec};
 use super::worker::{Job, MapSpec, Output, RunOutput, RunSpec, Slot, SpectrumSpec};
 use crate::analysis::map::MapCell;
+use crate::analysis::risk::RiskPicture;
 use crate::analysis::spectrum::SpectrumPoint;
 
 /// Results kept for reuse (switching scenes or sets back does not recompute).
 const CACHE: usize = 12;
 
-/// The runs, the spectrum and the map a scene needs.
-pub type Need = (Vec<RunSpec>, Option<SpectrumSpec>, Option<MapSpec>);
+/// The runs, the spectrum, the map and the risk picture a scene needs.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Need {
+    pub runs: Vec<RunSpec>,
+    pub spectrum: Option<SpectrumSpec>,
+    pub map: Option<MapSpec>,
+    pub risk: Option<RiskSpec>,
+}
+
+impl Need {
+    /// Runs alone.
+    pub fn runs(runs: Vec<RunSpec>) -> Need {
+        Need {
+            runs,
+            ..Need::default()
+        }
+    }
+}
+
+/// Progressive risk picture: the latest pass's picture, whether it is the
+/// full one, or why there is none.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RiskState {
+    pub spec: RiskSpec,
+    pub picture: Option<RiskPicture>,
+    /// The picture covers every record at every level.
+    pub full: bool,
+    /// The picture is of an earlier spec (shown until the new one's first pass).
+    pub stale: bool,
+    pub error: Option<String>,
+}
+
+impl RiskState {
+    /// Whether nothing more will come for this spec.
+    pub fn finished(&self) -> bool {
+        self.full || self.error.is_some()
+    }
+}
 
 /// Progressive map: the cells computed so far, row-major from the lowest y.
 #[derive(Debug, Clone, PartialEq)]
@@ -68,6 +106,7 @@ pub struct Jobs {
     pub results: Vec<RunOutput>,
     pub spectrum: Option<SpectrumState>,
     pub map: Option<MapState>,
+    pub risk: Option<RiskState>,
 }
 
 impl Jobs {
@@ -79,7 +118,12 @@ impl Jobs {
         }
         self.generation += 1;
         self.requested = Some(need.clone());
-        let (runs, spectrum, map) = need;
+        let Need {
+            runs,
+            spectrum,
+            map,
+            risk,
+        } = need;
         let runs: Vec<RunSpec> = runs
             .into_iter()
             .filter(|s| self.cached(s).is_none())
@@ -119,7 +163,36 @@ impl Jobs {
                 }
             }
         }
-        self.computing = !runs.is_empty() || spectrum.is_some() || map.is_some();
+        // A finished picture of the same spec is kept; another spec starts
+        // afresh (the previous picture stays on screen, marked, until the
+        // first pass of the new one arrives).
+        let risk = risk.filter(|r| {
+            !self
+                .risk
+                .as_ref()
+                .is_some_and(|st| st.spec == *r && st.finished())
+        });
+        if let Some(r) = &risk {
+            match &mut self.risk {
+                Some(st) if st.spec == *r => {}
+                Some(st) => {
+                    st.spec = r.clone();
+                    st.full = false;
+                    st.stale = st.picture.is_some();
+                    st.error = None;
+                }
+                None => {
+                    self.risk = Some(RiskState {
+                        spec: r.clone(),
+                        picture: None,
+                        full: false,
+                        stale: false,
+                        error: None,
+                    })
+                }
+            }
+        }
+        self.computing = !runs.is_empty() || spectrum.is_some() || map.is_some() || risk.is_some();
         if !self.computing {
             return None;
         }
@@ -128,6 +201,7 @@ impl Jobs {
             runs,
             spectrum,
             map,
+            risk,
         })
     }
 
@@ -138,7 +212,7 @@ impl Jobs {
     fn requested_spec(&self, slot: Slot) -> Option<&RunSpec> {
         self.requested
             .as_ref()
-            .and_then(|(runs, _, _)| runs.iter().find(|s| s.slot == slot))
+            .and_then(|need| need.runs.iter().find(|s| s.slot == slot))
     }
 
     /// The run to show for a slot: the one asked for if computed, else the
@@ -188,6 +262,18 @@ impl Jobs {
             Output::MapError { message, .. } => {
                 if let Some(m) = self.map.as_mut() {
                     m.error = Some(message);
+                }
+            }
+            Output::Risk { output, .. } => {
+                if let Some(st) = self.risk.as_mut() {
+                    match output {
+                        RiskOutput::Picture { picture, full } => {
+                            st.picture = Some(*picture);
+                            st.full = full;
+                            st.stale = false;
+                        }
+                        RiskOutput::Error(message) => st.error = Some(message),
+                    }
                 }
             }
             Output::Done { .. } => self.computing = false,

@@ -23,10 +23,13 @@ pub enum Scene {
     /// The left structure's region (or Π_u1/Π_u1,free) over Π_ω1 and a
     /// second parameter (SPEC §7).
     Map,
+    /// The active set's buildings over a suite: P(pounding) against the
+    /// gap, the IDA of the left drift and the pounding fragility (SPEC §12).
+    Risk,
 }
 
 impl Scene {
-    pub const ALL: [Scene; 7] = [
+    pub const ALL: [Scene; 8] = [
         Scene::History,
         Scene::Loops,
         Scene::Laws,
@@ -34,6 +37,7 @@ impl Scene {
         Scene::Spectrum,
         Scene::Impacts,
         Scene::Map,
+        Scene::Risk,
     ];
 
     pub fn key(self) -> char {
@@ -45,6 +49,7 @@ impl Scene {
             Scene::Spectrum => 'w',
             Scene::Impacts => 'i',
             Scene::Map => 'a',
+            Scene::Risk => 'x',
         }
     }
 
@@ -57,6 +62,7 @@ impl Scene {
             Scene::Spectrum => "spectrum",
             Scene::Impacts => "impacts",
             Scene::Map => "map",
+            Scene::Risk => "risk",
         }
     }
 
@@ -166,6 +172,8 @@ pub struct View {
     /// The map cell under the cursor (column, row from the top); `None`:
     /// the set's own point.
     pub map_cursor: Option<(usize, usize)>,
+    /// The risk scene's design level (g).
+    pub risk_level: f64,
 }
 
 /// Zoom factor of one `z`.
@@ -184,6 +192,7 @@ impl Default for View {
             map_y: 0,
             map_ratio: false,
             map_cursor: None,
+            risk_level: super::risk_job::DESIGN_LEVEL,
         }
     }
 }

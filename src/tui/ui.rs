@@ -38,12 +38,13 @@ pub fn render(app: &App, frame: &mut Frame) {
             Scene::Spectrum => views::spectrum::render(app, frame, a.scene),
             Scene::Impacts => views::impacts::render(app, frame, a.scene),
             Scene::Map => views::map::render(app, frame, a.scene),
+            Scene::Risk => views::risk::render(app.jobs.risk.as_ref(), app.look, frame, a.scene),
         }
         views::summary::render(app, frame, a.summary);
         footer(app, frame, a.footer);
         use views::overlay;
         match &app.mode {
-            Mode::Help => overlay::help(app, frame, area),
+            Mode::Help { top } => overlay::help(app, *top, frame, area),
             Mode::Picker { selected } => overlay::picker(app, *selected, frame, area),
             Mode::SaveName(field) => overlay::save_name(app, field, frame, area),
             Mode::ConfirmOverwrite { name } => overlay::confirm(app, name, frame, area),
@@ -104,7 +105,7 @@ pub fn key_bar(app: &App, width: usize) -> String {
             "←→ nudge",
             "Enter type",
             "Tab set",
-            "t f v c w i a scenes",
+            "t f v c w i a x scenes",
             "[ ] cursor",
             "z zoom",
             "p preset",

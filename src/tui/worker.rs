@@ -1,7 +1,8 @@
 //! The solver on a background thread, latest wins (after gitui's
 //! `AsyncSingleJob`): at most one job runs and at most one waits; a newer
 //! request replaces the waiting one and cancels the running one (through the
-//! observer's `keep_going`, and between spectrum points). Every output carries
+//! observer's `keep_going`, and between chunks of spectrum points, map rows
+//! and a risk picture's runs). Every output carries
 //! its job's generation so the app can drop stale ones.
 
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -11,6 +12,7 @@ use std::time::{Duration, Instant};
 
 use rayon::prelude::*;
 
+use super::risk_job::{RiskOutput, RiskSpec, run_risk};
 use super::trace::Trace;
 use crate::analysis::gap::{MinimumGap, free_params, minimum_gap};
 use crate::analysis::map::{MapCache, MapCell, MapPlan, compute_rows};
@@ -90,6 +92,7 @@ pub struct Job {
     pub runs: Vec<RunSpec>,
     pub spectrum: Option<SpectrumSpec>,
     pub map: Option<MapSpec>,
+    pub risk: Option<RiskSpec>,
 }
 
 /// A finished run.
@@ -135,6 +138,8 @@ pub enum Output {
     },
     /// The map's parameters are refused (one line naming the value).
     MapError { generation: u64, message: String },
+    /// A pass of the risk picture, or why there is none.
+    Risk { generation: u64, output: RiskOutput },
     /// The job ended, complete or cancelled by a newer one.
     Done { generation: u64, cancelled: bool },
 }
@@ -146,6 +151,7 @@ impl Output {
             | Output::Points { generation, .. }
             | Output::MapRows { generation, .. }
             | Output::MapError { generation, .. }
+            | Output::Risk { generation, .. }
             | Output::Done { generation, .. } => *generation,
         }
     }
@@ -292,8 +298,16 @@ pub fn run_job(job: &Job, current: &dyn Fn() -> bool, send: &dyn Fn(Output)) -> 
             }
         }
     }
-    if let Some(m) = &job.map {
-        return run_map(job.generation, m, current, send);
+    if let Some(m) = &job.map
+        && !run_map(job.generation, m, current, send)
+    {
+        return false;
+    }
+    if let Some(r) = &job.risk {
+        let generation = job.generation;
+        return run_risk(r, current, &|output| {
+            send(Output::Risk { generation, output })
+        });
     }
     true
 }

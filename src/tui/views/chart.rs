@@ -35,6 +35,10 @@ enum Shape {
     Line(Vec<(f64, f64)>),
     /// A vertical span (x, lo, hi) per time bucket, each joined to the next.
     Spans(Vec<(f64, f64, f64)>),
+    /// Vertical bars (x, lo, hi), each on its own (a 16–84 % range).
+    Bars(Vec<(f64, f64, f64)>),
+    /// Points on their own, each drawn as the series' marker character.
+    Points(Vec<(f64, f64)>),
 }
 
 /// One named series of a chart, in its quantity's fixed colour.
@@ -45,6 +49,8 @@ pub struct Series {
     /// Its own marker without colours (else the chart's, by position).
     marker: Option<char>,
     shape: Shape,
+    /// Whether the legend names it (a range drawn beside its median is not).
+    listed: bool,
 }
 
 impl Series {
@@ -54,7 +60,41 @@ impl Series {
             color,
             marker: None,
             shape: Shape::Line(points),
+            listed: true,
         }
+    }
+
+    /// Vertical bars (x, lo, hi), not joined.
+    pub fn bars(name: impl Into<String>, color: Color, bars: Vec<(f64, f64, f64)>) -> Series {
+        Series {
+            name: name.into(),
+            color,
+            marker: None,
+            shape: Shape::Bars(bars),
+            listed: true,
+        }
+    }
+
+    /// Points drawn as `marker`, in colour or not.
+    pub fn points(
+        name: impl Into<String>,
+        color: Color,
+        marker: char,
+        points: Vec<(f64, f64)>,
+    ) -> Series {
+        Series {
+            name: name.into(),
+            color,
+            marker: Some(marker),
+            shape: Shape::Points(points),
+            listed: true,
+        }
+    }
+
+    /// The same series left out of the legend.
+    pub fn unlisted(mut self) -> Series {
+        self.listed = false;
+        self
     }
 
     /// The same series with a fixed marker for charts without colours.
@@ -73,13 +113,16 @@ impl Series {
             color,
             marker: None,
             shape: Shape::Spans(spans),
+            listed: true,
         }
     }
 
     fn values(&self) -> Box<dyn Iterator<Item = (f64, f64)> + '_> {
         match &self.shape {
-            Shape::Line(p) => Box::new(p.iter().copied()),
-            Shape::Spans(s) => Box::new(s.iter().flat_map(|&(x, a, b)| [(x, a), (x, b)])),
+            Shape::Line(p) | Shape::Points(p) => Box::new(p.iter().copied()),
+            Shape::Spans(s) | Shape::Bars(s) => {
+                Box::new(s.iter().flat_map(|&(x, a, b)| [(x, a), (x, b)]))
+            }
         }
     }
 }
@@ -257,6 +300,16 @@ impl Raster {
                     previous = Some((x, lo, hi));
                 }
             }
+            Shape::Bars(bars) => {
+                for &(x, lo, hi) in bars {
+                    self.segment((x, lo), (x, hi), index);
+                }
+            }
+            Shape::Points(points) => {
+                for &p in points {
+                    self.segment(p, p, index);
+                }
+            }
         }
     }
 }
@@ -333,7 +386,8 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
             let Some(owner) = raster.owner[i] else {
                 continue;
             };
-            let symbol = if braille {
+            let point = matches!(series[owner].shape, Shape::Points(_));
+            let symbol = if braille && !point {
                 char::from_u32(0x2800 + raster.bits[i] as u32).unwrap_or('*')
             } else {
                 series[owner].marker(owner)
@@ -436,8 +490,10 @@ fn legend(look: Look, series: &[Series], braille: bool) -> Vec<(String, String, 
     series
         .iter()
         .enumerate()
+        .filter(|(_, s)| s.listed)
         .map(|(i, s)| {
-            let sample = if braille {
+            let point = matches!(s.shape, Shape::Points(_));
+            let sample = if braille && !point {
                 "──".to_string()
             } else {
                 s.marker(i).to_string().repeat(2)

@@ -9,6 +9,7 @@ pub mod loops;
 pub mod map;
 pub mod overlay;
 pub mod params;
+pub mod risk;
 pub mod sets;
 pub mod spectrum;
 pub mod summary;

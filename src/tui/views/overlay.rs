@@ -10,45 +10,9 @@ use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap}
 
 use crate::tui::app::{App, LARGE_EXPORT};
 use crate::tui::export;
+use crate::tui::keys;
 use crate::tui::text_field::TextField;
 use crate::tui::worker::Slot;
-
-/// Every key, as the help overlay and the README list them.
-pub const KEYS: [(&str, &str); 30] = [
-    ("?", "this help (any key closes it)"),
-    ("↑/↓, k/j", "select a parameter"),
-    ("←/→, h/l, -/+", "nudge it by one step"),
-    ("Shift+←/→, H/L", "nudge by ten steps"),
-    (", / .  (Ctrl+←/→)", "nudge by a tenth of a step"),
-    ("Enter", "type an exact value (typing replaces it)"),
-    ("Tab", "switch the active set"),
-    ("m", "Kelvin ↔ improved Kelvin (row: all six)"),
-    ("r", "reset the active set to its preset"),
-    ("1-9", "recall preset 1-9 into the active set"),
-    ("p", "preset picker"),
-    ("s", "save the active set as a user preset"),
-    ("e", "export a history as CSV (asks where)"),
-    ("g", "write the scene as an SVG figure"),
-    ("t", "scene: time histories"),
-    ("f", "scene: force-drift loops"),
-    (
-        "v",
-        "scene: contact laws (b: paper pair, all six, own vs one)",
-    ),
-    ("c", "scene: set 1 vs set 2 (o overlays them)"),
-    ("w", "scene: spectrum against Π_ω1"),
-    ("i", "scene: impact table and energy terms"),
-    ("a", "scene: map (y axis, o ratio, [ ]{ })"),
-    ("u", "physical units (presets with [physical])"),
-    ("[ / ]", "move the time cursor ({ } by ten)"),
-    ("n / N", "cursor to the next / previous impact"),
-    ("z / Z", "zoom in around the cursor / out"),
-    ("Esc", "hide the cursor (never quits)"),
-    ("mouse", "click: select or cursor; wheel: nudge"),
-    ("M", "mouse on/off (off: select text)"),
-    ("q", "quit (asks if a set is unsaved)"),
-    ("Ctrl-C", "quit at once"),
-];
 
 fn centered(area: Rect, width: u16, height: u16) -> Rect {
     let [v] = Layout::vertical([Constraint::Length(height.min(area.height))])
@@ -75,20 +39,8 @@ fn boxed(app: &App, frame: &mut Frame, area: Rect, title: &str, lines: Vec<Strin
     );
 }
 
-pub fn help(app: &App, frame: &mut Frame, area: Rect) {
-    // The keys; under `m`, the short forms a narrow pane gives the laws'
-    // names, high enough to show on a 24-row screen.
-    let mut lines = Vec::new();
-    for (k, what) in KEYS {
-        lines.push(format!("{k:>18}  {what}"));
-        if k == "m" {
-            lines.extend(
-                crate::tui::fit::short_laws_legend()
-                    .into_iter()
-                    .map(|(short, name)| format!("{short:>18}  law {name}")),
-            );
-        }
-    }
+pub fn help(app: &App, top: usize, frame: &mut Frame, area: Rect) {
+    let lines = keys::help_lines();
     // Taller than the screen: two columns side by side when wide enough.
     let rows = area.height.saturating_sub(2) as usize;
     if lines.len() > rows && area.width >= 124 {
@@ -100,6 +52,21 @@ pub fn help(app: &App, frame: &mut Frame, area: Rect) {
             })
             .collect();
         return boxed(app, frame, area, "keys", joined, 122);
+    }
+    // Otherwise it scrolls (↑↓), from line `top`.
+    if lines.len() > rows {
+        let top = top.min(keys::help_top_max(area.height));
+        let title = format!(
+            "keys {}–{} of {} (↑↓ scroll)",
+            top + 1,
+            (top + rows).min(lines.len()),
+            lines.len()
+        );
+        let width = keys::HELP_COLUMNS as u16 + 2;
+        // The whole height, whatever the lines below `top` (a long line wraps).
+        let mut shown = lines[top..].to_vec();
+        shown.resize(shown.len().max(rows), String::new());
+        return boxed(app, frame, area, &title, shown, width);
     }
     boxed(app, frame, area, "keys", lines, 62);
 }

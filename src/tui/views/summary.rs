@@ -100,7 +100,12 @@ pub fn gap_line(label: &str, run: &RunOutput, u: &Units, width: usize) -> Option
 fn slots(app: &App) -> Vec<(String, Slot)> {
     let set = |i: usize| (format!("set {}", i + 1), Slot::Set(i));
     match app.view.scene {
-        Scene::History | Scene::Loops | Scene::Spectrum | Scene::Impacts | Scene::Map => {
+        Scene::History
+        | Scene::Loops
+        | Scene::Spectrum
+        | Scene::Impacts
+        | Scene::Map
+        | Scene::Risk => {
             vec![set(app.active)]
         }
         Scene::Sets => vec![set(0), set(1)],

@@ -1,0 +1,209 @@
+//! The risk of pounding of one pair of buildings over a suite, in one
+//! picture (SPEC §11, §12): what the explorer's risk scene draws.
+//!
+//! Every record of the suite runs at every intensity level x_1 < … < x_L
+//! (an IDA, [`super::ida`]) and at a design level X (when X is not one of
+//! the levels, its runs are added). From those runs:
+//!
+//! - at the design level, Π_d,min of each record in m (SPEC §11, from its
+//!   run without contact), whence the probability of pounding at a gap d,
+//!   the fraction of records with Π_d,min > d
+//!   ([`separation::probability_of_pounding`]);
+//! - at each level, the median and the 16th and 84th percentiles of the
+//!   left building's peak drift, with pounding and without contact
+//!   ([`Summary`]);
+//! - the pounding fragility P(pounding | IM = x) fitted on the counts of
+//!   records that pounded at each level ([`ida::fragilities`]), or why
+//!   there is none.
+//!
+//! The runs are those of `pounding ida` and `pounding gap --suite` with the
+//! same buildings, settings and measure: all three plan them by
+//! [`ida::plan_levels`] and run them by [`run_member`].
+
+use rayon::prelude::*;
+
+use super::fragility::{Fragility, LevelCount};
+use super::ida::{self, plan_levels};
+use super::limit_state::LimitState;
+use super::separation;
+use super::statistics::Summary;
+use super::suite::{SuiteCase, SuiteRun, SuiteRunError, run_member};
+use crate::model::suite::SuiteMember;
+
+/// The left building's peak drift (m) at one level, over the records.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelDrift {
+    /// The level x (g).
+    pub level: f64,
+    /// With pounding.
+    pub pounding: Summary,
+    /// The same buildings without contact (gap = ∞).
+    pub free: Summary,
+}
+
+/// The risk picture of a pair over a suite (module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RiskPicture {
+    /// Records run at each level.
+    pub records: usize,
+    /// The design level X (g).
+    pub design_level: f64,
+    /// Π_d,min of each record at the design level (m), in suite order.
+    pub min_gaps_m: Vec<f64>,
+    /// The pair's own gap d (m).
+    pub gap_m: f64,
+    /// The IDA of the left building's peak drift, level by level.
+    pub drift: Vec<LevelDrift>,
+    /// Records that pounded at each level.
+    pub pounding: Vec<LevelCount>,
+    /// P(pounding | IM = x) fitted on [`RiskPicture::pounding`], or why not.
+    pub fragility: Fragility,
+}
+
+impl RiskPicture {
+    /// P(pounding) at the pair's own gap at the design level (SPEC §12).
+    pub fn probability_at_gap(&self) -> f64 {
+        separation::probability_of_pounding(&self.min_gaps_m, self.gap_m)
+    }
+
+    /// Records whose Π_d,min exceeds the pair's gap at the design level.
+    pub fn pounded_at_gap(&self) -> usize {
+        self.min_gaps_m.iter().filter(|&&d| d > self.gap_m).count()
+    }
+
+    /// The empirical P(pounding) against the gap (m) as a step line from
+    /// d = 0 to `end`: the fraction of records with Π_d,min > d, which
+    /// drops at each Π_d,min (the point at d = Π_d,min takes the value
+    /// after the drop, as the fraction does).
+    pub fn probability_curve(&self, end: f64) -> Vec<(f64, f64)> {
+        let mut sorted = self.min_gaps_m.clone();
+        sorted.sort_by(f64::total_cmp);
+        let p = |d: f64| separation::probability_of_pounding(&sorted, d);
+        let mut points = vec![(0.0, p(0.0))];
+        for w in sorted.chunk_by(|a, b| a == b) {
+            let d = w[0];
+            if d > 0.0 && d < end {
+                points.push((d, p(d - d * f64::EPSILON)));
+                points.push((d, p(d)));
+            }
+        }
+        points.push((end, p(end)));
+        points
+    }
+}
+
+/// Runs every record at every level and at the design level, in parallel
+/// chunks, while `keep_going()` holds (asked between chunks); the picture, or `None` when stopped. A
+/// record that cannot be planned (zero intensity, Π-groups out of range)
+/// fails the whole picture, naming it, before any run.
+///
+/// `levels` must be ascending and > 0, `design_level` > 0.
+pub fn risk(
+    case: &SuiteCase,
+    members: &[SuiteMember],
+    design_level: f64,
+    levels: &[f64],
+    keep_going: &dyn Fn() -> bool,
+) -> Result<Option<RiskPicture>, SuiteRunError> {
+    let design = levels.iter().position(|&x| x == design_level);
+    let mut all = levels.to_vec();
+    if design.is_none() {
+        all.push(design_level);
+    }
+    let plans = plan_levels(case, members, &all)?;
+    let pairs: Vec<(usize, usize)> = (0..all.len())
+        .flat_map(|l| (0..members.len()).map(move |j| (l, j)))
+        .collect();
+    // A chunk of runs at a time, so that `keep_going` is asked between two
+    // chunks on the calling thread (a few milliseconds apart).
+    let chunk = 4 * rayon::current_num_threads().max(1);
+    let mut runs: Vec<SuiteRun> = Vec::with_capacity(pairs.len());
+    for part in pairs.chunks(chunk) {
+        if !keep_going() {
+            return Ok(None);
+        }
+        runs.par_extend(
+            part.par_iter()
+                .map(|&(l, j)| run_member(case, &members[j], &plans[l][j])),
+        );
+    }
+    let mut by_level: Vec<Vec<SuiteRun>> = Vec::with_capacity(all.len());
+    for _ in 0..all.len() {
+        let rest = runs.split_off(members.len().min(runs.len()));
+        by_level.push(std::mem::replace(&mut runs, rest));
+    }
+    let at_design = &by_level[design.unwrap_or(levels.len())];
+    let ida_runs = &by_level[..levels.len()];
+    let drift = levels
+        .iter()
+        .zip(ida_runs)
+        .map(|(&level, at)| {
+            let left = |free: bool| {
+                let values: Vec<f64> = at
+                    .iter()
+                    .map(|r| {
+                        let si = if free { &r.free_si } else { &r.si };
+                        si.left.peak_displacement_m
+                    })
+                    .collect();
+                Summary::of(&values)
+            };
+            LevelDrift {
+                level,
+                pounding: left(false),
+                free: left(true),
+            }
+        })
+        .collect();
+    let pounding = ida::fragilities(levels, ida_runs, &[LimitState::Pounding])
+        .into_iter()
+        .next()
+        .expect("the pounding limit state comes first");
+    Ok(Some(RiskPicture {
+        records: members.len(),
+        design_level,
+        min_gaps_m: at_design.iter().map(SuiteRun::min_gap_m).collect(),
+        gap_m: case.physical.gap,
+        drift,
+        pounding: pounding.counts,
+        fragility: pounding.fragility,
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn picture(gaps: &[f64], gap: f64) -> RiskPicture {
+        RiskPicture {
+            records: gaps.len(),
+            design_level: 0.3,
+            min_gaps_m: gaps.to_vec(),
+            gap_m: gap,
+            drift: Vec::new(),
+            pounding: Vec::new(),
+            fragility: Fragility::TooFewRecords,
+        }
+    }
+
+    #[test]
+    fn the_curve_steps_down_at_each_minimum_gap() {
+        let p = picture(&[0.03, 0.01, 0.03, 0.02], 0.025);
+        assert_eq!(p.probability_at_gap(), 0.5);
+        assert_eq!(p.pounded_at_gap(), 2);
+        let c = p.probability_curve(0.05);
+        assert_eq!(
+            c,
+            [
+                (0.0, 1.0),
+                (0.01, 1.0),
+                (0.01, 0.75),
+                (0.02, 0.75),
+                (0.02, 0.5),
+                (0.03, 0.5),
+                (0.03, 0.0),
+                (0.05, 0.0)
+            ]
+        );
+    }
+}
