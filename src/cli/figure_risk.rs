@@ -6,16 +6,15 @@
 use clap::Args;
 
 use super::CliError;
-use super::budget::{LongArg, Work, run_steps};
+use super::budget::LongArg;
 use super::gap_suite::DEFAULT_PROBABILITIES;
 use super::ida::LimitStateArgs;
 use super::params::ParamArgs;
-use super::suite::{SuiteArgs, case_of};
+use super::suite::{SuiteArgs, case_of, members, work_of};
 use crate::analysis::ida::{parse_levels, plan_levels};
 use crate::analysis::separation::parse_probabilities;
 use crate::analysis::suite::plan;
 use crate::figure::{FigureName, SuiteStudy};
-use crate::model::suite::SuiteSpec;
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct RiskArgs {
@@ -133,21 +132,17 @@ pub fn study(
     )
     .map_err(|e| usage(e.to_string()))?;
     let (preset, case) = case_of(&suite_args)?;
-    let members = SuiteSpec::parse(&suite)
-        .and_then(|s| s.load())
-        .map_err(|e| usage(e.to_string()))?;
+    let members = members(&suite)?;
     let plans = match name {
         FigureName::Separation => plan(&case, &members).map(|p| vec![p]),
         _ => plan_levels(&case, &members, &levels),
     }
     .map_err(|e| usage(e.to_string()))?;
-    // Each record is one pounding run and one run without contact.
-    let steps = plans
-        .iter()
-        .flatten()
-        .map(|m| 2.0 * run_steps(&m.params))
-        .sum();
-    Work { steps, rows: 0.0 }.check(&format!("figure {name}"), risk.long.allow_long, false)?;
+    work_of(plans.iter().flatten()).check(
+        &format!("figure {name}"),
+        risk.long.allow_long,
+        false,
+    )?;
     Ok(SuiteStudy {
         preset: preset.name.clone(),
         suite,

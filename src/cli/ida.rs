@@ -10,11 +10,12 @@ use clap::Args;
 use serde::Serialize;
 
 use super::CliError;
-use super::budget::{Work, run_steps};
 use super::description::Provenance;
 use super::output::{print, render};
 use super::progress::Progress;
-use super::suite::{SuiteArgs, SuiteRow, case_of, statistics_table};
+use super::suite::{
+    SuiteArgs, SuiteRow, case_of, members, record_steps, statistics_table, work_of,
+};
 use crate::analysis::fragility::describe;
 use crate::analysis::ida::{
     LimitStateFragility, fragilities, parse_levels, plan_levels, run_levels,
@@ -23,7 +24,6 @@ use crate::analysis::limit_state::{LimitState, parse_acceleration, parse_ductili
 use crate::analysis::suite::{SuiteRun, SuiteStatistics};
 use crate::model::Method;
 use crate::model::params::echo::g4;
-use crate::model::suite::SuiteSpec;
 use crate::output::report::Report;
 
 #[derive(Debug, Clone, Default, Args)]
@@ -84,22 +84,14 @@ pub fn execute(args: &IdaArgs) -> Result<(), CliError> {
     let levels = parse_levels(&args.levels).map_err(usage)?;
     let states = args.limits.parse()?;
     let (preset, case) = case_of(&args.suite)?;
-    let spec = SuiteSpec::parse(&args.suite.suite).map_err(|e| usage(e.to_string()))?;
-    let members = spec.load().map_err(|e| usage(e.to_string()))?;
+    let members = members(&args.suite.suite)?;
     let plans = plan_levels(&case, &members, &levels).map_err(|e| usage(e.to_string()))?;
-    let work = Work {
-        steps: plans
-            .iter()
-            .flatten()
-            .map(|m| 2.0 * run_steps(&m.params))
-            .sum(),
-        rows: 0.0,
-    };
+    let work = work_of(plans.iter().flatten());
     work.check("ida", args.suite.long.allow_long, false)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
     let runs = run_levels(&case, &members, &plans, &|r: &SuiteRun| {
-        progress.add(2.0 * run_steps(&r.params))
+        progress.add(record_steps(&r.params))
     });
     let fragility = fragilities(&levels, &runs, &states);
     drop(progress);

@@ -10,17 +10,15 @@ use std::time::Instant;
 use serde::Serialize;
 
 use super::CliError;
-use super::budget::{Work, run_steps};
 use super::description::Provenance;
 use super::output::{Format, num, print};
 use super::progress::Progress;
-use super::suite::{SuiteArgs, case_of};
+use super::suite::{SuiteArgs, case_of, members, record_steps, work_of};
 use crate::analysis::suite::SuiteRun;
 use crate::analysis::suite_map::{
     MAX_RUNS, PhysicalAxis, SuiteMapCell, cell_cases, compute_cells, plan_cells,
 };
 use crate::model::params::echo::g4;
-use crate::model::suite::SuiteSpec;
 use crate::output::report::{csv, json};
 
 fn usage(message: String) -> CliError {
@@ -47,9 +45,7 @@ pub fn execute(suite_args: &SuiteArgs, x: &str, y: &str) -> Result<(), CliError>
     let x = PhysicalAxis::parse("--x", x).map_err(usage)?;
     let y = PhysicalAxis::parse("--y", y).map_err(usage)?;
     let (preset, case) = case_of(suite_args)?;
-    let members = SuiteSpec::parse(&suite_args.suite)
-        .and_then(|s| s.load())
-        .map_err(|e| usage(e.to_string()))?;
+    let members = members(&suite_args.suite)?;
     let cells = cell_cases(&case, &x, &y);
     if cells.len() * members.len() > MAX_RUNS {
         return Err(usage(format!(
@@ -67,14 +63,7 @@ pub fn execute(suite_args: &SuiteArgs, x: &str, y: &str) -> Result<(), CliError>
             num(cy)
         ))
     })?;
-    let work = Work {
-        steps: plans
-            .iter()
-            .flatten()
-            .map(|m| 2.0 * run_steps(&m.params))
-            .sum(),
-        rows: 0.0,
-    };
+    let work = work_of(plans.iter().flatten());
     work.check("map --suite", suite_args.long.allow_long, false)?;
     let format = suite_args.output.format;
     let measure = case.scaling.measure.to_string();
@@ -96,7 +85,7 @@ pub fn execute(suite_args: &SuiteArgs, x: &str, y: &str) -> Result<(), CliError>
     }
     let progress = Progress::start(&work);
     let start = Instant::now();
-    let done = |r: &SuiteRun| progress.add(2.0 * run_steps(&r.params));
+    let done = |r: &SuiteRun| progress.add(record_steps(&r.params));
     let width = x.values.len();
     let mut all = Vec::with_capacity(cells.len());
     for row in 0..y.values.len() {

@@ -16,10 +16,12 @@ use super::output::{FormatArg, num, print, render};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::demands::{DemandsSi, Scales};
-use crate::analysis::suite::{Scaling, SuiteCase, SuiteRun, SuiteStatistics, plan, run_suite};
+use crate::analysis::suite::{
+    MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteStatistics, plan, run_suite,
+};
 use crate::model::intensity::IntensityMeasure;
 use crate::model::physical::G;
-use crate::model::suite::SuiteSpec;
+use crate::model::suite::{SuiteMember, SuiteSpec};
 use crate::model::{Method, Params};
 use crate::output::report::Report;
 use crate::solver::StructurePeaks;
@@ -156,25 +158,42 @@ pub struct Ran {
     pub elapsed_ms: f64,
 }
 
+/// The records of `SUITE` (a directory, a list file or `synthetic:N@S`),
+/// or the one-line error naming the file and line.
+pub fn members(suite: &str) -> Result<Vec<SuiteMember>, CliError> {
+    SuiteSpec::parse(suite)
+        .and_then(|s| s.load())
+        .map_err(|e| usage(e.to_string()))
+}
+
+/// The work of one planned record: a pounding run and at most one run
+/// without contact, each counted at its nominal steps.
+pub fn record_steps(params: &Params) -> f64 {
+    2.0 * run_steps(params)
+}
+
+/// The work of every planned record of a study.
+pub fn work_of<'a>(plans: impl IntoIterator<Item = &'a MemberPlan>) -> Work {
+    Work {
+        steps: plans.into_iter().map(|m| record_steps(&m.params)).sum(),
+        rows: 0.0,
+    }
+}
+
 /// Loads the suite of `args`, plans every record before any run (a zero
 /// record or Π-groups out of range fail at once, naming the record), and
 /// runs them in parallel with progress; `what` names the request in the
 /// work bound's message.
 pub fn run(args: &SuiteArgs, what: &str) -> Result<Ran, CliError> {
     let (preset, case) = case_of(args)?;
-    let spec = SuiteSpec::parse(&args.suite).map_err(|e| usage(e.to_string()))?;
-    let members = spec.load().map_err(|e| usage(e.to_string()))?;
+    let members = members(&args.suite)?;
     let plans = plan(&case, &members).map_err(|e| usage(e.to_string()))?;
-    // Each record is one pounding run and at most one run without contact.
-    let work = Work {
-        steps: plans.iter().map(|m| 2.0 * run_steps(&m.params)).sum(),
-        rows: 0.0,
-    };
+    let work = work_of(&plans);
     work.check(what, args.long.allow_long, false)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
     let runs = run_suite(&case, &members, &plans, &|r: &SuiteRun| {
-        progress.add(2.0 * run_steps(&r.params))
+        progress.add(record_steps(&r.params))
     });
     drop(progress);
     Ok(Ran {
