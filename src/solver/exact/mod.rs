@@ -38,6 +38,7 @@ pub mod contact_rk;
 pub mod driver;
 pub mod dynamics;
 pub mod energy;
+pub mod linear_map;
 pub mod peaks;
 pub mod quiet;
 pub mod roots;

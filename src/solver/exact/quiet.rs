@@ -31,8 +31,8 @@ use super::dynamics::{Branch, Structure, oscillator};
 use super::roots::cleared;
 use super::series::Series;
 
-/// Number of inputs: x₀, ẋ₀, sin τ₀, cos τ₀, Q/m.
-const INPUTS: usize = 5;
+/// The inputs x − x*, ẋ, sin τ₀, cos τ₀, Q/m ([`linear_map`]).
+use super::linear_map::{self, INPUTS};
 
 /// The unit responses of one structure on one branch kind over length h.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -95,14 +95,7 @@ impl Transition {
             oscillator(c, k, 0.0, 0.0, 0.0, &ground_cos, n),
             oscillator(c, k, 1.0, 0.0, 0.0, &zero, n),
         ];
-        let mut end = [[0.0; 2]; INPUTS];
-        let mut swing = [[0.0; 2]; INPUTS];
-        for (j, u) in units.iter().enumerate() {
-            let mut du = Series::default();
-            let (sx, sv) = u.derivative_and_swings_into(h, &mut du);
-            end[j] = [u.value(h), du.value(h)];
-            swing[j] = [sx, sv];
-        }
+        let (end, swing) = linear_map::ends_and_swings(&units, h, &mut [Series::default(); INPUTS]);
         // x_p'' + c x_p' + K x_p = −sin τ: (K − 1) P − c Q = −1, c P + (K − 1) Q = 0.
         let d = (k - 1.0) * (k - 1.0) + c * c;
         let (steady, steady_amplitude) = if d > 0.0 {
@@ -133,24 +126,14 @@ impl Transition {
     /// Returns the inputs and the equilibrium they were taken from (0 without one).
     #[inline]
     pub fn inputs(&self, x: f64, v: f64, phasor: [f64; 2], load: f64) -> ([f64; INPUTS], f64) {
-        if self.stiffness > 0.0 {
-            let equilibrium = load * self.inverse_stiffness;
-            ([x - equilibrium, v, phasor[0], phasor[1], 0.0], equilibrium)
-        } else {
-            ([x, v, phasor[0], phasor[1], load], 0.0)
-        }
+        linear_map::inputs(self.stiffness, self.inverse_stiffness, x, v, phasor, load)
     }
 
     /// (x, ẋ) at the segment's end, for inputs from [`Transition::inputs`]
     /// and the equilibrium they were taken from.
     #[inline]
     pub fn advance(&self, inputs: &[f64; INPUTS], equilibrium: f64) -> [f64; 2] {
-        let mut y = [equilibrium, 0.0];
-        for (u, e) in inputs.iter().zip(&self.end) {
-            y[0] += u * e[0];
-            y[1] += u * e[1];
-        }
-        y
+        linear_map::advance(&self.end, inputs, equilibrium)
     }
 
     /// The same over 2h: the segment twice, the second from the state and
@@ -208,16 +191,10 @@ impl Transition {
     /// infinite where K = 0 (no split).
     #[inline]
     pub fn swing(&self, inputs: &[f64; INPUTS]) -> [f64; 2] {
-        let Some(swing) = &self.series_swing else {
-            return self.split_swing(inputs);
-        };
-        let mut s = [0.0; 2];
-        for (u, w) in inputs.iter().zip(swing) {
-            s[0] += u.abs() * w[0];
-            s[1] += u.abs() * w[1];
+        match &self.series_swing {
+            Some(swing) => linear_map::swing(swing, inputs),
+            None => self.split_swing(inputs),
         }
-        // The bounds are sums of products: allow for their own round-off.
-        s.map(|v| v * (1.0 + 1e-12))
     }
 
     /// The jerk and snap bounds of [`Majorants::new`], each lowered to its
@@ -360,31 +337,25 @@ impl Majorants {
         load: f64,
         swing: [f64; 2],
     ) -> Self {
-        let (stiffness, damping) = (t.stiffness, t.damping);
-        let a0 = load - damping * v - stiffness * x - phasor[0];
-        let j0 = -damping * a0 - stiffness * v - phasor[1];
-        let (from_equilibrium, free_load) = if stiffness > 0.0 {
-            ((x - load * t.inverse_stiffness).abs(), 0.0)
-        } else {
-            (0.0, load.abs())
-        };
-        let reach_x = from_equilibrium + swing[0];
-        let reach_v = v.abs() + swing[1];
-        let accel = damping * reach_v + stiffness * reach_x + free_load + GROUND_BOUND;
-        let jerk = damping * accel + stiffness * reach_v + GROUND_BOUND;
-        let snap = damping * jerk + stiffness * accel + GROUND_BOUND;
+        let [a0, j0, jerk, snap] = linear_map::derivative_bounds(
+            t.stiffness,
+            t.inverse_stiffness,
+            t.damping,
+            x,
+            v,
+            phasor,
+            load,
+            swing,
+            [GROUND_BOUND; 3],
+        );
         // The split costs a square root; over the short segments whose swings
         // the series give, measured, it does not repay it.
         let (jerk, snap) = match t.series_swing {
             Some(_) => (jerk, snap),
             None => t.split_bounds(x, v, phasor, load, jerk, snap),
         };
-        // The bounds are sums of products: allow for their own round-off.
-        let margin = 1.0 + 1e-12;
-        Majorants {
-            x: [x, v, 0.5 * a0, margin * jerk / 6.0],
-            v: [v, a0, 0.5 * j0, margin * snap / 6.0],
-        }
+        let [x, v] = linear_map::cubic_majorants(x, v, a0, j0, jerk, snap);
+        Majorants { x, v }
     }
 }
 

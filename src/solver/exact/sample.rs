@@ -30,8 +30,9 @@ use super::dynamics::{Branch, Structure, oscillator};
 use super::quiet::Bands;
 use super::series::{MAX_DEGREE, Series};
 
-/// Number of inputs: x − x*, ẋ, g_k, s, Q/m.
-pub const INPUTS: usize = 5;
+use super::linear_map;
+/// The inputs x − x*, ẋ, g_k, s, Q/m ([`linear_map`]).
+pub use super::linear_map::INPUTS;
 
 /// The unit responses of one structure on one branch kind over one sample interval.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -78,16 +79,9 @@ impl SampleMap {
             oscillator(c, k, 0.0, 0.0, 0.0, &ramp, n),
             oscillator(c, k, 1.0, 0.0, 0.0, &zero, n),
         ];
-        let mut end = [[0.0; 2]; INPUTS];
-        let mut swing = [[0.0; 2]; INPUTS];
         let mut rates = [Series::default(); INPUTS];
+        let (end, swing) = linear_map::ends_and_swings(&units, h, &mut rates);
         let mut moment = [0.0; INPUTS];
-        for (j, u) in units.iter().enumerate() {
-            let du = &mut rates[j];
-            let (sx, sv) = u.derivative_and_swings_into(h, du);
-            end[j] = [u.value(h), du.value(h)];
-            swing[j] = [sx, sv];
-        }
         let mut gram = [[0.0; INPUTS]; INPUTS];
         if with_work {
             // h^e/e for e = 1 … 2n + 2.
@@ -131,24 +125,14 @@ impl SampleMap {
     /// this branch under g = g_k + s t, and the equilibrium x* they were
     /// taken from (0 where K = 0, the load then an input of its own).
     #[inline(always)]
-    pub fn inputs(&self, x: f64, v: f64, [g, slope]: [f64; 2], load: f64) -> ([f64; INPUTS], f64) {
-        if self.stiffness > 0.0 {
-            let equilibrium = load * self.inverse_stiffness;
-            ([x - equilibrium, v, g, slope, 0.0], equilibrium)
-        } else {
-            ([x, v, g, slope, load], 0.0)
-        }
+    pub fn inputs(&self, x: f64, v: f64, ground: [f64; 2], load: f64) -> ([f64; INPUTS], f64) {
+        linear_map::inputs(self.stiffness, self.inverse_stiffness, x, v, ground, load)
     }
 
     /// (x, ẋ) at the interval's end.
     #[inline(always)]
     pub fn advance(&self, inputs: &[f64; INPUTS], equilibrium: f64) -> [f64; 2] {
-        let mut y = [equilibrium, 0.0];
-        for (u, e) in inputs.iter().zip(&self.end) {
-            y[0] += u * e[0];
-            y[1] += u * e[1];
-        }
-        y
+        linear_map::advance(&self.end, inputs, equilibrium)
     }
 
     /// One interval by the swing bounds alone: whether they keep x, ẋ and
@@ -176,13 +160,7 @@ impl SampleMap {
     /// Bounds of |x − x₀| and |ẋ − ẋ₀| over the interval: Σ_j |input_j| swing_j.
     #[inline(always)]
     pub fn swing(&self, inputs: &[f64; INPUTS]) -> [f64; 2] {
-        let mut s = [0.0; 2];
-        for (u, w) in inputs.iter().zip(&self.swing) {
-            s[0] += u.abs() * w[0];
-            s[1] += u.abs() * w[1];
-        }
-        // The bounds are sums of products: allow for their own round-off.
-        s.map(|v| v * (1.0 + 1e-12))
+        linear_map::swing(&self.swing, inputs)
     }
 }
 
@@ -197,7 +175,8 @@ impl SampleMap {
 /// |x⁽³⁾| ≤ J = (c/m) A + (K/m) V + |s|,   |x⁽⁴⁾| ≤ (c/m) J + (K/m) A
 /// ```
 ///
-/// (where K = 0, |Q/m| joins A).
+/// (where K = 0, |Q/m| joins A): [`linear_map::derivative_bounds`] with the
+/// record's ground bounds (G, |s|, 0).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct SampleMajorants {
     pub x: [f64; 4],
@@ -216,26 +195,22 @@ impl SampleMajorants {
         load: f64,
         swing: [f64; 2],
     ) -> Self {
-        let (stiffness, damping, h) = (map.stiffness, map.damping, map.length);
-        let a0 = load - damping * v - stiffness * x - g;
-        let j0 = -damping * a0 - stiffness * v - slope;
-        let (from_equilibrium, free_load) = if stiffness > 0.0 {
-            ((x - load * map.inverse_stiffness).abs(), 0.0)
-        } else {
-            (0.0, load.abs())
-        };
-        let reach_x = from_equilibrium + swing[0];
-        let reach_v = v.abs() + swing[1];
-        let ground = g.abs().max((g + slope * h).abs());
-        let accel = damping * reach_v + stiffness * reach_x + free_load + ground;
-        let jerk = damping * accel + stiffness * reach_v + slope.abs();
-        let snap = damping * jerk + stiffness * accel;
-        // The bounds are sums of products: allow for their own round-off.
-        let margin = 1.0 + 1e-12;
-        SampleMajorants {
-            x: [x, v, 0.5 * a0, margin * jerk / 6.0],
-            v: [v, a0, 0.5 * j0, margin * snap / 6.0],
-        }
+        let h = map.length;
+        // On the interval g = g_k + s t: |g| is largest at an end, g' = s, g'' = 0.
+        let ground = [g.abs().max((g + slope * h).abs()), slope.abs(), 0.0];
+        let [a0, j0, jerk, snap] = linear_map::derivative_bounds(
+            map.stiffness,
+            map.inverse_stiffness,
+            map.damping,
+            x,
+            v,
+            [g, slope],
+            load,
+            swing,
+            ground,
+        );
+        let [x, v] = linear_map::cubic_majorants(x, v, a0, j0, jerk, snap);
+        SampleMajorants { x, v }
     }
 }
 
