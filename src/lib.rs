@@ -24,7 +24,10 @@
 //! The front ends sit on top and are compiled only with the default `app`
 //! feature (which brings clap, crossterm, ratatui and indicatif): `cli`,
 //! the command line, and `tui`, the terminal explorer. Without it,
-//! `cargo build --lib --no-default-features` builds the physics alone.
+//! `cargo build --lib --no-default-features` builds the physics alone. The
+//! `commands` feature alone compiles `cli`'s commands (their arguments,
+//! plans and typed reports) without a terminal: no explorer, no progress
+//! bar. The Python module is built on it.
 //!
 //! ```
 //! use pounding::{model::SET1, solver};
@@ -34,7 +37,7 @@
 
 pub mod accuracy;
 pub mod analysis;
-#[cfg(feature = "app")]
+#[cfg(feature = "commands")]
 pub mod cli;
 pub mod figure;
 pub mod model;

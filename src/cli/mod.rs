@@ -29,8 +29,10 @@ pub mod similarity;
 pub mod spectrum;
 pub mod stress;
 pub mod suite;
+#[cfg(feature = "app")]
 pub mod tui;
 
+#[cfg(feature = "app")]
 use clap::{Parser, Subcommand};
 
 /// A command's failure, with the exit code it maps to.
@@ -78,6 +80,7 @@ impl From<crate::model::PresetError> for CliError {
     }
 }
 
+#[cfg(feature = "app")]
 #[derive(Debug, Parser)]
 #[command(
     name = "pounding",
@@ -98,6 +101,7 @@ pub struct Cli {
     pub tui: tui::TuiArgs,
 }
 
+#[cfg(feature = "app")]
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Run one simulation and print its peaks, impacts and energy balance.
@@ -128,6 +132,7 @@ pub enum Command {
     Records(records::RecordsArgs),
 }
 
+#[cfg(feature = "app")]
 /// Parses the command line and runs the chosen command.
 pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32 {
     let cli = match Cli::try_parse_from(args) {

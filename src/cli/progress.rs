@@ -1,16 +1,34 @@
 //! A progress bar with a time estimate on stderr, for work estimated at
 //! over a second, and only when stderr is a terminal (never in a pipe or a log).
+//!
+//! Without the `app` feature (the commands built for the Python module)
+//! there is no terminal to draw on, and no bar is ever shown.
 
-use std::io::IsTerminal;
-use std::time::Duration;
-
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+#[cfg(feature = "app")]
+use indicatif::ProgressBar;
 
 use super::budget::Work;
 use crate::solver::{Observer, Sample};
 
 /// Work estimated below this many seconds gets no bar.
 pub const SHOW_ABOVE_SECONDS: f64 = 1.0;
+
+/// Without a terminal front end there is no bar: a type with no values.
+#[cfg(not(feature = "app"))]
+enum ProgressBar {}
+
+#[cfg(not(feature = "app"))]
+impl ProgressBar {
+    fn set_position(&self, _: u64) {
+        match *self {}
+    }
+    fn inc(&self, _: u64) {
+        match *self {}
+    }
+    fn finish_and_clear(&self) {
+        match *self {}
+    }
+}
 
 /// Progress in steps of a request; hidden when not shown.
 pub struct Progress {
@@ -20,22 +38,7 @@ pub struct Progress {
 impl Progress {
     /// A bar for `work` if it is worth one and stderr is a terminal.
     pub fn start(work: &Work) -> Progress {
-        let show = work.seconds() > SHOW_ABOVE_SECONDS && std::io::stderr().is_terminal();
-        Progress {
-            bar: show.then(|| {
-                let bar = ProgressBar::with_draw_target(
-                    Some(work.steps.max(1.0) as u64),
-                    ProgressDrawTarget::stderr_with_hz(4),
-                );
-                if let Ok(style) = ProgressStyle::with_template(
-                    "{elapsed:>4} [{wide_bar}] {percent:>3}%  about {eta} left",
-                ) {
-                    bar.set_style(style.progress_chars("=> "));
-                }
-                bar.enable_steady_tick(Duration::from_millis(250));
-                bar
-            }),
-        }
+        Progress { bar: bar_for(work) }
     }
 
     pub fn is_shown(&self) -> bool {
@@ -55,6 +58,31 @@ impl Progress {
             bar.inc(steps as u64);
         }
     }
+}
+
+#[cfg(feature = "app")]
+fn bar_for(work: &Work) -> Option<ProgressBar> {
+    use indicatif::{ProgressDrawTarget, ProgressStyle};
+    use std::io::IsTerminal;
+    let show = work.seconds() > SHOW_ABOVE_SECONDS && std::io::stderr().is_terminal();
+    show.then(|| {
+        let bar = ProgressBar::with_draw_target(
+            Some(work.steps.max(1.0) as u64),
+            ProgressDrawTarget::stderr_with_hz(4),
+        );
+        if let Ok(style) = ProgressStyle::with_template(
+            "{elapsed:>4} [{wide_bar}] {percent:>3}%  about {eta} left",
+        ) {
+            bar.set_style(style.progress_chars("=> "));
+        }
+        bar.enable_steady_tick(std::time::Duration::from_millis(250));
+        bar
+    })
+}
+
+#[cfg(not(feature = "app"))]
+fn bar_for(_: &Work) -> Option<ProgressBar> {
+    None
 }
 
 impl Drop for Progress {
