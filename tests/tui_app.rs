@@ -196,6 +196,8 @@ fn full_texts() -> Vec<String> {
         risk::REFERENCE_NOTE.to_string(),
         "left drift [mm] (16–84 %)".to_string(),
         "P(pounding | IM) no fit:".to_string(),
+        // The title before a fit's θ and β.
+        "P(pounding | IM)".to_string(),
         "at d ".to_string(),
     ]);
     let own = pounding::model::ContactModel::ImprovedKelvin;
@@ -1064,7 +1066,13 @@ fn a_risk_picture_comes_coarse_first_and_a_newer_job_cancels_it() {
             Output::Risk {
                 output: RiskOutput::Picture { picture, full },
                 ..
-            } => passes.push((at - start, picture.records, picture.drift.len(), full)),
+            } => passes.push((
+                at - start,
+                picture.records,
+                picture.drift.len(),
+                full,
+                picture.fragility,
+            )),
             Output::Done { cancelled, .. } => {
                 assert!(!cancelled);
                 break;
@@ -1072,9 +1080,25 @@ fn a_risk_picture_comes_coarse_first_and_a_newer_job_cancels_it() {
             other => panic!("{other:?}"),
         }
     }
-    assert_eq!(passes.len(), 2, "{passes:?}");
+    // Set 1's buildings pound at every level from 0.12 g and at none below:
+    // the ten levels leave the fit without a β, and the full pass runs once
+    // more with six levels inside that bracket, where it finds one.
+    assert_eq!(passes.len(), 3, "{passes:?}");
     assert_eq!((passes[0].1, passes[0].2, passes[0].3), (6, 4, false));
     assert_eq!((passes[1].1, passes[1].2, passes[1].3), (20, 10, true));
+    assert_eq!((passes[2].1, passes[2].2, passes[2].3), (20, 16, true));
+    use pounding::analysis::fragility::Fragility;
+    assert!(
+        matches!(passes[1].4, Fragility::Separated { .. }),
+        "{passes:?}"
+    );
+    match passes[2].4 {
+        // Between the last level without pounding and the first with it everywhere.
+        Fragility::Fitted { theta, beta, .. } => {
+            assert!(theta > 0.06 && theta < 0.12 && beta > 0.0, "{passes:?}")
+        }
+        _ => panic!("no fit after the bridging levels: {passes:?}"),
+    }
     // Job 2 at another level: its coarse pass, then job 3 at once.
     let start = Instant::now();
     w.submit(risk(2, 0.25));

@@ -143,6 +143,47 @@ pub enum Fragility {
     NotIncreasing { fraction: f64 },
 }
 
+/// Levels to run where a fit found the outcomes [`Fragility::Separated`]:
+/// `count` levels spaced evenly in ln x strictly between the highest level
+/// where every run survived and the lowest where every run exceeded. The
+/// MLE of SPEC §12 needs mixed outcomes at two levels or more to pin β > 0;
+/// the limit state is crossed inside that bracket, so that is where the
+/// new levels can find them. The bracket is read from `levels` (the levels
+/// run, ascending): below `below` and above `above` when a single level
+/// holds both outcomes, or the half and the double of it at the ends of
+/// the levels. Empty for any other outcome. Levels are rounded to 12
+/// significant digits, as `--levels` rounds its grid.
+pub fn bridging_levels(levels: &[f64], fit: &Fragility, count: usize) -> Vec<f64> {
+    let Fragility::Separated { below, above } = *fit else {
+        return Vec::new();
+    };
+    let lower = levels
+        .iter()
+        .copied()
+        .filter(|&x| x < below)
+        .fold(below / 2.0, f64::max);
+    let upper = levels
+        .iter()
+        .copied()
+        .filter(|&x| x > above)
+        .fold(2.0 * above, f64::min);
+    let span = |from: f64, to: f64, n: usize| {
+        (1..=n).map(move |k| {
+            let x = from * (to / from).powf(k as f64 / (n + 1) as f64);
+            format!("{x:.11e}").parse().unwrap_or(x)
+        })
+    };
+    if below < above {
+        span(below, above, count).collect()
+    } else {
+        // One level holds both outcomes: the crossing lies on either side.
+        let half = count / 2;
+        span(lower, below, count - half)
+            .chain(span(below, upper, half))
+            .collect()
+    }
+}
+
 /// P(exceed | IM = x) = Φ(ln(x/θ)/β) (SPEC §12): 0 at x = 0.
 pub fn probability(x: f64, theta: f64, beta: f64) -> f64 {
     normal::cdf((x / theta).ln() / beta)
@@ -803,5 +844,46 @@ mod tests {
         assert_eq!(j, r#"{"outcome":"separated","below":0.4,"above":0.5}"#);
         let j = serde_json::to_string(&Fragility::TooFewRecords).unwrap();
         assert_eq!(j, r#"{"outcome":"too_few_records"}"#);
+    }
+
+    #[test]
+    fn bridging_levels_fall_inside_the_separating_bracket() {
+        let levels = [0.06, 0.12, 0.18, 0.24];
+        let apart = Fragility::Separated {
+            below: 0.06,
+            above: 0.12,
+        };
+        let x = bridging_levels(&levels, &apart, 3);
+        assert_eq!(x.len(), 3);
+        // ln-spaced: 0.06·2^(k/4), k = 1, 2, 3.
+        for (k, &v) in x.iter().enumerate() {
+            let want = 0.06 * 2f64.powf((k + 1) as f64 / 4.0);
+            // 12 significant digits.
+            assert!((v - want).abs() < 1e-11 * want, "{v} against {want}");
+        }
+        let one = Fragility::Separated {
+            below: 0.12,
+            above: 0.12,
+        };
+        let x = bridging_levels(&levels, &one, 4);
+        assert_eq!(x.len(), 4);
+        assert!(x[..2].iter().all(|&v| v > 0.06 && v < 0.12), "{x:?}");
+        assert!(x[2..].iter().all(|&v| v > 0.12 && v < 0.18), "{x:?}");
+        // At the lowest level the bracket opens to half of it.
+        let low = Fragility::Separated {
+            below: 0.06,
+            above: 0.06,
+        };
+        let x = bridging_levels(&levels, &low, 2);
+        assert!(
+            x[0] > 0.03 && x[0] < 0.06 && x[1] > 0.06 && x[1] < 0.12,
+            "{x:?}"
+        );
+        let fitted = Fragility::Fitted {
+            theta: 0.1,
+            beta: 0.3,
+            log_likelihood: -1.0,
+        };
+        assert!(bridging_levels(&levels, &fitted, 4).is_empty());
     }
 }

@@ -9,6 +9,7 @@
 use std::cell::RefCell;
 
 use super::physical::Base;
+use crate::analysis::fragility::bridging_levels;
 use crate::analysis::risk::{RiskPicture, risk};
 use crate::analysis::suite::{Scaling, SuiteCase};
 use crate::model::intensity::IntensityMeasure;
@@ -143,7 +144,8 @@ fn members(suite: &str) -> Result<Vec<SuiteMember>, String> {
     })
 }
 
-/// The two passes of `spec` while `current()` holds; false if stopped.
+/// The passes of `spec` (coarse, full, and the full one again with
+/// bridging levels when its fit needs them) while `current()` holds; false if stopped.
 pub fn run_risk(spec: &RiskSpec, current: &dyn Fn() -> bool, send: &dyn Fn(RiskOutput)) -> bool {
     let members = match members(&spec.suite) {
         Ok(m) => m,
@@ -175,17 +177,46 @@ pub fn run_risk(spec: &RiskSpec, current: &dyn Fn() -> bool, send: &dyn Fn(RiskO
         if !current() {
             return false;
         }
-        match risk(&case, members, spec.design_level, &levels, current) {
-            Ok(Some(picture)) => send(RiskOutput::Picture {
-                picture: Box::new(picture),
-                full,
-            }),
+        let pass = |levels: &[f64]| {
+            let design = spec.design_level;
+            risk(&case, members, design, levels, current).map_err(|e| e.to_string())
+        };
+        let fit = match pass(&levels) {
+            Ok(Some(picture)) => {
+                let fit = picture.fragility;
+                send(RiskOutput::Picture {
+                    picture: Box::new(picture),
+                    full,
+                });
+                fit
+            }
             Ok(None) => return false,
             Err(e) => {
-                send(RiskOutput::Error(e.to_string()));
+                send(RiskOutput::Error(e));
                 return true;
+            }
+        };
+        // Outcomes that flip between two levels leave the fit without a β:
+        // the full pass runs once more with levels inside that bracket
+        // (SPEC §12), and its picture replaces the first.
+        let bridging = bridging_levels(&levels, &fit, BRIDGING_LEVELS);
+        if full && !bridging.is_empty() {
+            let mut more = levels.clone();
+            more.extend(bridging);
+            more.sort_by(f64::total_cmp);
+            more.dedup();
+            match pass(&more) {
+                Ok(Some(picture)) => send(RiskOutput::Picture {
+                    picture: Box::new(picture),
+                    full,
+                }),
+                Ok(None) => return false,
+                Err(e) => send(RiskOutput::Error(e)),
             }
         }
     }
     true
 }
+
+/// Levels added inside the bracket where the outcomes flip.
+pub const BRIDGING_LEVELS: usize = 6;
