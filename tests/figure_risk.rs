@@ -29,11 +29,13 @@ const ORANGE: &str = "#D55E00";
 const DARK_ORANGE: &str = "#753400";
 
 /// What the tests count in an SVG: its texts, and its polylines (stroke,
-/// number of points), polygons (fill) and circles.
+/// number of points), polygons (fill), closed outlines and circles.
 struct Svg {
     texts: Vec<String>,
     polylines: Vec<(String, usize)>,
     polygons: Vec<String>,
+    /// The stroke of each closed polyline (first point = last): a hollow marker.
+    outlines: Vec<String>,
     circles: usize,
 }
 
@@ -61,6 +63,17 @@ impl Svg {
                 .collect(),
             polygons: named("polygon")
                 .map(|n| n.attribute("fill").unwrap_or("").to_string())
+                .collect(),
+            outlines: named("polyline")
+                .filter(|n| {
+                    let points: Vec<&str> = n
+                        .attribute("points")
+                        .unwrap_or("")
+                        .split_whitespace()
+                        .collect();
+                    points.len() > 3 && points.first() == points.last()
+                })
+                .map(|n| n.attribute("stroke").unwrap_or("").to_string())
                 .collect(),
             circles: named("circle").count(),
         }
@@ -142,9 +155,14 @@ fn fragility_has_markers_at_every_level_and_a_legend_per_state_and_style() {
         "fragility",
         &["--levels", "0.1:1.0:0.1", "--ductility", "2"],
     );
-    // Pounding (with pounding only) and ductility > 2 with and without:
-    // three sets of ten markers, and one marker in each legend entry.
-    assert_eq!(svg.circles, 3 * 10 + 3);
+    // Pounding (with pounding only): ten circles, and one in its legend
+    // entry. Ductility > 2 in squares, so that markers on one point stay
+    // apart: filled with pounding, hollow without (a closed outline of
+    // five points), ten each and one in each legend entry.
+    assert_eq!(svg.circles, 10 + 1);
+    assert_eq!(svg.polygons.iter().filter(|f| *f == ORANGE).count(), 10 + 1);
+    let hollow = svg.outlines.iter().filter(|s| *s == DARK_ORANGE).count();
+    assert_eq!(hollow, 10 + 1);
     let pounding = svg.texts_starting("pounding: ");
     let with = svg.texts_starting("ductility>2 (either), with pounding: ");
     let without = svg.texts_starting("ductility>2 (either), without pounding: ");

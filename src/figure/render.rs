@@ -310,7 +310,8 @@ fn draw_legend_entry<DB: DrawingBackend>(
     area.draw(&Text::new(entry.label(), (x + look.px(44.0), y), style))
 }
 
-/// An observed value: a filled circle (solid series) or a hollow one (dashed).
+/// An observed value: filled for a solid series, hollow for a dashed one,
+/// in the shape of its colour (see [`marker`]).
 fn draw_marker<DB: DrawingBackend>(
     area: &Area<DB>,
     at: (i32, i32),
@@ -321,13 +322,46 @@ fn draw_marker<DB: DrawingBackend>(
     area.draw(&marker(at, color, stroke, look))
 }
 
-fn marker<C>(at: C, color: usize, stroke: Stroke, look: &Look) -> Circle<C, i32> {
+/// The marker of palette colour `color`: a circle, a square, a triangle or
+/// a diamond, in turn, so that the observed fractions of two series that
+/// fall on one point (every record pounds, every record exceeds 1 g) stay
+/// both visible, one shape inside or around the other. Sizes are in pixels
+/// about the point, whatever the axes.
+fn marker<'a, C: Clone + 'a, DB: DrawingBackend + 'a>(
+    at: C,
+    color: usize,
+    stroke: Stroke,
+    look: &Look,
+) -> DynElement<'a, DB, C> {
     let rgb = series_color(color, stroke);
     let style = match stroke {
         Stroke::Solid => rgb.filled(),
         Stroke::Dashed => rgb.stroke_width(look.px(1.8).max(1) as u32),
     };
-    Circle::new(at, look.px(4.5).max(2), style)
+    let r = look.px(4.5).max(2);
+    let at = EmptyElement::at(at);
+    let corners = match color % 4 {
+        0 => return (at + Circle::new((0, 0), r, style)).into_dyn(),
+        1 => {
+            let h = r * 4 / 5;
+            vec![(-h, -h), (h, -h), (h, h), (-h, h)]
+        }
+        2 => {
+            let (w, top, base) = (r * 6 / 5, -(r * 6 / 5), r * 4 / 5);
+            vec![(0, top), (w, base), (-w, base)]
+        }
+        _ => {
+            let d = r * 6 / 5;
+            vec![(0, -d), (d, 0), (0, d), (-d, 0)]
+        }
+    };
+    if style.filled {
+        (at + Polygon::new(corners, style)).into_dyn()
+    } else {
+        let mut closed = corners.clone();
+        closed.push(corners[0]);
+        (at + PathElement::new(closed, style)).into_dyn()
+    }
 }
 
 /// The x range (fixed or the data's) and a y range padded by 6 % (from 0
@@ -434,7 +468,10 @@ fn draw_panel<DB: DrawingBackend>(area: &Area<DB>, panel: &Panel, look: &Look) -
             .copied()
             .filter(|(x, y)| x.is_finite() && y.is_finite());
         if s.pen == Pen::Markers {
-            chart.draw_series(points.map(|p| marker(p, s.color, s.stroke, look)))?;
+            let plot = chart.plotting_area();
+            for p in points {
+                plot.draw(&marker(p, s.color, s.stroke, look))?;
+            }
             continue;
         }
         match s.stroke {
