@@ -19,19 +19,29 @@ use serde::Serialize;
 
 use super::fragility::{self, Fragility, LevelCount};
 use super::limit_state::{self, LimitState, Observed};
-use super::suite::{MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteRunError, plan, run_member};
+use super::suite::{
+    MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteRunError, raw_intensity, replan, run_member,
+    scaled,
+};
 use crate::model::suite::SuiteMember;
 use crate::solver::RunResult;
 
 use super::demands::RunSi;
 
 /// The plans of every record at every level, level by level: level l's are
-/// those of a suite scaled to `levels[l]`.
+/// those of a suite scaled to `levels[l]`, bit for bit ([`plan`](super::suite::plan) applies
+/// the same [`scaled`] to the same measurement). Each record's intensity
+/// measure is taken once, not once per level: Sa(T) is a pass of the
+/// Nigam–Jennings map over the whole record.
 pub fn plan_levels(
     case: &SuiteCase,
     members: &[SuiteMember],
     levels: &[f64],
 ) -> Result<Vec<Vec<MemberPlan>>, SuiteRunError> {
+    let raws: Vec<f64> = members
+        .iter()
+        .map(|m| raw_intensity(m, &case.scaling.measure))
+        .collect::<Result<_, _>>()?;
     levels
         .iter()
         .map(|&level| {
@@ -42,7 +52,12 @@ pub fn plan_levels(
                 },
                 ..*case
             };
-            plan(&at_level, members)
+            let scales: Vec<(f64, f64)> = members
+                .iter()
+                .zip(&raws)
+                .map(|(m, &raw)| scaled(m, raw, Some(level)))
+                .collect();
+            replan(&at_level, members, &scales)
         })
         .collect()
 }

@@ -115,18 +115,36 @@ impl SuiteRun {
 /// The scale and intensity of a member under `scaling` (SPEC §12): s = X/IM
 /// at a level X, else the list's scale.
 pub fn scale_of(member: &SuiteMember, scaling: &Scaling) -> Result<(f64, f64), SuiteRunError> {
-    let raw = scaling.measure.measure(member.record);
+    let raw = raw_intensity(member, &scaling.measure)?;
+    Ok(scaled(member, raw, scaling.level))
+}
+
+/// The intensity measure of a member's record as recorded (scale 1), in g;
+/// an error naming the record when it is not finite and > 0 (nothing could
+/// scale it to a level).
+pub fn raw_intensity(
+    member: &SuiteMember,
+    measure: &IntensityMeasure,
+) -> Result<f64, SuiteRunError> {
+    let raw = measure.measure(member.record);
     if !(raw > 0.0 && raw.is_finite()) || member.record.peak <= 0.0 {
         return Err(SuiteRunError::ZeroIntensity {
             record: member.name.clone(),
-            measure: scaling.measure.to_string(),
+            measure: measure.to_string(),
         });
     }
-    let scale = match scaling.level {
+    Ok(raw)
+}
+
+/// The (scale, intensity) of a member whose record measures `raw`: s = X/IM
+/// at a level X, else the list's scale; the intensity is then IM·s. A
+/// study at many levels measures each record once and calls this per level.
+pub fn scaled(member: &SuiteMember, raw: f64, level: Option<f64>) -> (f64, f64) {
+    let scale = match level {
         Some(level) => level / raw,
         None => member.scale,
     };
-    Ok((scale, raw * scale))
+    (scale, raw * scale)
 }
 
 /// The parameters of one member: the buildings under the record at its
