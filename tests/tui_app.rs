@@ -935,17 +935,32 @@ fn risk_app(size: (u16, u16), level_steps_down: usize) -> App {
     a
 }
 
-/// P(pounding) over `synthetic:20` at `level` of the buildings
-/// `physical`, computed here from the library's suite runs: the fraction
-/// of records whose Π_d,min exceeds the gap, and that count.
+/// P(pounding) over `synthetic:20` at `level` of Sa(0.95 s) of the
+/// buildings `physical`, computed here from the library's suite runs: the
+/// fraction of records whose Π_d,min exceeds the gap, and that count.
 fn direct_probability(
     physical: pounding::model::physical::Physical,
     settings: pounding::model::Params,
     level: f64,
 ) -> (f64, usize, Vec<f64>) {
+    use pounding::model::intensity::IntensityMeasure;
+    direct_probability_at(
+        physical,
+        settings,
+        level,
+        IntensityMeasure::Sa { period: 0.95 },
+    )
+}
+
+/// [`direct_probability`] with the records scaled to `measure`.
+fn direct_probability_at(
+    physical: pounding::model::physical::Physical,
+    settings: pounding::model::Params,
+    level: f64,
+    measure: pounding::model::intensity::IntensityMeasure,
+) -> (f64, usize, Vec<f64>) {
     use pounding::analysis::separation::probability_of_pounding;
     use pounding::analysis::suite::{Scaling, SuiteCase, plan, run_suite};
-    use pounding::model::intensity::IntensityMeasure;
     use pounding::model::suite::SuiteSpec;
     let members = SuiteSpec::parse("synthetic:20").unwrap().load().unwrap();
     let case = SuiteCase {
@@ -955,7 +970,7 @@ fn direct_probability(
             ..settings
         },
         scaling: Scaling {
-            measure: IntensityMeasure::Sa { period: 0.95 },
+            measure,
             level: Some(level),
         },
     };
@@ -1013,6 +1028,28 @@ fn the_risk_scene_prints_the_librarys_probability_at_the_sets_gap() {
     assert!(s.contains(&shown), "{shown}\n{s}");
 }
 
+/// `o` in the risk scene scales the records to their PGA instead of
+/// Sa(T1): the probability printed is then the library's at that PGA.
+#[test]
+fn o_scales_the_risk_scenes_records_to_their_pga() {
+    use pounding::model::intensity::IntensityMeasure;
+    use pounding::model::physical::Physical;
+    let mut a = risk_app((80, 24), 4);
+    key(&mut a, KeyCode::Char('o'));
+    assert_eq!(a.risk_spec().measure, IntensityMeasure::Pga);
+    settle(&mut a);
+    let preset = a.sets[0].preset.clone();
+    let physical = Physical::from_table(preset.physical.as_ref().unwrap()).unwrap();
+    let (p, k, _) = direct_probability_at(physical, preset.params, 0.1, IntensityMeasure::Pga);
+    let s = screen(&a);
+    let shown = format!("P(pounding) {p:.2} ({k}/20) at d 25 mm");
+    assert!(s.contains(&shown) && s.contains("IM PGA"), "{shown}\n{s}");
+    assert!(s.contains("PGA [g]"), "{s}");
+    // And back to Sa(T1).
+    key(&mut a, KeyCode::Char('o'));
+    assert_eq!(a.risk_spec().measure, IntensityMeasure::Sa { period: 0.95 });
+}
+
 /// The risk scene computes suites only when shown, and a change of the
 /// design level starts a new picture that keeps the old one on screen
 /// (stale) until its first pass arrives.
@@ -1053,7 +1090,7 @@ fn a_risk_picture_comes_coarse_first_and_a_newer_job_cancels_it() {
     });
     let risk = |g, level| Job {
         generation: g,
-        risk: Some(spec_of(&pounding::model::SET1, None, level)),
+        risk: Some(spec_of(&pounding::model::SET1, None, level, false)),
         ..Job::default()
     };
     // Job 1 runs to the end (the suite is generated on its first use).

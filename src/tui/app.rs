@@ -289,7 +289,7 @@ impl App {
     /// buildings (its preset's base, or the reference one) at the design level.
     pub fn risk_spec(&self) -> RiskSpec {
         let s = &self.sets[self.active];
-        risk_job::spec_of(&s.params, s.base, self.view.risk_level)
+        risk_job::spec_of(&s.params, s.base, self.view.risk_level, self.view.risk_pga)
     }
 
     /// The map the map scene asks for: Π_ω1 across as many columns as the
@@ -545,6 +545,9 @@ impl App {
             }
             KeyCode::Char(c @ ('[' | ']')) if self.view.scene == Scene::Risk => {
                 self.view.risk_level = risk_job::stepped(self.view.risk_level, c == ']');
+            }
+            KeyCode::Char('o') if self.view.scene == Scene::Risk => {
+                self.view.risk_pga = !self.view.risk_pga;
             }
             KeyCode::Char('o') if self.view.scene == Scene::Spectrum => {
                 self.view.velocity = !self.view.velocity;

@@ -28,7 +28,7 @@ pub const KEYS: [(&str, &str); 31] = [
     ("w", "scene: spectrum against Π_ω1"),
     ("i", "scene: impact table and energy terms"),
     ("a", "scene: map (y axis, o ratio, [ ]{ })"),
-    ("x", "scene: risk over a suite ([ ] level)"),
+    ("x", "scene: risk over a suite ([ ] level, o PGA/Sa)"),
     ("u", "physical units (presets with [physical])"),
     ("[ / ]", "move the time cursor ({ } by ten)"),
     ("n / N", "cursor to the next / previous impact"),

@@ -64,14 +64,20 @@ pub fn measure_of(physical: &Physical) -> IntensityMeasure {
 /// The risk picture of a set: its buildings are the preset's base (a_p,
 /// ω_p, m2 of `[physical]`) applied to the set's current Π-groups, so a
 /// nudged gap, period or mass moves them; without a base, [`REFERENCE`].
-pub fn spec_of(params: &Params, base: Option<Base>, design_level: f64) -> RiskSpec {
+/// Records are scaled to Sa(T1) ([`measure_of`]), or to their PGA with `pga`.
+pub fn spec_of(params: &Params, base: Option<Base>, design_level: f64, pga: bool) -> RiskSpec {
     let physical = base.unwrap_or(REFERENCE).physical(params);
+    let measure = if pga {
+        IntensityMeasure::Pga
+    } else {
+        measure_of(&physical)
+    };
     RiskSpec {
         suite: SUITE.to_string(),
         physical,
         reference: base.is_none(),
         settings: *params,
-        measure: measure_of(&physical),
+        measure,
         design_level,
         levels: levels(design_level),
     }

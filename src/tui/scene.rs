@@ -174,6 +174,8 @@ pub struct View {
     pub map_cursor: Option<(usize, usize)>,
     /// The risk scene's design level (g).
     pub risk_level: f64,
+    /// The risk scene scales records to their PGA instead of Sa(T1).
+    pub risk_pga: bool,
 }
 
 /// Zoom factor of one `z`.
@@ -193,6 +195,7 @@ impl Default for View {
             map_ratio: false,
             map_cursor: None,
             risk_level: super::risk_job::DESIGN_LEVEL,
+            risk_pga: false,
         }
     }
 }
