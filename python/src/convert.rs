@@ -6,7 +6,7 @@
 
 use numpy::PyArray1;
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString};
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 
 /// The columns of `rows`, a list of dicts with the same keys (the first
 /// row's); `shape` reshapes every numeric column (a map's grid).
@@ -116,4 +116,31 @@ pub fn each<'py>(dict: &Bound<'py, PyDict>, key: &str) -> PyResult<Vec<Bound<'py
             .collect(),
         None => Ok(Vec::new()),
     }
+}
+
+/// The JSON's arrays as lists: serde writes a fixed-size array (`[f64; 2]`)
+/// as a tuple, which Python would keep as a tuple; JSON has only lists.
+pub fn tuples_to_lists(value: &Bound<'_, PyAny>) -> PyResult<()> {
+    if let Ok(dict) = value.cast::<PyDict>() {
+        for (key, item) in dict.iter() {
+            if let Ok(t) = item.cast::<PyTuple>() {
+                let list = PyList::new(value.py(), t.iter())?;
+                tuples_to_lists(&list)?;
+                dict.set_item(key, list)?;
+            } else {
+                tuples_to_lists(&item)?;
+            }
+        }
+    } else if let Ok(list) = value.cast::<PyList>() {
+        for (i, item) in list.iter().enumerate() {
+            if let Ok(t) = item.cast::<PyTuple>() {
+                let inner = PyList::new(value.py(), t.iter())?;
+                tuples_to_lists(&inner)?;
+                list.set_item(i, inner)?;
+            } else {
+                tuples_to_lists(&item)?;
+            }
+        }
+    }
+    Ok(())
 }

@@ -25,7 +25,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
 use args::{Parser, parse};
-use convert::{columns_at, each};
+use convert::{columns_at, each, tuples_to_lists};
 use error::{Failure, guarded};
 
 thread_local! {
@@ -50,9 +50,10 @@ where
         guarded(|| {
             let mut emit = |r: &dyn Emit| {
                 report = Some(Python::attach(|py| {
-                    pythonize::pythonize(py, r)
-                        .map(Bound::unbind)
-                        .map_err(|e| Failure::Failed(format!("to Python: {e}")))
+                    let value = pythonize::pythonize(py, r)
+                        .map_err(|e| Failure::Failed(format!("to Python: {e}")))?;
+                    tuples_to_lists(&value)?;
+                    Ok(value.unbind())
                 }));
                 Ok(())
             };

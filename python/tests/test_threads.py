@@ -1,0 +1,22 @@
+"""Calls from several Python threads at once give the serial results."""
+
+from concurrent.futures import ThreadPoolExecutor
+
+import pounding
+
+
+def case(omega1):
+    r = pounding.run(preset="set1", method="exact", omega1=omega1)
+    s = pounding.spectrum(preset="set2", omega1=f"{omega1}:{omega1 + 0.5}:0.1")
+    return (
+        {k: v for k, v in r.items() if k != "elapsed_ms"},
+        [s["left"]["peak_displacement"].tolist(), s["right"]["peak_velocity"].tolist()],
+    )
+
+
+def test_threads_give_the_serial_results():
+    values = [0.5 + 0.1 * i for i in range(12)]
+    serial = [case(v) for v in values]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        parallel = list(pool.map(case, values))
+    assert parallel == serial
