@@ -123,8 +123,7 @@ def _keys_text() -> str:
 
 _KEYS = _keys_text()
 
-_COMMON = """
-    preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
+_COMMON = """preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
     model: contact law, kelvin, improved-kelvin, hertz, hertzdamp, jankowski or hunt-crossley.
     excitation: sine, pulse-a, pulse-b, pulse-c1, pulse-c2 or ``record:PATH[@UNIT]``.
     method: newmark or exact.
@@ -143,9 +142,9 @@ def _doc(f):
 
 @_doc
 def run(
+    *,
     preset: Optional[str] = None,
     method: Optional[str] = None,
-    *,
     history: bool = False,
     **keys: Any,
 ) -> dict:
@@ -163,7 +162,7 @@ def run(
 
 
 @_doc
-def spectrum(preset: Optional[str] = None, **keys: Any) -> dict:
+def spectrum(*, preset: Optional[str] = None, **keys: Any) -> dict:
     """Response spectra over Π_ω1: the dict of ``pounding spectrum --format json``.
 
     Each curve's points are numpy arrays (``curves[i]["left"]["peak_displacement"]``
@@ -179,7 +178,7 @@ def spectrum(preset: Optional[str] = None, **keys: Any) -> dict:
 
 
 @_doc
-def map(x: str, y: str, preset: Optional[str] = None, **keys: Any) -> dict:  # noqa: A001
+def map(x: str, y: str, *, preset: Optional[str] = None, **keys: Any) -> dict:  # noqa: A001
     """The left structure's regions over two parameters: ``pounding map --format json``.
 
     x, y: the axes, ``KEY=START:STOP:STEP`` (a Π key or mu).
@@ -191,7 +190,7 @@ def map(x: str, y: str, preset: Optional[str] = None, **keys: Any) -> dict:  # n
 
 
 @_doc
-def gap(preset: Optional[str] = None, **keys: Any) -> dict:
+def gap(*, preset: Optional[str] = None, **keys: Any) -> dict:
     """The smallest gap that prevents pounding: ``pounding gap --format json``.
 
     x: sweep one parameter, ``KEY=START:STOP:STEP``; mu: frequency ratio.
@@ -203,7 +202,7 @@ def gap(preset: Optional[str] = None, **keys: Any) -> dict:
 
 
 @_doc
-def suite(suite: str, preset: Optional[str] = None, **keys: Any) -> dict:
+def suite(suite: str, *, preset: Optional[str] = None, **keys: Any) -> dict:
     """One physical pair under a suite of records: ``pounding suite --format json``.
 
     suite: a directory, a list file, or ``synthetic:N[@SEED]``.
@@ -216,7 +215,7 @@ def suite(suite: str, preset: Optional[str] = None, **keys: Any) -> dict:
 
 
 @_doc
-def ida(suite: str, levels: str, preset: Optional[str] = None, **keys: Any) -> dict:
+def ida(suite: str, levels: str, *, preset: Optional[str] = None, **keys: Any) -> dict:
     """Incremental dynamic analysis: ``pounding ida --format json``.
 
     suite: the records; levels: intensities in g, START:STOP:STEP or X1,X2,…
@@ -228,7 +227,7 @@ def ida(suite: str, levels: str, preset: Optional[str] = None, **keys: Any) -> d
 
 
 @_doc
-def fragility(suite: str, levels: str, preset: Optional[str] = None, **keys: Any) -> dict:
+def fragility(suite: str, levels: str, *, preset: Optional[str] = None, **keys: Any) -> dict:
     """The fragility of each limit state, with and without pounding: the
     IDA's ``fragility`` and metadata, its levels as ``levels`` (an array, g).
 
