@@ -53,17 +53,16 @@ fn column_value<'py>(
             .collect::<PyResult<_>>()?;
         return reshape(PyArray1::from_vec(py, values).into_any());
     }
-    if column
+    let ints = column
         .iter()
-        .all(|v| v.is_instance_of::<PyInt>() && !v.is_instance_of::<PyBool>())
-    {
-        if let Ok(values) = column
+        .all(|v| v.is_instance_of::<PyInt>() && !v.is_instance_of::<PyBool>());
+    if ints
+        && let Ok(values) = column
             .iter()
             .map(|v| v.extract::<i64>())
             .collect::<PyResult<Vec<_>>>()
-        {
-            return reshape(PyArray1::from_vec(py, values).into_any());
-        }
+    {
+        return reshape(PyArray1::from_vec(py, values).into_any());
     }
     if let Some(values) = column.iter().map(float).collect::<Option<Vec<f64>>>() {
         // All missing is no column of numbers.
@@ -98,10 +97,10 @@ fn float(v: &Bound<'_, PyAny>) -> Option<f64> {
 
 /// Replaces the list `dict[key]` by its columns.
 pub fn columns_at(dict: &Bound<'_, PyDict>, key: &str, shape: Option<[usize; 2]>) -> PyResult<()> {
-    if let Some(rows) = dict.get_item(key)? {
-        if let Ok(rows) = rows.cast::<PyList>() {
-            dict.set_item(key, columns(rows, shape)?)?;
-        }
+    if let Some(rows) = dict.get_item(key)?
+        && let Ok(rows) = rows.cast::<PyList>()
+    {
+        dict.set_item(key, columns(rows, shape)?)?;
     }
     Ok(())
 }
@@ -123,24 +122,32 @@ pub fn each<'py>(dict: &Bound<'py, PyDict>, key: &str) -> PyResult<Vec<Bound<'py
 pub fn tuples_to_lists(value: &Bound<'_, PyAny>) -> PyResult<()> {
     if let Ok(dict) = value.cast::<PyDict>() {
         for (key, item) in dict.iter() {
-            if let Ok(t) = item.cast::<PyTuple>() {
-                let list = PyList::new(value.py(), t.iter())?;
-                tuples_to_lists(&list)?;
+            if let Some(list) = listed(&item)? {
                 dict.set_item(key, list)?;
-            } else {
-                tuples_to_lists(&item)?;
             }
         }
     } else if let Ok(list) = value.cast::<PyList>() {
         for (i, item) in list.iter().enumerate() {
-            if let Ok(t) = item.cast::<PyTuple>() {
-                let inner = PyList::new(value.py(), t.iter())?;
-                tuples_to_lists(&inner)?;
+            if let Some(inner) = listed(&item)? {
                 list.set_item(i, inner)?;
-            } else {
-                tuples_to_lists(&item)?;
             }
         }
     }
     Ok(())
+}
+
+/// `item` with its tuples as lists: the list that replaces it if it is a
+/// tuple, `None` if it stays (its insides changed in place).
+fn listed<'py>(item: &Bound<'py, PyAny>) -> PyResult<Option<Bound<'py, PyList>>> {
+    match item.cast::<PyTuple>() {
+        Ok(t) => {
+            let list = PyList::new(item.py(), t.iter())?;
+            tuples_to_lists(&list)?;
+            Ok(Some(list))
+        }
+        Err(_) => {
+            tuples_to_lists(item)?;
+            Ok(None)
+        }
+    }
 }

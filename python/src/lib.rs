@@ -125,11 +125,11 @@ fn spectrum(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<P
     for curve in &curves {
         columns_at(curve, "points", None)?;
     }
-    if let [curve] = curves.as_slice() {
-        if let Some(points) = curve.get_item("points")? {
-            for (k, v) in points.cast::<PyDict>()?.iter() {
-                dict.set_item(k, v)?;
-            }
+    if let [curve] = curves.as_slice()
+        && let Some(points) = curve.get_item("points")?
+    {
+        for (k, v) in points.cast::<PyDict>()?.iter() {
+            dict.set_item(k, v)?;
         }
     }
     Ok(report)
