@@ -133,3 +133,11 @@ def test_presets_and_params(cli):
     assert omega1.symbol == "Π_ω1" and omega1.kind == "number"
     assert omega1.default == pounding.run(preset="set1")["params"]["omega1"]
     assert pounding.Params.field("model").choices and math.isfinite(omega1.max)
+
+
+def test_gap_over_a_suite_is_the_cli_json(cli):
+    ours = pounding.gap(suite="synthetic:5", preset="two-buildings", level=0.2)
+    theirs = cli.json("gap", "--suite", "synthetic:5", "--preset", "two-buildings", "--level", "0.2")
+    assert list(ours["records"]["record"]) == [r["record"] for r in theirs["records"]]
+    assert [v.hex() for v in ours["records"]["min_gap_m"]] == [r["min_gap_m"].hex() for r in theirs["records"]]
+    same(ours["study"], theirs["study"])

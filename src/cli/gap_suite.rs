@@ -26,8 +26,8 @@ fn usage(message: String) -> CliError {
 }
 
 /// Runs the suite of `suite_args` and reports the separation at each of
-/// `probability` (a list, [`DEFAULT_PROBABILITIES`] when `None`).
-/// The separation of a suite's buildings, its typed report handed to `emit`.
+/// `probability` (a list, [`DEFAULT_PROBABILITIES`] when `None`), its typed
+/// report handed to `emit`.
 pub fn report_with(
     suite_args: &SuiteArgs,
     probability: Option<&str>,
