@@ -45,6 +45,12 @@ fn argv(command: &Command, kwargs: &Bound<'_, PyDict>) -> Result<Vec<String>, Fa
             continue;
         }
         let key: String = key.extract()?;
+        if key == "format" {
+            return Err(Failure::Usage(
+                "format: the module returns the report itself, as Python objects; drop format"
+                    .into(),
+            ));
+        }
         let flag = key.replace('_', "-");
         let arg = command
             .get_arguments()

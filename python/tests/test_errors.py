@@ -44,3 +44,8 @@ def test_a_switch_takes_a_bool():
         pounding.run(no_pounding="yes")
     assert pounding.run(no_pounding=True)["impacts"] == 0
     assert pounding.run(no_pounding=False)["impacts"] > 0
+
+
+def test_format_is_not_an_option():
+    with pytest.raises(ValueError, match="format: the module returns the report itself"):
+        pounding.run(format="csv")
