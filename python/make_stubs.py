@@ -39,7 +39,7 @@ LIMITS = [("ductility", TEXT), ("acceleration", TEXT), ("force", TEXT)]
 COMMANDS = {
     "run": ([], [("history", "bool"), ("repeat", "int"), ("allow_large", "bool"), ("allow_unreliable", "bool")]),
     "spectrum": ([], [("omega1", TEXT), ("mu", NUMBER), ("family", TEXT)]),
-    "map": ([("x", "str"), ("y", "str")], [("mu", NUMBER)]),
+    "map": ([("x", "str"), ("y", "str")], [("mu", NUMBER), ("suite", TEXT)] + SUITE[:2]),
     "gap": ([], [("x", TEXT), ("mu", NUMBER), ("suite", TEXT), ("probability", TEXT)] + SUITE[:2]),
     "suite": ([("suite", "str")], SUITE),
     "ida": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS),

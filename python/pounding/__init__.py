@@ -183,6 +183,9 @@ def map(x: str, y: str, *, preset: Optional[str] = None, **keys: Any) -> dict:  
 
     x, y: the axes, ``KEY=START:STOP:STEP`` (a Π key or mu).
     mu: frequency ratio on an omega1 axis.
+    suite, im, level: over a suite of records, P(pounding) and the median
+        amplification, the axes then physical quantities of the preset's
+        [physical] table (m1, m2, period1, period2, yield1, yield2, gap, …).
     The cells are numpy arrays of shape (y points, x points).
     {common}
     """

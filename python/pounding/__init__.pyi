@@ -244,6 +244,9 @@ def map(
     allow_long: bool = False,
     set: Union[str, Sequence[str], None] = ...,
     mu: Union[float, str, None] = ...,
+    suite: Optional[str] = ...,
+    im: Optional[str] = ...,
+    level: Union[float, str, None] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -266,6 +269,9 @@ def map(
 
     x, y: the axes, ``KEY=START:STOP:STEP`` (a Π key or mu).
     mu: frequency ratio on an omega1 axis.
+    suite, im, level: over a suite of records, P(pounding) and the median
+        amplification, the axes then physical quantities of the preset's
+        [physical] table (m1, m2, period1, period2, yield1, yield2, gap, …).
     The cells are numpy arrays of shape (y points, x points).
     preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
     model: contact law, kelvin, improved-kelvin, hertz, hertzdamp, jankowski or hunt-crossley.

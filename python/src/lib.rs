@@ -136,22 +136,21 @@ fn spectrum(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<P
 }
 
 /// `pounding map`: the cells as columns, each numeric one a numpy array of
-/// shape (y points, x points).
+/// shape (y points, x points); with `suite`, the map of P(pounding) and the
+/// median amplification over two physical quantities.
 #[pyfunction]
 #[pyo3(signature = (**kwargs))]
 fn map(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>> {
     let args: commands::map::MapArgs = arguments(&MAP, "map", kwargs)?;
-    if args.records.suite.is_some() {
-        return Err(Failure::Usage(
-            "suite: a map over a suite of records is not available from Python; use the command line's `map --suite`".into(),
-        )
-        .into());
-    }
     let report = emitted(py, |emit| commands::map::report_with(&args, |r| emit(r)))?;
     let dict = report.bind(py).cast::<PyDict>()?;
     let points = |axis: &str| -> PyResult<usize> {
+        // A Π axis says how many points it has; a suite's physical axis lists its values.
         match dict.get_item(axis)? {
-            Some(a) => a.get_item("points")?.extract(),
+            Some(a) => match a.get_item("points") {
+                Ok(n) => n.extract(),
+                Err(_) => a.get_item("values")?.len(),
+            },
             None => Ok(0),
         }
     };

@@ -141,3 +141,15 @@ def test_gap_over_a_suite_is_the_cli_json(cli):
     assert list(ours["records"]["record"]) == [r["record"] for r in theirs["records"]]
     assert [v.hex() for v in ours["records"]["min_gap_m"]] == [r["min_gap_m"].hex() for r in theirs["records"]]
     same(ours["study"], theirs["study"])
+
+
+def test_map_over_a_suite_is_the_cli_json(cli):
+    axes = {"x": "gap=0.01:0.05:0.02", "y": "period1=0.5:1.0:0.5"}
+    ours = pounding.map(suite="synthetic:3", preset="two-buildings", **axes)
+    theirs = cli.json(
+        "map", "--suite", "synthetic:3", "--preset", "two-buildings", "--x", axes["x"], "--y", axes["y"]
+    )
+    p = ours["cells"]["pounding_probability"]
+    assert p.shape == (2, 3)
+    assert [v.hex() for v in p.ravel()] == [c["pounding_probability"].hex() for c in theirs["cells"]]
+    same(ours["x"], theirs["x"])

@@ -52,8 +52,8 @@ pub fn execute(args: &MapArgs) -> Result<(), CliError> {
     report_with(args, printer(args.output.format))
 }
 
-/// The map of `args`, its typed report handed to `emit`; over a suite
-/// (`--suite`), the map is printed as it is computed, and `emit` is not called.
+/// The map of `args` (of a suite's records with `--suite`), its typed
+/// report handed to `emit`.
 pub fn report_with(
     args: &MapArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
@@ -62,7 +62,7 @@ pub fn report_with(
         .records
         .request(&args.params, args.output, args.long, &[])?
     {
-        return super::map_suite::execute(&suite_args, &args.x, &args.y);
+        return super::map_suite::report_with(&suite_args, &args.x, &args.y, emit);
     }
     let (preset, p) = args.params.resolve_for_many()?;
     let usage = |e: crate::analysis::map::MapError| CliError::Usage(e.to_string());
