@@ -20,3 +20,24 @@ def test_threads_give_the_serial_results():
     with ThreadPoolExecutor(max_workers=4) as pool:
         parallel = list(pool.map(case, values))
     assert parallel == serial
+
+
+def test_the_gil_is_released_while_rust_computes():
+    """Python goes on in another thread while a spectrum is computed."""
+    import threading
+
+    done = threading.Event()
+    turns = 0
+
+    def work():
+        pounding.spectrum(preset="set1", omega1="0.1:3:0.005")
+        done.set()
+
+    thread = threading.Thread(target=work)
+    thread.start()
+    while not done.is_set():
+        turns += 1
+    thread.join()
+    # With the GIL held for the whole call, this loop could not turn until
+    # the spectrum were done, and would then stop at once.
+    assert turns > 1000, turns
