@@ -26,15 +26,17 @@ def test_the_gil_is_released_while_rust_computes():
     """Python goes on in another thread while a spectrum is computed."""
     import threading
 
-    done = threading.Event()
+    started, done = threading.Event(), threading.Event()
     turns = 0
 
     def work():
+        started.set()
         pounding.spectrum(preset="set1", omega1="0.1:3:0.005")
         done.set()
 
     thread = threading.Thread(target=work)
     thread.start()
+    started.wait()
     while not done.is_set():
         turns += 1
     thread.join()
