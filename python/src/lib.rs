@@ -24,7 +24,7 @@ use pounding::solver::{FullHistory, solve};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use args::{Parser, parse};
+use args::parse;
 use convert::{columns_at, each, tuples_to_lists};
 use error::{Failure, guarded};
 
@@ -63,21 +63,12 @@ where
     report.unwrap_or_else(|| Err(Failure::Failed("the command reported nothing".into())))
 }
 
-/// The arguments of a command from keywords, through its own parser.
-fn arguments<A: clap::Args + clap::FromArgMatches>(
-    parser: &'static Parser,
-    name: &'static str,
-    kwargs: Option<&Bound<'_, PyDict>>,
-) -> Result<A, Failure> {
-    parse(parser, name, kwargs)
-}
-
 /// `pounding run`: one simulation's summary, as `run --format json` gives
 /// it; with `history`, every accepted state as numpy arrays under `history`.
 #[pyfunction]
 #[pyo3(signature = (*, history = false, **kwargs))]
 fn run(py: Python<'_>, history: bool, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>> {
-    let mut args: commands::run::RunArgs = arguments(&RUN, "run", kwargs)?;
+    let mut args: commands::run::RunArgs = parse(&RUN, "run", kwargs)?;
     args.history = None;
     let report = emitted(py, |emit| commands::run::report_with(&args, |r| emit(r)))?;
     if history {
@@ -116,7 +107,7 @@ fn run(py: Python<'_>, history: bool, kwargs: Option<&Bound<'_, PyDict>>) -> PyR
 #[pyfunction]
 #[pyo3(signature = (**kwargs))]
 fn spectrum(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>> {
-    let args: commands::spectrum::SpectrumArgs = arguments(&SPECTRUM, "spectrum", kwargs)?;
+    let args: commands::spectrum::SpectrumArgs = parse(&SPECTRUM, "spectrum", kwargs)?;
     let report = emitted(py, |emit| {
         commands::spectrum::report_with(&args, |r| emit(r))
     })?;
@@ -141,7 +132,7 @@ fn spectrum(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<P
 #[pyfunction]
 #[pyo3(signature = (**kwargs))]
 fn map(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>> {
-    let args: commands::map::MapArgs = arguments(&MAP, "map", kwargs)?;
+    let args: commands::map::MapArgs = parse(&MAP, "map", kwargs)?;
     let report = emitted(py, |emit| commands::map::report_with(&args, |r| emit(r)))?;
     let dict = report.bind(py).cast::<PyDict>()?;
     let points = |axis: &str| -> PyResult<usize> {
@@ -164,7 +155,7 @@ fn map(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>
 #[pyfunction]
 #[pyo3(signature = (**kwargs))]
 fn gap(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>> {
-    let args: commands::gap::GapArgs = arguments(&GAP, "gap", kwargs)?;
+    let args: commands::gap::GapArgs = parse(&GAP, "gap", kwargs)?;
     let report = emitted(py, |emit| commands::gap::report_with(&args, |r| emit(r)))?;
     let dict = report.bind(py).cast::<PyDict>()?;
     columns_at(dict, "points", None)?;
@@ -176,7 +167,7 @@ fn gap(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>
 #[pyfunction]
 #[pyo3(signature = (**kwargs))]
 fn suite(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>> {
-    let args: commands::suite::SuiteArgs = arguments(&SUITE, "suite", kwargs)?;
+    let args: commands::suite::SuiteArgs = parse(&SUITE, "suite", kwargs)?;
     let report = emitted(py, |emit| commands::suite::report_with(&args, |r| emit(r)))?;
     columns_at(report.bind(py).cast::<PyDict>()?, "records", None)?;
     Ok(report)
@@ -187,7 +178,7 @@ fn suite(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAn
 #[pyfunction]
 #[pyo3(signature = (**kwargs))]
 fn ida(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>> {
-    let args: commands::ida::IdaArgs = arguments(&IDA, "ida", kwargs)?;
+    let args: commands::ida::IdaArgs = parse(&IDA, "ida", kwargs)?;
     let report = emitted(py, |emit| commands::ida::report_with(&args, |r| emit(r)))?;
     let dict = report.bind(py).cast::<PyDict>()?;
     for level in each(dict, "levels")? {
@@ -270,7 +261,7 @@ fn parameter_table(py: Python<'_>) -> PyResult<Py<PyList>> {
 #[pyfunction]
 #[pyo3(signature = (n, **kwargs))]
 fn _run_in_rust(py: Python<'_>, n: u32, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<f64> {
-    let args: commands::run::RunArgs = arguments(&RUN, "run", kwargs)?;
+    let args: commands::run::RunArgs = parse(&RUN, "run", kwargs)?;
     let seconds = py.detach(|| {
         guarded(|| {
             let start = std::time::Instant::now();
