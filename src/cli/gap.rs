@@ -13,7 +13,7 @@ use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
 use super::description::{DIMENSIONLESS, Provenance, RecordNumbers};
 use super::map::{AxisReport, resolve_mu};
-use super::output::{FormatArg, num, print, render};
+use super::output::{Emit, FormatArg, num, printer};
 use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
 use super::progress::Progress;
@@ -46,6 +46,15 @@ pub struct GapArgs {
 }
 
 pub fn execute(args: &GapArgs) -> Result<(), CliError> {
+    report_with(args, printer(args.output.format))
+}
+
+/// The minimum gap of `args` (of a suite's records with `--suite`), its
+/// typed report handed to `emit`.
+pub fn report_with(
+    args: &GapArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     let others = [("--probability", args.probability.is_some())];
     if let Some(suite_args) = args
         .records
@@ -57,7 +66,7 @@ pub fn execute(args: &GapArgs) -> Result<(), CliError> {
                     .into(),
             ));
         }
-        return super::gap_suite::execute(&suite_args, args.probability.as_deref());
+        return super::gap_suite::report_with(&suite_args, args.probability.as_deref(), emit);
     }
     let (preset, mut p) = args.params.resolve()?;
     // Π_d,min is taken on the exact method's own series, whatever --method says.
@@ -91,7 +100,7 @@ pub fn execute(args: &GapArgs) -> Result<(), CliError> {
     drop(progress);
     let mut report = GapReport::new(&preset.name, &p, axis.as_ref(), &points, &gaps, elapsed_ms);
     report.mu = mu;
-    print(&render(&report, args.output.format)?)?;
+    emit(&report)?;
     match gaps.iter().find(|g| !g.completed) {
         Some(g) => Err(CliError::Failed(format!(
             "the no-pounding run at omega1 = {}, omega2 = {} stopped before τ_end; \

@@ -10,7 +10,7 @@ use serde::Serialize;
 
 use super::CliError;
 use super::description::Provenance;
-use super::output::{num, print, render};
+use super::output::{Emit, num};
 use super::suite::{Ran, SuiteArgs, run};
 use crate::analysis::separation::{
     RecordGap, SeparationStudy, parse_probabilities, probability_of_pounding, study,
@@ -26,8 +26,13 @@ fn usage(message: String) -> CliError {
 }
 
 /// Runs the suite of `suite_args` and reports the separation at each of
-/// `probability` (a list, [`DEFAULT_PROBABILITIES`] when `None`).
-pub fn execute(suite_args: &SuiteArgs, probability: Option<&str>) -> Result<(), CliError> {
+/// `probability` (a list, [`DEFAULT_PROBABILITIES`] when `None`), its typed
+/// report handed to `emit`.
+pub fn report_with(
+    suite_args: &SuiteArgs,
+    probability: Option<&str>,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     let probabilities = parse_probabilities(
         "--probability",
         probability.unwrap_or(DEFAULT_PROBABILITIES),
@@ -72,7 +77,7 @@ pub fn execute(suite_args: &SuiteArgs, probability: Option<&str>) -> Result<(), 
         study: study(&records, &probabilities),
         elapsed_ms,
     };
-    print(&render(&report, suite_args.output.format)?)
+    emit(&report)
 }
 
 const UNITS: &str = "m for gaps and peak drifts, g for intensities";

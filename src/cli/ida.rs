@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use super::CliError;
 use super::description::Provenance;
-use super::output::{print, render};
+use super::output::{Emit, printer};
 use super::progress::Progress;
 use super::suite::{
     SuiteArgs, SuiteRow, case_of, members, record_steps, statistics_table, work_of,
@@ -76,6 +76,14 @@ impl LimitStateArgs {
 }
 
 pub fn execute(args: &IdaArgs) -> Result<(), CliError> {
+    report_with(args, printer(args.suite.output.format))
+}
+
+/// The IDA of `args` with its fragilities, its typed report handed to `emit`.
+pub fn report_with(
+    args: &IdaArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     if args.suite.level.is_some() {
         return Err(usage(
             "--level: an IDA runs every level of --levels; use `pounding suite` for one".into(),
@@ -116,7 +124,7 @@ pub fn execute(args: &IdaArgs) -> Result<(), CliError> {
         fragility,
         elapsed_ms,
     };
-    print(&render(&report, args.suite.output.format)?)?;
+    emit(&report)?;
     let unreliable = runs
         .iter()
         .flatten()

@@ -12,7 +12,7 @@ use serde::Serialize;
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
 use super::description::{Description, Provenance};
-use super::output::{FormatArg, PEAK_COLUMNS, num, param_cells, param_columns, print, render};
+use super::output::{Emit, FormatArg, PEAK_COLUMNS, num, param_cells, param_columns, printer};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::map::{Axis, MapCache, MapCell, MapPlan, compute_rows, row_regions};
@@ -49,11 +49,20 @@ pub struct MapArgs {
 }
 
 pub fn execute(args: &MapArgs) -> Result<(), CliError> {
+    report_with(args, printer(args.output.format))
+}
+
+/// The map of `args` (of a suite's records with `--suite`), its typed
+/// report handed to `emit`.
+pub fn report_with(
+    args: &MapArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     if let Some(suite_args) = args
         .records
         .request(&args.params, args.output, args.long, &[])?
     {
-        return super::map_suite::execute(&suite_args, &args.x, &args.y);
+        return super::map_suite::report_with(&suite_args, &args.x, &args.y, emit);
     }
     let (preset, p) = args.params.resolve_for_many()?;
     let usage = |e: crate::analysis::map::MapError| CliError::Usage(e.to_string());
@@ -72,7 +81,7 @@ pub fn execute(args: &MapArgs) -> Result<(), CliError> {
     let elapsed_ms = t.elapsed().as_secs_f64() * 1e3;
     drop(progress);
     let report = MapReport::new(&preset.name, &plan, &cells, &cache, elapsed_ms);
-    print(&render(&report, args.output.format)?)
+    emit(&report)
 }
 
 /// μ as a spectrum takes it: `--mu`, else the preset's `[spectrum]` μ,

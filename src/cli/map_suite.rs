@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use super::CliError;
 use super::description::Provenance;
-use super::output::{Format, num, print};
+use super::output::{Emit, Format, num, print};
 use super::progress::Progress;
 use super::suite::{SuiteArgs, case_of, members, record_steps, work_of};
 use crate::analysis::suite::SuiteRun;
@@ -40,8 +40,14 @@ const COLUMNS: [&str; 9] = [
     "measure",
 ];
 
-/// Runs the suite map of `suite_args` over `x` × `y` (texts of `--x`, `--y`).
-pub fn execute(suite_args: &SuiteArgs, x: &str, y: &str) -> Result<(), CliError> {
+/// Runs the suite map of `suite_args` over `x` × `y` (texts of `--x`, `--y`),
+/// its typed report handed to `emit` (as CSV, streamed here instead).
+pub fn report_with(
+    suite_args: &SuiteArgs,
+    x: &str,
+    y: &str,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     let x = PhysicalAxis::parse("--x", x).map_err(usage)?;
     let y = PhysicalAxis::parse("--y", y).map_err(usage)?;
     let (preset, case) = case_of(suite_args)?;
@@ -118,8 +124,18 @@ pub fn execute(suite_args: &SuiteArgs, x: &str, y: &str) -> Result<(), CliError>
     };
     match format {
         Format::Csv => Ok(()),
-        Format::Json => print(&json(&report).map_err(|e| CliError::Failed(format!("JSON: {e}")))?),
-        Format::Table => print(&report.table()),
+        Format::Json | Format::Table => emit(&report),
+    }
+}
+
+impl Emit for SuiteMapReport<'_> {
+    /// JSON or the table; its CSV is streamed as the map is computed.
+    fn render(&self, format: Format) -> Result<String, CliError> {
+        match format {
+            Format::Json => json(self).map_err(|e| CliError::Failed(format!("JSON: {e}"))),
+            Format::Table => Ok(self.table()),
+            Format::Csv => Ok(String::new()),
+        }
     }
 }
 

@@ -38,6 +38,28 @@ pub fn render(r: &impl Report, format: Format) -> Result<String, CliError> {
     })
 }
 
+/// A command's typed report as its printing step receives it: rendered in
+/// a format for the command line, or serialized by any serde serializer for
+/// another front end (the Python module turns it into Python objects), so
+/// that both show the same values by construction.
+pub trait Emit: erased_serde::Serialize {
+    /// The report in `format`, as the command line prints it.
+    fn render(&self, format: Format) -> Result<String, CliError>;
+}
+
+impl<R: Report> Emit for R {
+    fn render(&self, format: Format) -> Result<String, CliError> {
+        render(self, format)
+    }
+}
+
+erased_serde::serialize_trait_object!(Emit);
+
+/// The printing step of a command: its report in `format` on stdout.
+pub fn printer(format: Format) -> impl FnOnce(&dyn Emit) -> Result<(), CliError> {
+    move |report| print(&report.render(format)?)
+}
+
 /// Writes `text` to stdout.
 pub fn print(text: &str) -> Result<(), CliError> {
     Ok(crate::output::stdout::print(text)?)

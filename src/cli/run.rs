@@ -12,7 +12,7 @@ use serde::Serialize;
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
 use super::description::{Case, DIMENSIONLESS, Provenance, RecordNumbers};
-use super::output::{FormatArg, num, param_cells, param_columns, print, render};
+use super::output::{Emit, FormatArg, num, param_cells, param_columns, print};
 use super::params::ParamArgs;
 use super::progress::{Progress, Tracked};
 use crate::accuracy::timing::median;
@@ -48,6 +48,29 @@ pub struct RunArgs {
 }
 
 pub fn execute(args: &RunArgs) -> Result<(), CliError> {
+    let format = args.output.format;
+    // With the history on stdout, stdout carries the history alone.
+    let history_to_stdout = args
+        .history
+        .as_deref()
+        .is_some_and(|h| h.as_os_str() == "-");
+    report_with(args, |report| {
+        let text = report.render(format)?;
+        if history_to_stdout {
+            let _ = std::io::stderr().write_all(text.as_bytes());
+            Ok(())
+        } else {
+            print(&text)
+        }
+    })
+}
+
+/// The run of `args`, its typed report handed to `emit` (before an
+/// unreliable result fails, as the command line prints it first).
+pub fn report_with(
+    args: &RunArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     let (preset, p) = args.params.resolve()?;
     let steps = run_steps(&p);
     let history_runs = f64::from(u8::from(args.history.is_some()));
@@ -77,10 +100,8 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
     let reason = result.unreliable();
     let accepted = reason.is_none() || args.allow_unreliable;
 
-    let mut history_to_stdout = false;
     let mut discarded = None;
     if let Some(target) = history {
-        history_to_stdout = target.is_stdout();
         let offset = steps * f64::from(args.repeat);
         let csv = CsvHistory::with_ground(target, p.ground());
         let mut csv = Tracked::new(csv, &progress, offset, p.dt);
@@ -108,13 +129,7 @@ pub fn execute(args: &RunArgs) -> Result<(), CliError> {
     let mut report = RunReport::new(&preset.name, &p, &result, elapsed_ms, args.repeat, min_gap);
     report.error_vs_exact = error;
     report.si = si_of(&preset, &p, &result, min_gap);
-    let text = render(&report, args.output.format)?;
-    if history_to_stdout {
-        // Stdout carries the history alone.
-        let _ = std::io::stderr().write_all(text.as_bytes());
-    } else {
-        print(&text)?;
-    }
+    emit(&report)?;
     match reason {
         Some(why) if !args.allow_unreliable => {
             let kept = discarded.map_or(String::new(), |name| format!("; {name} was not written"));

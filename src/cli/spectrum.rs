@@ -10,7 +10,7 @@ use clap::Args;
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
 use super::description::{Description, Provenance};
-use super::output::{FormatArg, num, print, render};
+use super::output::{Emit, FormatArg, num, printer};
 use super::output::{PEAK_COLUMNS, param_cells, param_columns};
 use super::params::ParamArgs;
 use super::progress::Progress;
@@ -166,6 +166,14 @@ impl SpectrumPlan {
 }
 
 pub fn execute(args: &SpectrumArgs) -> Result<(), CliError> {
+    report_with(args, printer(args.output.format))
+}
+
+/// The spectrum of `args`, its typed report handed to `emit`.
+pub fn report_with(
+    args: &SpectrumArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     let plan = SpectrumPlan::resolve(
         &args.params,
         args.omega1.as_deref(),
@@ -176,7 +184,7 @@ pub fn execute(args: &SpectrumArgs) -> Result<(), CliError> {
     work.check("spectrum", args.long.allow_long, true)?;
     let (curves, cache, elapsed_ms) = plan.compute_with(&Progress::start(&work))?;
     let report = SpectrumReport::new(&plan, &curves, &cache, elapsed_ms);
-    print(&render(&report, args.output.format)?)
+    emit(&report)
 }
 
 /// The Π_ω1 grid as reported.

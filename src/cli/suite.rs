@@ -12,7 +12,7 @@ use serde::Serialize;
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
 use super::description::Provenance;
-use super::output::{FormatArg, num, print, render};
+use super::output::{Emit, FormatArg, num, printer};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use crate::analysis::demands::{DemandsSi, Scales};
@@ -205,6 +205,14 @@ pub fn run(args: &SuiteArgs, what: &str) -> Result<Ran, CliError> {
 }
 
 pub fn execute(args: &SuiteArgs) -> Result<(), CliError> {
+    report_with(args, printer(args.output.format))
+}
+
+/// The suite study of `args`, its typed report handed to `emit`.
+pub fn report_with(
+    args: &SuiteArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     let Ran {
         preset,
         case,
@@ -212,7 +220,7 @@ pub fn execute(args: &SuiteArgs) -> Result<(), CliError> {
         elapsed_ms,
     } = run(args, "suite")?;
     let report = SuiteReport::new(&preset.name, &args.suite, &case, &runs, elapsed_ms);
-    print(&render(&report, args.output.format)?)?;
+    emit(&report)?;
     let unreliable: Vec<String> = runs
         .iter()
         .filter_map(|r| {

@@ -1,0 +1,249 @@
+"""Pounding of two adjacent inelastic structures in earthquakes (Buckingham-Π form).
+
+One function per command of the ``pounding`` command line, with keyword
+arguments named like its flags (``allow_long`` for ``--allow-long``) and
+every key of the parameter table accepted as a keyword (``omega1=1.2`` is
+``--set omega1=1.2``). Each returns the dict that ``--format json`` prints,
+value for value, with its lists of points, cells and records turned into
+numpy arrays. Bad input raises ``ValueError`` with the command line's
+message; a failed run raises ``RuntimeError``.
+
+>>> import pounding
+>>> r = pounding.run(preset="set1", method="exact")
+>>> r["left"]["peak_displacement"]
+>>> s = pounding.spectrum(preset="set1", omega1="0.1:3:0.01")
+>>> s["omega1"], s["left"]["peak_displacement"]        # numpy arrays over Π_ω1
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple, Optional, Tuple
+
+from . import _native
+
+__version__: str = _native.__version__
+
+__all__ = [
+    "run",
+    "spectrum",
+    "map",
+    "gap",
+    "suite",
+    "ida",
+    "fragility",
+    "presets",
+    "Params",
+    "Field",
+]
+
+
+class Field(NamedTuple):
+    """One key of the parameter table."""
+
+    key: str
+    symbol: str
+    ascii: str
+    meaning: str
+    group: str
+    kind: str
+    range: str
+    allowed: str
+    default: Any
+    min: Optional[float]
+    max: Optional[float]
+    choices: Optional[Tuple[str, ...]]
+
+
+def _field(d: dict) -> Field:
+    choices = d.get("choices")
+    return Field(
+        key=d["key"],
+        symbol=d["symbol"],
+        ascii=d["ascii"],
+        meaning=d["meaning"],
+        group=d["group"],
+        kind=d["kind"],
+        range=d["range"],
+        allowed=d["allowed"],
+        default=d["default"],
+        min=d.get("min"),
+        max=d.get("max"),
+        choices=tuple(choices) if choices is not None else None,
+    )
+
+
+class Params:
+    """The parameter table (one table, the command line's): every key with
+    its symbol, meaning, range and default (set 1's value).
+
+    >>> pounding.Params.keys()[:3]
+    >>> pounding.Params.omega1.range, pounding.Params.omega1.default
+    >>> pounding.Params.field("gap").allowed
+    """
+
+    fields: Tuple[Field, ...] = tuple(_field(d) for d in _native.parameter_table())
+
+    @classmethod
+    def keys(cls) -> list:
+        """Every key, in the table's order."""
+        return [f.key for f in cls.fields]
+
+    @classmethod
+    def field(cls, key: str) -> Field:
+        """The row of ``key``; ``KeyError`` if there is none."""
+        for f in cls.fields:
+            if f.key == key:
+                return f
+        raise KeyError(key)
+
+    @classmethod
+    def defaults(cls) -> dict:
+        """Every key's default (set 1's value)."""
+        return {f.key: f.default for f in cls.fields}
+
+    @classmethod
+    def table(cls) -> str:
+        """The table as text, as the docstrings show it."""
+        return _KEYS
+
+
+for _f in Params.fields:
+    setattr(Params, _f.key, _f)
+
+
+def _keys_text() -> str:
+    width = max(len(f.key) for f in Params.fields)
+    lines = []
+    for f in Params.fields:
+        lines.append(
+            f"    {f.key:<{width}}  {f.symbol:<6} {f.range}  (default {f.default}): {f.meaning}"
+        )
+    return "\n".join(lines)
+
+
+_KEYS = _keys_text()
+
+_COMMON = """preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
+    model: contact law, kelvin, improved-kelvin, hertz, hertzdamp, jankowski or hunt-crossley.
+    excitation: sine, pulse-a, pulse-b, pulse-c1, pulse-c2 or ``record:PATH[@UNIT]``.
+    method: newmark or exact.
+    dt, cycles: Newmark's Δτ and the duration in excitation cycles.
+    no_pounding: no contact at all (gap = inf).
+    presets: directory of the user's own presets.
+    allow_long: run even when the estimated work exceeds 1e10 steps.
+    **keys: any key of the parameter table, e.g. ``omega1=1.2``:
+"""
+
+
+def _doc(f):
+    f.__doc__ = f.__doc__.replace("{common}", _COMMON.rstrip() + "\n" + _KEYS)
+    return f
+
+
+@_doc
+def run(
+    *,
+    preset: Optional[str] = None,
+    method: Optional[str] = None,
+    history: bool = False,
+    **keys: Any,
+) -> dict:
+    """One simulation: the dict of ``pounding run --format json``.
+
+    history: also every accepted state, as numpy arrays under ``"history"``
+        (tau, x1, v1, a1, x2, v2, a2, fs1, fs2, fp, in_contact, ag, vg, ug).
+    repeat: run N times and report the median time.
+    allow_unreliable: return an unreliable result (flagged) instead of raising.
+    {common}
+
+    Raises ValueError for bad input, RuntimeError for an unreliable result.
+    """
+    return _native.run(preset=preset, method=method, history=history, **keys)
+
+
+@_doc
+def spectrum(*, preset: Optional[str] = None, **keys: Any) -> dict:
+    """Response spectra over Π_ω1: the dict of ``pounding spectrum --format json``.
+
+    Each curve's points are numpy arrays (``curves[i]["left"]["peak_displacement"]``
+    over ``curves[i]["omega1"]``); with one curve, the same arrays at the top:
+    ``result["left"]["peak_displacement"]``.
+
+    omega1: the Π_ω1 grid, START:STOP:STEP (here a flag, not the key).
+    mu: frequency ratio, Π_ω2 = μ Π_ω1.
+    family: one curve per value of a key, e.g. ``"gap=0.2,1.5,inf"``.
+    {common}
+    """
+    return _native.spectrum(preset=preset, **keys)
+
+
+@_doc
+def map(x: str, y: str, *, preset: Optional[str] = None, **keys: Any) -> dict:  # noqa: A001
+    """The left structure's regions over two parameters: ``pounding map --format json``.
+
+    x, y: the axes, ``KEY=START:STOP:STEP`` (a Π key or mu).
+    mu: frequency ratio on an omega1 axis.
+    suite, im, level: over a suite of records, P(pounding) and the median
+        amplification, the axes then physical quantities of the preset's
+        [physical] table (m1, m2, period1, period2, yield1, yield2, gap, …).
+    The cells are numpy arrays of shape (y points, x points).
+    {common}
+    """
+    return _native.map(x=x, y=y, preset=preset, **keys)
+
+
+@_doc
+def gap(*, preset: Optional[str] = None, **keys: Any) -> dict:
+    """The smallest gap that prevents pounding: ``pounding gap --format json``.
+
+    x: sweep one parameter, ``KEY=START:STOP:STEP``; mu: frequency ratio.
+    suite, im, level, probability: the separation over a suite of records.
+    The points (or records) are numpy arrays.
+    {common}
+    """
+    return _native.gap(preset=preset, **keys)
+
+
+@_doc
+def suite(suite: str, *, preset: Optional[str] = None, **keys: Any) -> dict:
+    """One physical pair under a suite of records: ``pounding suite --format json``.
+
+    suite: a directory, a list file, or ``synthetic:N[@SEED]``.
+    im: pga or sa:T; level: scale every record to this intensity (g).
+    allow_unreliable: return unreliable results (flagged) instead of raising.
+    The records are numpy arrays.
+    {common}
+    """
+    return _native.suite(suite=suite, preset=preset, **keys)
+
+
+@_doc
+def ida(suite: str, levels: str, *, preset: Optional[str] = None, **keys: Any) -> dict:
+    """Incremental dynamic analysis: ``pounding ida --format json``.
+
+    suite: the records; levels: intensities in g, START:STOP:STEP or X1,X2,…
+    im: pga or sa:T; ductility, acceleration, force: limit states beside pounding.
+    Each level's records, the levels, and each limit state's counts are numpy arrays.
+    {common}
+    """
+    return _native.ida(suite=suite, levels=levels, preset=preset, **keys)
+
+
+@_doc
+def fragility(suite: str, levels: str, *, preset: Optional[str] = None, **keys: Any) -> dict:
+    """The fragility of each limit state, with and without pounding: the
+    IDA's ``fragility`` and metadata, its levels as ``levels`` (an array, g).
+
+    Each entry of ``fragility`` has ``limit_state``, ``counts`` (numpy arrays
+    ``level``, ``runs``, ``exceeded``) and ``fragility`` (θ and β of the
+    lognormal fit when fitted), and the same for the pair without contact.
+    {common}
+    """
+    r = _native.ida(suite=suite, levels=levels, preset=preset, **keys)
+    r["levels"] = r["levels"]["level_g"]
+    return r
+
+
+def presets() -> list:
+    """The built-in presets: name, description, and whether it has a [physical] table."""
+    return _native.presets()
