@@ -40,6 +40,9 @@ pub fn render(r: &impl Report, format: Format) -> Result<String, CliError> {
 
 /// Writes `text` to stdout.
 pub fn print(text: &str) -> Result<(), CliError> {
+    if super::shard::held(text) {
+        return Ok(());
+    }
     Ok(crate::output::stdout::print(text)?)
 }
 

@@ -1,6 +1,6 @@
 //! What a run reports (SPEC §6).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::model::Method;
 
@@ -10,7 +10,7 @@ use crate::model::Method;
 /// Two are equal when every number is: a quantity a run did not compute
 /// (NaN) equals another not computed, so that two runs of a sweep, which
 /// skips A and E_h, compare as the same result.
-#[derive(Debug, Clone, Copy, Default, Serialize)]
+#[derive(Debug, Clone, Copy, Default, Serialize, Deserialize)]
 pub struct StructurePeaks {
     pub peak_displacement: f64,
     pub peak_velocity: f64,
