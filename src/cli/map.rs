@@ -51,10 +51,11 @@ pub struct MapArgs {
 }
 
 pub fn execute(args: &MapArgs) -> Result<(), CliError> {
-    if let Some(suite_args) = args
+    if let Some(mut suite_args) = args
         .records
         .request(&args.params, args.output, args.long, &[])?
     {
+        suite_args.shard = args.shard.clone();
         return super::map_suite::execute(&suite_args, &args.x, &args.y);
     }
     let (preset, p) = args.params.resolve_for_many()?;

@@ -13,6 +13,7 @@ use super::CliError;
 use super::description::Provenance;
 use super::output::{Format, num, print};
 use super::progress::Progress;
+use super::shard::Sweep;
 use super::suite::{SuiteArgs, case_of, members, record_steps, work_of};
 use crate::analysis::suite::SuiteRun;
 use crate::analysis::suite_map::{
@@ -65,6 +66,18 @@ pub fn execute(suite_args: &SuiteArgs, x: &str, y: &str) -> Result<(), CliError>
     })?;
     let work = work_of(plans.iter().flatten());
     work.check("map --suite", suite_args.long.allow_long, false)?;
+    let sharded = super::shard::suite::map_cells(
+        &suite_args.shard,
+        &preset.name,
+        &case,
+        &cells,
+        &plans,
+        &members,
+        &(&x, &y),
+    )?;
+    if matches!(sharded, Sweep::Done) {
+        return Ok(());
+    }
     let format = suite_args.output.format;
     let measure = case.scaling.measure.to_string();
     let row_cells = |c: &SuiteMapCell| -> Vec<String> {
@@ -89,13 +102,16 @@ pub fn execute(suite_args: &SuiteArgs, x: &str, y: &str) -> Result<(), CliError>
     let width = x.values.len();
     let mut all = Vec::with_capacity(cells.len());
     for row in 0..y.values.len() {
-        let computed = compute_cells(
-            &cells,
-            &plans,
-            &members,
-            row * width..(row + 1) * width,
-            &done,
-        );
+        let computed = match &sharded {
+            Sweep::Merged(all, _) => all[row * width..(row + 1) * width].to_vec(),
+            _ => compute_cells(
+                &cells,
+                &plans,
+                &members,
+                row * width..(row + 1) * width,
+                &done,
+            ),
+        };
         if format == Format::Csv {
             let rows: Vec<Vec<String>> = computed.iter().map(row_cells).collect();
             let text = csv(&COLUMNS, &rows);
@@ -114,7 +130,10 @@ pub fn execute(suite_args: &SuiteArgs, x: &str, y: &str) -> Result<(), CliError>
         x: &x,
         y: &y,
         cells: all,
-        elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
+        elapsed_ms: match sharded {
+            Sweep::Merged(_, ms) => ms,
+            _ => start.elapsed().as_secs_f64() * 1e3,
+        },
     };
     match format {
         Format::Csv => Ok(()),

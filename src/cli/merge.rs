@@ -107,6 +107,21 @@ fn replay(
             set(&mut a.output.format);
             super::spectrum::execute(&a)
         }
+        Some(Command::Gap(mut a)) => {
+            from(&mut a.shard);
+            set(&mut a.output.format);
+            super::gap::execute(&a)
+        }
+        Some(Command::Suite(mut a)) => {
+            from(&mut a.shard);
+            set(&mut a.output.format);
+            super::suite::execute(&a)
+        }
+        Some(Command::Ida(mut a)) => {
+            from(&mut a.suite.shard);
+            set(&mut a.suite.output.format);
+            super::ida::execute(&a)
+        }
         _ => Err(CliError::Usage(format!(
             "merge: {}: parts of `{}` cannot be merged",
             parts[0].name, parts[0].header.command

@@ -19,12 +19,14 @@
 //! writer: equal byte for byte, timing aside.
 
 pub mod fingerprint;
+pub mod gap;
 pub mod map;
 pub mod merge;
 pub mod part;
 pub mod partition;
 pub mod spec;
 pub mod spectrum;
+pub mod suite;
 pub mod work;
 
 pub use fingerprint::Fingerprint;

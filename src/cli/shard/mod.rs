@@ -6,8 +6,10 @@
 //! ([`crate::analysis::shard`]); the commands' own glue is one small file
 //! each here.
 
+pub mod gap;
 pub mod map;
 pub mod spectrum;
+pub mod suite;
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
