@@ -71,7 +71,7 @@ pub fn execute(args: &MapArgs) -> Result<(), CliError> {
     work.check("map", args.long.allow_long, true)?;
     let progress = Progress::start(&work);
     let t = Instant::now();
-    let Some((cells, cache, merged_ms)) =
+    let Some(((cells, cache), merged_ms)) =
         super::shard::map::run(&args.shard, &preset.name, &plan, || {
             compute_with(&plan, &progress)
         })?

@@ -1,6 +1,6 @@
 //! `gap --x --shard`: a gap sweep through [`super::ShardArgs::sweep`].
 
-use super::{ShardArgs, Sweep};
+use super::{Results, ShardArgs, Sweep};
 use crate::analysis::gap::MinimumGap;
 use crate::analysis::shard::gap::{compute, fingerprint, unit_work};
 use crate::cli::CliError;
@@ -14,7 +14,7 @@ pub fn run(
     points: &[(f64, Params)],
     sweep: bool,
     whole: impl FnOnce() -> Vec<MinimumGap>,
-) -> Result<Option<(Vec<MinimumGap>, Option<f64>)>, CliError> {
+) -> Results<Vec<MinimumGap>> {
     shard.check()?;
     if !shard.active() {
         return Ok(Some((whole(), None)));

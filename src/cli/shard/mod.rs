@@ -48,6 +48,10 @@ pub struct ShardArgs {
     pub merge: Option<Arc<Vec<Part>>>,
 }
 
+/// A command's results and, when they come from parts, the parts' summed
+/// time in ms; `None` when a shard's part was written (nothing to report).
+pub type Results<T> = Result<Option<(T, Option<f64>)>, CliError>;
+
 /// What a sweep command does with its sweep.
 pub enum Sweep<T> {
     /// Run it whole, as without sharding.

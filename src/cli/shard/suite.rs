@@ -1,7 +1,7 @@
 //! `suite`, `ida` and `map --suite` with `--shard`: their sweeps through
 //! [`super::ShardArgs::sweep`].
 
-use super::{ShardArgs, Sweep};
+use super::{Results, ShardArgs, Sweep};
 use crate::analysis::shard::suite::{Pair, compute, fingerprint, member_work, rebuild};
 use crate::analysis::suite::{MemberPlan, SuiteCase, SuiteRun};
 use crate::analysis::suite_map::{SuiteMapCell, compute_listed};
@@ -19,7 +19,7 @@ pub fn runs(
     members: &[SuiteMember],
     extra: &impl std::fmt::Debug,
     whole: impl FnOnce() -> Vec<SuiteRun>,
-) -> Result<Option<(Vec<SuiteRun>, Option<f64>)>, CliError> {
+) -> Results<Vec<SuiteRun>> {
     shard.check()?;
     if !shard.active() {
         return Ok(Some((whole(), None)));
