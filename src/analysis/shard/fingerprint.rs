@@ -1,7 +1,7 @@
 //! One hash of a whole request, carried by each of its parts.
 //!
 //! It covers what decides the results and how they are reported: the
-//! program's version, the command, and the resolved request (every
+//! program's version and whether it was built with fused multiply-add, the command, and the resolved request (every
 //! parameter, the grid or axes, the family, the method, and for suites the
 //! records' samples themselves, not only their names), hashed from the
 //! request's own values. Two parts merge only if their fingerprints are
@@ -26,6 +26,13 @@ impl Fingerprint {
     pub fn new(command: &str) -> Fingerprint {
         let mut f = Fingerprint(OFFSET);
         f.add_str(env!("CARGO_PKG_VERSION"));
+        // A build with fused multiply-add differs from one without in the
+        // last bits (see the README's set-up): their parts do not mix.
+        f.add_str(if cfg!(target_feature = "fma") {
+            "fma"
+        } else {
+            "no-fma"
+        });
         f.add_str(command);
         f
     }

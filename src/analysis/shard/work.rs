@@ -2,10 +2,13 @@
 //!
 //! Only the ratios between the units of one sweep matter. A Newmark run
 //! takes τ_end/Δτ steps whatever the frequencies; an exact run takes a few
-//! closed-form segments per half-period of the stiffer structure, so its
-//! work grows with τ_end · max(1, Π_ω1, Π_ω2). A run with contact (finite
-//! gap) counts [`POUNDING`] times a free run: its impacts add contact
-//! phases, located roots and, with Newmark, sub-steps.
+//! closed-form segments per excitation cycle and per half-period of the
+//! stiffer structure, so its work grows as τ_end · (1 + max(Π_ω1, Π_ω2)).
+//! Measured on set 1 (exact, 8 cycles, no contact, `run --repeat`): 78,
+//! 130, 357 and 1189 segments at Π_ω2 = 0.68, 2.25, 6.75 and 22.5, against
+//! 84, 162, 387 and 1175 by this rule; the time follows the segments. A run
+//! with contact (finite gap) counts [`POUNDING`] times a free run: set 1's
+//! nine impacts at Π_ω1 = 1 double its time (0.10 against 0.05 ms).
 
 use crate::model::{Method, Params};
 
@@ -16,7 +19,7 @@ pub const POUNDING: f64 = 2.0;
 pub fn free_run(p: &Params) -> f64 {
     match p.method {
         Method::Newmark => p.tau_end() / p.dt,
-        Method::Exact => p.tau_end() * p.omega1.max(p.omega2).max(1.0),
+        Method::Exact => p.tau_end() * (1.0 + p.omega1.max(p.omega2)),
     }
 }
 
