@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # A real, one-node Slurm on this machine, to test the sharded sweep scripts:
-# installs Debian's slurm-wlm and munge where missing (as root; otherwise it
-# says "skipped: …" and exits 0), starts munged, slurmctld and slurmd with a
-# minimal configuration in a temporary directory, submits a small sharded
-# map as a job array (submit.sh: sweep.sbatch, then merge.sbatch after it),
-# waits with squeue, shows the jobs with sacct, and checks that the merge
-# equals the unsharded map but for its timing field. Exits 0 only then.
+# installs Debian's slurm-wlm and munge where missing, with slurmdbd and
+# mariadb-server for the accounting that sacct reads (as root; otherwise it
+# says "skipped: …" and exits 0), starts munged, MariaDB, slurmdbd,
+# slurmctld and slurmd with minimal configurations in a temporary directory,
+# submits a small sharded map as a job array (submit.sh: sweep.sbatch, then
+# merge.sbatch after it), waits with squeue, shows the jobs with sacct, and
+# checks that the merge equals the unsharded map but for its timing field.
+# Exits 0 only then.
 # Every daemon it started is stopped by its PID and the temporary directory
 # removed, whatever happens.
 #
@@ -40,6 +42,9 @@ for tool in slurmctld slurmd sbatch squeue sacct scontrol; do
     sbin "$tool" || { missing+=(slurm-wlm); break; }
 done
 sbin munged || missing+=(munge)
+# The accounting database, for sacct: slurmdbd on a MariaDB of our own.
+sbin slurmdbd || missing+=(slurmdbd)
+{ sbin mariadbd && sbin mariadb-install-db; } || missing+=(mariadb-server)
 if [ ${#missing[@]} -gt 0 ]; then
     [ "$(id -u)" = 0 ] || skip "${missing[*]} not installed, and installing needs root"
     command -v apt-get >/dev/null || skip "${missing[*]} not installed, and there is no apt-get"
@@ -63,6 +68,7 @@ chmod 755 "$tmp"
 pids=()
 cleanup() {
     local status=$?
+    trap '' INT TERM HUP
     # Every daemon started here, by its PID, last started first.
     for ((i = ${#pids[@]} - 1; i >= 0; i--)); do
         kill "${pids[i]}" 2>/dev/null || true
@@ -97,6 +103,8 @@ pick_port() {
 }
 ctld_port=$(pick_port)
 slurmd_port=$(pick_port "$ctld_port")
+dbd_port=$(pick_port "$ctld_port")
+db_port=$(pick_port "$dbd_port")
 
 # munged, on a socket and key of its own.
 mkdir -m 700 "$tmp/munge"
@@ -112,8 +120,40 @@ for _ in $(seq 50); do [ -S "$socket" ] && break; sleep 0.1; done
 
 host=$(hostname -s)
 cpus=$(nproc)
-mkdir -p "$tmp/state" "$tmp/spool"
 export SLURM_CONF="$tmp/slurm.conf"
+
+# MariaDB in the temporary directory, then slurmdbd on it.
+mkdir -p "$tmp/db"
+mariadb-install-db --no-defaults --datadir="$tmp/db" --user=root \
+    --auth-root-authentication-method=normal --skip-test-db >"$tmp/mariadb-install.log" 2>&1 ||
+    fail "mariadb-install-db failed"
+mariadbd --no-defaults --datadir="$tmp/db" --socket="$tmp/db/mariadb.sock" --port="$db_port" \
+    --bind-address=127.0.0.1 --user=root --skip-grant-tables --pid-file="$tmp/db/mariadb.pid" \
+    --log-error="$tmp/mariadb.log" >/dev/null 2>&1 &
+pids+=($!)
+for _ in $(seq 100); do port_free "$db_port" || break; sleep 0.2; done
+port_free "$db_port" && fail "MariaDB did not start"
+cat >"$tmp/slurmdbd.conf" <<CONF
+AuthType=auth/munge
+AuthInfo=socket=$socket
+DbdHost=$host
+DbdAddr=127.0.0.1
+DbdPort=$dbd_port
+SlurmUser=root
+StorageType=accounting_storage/mysql
+StorageHost=127.0.0.1
+StoragePort=$db_port
+StorageUser=root
+StorageLoc=slurm_acct_db
+PidFile=$tmp/slurmdbd.pid
+LogFile=$tmp/slurmdbd.log
+CONF
+chmod 600 "$tmp/slurmdbd.conf"
+slurmdbd -D >"$tmp/slurmdbd.out" 2>&1 &
+pids+=($!)
+for _ in $(seq 100); do port_free "$dbd_port" || break; sleep 0.2; done
+port_free "$dbd_port" && fail "slurmdbd did not start"
+mkdir -p "$tmp/state" "$tmp/spool"
 cat >"$SLURM_CONF" <<CONF
 ClusterName=pounding-test
 SlurmctldHost=$host(127.0.0.1)
@@ -138,7 +178,10 @@ SelectType=select/cons_tres
 SelectTypeParameters=CR_CPU
 ReturnToService=2
 JobAcctGatherType=jobacct_gather/none
-AccountingStorageType=accounting_storage/none
+AccountingStorageType=accounting_storage/slurmdbd
+AccountingStorageHost=127.0.0.1
+AccountingStoragePort=$dbd_port
+AccountingStoragePass=$socket
 JobCompType=jobcomp/filetxt
 JobCompLoc=$tmp/jobcomp.txt
 MinJobAge=3600
@@ -146,16 +189,20 @@ NodeName=localnode NodeHostname=$host NodeAddr=127.0.0.1 CPUs=$cpus State=UNKNOW
 PartitionName=local Nodes=localnode Default=YES MaxTime=INFINITE State=UP
 CONF
 
+# The cluster in the accounting database, before slurmctld registers with it.
+timeout 20 sacctmgr -i add cluster pounding-test >/dev/null 2>&1 || true
 slurmctld -D -c -f "$SLURM_CONF" >"$tmp/slurmctld.out" 2>&1 &
 pids+=($!)
 slurmd -D -f "$SLURM_CONF" -N localnode >"$tmp/slurmd.out" 2>&1 &
 pids+=($!)
 up=
-for _ in $(seq 100); do
-    if [ "$(sinfo -h -n localnode -o %t 2>/dev/null)" = idle ]; then up=1; break; fi
+deadline=$((SECONDS + 60))
+while [ $SECONDS -lt $deadline ]; do
+    if [ "$(timeout 5 sinfo -h -n localnode -o %t 2>/dev/null)" = idle ]; then up=1; break; fi
+    kill -0 "${pids[-2]}" 2>/dev/null || fail "slurmctld stopped"
     sleep 0.3
 done
-[ -n "$up" ] || fail "the node did not come up ($(sinfo -h -o '%n %t' 2>&1 | head -1))"
+[ -n "$up" ] || fail "the node did not come up ($(timeout 5 sinfo -h -o '%n %t' 2>&1 | head -1))"
 say "slurmctld, slurmd and munged up after $(($(date +%s) - started)) s"
 
 # A small map, unsharded here and as a job array of 3 shards there.
@@ -164,17 +211,27 @@ mkdir -p "$work"
 cd "$work"
 map=(map --x omega1=0.2:2.4:0.1 --y mu=1:4:0.5 --format json)
 "$POUNDING" "${map[@]}" >unsharded.json
-read -r array merge < <("$here/submit.sh" 3 "$work/parts" "$work/merged.json" "${map[@]}")
+read -r array merge < <(timeout 30 "$here/submit.sh" 3 "$work/parts" "$work/merged.json" "${map[@]}")
+[ -n "${merge:-}" ] || fail "sbatch did not take the jobs"
 say "submitted job array $array (3 shards) and merge job $merge"
 done_=
-for _ in $(seq 600); do
-    if [ -z "$(squeue -h -j "$array,$merge" -o %i 2>/dev/null)" ]; then done_=1; break; fi
+deadline=$((SECONDS + 180))
+while [ $SECONDS -lt $deadline ]; do
+    queued=$(timeout 5 squeue -h -j "$array,$merge" -o %i 2>/dev/null) || queued=unknown
+    if [ -z "$queued" ]; then done_=1; break; fi
     sleep 0.3
 done
 [ -n "$done_" ] || fail "the jobs did not finish within 3 minutes"
 echo "sacct:"
-if sacct -j "$array,$merge" -X -P --format=JobID,JobName,State,ExitCode,Elapsed 2>/dev/null; then
-    :
+# The accounting database takes the jobs' ends a moment after squeue drops them.
+lines=
+for _ in $(seq 20); do
+    lines=$(timeout 10 sacct -j "$array,$merge" -X -P --format=JobID,JobName,State,ExitCode,Start,End,Elapsed 2>/dev/null) || lines=
+    [ "$(grep -c COMPLETED <<<"$lines")" -ge 4 ] && break
+    sleep 0.5
+done
+if [ -n "$lines" ]; then
+    echo "$lines"
 else
     # Without a slurmdbd there is no accounting database: Slurm's own job
     # completion log holds the same facts.
