@@ -116,11 +116,15 @@ impl Part {
         let bad = |why: String| PartError::Bad(name.clone(), why);
         let bytes = std::fs::read(path).map_err(|e| bad(crate::output::reason(&e)))?;
         let Some(end) = bytes.iter().position(|&b| b == b'\n') else {
-            return Err(bad(if bytes.starts_with(b"{\"format\":\"pounding-part") {
-                "incomplete: its header line is cut short (a task stopped while writing it?)".into()
-            } else {
-                "not a part written by `--shard` (no header line)".into()
-            }));
+            let magic: &[u8] = b"{\"format\":\"pounding-part";
+            return Err(bad(
+                if bytes.starts_with(magic) || magic.starts_with(&bytes) {
+                    "incomplete: its header line is cut short (a task stopped while writing it?)"
+                        .into()
+                } else {
+                    "not a part written by `--shard` (no header line)".into()
+                },
+            ));
         };
         let header: PartHeader = serde_json::from_slice(&bytes[..end]).map_err(|e| {
             bad(format!(
