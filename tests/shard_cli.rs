@@ -334,3 +334,28 @@ fn slurm_tasks_from_zero_or_one_and_skip_done() {
         untimed(&merged)
     );
 }
+
+#[test]
+fn merge_refuses_parts_whose_inputs_changed_since() {
+    let dir = tempfile::tempdir().unwrap();
+    let preset = dir.path().join("mine.toml");
+    let text = std::fs::read_to_string("presets/set1.toml").unwrap();
+    std::fs::write(&preset, &text).unwrap();
+    let template = dir.path().join("p-{k}.part");
+    for k in ["1/2", "2/2"] {
+        let mut a = MAP.to_vec();
+        a.extend(["--preset", preset.to_str().unwrap(), "--shard", k]);
+        a.extend(["--part", template.to_str().unwrap()]);
+        succeeds(&a);
+    }
+    let parts = [dir.path().join("p-1.part"), dir.path().join("p-2.part")];
+    let parts: Vec<&str> = parts.iter().map(|p| p.to_str().unwrap()).collect();
+    succeeds(&[&["merge"], &parts[..]].concat());
+    // The preset edited after the shards ran.
+    std::fs::write(&preset, text.replace("gap = 0.2", "gap = 0.25")).unwrap();
+    fails(
+        &[&["merge"], &parts[..]].concat(),
+        2,
+        &["p-1.part", "no longer makes here"],
+    );
+}

@@ -72,11 +72,15 @@ pub fn execute(args: &MergeArgs) -> Result<(), CliError> {
     shard::capture();
     let outcome = replay(cli.command, parts.clone(), args.format);
     let text = shard::captured();
-    outcome?;
-    match out {
-        Some(path) => Ok(crate::output::write_file(&path, text.as_bytes())?),
-        None => Ok(crate::output::stdout::print(&text)?),
+    // A report the command printed before failing (unreliable runs, exit 1)
+    // is written as the unsharded command writes it.
+    if !text.is_empty() {
+        match &out {
+            Some(path) => crate::output::write_file(path, text.as_bytes())?,
+            None => crate::output::stdout::print(&text)?,
+        }
     }
+    outcome
 }
 
 /// Runs the parts' command with its results from `parts`.
