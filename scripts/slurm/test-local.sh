@@ -23,6 +23,9 @@ skip() {
 }
 say() { echo "test-local: $*"; }
 
+# slurmd launches the jobs, which needs root here (as it does on a cluster).
+[ "$(id -u)" = 0 ] || skip "a local Slurm needs root (slurm-wlm, munge, slurmd); run it as root"
+
 # The binary.
 if [ -z "${POUNDING:-}" ]; then
     (cd "$repo" && cargo build --release --quiet --bin pounding)
@@ -46,7 +49,6 @@ sbin munged || missing+=(munge)
 sbin slurmdbd || missing+=(slurmdbd)
 { sbin mariadbd && sbin mariadb-install-db; } || missing+=(mariadb-server)
 if [ ${#missing[@]} -gt 0 ]; then
-    [ "$(id -u)" = 0 ] || skip "${missing[*]} not installed, and installing needs root"
     command -v apt-get >/dev/null || skip "${missing[*]} not installed, and there is no apt-get"
     say "installing ${missing[*]}"
     # No service may start from the packages' scripts: the daemons here are ours.
@@ -203,7 +205,7 @@ while [ $SECONDS -lt $deadline ]; do
     sleep 0.3
 done
 [ -n "$up" ] || fail "the node did not come up ($(timeout 5 sinfo -h -o '%n %t' 2>&1 | head -1))"
-say "slurmctld, slurmd and munged up after $(($(date +%s) - started)) s"
+say "munged, MariaDB, slurmdbd, slurmctld and slurmd up after $(($(date +%s) - started)) s"
 
 # A small map, unsharded here and as a job array of 3 shards there.
 work="$tmp/work"
