@@ -26,7 +26,7 @@ use crate::analysis::shard::{Fingerprint, Part, PartHeader, Shard, merge, partit
 use crate::output::shown;
 
 /// Where a part goes unless `--part` says otherwise.
-pub const DEFAULT_PART: &str = "{command}-{k}-of-{n}.part";
+pub const DEFAULT_PART: &str = "{command}-{K}-of-{N}.part";
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct ShardArgs {
@@ -35,8 +35,8 @@ pub struct ShardArgs {
     /// from a job array's SLURM_ARRAY_TASK_ID, _MIN and _COUNT.
     #[arg(long, value_name = "K/N|slurm")]
     pub shard: Option<String>,
-    /// The part's file with --shard; {k}, {n} and {command} are replaced
-    /// [default: {command}-{k}-of-{n}.part].
+    /// The part's file with --shard; {K}, {N} (either case) and {command}
+    /// are replaced [default: {command}-{K}-of-{N}.part].
     #[arg(long, value_name = "PATH")]
     pub part: Option<String>,
     /// With --shard: if the part already exists, is complete and is of this
@@ -143,7 +143,9 @@ impl ShardArgs {
         PathBuf::from(
             template
                 .replace("{k}", &shard.k.to_string())
+                .replace("{K}", &shard.k.to_string())
                 .replace("{n}", &shard.n.to_string())
+                .replace("{N}", &shard.n.to_string())
                 .replace("{command}", command),
         )
     }
