@@ -20,7 +20,7 @@
 //!   equal-damping correlation coefficient ρ of [`correlation`].
 
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::model::{Method, Params};
 use crate::solver::exact::ContactExtremes;
@@ -51,7 +51,7 @@ pub fn correlation(omega1: f64, omega2: f64, damping: f64) -> f64 {
 }
 
 /// The three code estimates of the gap from the separate peaks (SPEC §11).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct CodeRules {
     /// ABS: Π_u1 + Π_u2.
     pub absolute_sum: f64,
@@ -98,7 +98,7 @@ pub fn from_max_relative(max_relative_displacement: f64) -> f64 {
 }
 
 /// The exact minimum gap of one parameter set beside the code rules.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct MinimumGap {
     pub omega1: f64,
     pub omega2: f64,

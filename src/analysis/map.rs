@@ -18,7 +18,7 @@
 use std::collections::HashSet;
 use std::fmt;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::baseline::NewBaseline;
 use super::baseline::{BaselineCache, BaselineKey, FreePeaks};
@@ -272,7 +272,7 @@ impl MapPlan {
 }
 
 /// One cell of a map.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct MapCell {
     /// The values of the x and y axes.
     pub x: f64,
@@ -347,11 +347,17 @@ impl MapCell {
 /// row after row, reusing and filling `cache`.
 pub fn compute_rows(plan: &MapPlan, ys: &[f64], cache: &mut MapCache) -> Vec<MapCell> {
     let xs = plan.x.values();
-    let cells: Vec<(f64, f64, Params)> = ys
+    let at: Vec<(f64, f64)> = ys
         .iter()
         .flat_map(|&y| xs.iter().map(move |&x| (x, y)))
-        .map(|(x, y)| (x, y, plan.at(x, y)))
         .collect();
+    compute_cells(plan, &at, cache)
+}
+
+/// Computes the cells at the axis values `at` (x, y), in that order,
+/// reusing and filling `cache`: any set of cells, such as a shard's.
+pub fn compute_cells(plan: &MapPlan, at: &[(f64, f64)], cache: &mut MapCache) -> Vec<MapCell> {
+    let cells: Vec<(f64, f64, Params)> = at.iter().map(|&(x, y)| (x, y, plan.at(x, y))).collect();
 
     let points: Vec<Params> = cells.iter().map(|(_, _, q)| *q).collect();
     let batch = run_points(&points, ContactExtremes::Forces, |q| {

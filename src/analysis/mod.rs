@@ -40,6 +40,7 @@ pub mod limit_state;
 pub mod map;
 pub mod risk;
 pub mod separation;
+pub mod shard;
 pub mod similarity;
 pub mod spectrum;
 pub mod statistics;

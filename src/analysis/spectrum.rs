@@ -2,7 +2,7 @@
 //! every other Π fixed; at each point the peaks with pounding and without it
 //! (`gap = inf`), and the left structure's spectral region.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::gap::from_max_relative;
 use crate::model::Params;
@@ -14,7 +14,7 @@ use crate::solver::{RunResult, StructurePeaks, run_for_sweep};
 pub const REGION_THRESHOLD: f64 = 0.02;
 
 /// The left structure's spectral region at one point (SPEC §7).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Region {
     /// Pounding raises Π_u by more than 2 %.
@@ -47,7 +47,7 @@ impl Region {
 }
 
 /// One point of a spectrum.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SpectrumPoint {
     pub omega1: f64,
     pub omega2: f64,

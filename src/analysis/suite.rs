@@ -226,6 +226,19 @@ pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> 
     } else {
         result.clone()
     };
+    member_run(case, member, plan, result, free)
+}
+
+/// A member's row from its two runs (see [`run_member`]): the runs of a
+/// shard, read back from its part, give the row the unsharded suite has.
+pub fn member_run(
+    case: &SuiteCase,
+    member: &SuiteMember,
+    plan: &MemberPlan,
+    result: RunResult,
+    free: RunResult,
+) -> SuiteRun {
+    let params = plan.params;
     let min_gap = from_max_relative(
         result
             .max_relative_displacement

@@ -15,7 +15,7 @@
 //! is: every record sets its own Π-groups for the same buildings.
 
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::statistics::quantile;
 use super::suite::{MemberPlan, SuiteCase, SuiteRun, SuiteRunError, replan, run_member, scales};
@@ -134,7 +134,7 @@ pub fn cell_cases(
 }
 
 /// One cell of a suite map.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SuiteMapCell {
     pub x: f64,
     pub y: f64,
@@ -202,9 +202,21 @@ pub fn compute_cells(
     range: std::ops::Range<usize>,
     done: &(dyn Fn(&SuiteRun) + Sync),
 ) -> Vec<SuiteMapCell> {
-    let pairs: Vec<(usize, usize)> = range
-        .clone()
-        .flat_map(|c| (0..members.len()).map(move |j| (c, j)))
+    compute_listed(cells, plans, members, &range.collect::<Vec<_>>(), done)
+}
+
+/// [`compute_cells`] for the cells `list` (indices, any set, such as a
+/// shard's), in that order.
+pub fn compute_listed(
+    cells: &[(f64, f64, SuiteCase)],
+    plans: &[Vec<MemberPlan>],
+    members: &[SuiteMember],
+    list: &[usize],
+    done: &(dyn Fn(&SuiteRun) + Sync),
+) -> Vec<SuiteMapCell> {
+    let pairs: Vec<(usize, usize)> = list
+        .iter()
+        .flat_map(|&c| (0..members.len()).map(move |j| (c, j)))
         .collect();
     let runs: Vec<SuiteRun> = pairs
         .par_iter()
@@ -214,9 +226,9 @@ pub fn compute_cells(
             run
         })
         .collect();
-    range
+    list.iter()
         .zip(runs.chunks(members.len().max(1)))
-        .map(|(c, at)| SuiteMapCell::of(cells[c].0, cells[c].1, at))
+        .map(|(&c, at)| SuiteMapCell::of(cells[c].0, cells[c].1, at))
         .collect()
 }
 

@@ -43,6 +43,8 @@ pub struct GapArgs {
     pub output: FormatArg,
     #[command(flatten)]
     pub long: LongArg,
+    #[command(flatten)]
+    pub shard: super::shard::ShardArgs,
 }
 
 pub fn execute(args: &GapArgs) -> Result<(), CliError> {
@@ -60,6 +62,11 @@ pub fn report_with(
         .records
         .request(&args.params, args.output, args.long, &others)?
     {
+        if args.shard.shard.is_some() {
+            return Err(CliError::Usage(
+                "--shard: gap shards a sweep over --x, not a suite; drop --shard or --suite".into(),
+            ));
+        }
         if args.x.is_some() {
             return Err(CliError::Usage(
                 "--x: a suite's separation is for the preset's buildings; drop --x or --suite"
@@ -92,11 +99,16 @@ pub fn report_with(
     work.check("gap", args.long.allow_long, true)?;
     let progress = Progress::start(&work);
     let t = Instant::now();
-    let gaps = match &axis {
+    let whole = || match &axis {
         Some(_) => minimum_gaps(&points.iter().map(|(_, q)| *q).collect::<Vec<_>>()),
         None => vec![minimum_gap(&p)],
     };
-    let elapsed_ms = t.elapsed().as_secs_f64() * 1e3;
+    let Some((gaps, merged_ms)) =
+        super::shard::gap::run(&args.shard, &preset.name, &points, axis.is_some(), whole)?
+    else {
+        return Ok(());
+    };
+    let elapsed_ms = merged_ms.unwrap_or(t.elapsed().as_secs_f64() * 1e3);
     drop(progress);
     let mut report = GapReport::new(&preset.name, &p, axis.as_ref(), &points, &gaps, elapsed_ms);
     report.mu = mu;

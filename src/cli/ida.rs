@@ -98,12 +98,31 @@ pub fn report_with(
     work.check("ida", args.suite.long.allow_long, false)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
-    let runs = run_levels(&case, &members, &plans, &|r: &SuiteRun| {
-        progress.add(record_steps(&r.params))
-    });
+    let pairs: Vec<_> = plans
+        .iter()
+        .flat_map(|at| members.iter().zip(at).map(|(m, p)| (&case, m, p)))
+        .collect();
+    let whole = || {
+        let done = |r: &SuiteRun| progress.add(record_steps(&r.params));
+        run_levels(&case, &members, &plans, &done)
+            .into_iter()
+            .flatten()
+            .collect()
+    };
+    let extra = (&levels, &states);
+    let shard = &args.suite.shard;
+    let Some((runs, merged_ms)) =
+        super::shard::suite::runs(shard, "ida", &preset.name, &pairs, &members, &extra, whole)?
+    else {
+        return Ok(());
+    };
+    let runs: Vec<Vec<SuiteRun>> = runs
+        .chunks(members.len().max(1))
+        .map(<[_]>::to_vec)
+        .collect();
     let fragility = fragilities(&levels, &runs, &states);
     drop(progress);
-    let elapsed_ms = start.elapsed().as_secs_f64() * 1e3;
+    let elapsed_ms = merged_ms.unwrap_or(start.elapsed().as_secs_f64() * 1e3);
 
     let report = IdaReport {
         provenance: Provenance::new(&preset.name, UNITS),

@@ -46,6 +46,8 @@ pub struct MapArgs {
     pub output: FormatArg,
     #[command(flatten)]
     pub long: LongArg,
+    #[command(flatten)]
+    pub shard: super::shard::ShardArgs,
 }
 
 pub fn execute(args: &MapArgs) -> Result<(), CliError> {
@@ -58,10 +60,11 @@ pub fn report_with(
     args: &MapArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    if let Some(suite_args) = args
+    if let Some(mut suite_args) = args
         .records
         .request(&args.params, args.output, args.long, &[])?
     {
+        suite_args.shard = args.shard.clone();
         return super::map_suite::report_with(&suite_args, &args.x, &args.y, emit);
     }
     let (preset, p) = args.params.resolve_for_many()?;
@@ -77,8 +80,14 @@ pub fn report_with(
     work.check("map", args.long.allow_long, true)?;
     let progress = Progress::start(&work);
     let t = Instant::now();
-    let (cells, cache) = compute_with(&plan, &progress);
-    let elapsed_ms = t.elapsed().as_secs_f64() * 1e3;
+    let Some(((cells, cache), merged_ms)) =
+        super::shard::map::run(&args.shard, &preset.name, &plan, || {
+            compute_with(&plan, &progress)
+        })?
+    else {
+        return Ok(());
+    };
+    let elapsed_ms = merged_ms.unwrap_or(t.elapsed().as_secs_f64() * 1e3);
     drop(progress);
     let report = MapReport::new(&preset.name, &plan, &cells, &cache, elapsed_ms);
     emit(&report)

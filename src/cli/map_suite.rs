@@ -13,6 +13,7 @@ use super::CliError;
 use super::description::Provenance;
 use super::output::{Emit, Format, num, print};
 use super::progress::Progress;
+use super::shard::Sweep;
 use super::suite::{SuiteArgs, case_of, members, record_steps, work_of};
 use crate::analysis::suite::SuiteRun;
 use crate::analysis::suite_map::{
@@ -71,6 +72,18 @@ pub fn report_with(
     })?;
     let work = work_of(plans.iter().flatten());
     work.check("map --suite", suite_args.long.allow_long, false)?;
+    let sharded = super::shard::suite::map_cells(
+        &suite_args.shard,
+        &preset.name,
+        &case,
+        &cells,
+        &plans,
+        &members,
+        &(&x, &y),
+    )?;
+    if matches!(sharded, Sweep::Done) {
+        return Ok(());
+    }
     let format = suite_args.output.format;
     let measure = case.scaling.measure.to_string();
     let row_cells = |c: &SuiteMapCell| -> Vec<String> {
@@ -95,13 +108,16 @@ pub fn report_with(
     let width = x.values.len();
     let mut all = Vec::with_capacity(cells.len());
     for row in 0..y.values.len() {
-        let computed = compute_cells(
-            &cells,
-            &plans,
-            &members,
-            row * width..(row + 1) * width,
-            &done,
-        );
+        let computed = match &sharded {
+            Sweep::Merged(all, _) => all[row * width..(row + 1) * width].to_vec(),
+            _ => compute_cells(
+                &cells,
+                &plans,
+                &members,
+                row * width..(row + 1) * width,
+                &done,
+            ),
+        };
         if format == Format::Csv {
             let rows: Vec<Vec<String>> = computed.iter().map(row_cells).collect();
             let text = csv(&COLUMNS, &rows);
@@ -120,7 +136,10 @@ pub fn report_with(
         x: &x,
         y: &y,
         cells: all,
-        elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
+        elapsed_ms: match sharded {
+            Sweep::Merged(_, ms) => ms,
+            _ => start.elapsed().as_secs_f64() * 1e3,
+        },
     };
     match format {
         Format::Csv => Ok(()),

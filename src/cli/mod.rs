@@ -20,11 +20,14 @@ pub mod gap_suite;
 pub mod ida;
 pub mod map;
 pub mod map_suite;
+#[cfg(feature = "app")]
+pub mod merge;
 pub mod output;
 pub mod params;
 pub mod progress;
 pub mod records;
 pub mod run;
+pub mod shard;
 pub mod similarity;
 pub mod spectrum;
 pub mod stress;
@@ -130,6 +133,9 @@ pub enum Command {
     Figure(Box<figure::FigureArgs>),
     /// Ground-motion records for suites: `records synth` writes simulated ones (SPEC §12).
     Records(records::RecordsArgs),
+    /// The parts of a sharded sweep (`--shard K/N`) into the output the
+    /// unsharded command writes.
+    Merge(merge::MergeArgs),
 }
 
 #[cfg(feature = "app")]
@@ -167,6 +173,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> i32
         Some(Command::Stress(args)) => stress::execute(&args),
         Some(Command::Figure(args)) => figure::execute(&args),
         Some(Command::Records(args)) => records::execute(&args),
+        Some(Command::Merge(args)) => merge::execute(&args),
         None => tui::execute(&cli.tui),
     };
     crate::output::temp::remove_live();

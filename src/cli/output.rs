@@ -62,6 +62,9 @@ pub fn printer(format: Format) -> impl FnOnce(&dyn Emit) -> Result<(), CliError>
 
 /// Writes `text` to stdout.
 pub fn print(text: &str) -> Result<(), CliError> {
+    if super::shard::held(text) {
+        return Ok(());
+    }
     Ok(crate::output::stdout::print(text)?)
 }
 

@@ -42,6 +42,8 @@ pub struct SpectrumArgs {
     pub output: FormatArg,
     #[command(flatten)]
     pub long: LongArg,
+    #[command(flatten)]
+    pub shard: super::shard::ShardArgs,
 }
 
 /// What to sweep, resolved from the preset's `[spectrum]` table and the flags (flags win).
@@ -182,7 +184,16 @@ pub fn report_with(
     )?;
     let work = plan.work()?;
     work.check("spectrum", args.long.allow_long, true)?;
-    let (curves, cache, elapsed_ms) = plan.compute_with(&Progress::start(&work))?;
+    let Some((curves, cache, elapsed_ms)) = super::shard::spectrum::run(
+        &args.shard,
+        &plan.preset,
+        &plan.specs()?,
+        &plan.grid,
+        || plan.compute_with(&Progress::start(&work)),
+    )?
+    else {
+        return Ok(());
+    };
     let report = SpectrumReport::new(&plan, &curves, &cache, elapsed_ms);
     emit(&report)
 }

@@ -50,6 +50,8 @@ pub struct SuiteArgs {
     /// Exit 0 even when a record's result is unreliable (it is still flagged).
     #[arg(long)]
     pub allow_unreliable: bool,
+    #[command(flatten)]
+    pub shard: super::shard::ShardArgs,
 }
 
 /// `--suite`, `--im` and `--level` for a command that runs one set or,
@@ -98,6 +100,7 @@ impl SuiteOptions {
             output,
             long,
             allow_unreliable: true,
+            shard: Default::default(),
         }))
     }
 }
@@ -185,6 +188,16 @@ pub fn work_of<'a>(plans: impl IntoIterator<Item = &'a MemberPlan>) -> Work {
 /// runs them in parallel with progress; `what` names the request in the
 /// work bound's message.
 pub fn run(args: &SuiteArgs, what: &str) -> Result<Ran, CliError> {
+    run_or_shard(args, what)?.ok_or_else(|| {
+        usage(format!(
+            "--shard: {what} does not shard; shard suite, ida, map, spectrum or gap --x"
+        ))
+    })
+}
+
+/// [`run`], or with `--shard` one shard of it (then `None`: its part was
+/// written), or under `pounding merge` the runs from the parts.
+pub fn run_or_shard(args: &SuiteArgs, what: &str) -> Result<Option<Ran>, CliError> {
     let (preset, case) = case_of(args)?;
     let members = members(&args.suite)?;
     let plans = plan(&case, &members).map_err(|e| usage(e.to_string()))?;
@@ -192,16 +205,34 @@ pub fn run(args: &SuiteArgs, what: &str) -> Result<Ran, CliError> {
     work.check(what, args.long.allow_long, false)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
-    let runs = run_suite(&case, &members, &plans, &|r: &SuiteRun| {
-        progress.add(record_steps(&r.params))
-    });
+    let pairs: Vec<_> = members
+        .iter()
+        .zip(&plans)
+        .map(|(m, p)| (&case, m, p))
+        .collect();
+    let Some((runs, merged_ms)) = super::shard::suite::runs(
+        &args.shard,
+        what,
+        &preset.name,
+        &pairs,
+        &members,
+        &(),
+        || {
+            run_suite(&case, &members, &plans, &|r: &SuiteRun| {
+                progress.add(record_steps(&r.params))
+            })
+        },
+    )?
+    else {
+        return Ok(None);
+    };
     drop(progress);
-    Ok(Ran {
+    Ok(Some(Ran {
         preset,
         case,
         runs,
-        elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
-    })
+        elapsed_ms: merged_ms.unwrap_or(start.elapsed().as_secs_f64() * 1e3),
+    }))
 }
 
 pub fn execute(args: &SuiteArgs) -> Result<(), CliError> {
@@ -213,12 +244,15 @@ pub fn report_with(
     args: &SuiteArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let Ran {
+    let Some(Ran {
         preset,
         case,
         runs,
         elapsed_ms,
-    } = run(args, "suite")?;
+    }) = run_or_shard(args, "suite")?
+    else {
+        return Ok(());
+    };
     let report = SuiteReport::new(&preset.name, &args.suite, &case, &runs, elapsed_ms);
     emit(&report)?;
     let unreliable: Vec<String> = runs

@@ -1,6 +1,6 @@
 //! What a run reports (SPEC §6).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::model::Method;
 
@@ -10,7 +10,7 @@ use crate::model::Method;
 /// Two are equal when every number is: a quantity a run did not compute
 /// (NaN) equals another not computed, so that two runs of a sweep, which
 /// skips A and E_h, compare as the same result.
-#[derive(Debug, Clone, Copy, Default, Serialize)]
+#[derive(Debug, Clone, Copy, Default, Serialize, Deserialize)]
 pub struct StructurePeaks {
     pub peak_displacement: f64,
     pub peak_velocity: f64,
@@ -115,7 +115,7 @@ impl StructurePeaks {
 }
 
 /// One contact phase, from the located onset to the located separation.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Impact {
     /// τ at which contact began.
     pub start: f64,
@@ -157,7 +157,7 @@ impl Impact {
 /// at the two ends times the displacement increment; with the average
 /// acceleration rule this is the step's exact discrete work, so the balance
 /// closes to the Newton tolerance and round-off.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct EnergyBalance {
     /// E_in = −∫ (Π_m ẋ1 + ẋ2) g dτ.
     pub input: f64,
@@ -179,7 +179,7 @@ pub struct EnergyBalance {
 }
 
 /// The summary of one run.
-#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct RunResult {
     pub left: StructurePeaks,
     pub right: StructurePeaks,
@@ -215,7 +215,7 @@ pub struct RunResult {
 }
 
 /// Why a run ended before τ_end.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum StopReason {
     /// The observer asked to stop (a superseded explorer job).
@@ -243,7 +243,7 @@ impl StopReason {
 }
 
 /// Where (τ) and why a run stopped early.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Stop {
     pub tau: f64,
     pub reason: StopReason,
