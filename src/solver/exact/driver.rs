@@ -37,6 +37,7 @@ use super::peaks::{raise_abs_max, raise_max};
 use super::quiet::{Bands, Majorants, QuietStep, stays_below};
 use super::roots::{fires_at_start, first_crossing};
 use super::sample::{self, Limits, SampleMajorants, SampleMap};
+use super::sample_peaks::{IntervalSeries, raise_relative};
 use super::segment::{Event, Segment};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
@@ -290,8 +291,14 @@ impl<'a> Run<'a> {
             samples: match options.excitation {
                 Excitation::Record(m) if options.quiet_samples => {
                     let h = m.record.dt * m.omega;
+                    // A peak inside a sample is located on the series a free
+                    // segment over the sample would take, of its degree.
+                    let series_degree = short_free_degree(h / free_step);
                     let map = |s: &Structure, k: f64| {
-                        SampleMap::new(s, k, h, FREE_DEGREE, options.energy)
+                        SampleMap::new(s, k, h, FREE_DEGREE, options.energy).map(|mut m| {
+                            m.series_degree = series_degree;
+                            m
+                        })
                     };
                     let maps =
                         structures.map(|s| [map(&s, s.stiffness), map(&s, s.alpha * s.stiffness)]);
@@ -622,7 +629,25 @@ impl<'a> Run<'a> {
             });
             let gap_majorant = [ma[0] - mb[0], ma[1] - mb[1], ma[2] - mb[2], ma[3] + mb[3]];
             if !stays_below(&gap_majorant, ceiling, h) {
-                return false;
+                // Below the gap, only Π_d,min's running maximum may rise:
+                // it is located on the two structures' series, as a
+                // segment would locate it.
+                if !(ceiling < self.p.gap && stays_below(&gap_majorant, self.p.gap, h)) {
+                    return false;
+                }
+                let [sa, sb] = [0, 1].map(|i| {
+                    let map = &maps[i][self.branch[i].kind()];
+                    IntervalSeries::new(
+                        map.stiffness,
+                        map.damping,
+                        self.loads[i],
+                        [self.x[i], self.v[i]],
+                        ground,
+                        map.series_degree,
+                    )
+                });
+                let swing = a.swing[0] + b.swing[0];
+                raise_relative([&sa, &sb], h, swing, &mut max_relative);
             }
         }
         if self.options.energy {

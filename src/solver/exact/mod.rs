@@ -43,6 +43,7 @@ pub mod peaks;
 pub mod quiet;
 pub mod roots;
 pub mod sample;
+pub mod sample_peaks;
 pub mod segment;
 pub mod series;
 

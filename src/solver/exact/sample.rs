@@ -28,6 +28,7 @@
 use super::acceleration;
 use super::dynamics::{Branch, Structure, oscillator};
 use super::quiet::Bands;
+use super::sample_peaks::IntervalSeries;
 use super::series::{MAX_DEGREE, Series};
 
 use super::linear_map;
@@ -47,6 +48,10 @@ pub struct SampleMap {
     /// ∫₀ʰ ẋ_j ẋ_l dt of their rates: the work integrals of [`work`].
     moment: [f64; INPUTS],
     gram: [[f64; INPUTS]; INPUTS],
+    /// Degree of the interval's series where a peak inside it is located
+    /// ([`super::sample_peaks`]): that of a free segment of length h, set
+    /// by the run (the unit responses' own degree until then).
+    pub series_degree: usize,
     /// K/m and c/m of the branch, and 1/(K/m) (0 where K = 0).
     pub stiffness: f64,
     pub damping: f64,
@@ -115,6 +120,7 @@ impl SampleMap {
             swing,
             moment,
             gram,
+            series_degree: n,
             stiffness: k,
             damping: c,
             inverse_stiffness: if k > 0.0 { 1.0 / k } else { 0.0 },
@@ -301,8 +307,14 @@ pub fn below(q: f64, hi: f64) -> bool {
 ///    sample of one);
 /// 3. its cubic majorant keeps it inside its band.
 ///
-/// `None`: not shown quiet, the interval is left to the series, which
-/// locates the peak or event inside it.
+/// Where none clears |x| or |ẋ| but the event band alone holds (by the
+/// swing, else the majorant, against the yield surface or the loading side
+/// only), no event can happen and only the peak may rise inside: it is
+/// located on the interval's series ([`IntervalSeries`]), as a segment
+/// would locate it, and the sample stays on the map.
+///
+/// `None`: an event may happen (or |ẍ + g| may beat its peak), the interval
+/// is left to the series, which locates it.
 #[inline]
 pub fn clear(
     map: &SampleMap,
@@ -357,6 +369,12 @@ pub fn clear(
     let between = |m: &[f64; 4], [lo, hi]: [f64; 2]| {
         super::quiet::stays_below(m, hi, h) && super::quiet::stays_above(m, lo, h)
     };
+    let mut series = None;
+    let mut located = || {
+        *series.get_or_insert_with(|| {
+            IntervalSeries::new(k, c, load, [x, v], ground, map.series_degree)
+        })
+    };
     // x: monotone while ẋ keeps its sign.
     let x_clear = (x - sx > bands.x[0] && x + sx < bands.x[1])
         || (v.abs() > sv && below(x_lo, end[0]) && below(end[0], x_hi) && {
@@ -365,7 +383,10 @@ pub fn clear(
         })
         || between(&majorant().x, bands.x);
     if !x_clear {
-        return None;
+        if !((x - sx > x_lo && x + sx < x_hi) || between(&majorant().x, [x_lo, x_hi])) {
+            return None;
+        }
+        located().raise_displacement(h, sx, &mut peaks[0]);
     }
     // ẋ: monotone while ẍ keeps its sign.
     let accel_change = c * sv + k * sx + ground[1].abs() * h;
@@ -382,7 +403,10 @@ pub fn clear(
             })
         || between(&majorant().v, bands.v);
     if !v_clear {
-        return None;
+        if !((v - sv > v_lo && v + sv < v_hi) || between(&majorant().v, [v_lo, v_hi])) {
+            return None;
+        }
+        located().raise_velocity(h, sv, &mut peaks[1]);
     }
     // ẍ + g: monotone while −(c/m) ẍ − (K/m) ẋ keeps its sign.
     let a_clear = within_a
