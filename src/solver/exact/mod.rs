@@ -44,6 +44,7 @@ pub mod quiet;
 pub mod roots;
 pub mod sample;
 pub mod sample_peaks;
+pub mod sample_run;
 pub mod segment;
 pub mod series;
 

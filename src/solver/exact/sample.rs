@@ -29,6 +29,7 @@ use super::acceleration;
 use super::dynamics::{Branch, Structure, oscillator};
 use super::quiet::Bands;
 use super::sample_peaks::IntervalSeries;
+use super::sample_run::Lane;
 use super::series::{MAX_DEGREE, Series};
 
 use super::linear_map;
@@ -139,6 +140,16 @@ impl SampleMap {
     #[inline(always)]
     pub fn advance(&self, inputs: &[f64; INPUTS], equilibrium: f64) -> [f64; 2] {
         linear_map::advance(&self.end, inputs, equilibrium)
+    }
+
+    /// This map with load Q/m, laid out for the tight loop of quiet samples.
+    pub fn lane(&self, load: f64) -> Lane {
+        Lane::new(
+            &self.end,
+            &self.swing,
+            [self.stiffness, self.inverse_stiffness, self.damping],
+            load,
+        )
     }
 
     /// One interval by the swing bounds alone: whether they keep x, ẋ and
