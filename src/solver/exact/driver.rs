@@ -731,6 +731,9 @@ impl<'a> Run<'a> {
         let factor = motion.scale / motion.amplitude;
         let per_step = factor / h;
         let (mut x, mut v, mut tau) = (self.x, self.v, self.tau);
+        // The work integrals in a local copy, the same sums in the same
+        // order, so that they do not wait on memory from one sample to the next.
+        let mut work = self.work;
         let (mut k, mut taken) = (self.sample_cursor.1, 0);
         let budget = POLL_EVERY - 1 - self.segments % POLL_EVERY;
         while taken < budget {
@@ -755,10 +758,10 @@ impl<'a> Run<'a> {
                 // (monotone ends, majorants, peaks located inside), on the
                 // same branches; if they clear it, the peaks they raised
                 // give new bands and the run goes on.
-                (self.x, self.v, self.tau) = (x, v, tau);
+                (self.x, self.v, self.tau, self.work) = (x, v, tau, work);
                 self.sample_cursor = (tau, k);
                 if self.sample_interval(end, ground, next_k) {
-                    (x, v, tau, k) = (self.x, self.v, self.tau, next_k);
+                    (x, v, tau, k, work) = (self.x, self.v, self.tau, next_k, self.work);
                     (bands, ceiling) = self.quiet_bands::<ACCEL>();
                     taken += 1;
                     continue;
@@ -767,7 +770,7 @@ impl<'a> Run<'a> {
                 return;
             }
             if ENERGY {
-                self.work.add_quiet([
+                work.add_quiet([
                     sample::work(&m0, masses[0], &s0.inputs, loads[0], [x[0], s0.end[0]]),
                     sample::work(&m1, masses[1], &s1.inputs, loads[1], [x[1], s1.end[0]]),
                 ]);
@@ -781,6 +784,7 @@ impl<'a> Run<'a> {
         self.x = x;
         self.v = v;
         self.tau = tau;
+        self.work = work;
         self.sample_cursor = (tau, k);
         self.segments += taken;
     }
