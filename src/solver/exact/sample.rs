@@ -572,6 +572,76 @@ mod tests {
         }
     }
 
+    /// An interval in which x turns (ẋ changes sign) above its running peak:
+    /// with the yield surface far, the sample is cleared and the peak is the
+    /// interior maximum, equal to the bit to the one a free segment's series
+    /// of the same degree locates; with the yield surface within reach, the
+    /// sample is left to the series.
+    #[test]
+    fn a_peak_inside_a_sample_is_located_and_a_reachable_yield_is_not_cleared() {
+        use crate::solver::exact::peaks::raise_abs_max;
+        let s = Structure::pair(&SET1)[1];
+        let h = 0.1;
+        let mut map = SampleMap::new(&s, s.stiffness, h, 20, false).expect("Ω h ≤ 1");
+        map.series_degree = 12;
+        // Rising at the start, falling at the end: a maximum inside.
+        let (x0, v0, ground, load) = (0.5, 0.4, [3.0, -2.0], 0.0);
+        let (inputs, eq) = map.inputs(x0, v0, ground, load);
+        let end = map.advance(&inputs, eq);
+        assert!(end[1] < 0.0, "ẋ changes sign: {end:?}");
+        let limits = |uy: f64| Limits {
+            displacement: x0.max(end[0].abs()),
+            velocity: 10.0,
+            absolute_acceleration: f64::INFINITY,
+            branch: Branch::Elastic { offset: 0.0 },
+            yield_displacement: uy,
+        };
+        let cleared = clear(&map, x0, v0, ground, load, &limits(f64::INFINITY))
+            .expect("no event can happen: the peak is located");
+        let mut g = Series {
+            degree: 1,
+            ..Series::default()
+        };
+        (g.c[0], g.c[1]) = (ground[0], ground[1]);
+        let inv_m = 1.0 / s.mass;
+        let q = oscillator(s.damping * inv_m, s.stiffness * inv_m, load, x0, v0, &g, 12);
+        let mut peak = limits(f64::INFINITY).displacement;
+        raise_abs_max(&q, Some(&q.derivative()), h, q.swing(h), &mut peak);
+        assert_eq!(cleared.peaks[0], peak);
+        assert!(peak > x0 && peak > end[0], "{peak} inside");
+        // The yield surface between the start and the maximum.
+        assert!(clear(&map, x0, v0, ground, load, &limits(0.5 * (x0 + peak))).is_none());
+    }
+
+    /// The tight loop's lane against the map: the same end state to a few
+    /// units in the last place and swings at least as large.
+    #[test]
+    fn a_lane_steps_as_the_map() {
+        let s = Structure::pair(&SET1)[0];
+        let h = 0.05;
+        let bands = Bands::new(
+            Branch::Elastic { offset: 0.0 },
+            f64::INFINITY,
+            9.0,
+            9.0,
+            9.0,
+        );
+        for (k, load) in [(s.stiffness, 0.3), (0.0, 0.2)] {
+            let map = SampleMap::new(&s, k, h, 20, false).expect("Ω h ≤ 1");
+            let lane = map.lane(load);
+            let (x, v, ground) = (0.7, -0.4, [0.6, 2.5]);
+            let (inputs, eq) = map.inputs(x, v, ground, load);
+            let end = map.advance(&inputs, eq);
+            let [sx, _] = map.swing(&inputs);
+            let step = lane.step::<true>(x, v, ground, &bands);
+            for j in 0..2 {
+                assert!((step.end[j] - end[j]).abs() <= 4.0 * f64::EPSILON * end[j].abs().max(1.0));
+            }
+            assert!(step.swing_x >= sx * (1.0 - 1e-15) && step.clear);
+            assert_eq!(step.inputs, inputs);
+        }
+    }
+
     #[test]
     fn a_coarse_interval_is_left_to_the_series() {
         let s = Structure::pair(&SET1)[1];
