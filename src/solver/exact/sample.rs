@@ -634,8 +634,8 @@ mod tests {
             let end = map.advance(&inputs, eq);
             let [sx, _] = map.swing(&inputs);
             let step = lane.step::<true>(x, v, ground, &bands);
-            for j in 0..2 {
-                assert!((step.end[j] - end[j]).abs() <= 4.0 * f64::EPSILON * end[j].abs().max(1.0));
+            for (a, b) in step.end.iter().zip(end) {
+                assert!((a - b).abs() <= 4.0 * f64::EPSILON * b.abs().max(1.0));
             }
             assert!(step.swing_x >= sx * (1.0 - 1e-15) && step.clear);
             assert_eq!(step.inputs, inputs);
