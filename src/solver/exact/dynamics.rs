@@ -197,10 +197,15 @@ pub fn free_series(
         // The constant load enters the first step only.
         x[i].c[2] = (qi * inv_m - g.c[0] - c[i] * v0[i] - k[i] * x0[i]) * INV_PAIR[0];
     }
+    // The last two coefficients of each chain ride in registers, so that
+    // each step waits on one multiply-add and not on a store and a load.
+    let mut last = [[x[0].c[1], x[0].c[2]], [x[1].c[1], x[1].c[2]]];
     for j in 1..n.saturating_sub(1) {
         for i in 0..2 {
-            let xi = &mut x[i];
-            xi.c[j + 2] = next_free_coefficient(c[i], k[i], g.c[j], j, xi.c[j], xi.c[j + 1]);
+            let [xj, xj1] = last[i];
+            let next = next_free_coefficient(c[i], k[i], g.c[j], j, xj, xj1);
+            x[i].c[j + 2] = next;
+            last[i] = [xj1, next];
         }
     }
 }
@@ -226,8 +231,12 @@ pub fn oscillator(c: f64, k: f64, load: f64, x0: f64, v0: f64, g: &Series, n: us
     if n >= 2 {
         x.c[2] = (load - g.c[0] - c * v0 - k * x0) * INV_PAIR[0];
     }
+    // As in free_series: the last two coefficients in registers.
+    let [mut xj, mut xj1] = [x.c[1], x.c[2]];
     for j in 1..n.saturating_sub(1) {
-        x.c[j + 2] = next_free_coefficient(c, k, g.c[j], j, x.c[j], x.c[j + 1]);
+        let next = next_free_coefficient(c, k, g.c[j], j, xj, xj1);
+        x.c[j + 2] = next;
+        [xj, xj1] = [xj1, next];
     }
     x
 }
