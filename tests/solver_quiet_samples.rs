@@ -154,6 +154,9 @@ fn quiet_samples_agree_with_the_series_with_and_without_pounding_and_yielding() 
                     ..base
                 },
             ),
+            // α = 0: no stiffness once yielded, the load Q/m an input of
+            // its own in the map and the tight loop.
+            ("pounding, perfectly plastic", Params { alpha: 0.0, ..base }),
             // Kelvin (the force jumps at onset) and a wide gap (few impacts).
             (
                 "kelvin, wide gap",

@@ -37,6 +37,7 @@ use super::peaks::{raise_abs_max, raise_max};
 use super::quiet::{Bands, Majorants, QuietStep, stays_below};
 use super::roots::{fires_at_start, first_crossing};
 use super::sample::{self, Limits, SampleMajorants, SampleMap};
+use super::sample_peaks::{IntervalSeries, raise_relative};
 use super::segment::{Event, Segment};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
@@ -290,8 +291,14 @@ impl<'a> Run<'a> {
             samples: match options.excitation {
                 Excitation::Record(m) if options.quiet_samples => {
                     let h = m.record.dt * m.omega;
+                    // A peak inside a sample is located on the series a free
+                    // segment over the sample would take, of its degree.
+                    let series_degree = short_free_degree(h / free_step);
                     let map = |s: &Structure, k: f64| {
-                        SampleMap::new(s, k, h, FREE_DEGREE, options.energy)
+                        SampleMap::new(s, k, h, FREE_DEGREE, options.energy).map(|mut m| {
+                            m.series_degree = series_degree;
+                            m
+                        })
                     };
                     let maps =
                         structures.map(|s| [map(&s, s.stiffness), map(&s, s.alpha * s.stiffness)]);
@@ -560,6 +567,22 @@ impl<'a> Run<'a> {
         if !(end - self.tau < to_end) {
             return false;
         }
+        if !self.sample_interval(end, ground, next_k) {
+            return false;
+        }
+        self.quiet_run(to_end - h);
+        true
+    }
+
+    /// One sample interval from τ to `end` under g = g_k + s t (`ground`),
+    /// `next_k` the interval after it, by the map if [`sample::clear`]
+    /// clears both structures (peaks inside located) and x1 − x2 stays
+    /// below the gap; returns whether it did.
+    fn sample_interval(&mut self, end: f64, ground: [f64; 2], next_k: usize) -> bool {
+        let Some(maps) = &self.samples else {
+            return false;
+        };
+        let h = maps[0][0].length;
         let mut cleared = [None; 2];
         for i in 0..2 {
             let peaks = self.result.structure(i);
@@ -622,7 +645,25 @@ impl<'a> Run<'a> {
             });
             let gap_majorant = [ma[0] - mb[0], ma[1] - mb[1], ma[2] - mb[2], ma[3] + mb[3]];
             if !stays_below(&gap_majorant, ceiling, h) {
-                return false;
+                // Below the gap, only Π_d,min's running maximum may rise:
+                // it is located on the two structures' series, as a
+                // segment would locate it.
+                if !(ceiling < self.p.gap && stays_below(&gap_majorant, self.p.gap, h)) {
+                    return false;
+                }
+                let [sa, sb] = [0, 1].map(|i| {
+                    let map = &maps[i][self.branch[i].kind()];
+                    IntervalSeries::new(
+                        map.stiffness,
+                        map.damping,
+                        self.loads[i],
+                        [self.x[i], self.v[i]],
+                        ground,
+                        map.series_degree,
+                    )
+                });
+                let swing = a.swing[0] + b.swing[0];
+                raise_relative([&sa, &sb], h, swing, &mut max_relative);
             }
         }
         if self.options.energy {
@@ -651,7 +692,6 @@ impl<'a> Run<'a> {
         self.v = [a.end[1], b.end[1]];
         self.tau = end;
         self.sample_cursor = (end, next_k);
-        self.quiet_run(to_end - h);
         true
     }
 
@@ -662,67 +702,81 @@ impl<'a> Run<'a> {
     /// these bounds do not clear is left to [`Run::quiet_sample`] (with its
     /// majorants) or the series. Stops before the next poll of the observer.
     fn quiet_run(&mut self, to_end: f64) {
+        match (self.options.absolute_acceleration, self.options.energy) {
+            (false, false) => self.quiet_run_with::<false, false>(to_end),
+            (false, true) => self.quiet_run_with::<false, true>(to_end),
+            (true, false) => self.quiet_run_with::<true, false>(to_end),
+            (true, true) => self.quiet_run_with::<true, true>(to_end),
+        }
+    }
+
+    /// [`Run::quiet_run`] with |ẍ + g| held to its running peak where
+    /// `ACCEL` and the work integrated where `ENERGY`. g_k and the slope s
+    /// are taken from the record by products with its factor and the
+    /// factor over h (a unit in the last place from
+    /// [`crate::model::RecordMotion::at_sample`]'s quotients).
+    fn quiet_run_with<const ACCEL: bool, const ENERGY: bool>(&mut self, to_end: f64) {
         let (Some(maps), Excitation::Record(motion)) = (&self.samples, self.options.excitation)
         else {
             return;
         };
         let tau_end = self.tau + to_end;
         let h = maps[0][0].length;
-        let [m0, m1] = [0, 1].map(|i| &maps[i][self.branch[i].kind()]);
-        let [b0, b1] = [0, 1].map(|i| {
-            let peaks = self.result.structure(i);
-            Bands::new(
-                self.branch[i],
-                self.structures[i].yield_displacement,
-                peaks.peak_displacement,
-                peaks.peak_velocity,
-                if self.options.absolute_acceleration {
-                    peaks.peak_absolute_acceleration
-                } else {
-                    f64::INFINITY
-                },
-            )
-        });
+        let [m0, m1] = [0, 1].map(|i| maps[i][self.branch[i].kind()]);
         let loads = self.loads;
-        let ceiling = if self.result.impacts.is_empty() {
-            self.p.gap.min(self.max_relative_displacement)
-        } else {
-            self.p.gap
-        };
-        let energy = self.options.energy;
+        let lanes = [m0.lane(loads[0]), m1.lane(loads[1])];
+        let (mut bands, mut ceiling) = self.quiet_bands::<ACCEL>();
         let masses = [self.structures[0].mass, self.structures[1].mass];
+        let record = &motion.record.acceleration;
+        let factor = motion.scale / motion.amplitude;
+        let per_step = factor / h;
         let (mut x, mut v, mut tau) = (self.x, self.v, self.tau);
+        // The work integrals in a local copy, the same sums in the same
+        // order, so that they do not wait on memory from one sample to the next.
+        let mut work = self.work;
         let (mut k, mut taken) = (self.sample_cursor.1, 0);
         let budget = POLL_EVERY - 1 - self.segments % POLL_EVERY;
         while taken < budget {
-            let (end, ground, next_k) = match motion.at_sample(k) {
-                Some((next, ground)) => {
-                    if !((next - tau - h).abs() <= 8.0 * f64::EPSILON * next) {
-                        break;
-                    }
-                    (next, ground, k + 1)
-                }
-                None => (tau + h, [0.0; 2], k),
+            // Inside the record τ = k h and the interval ends at (k + 1) h:
+            // the cursor stands on a sample (quiet_sample checked it).
+            let (end, ground, next_k) = match record.get(k..k + 2) {
+                Some(&[a0, a1]) => (
+                    (k + 1) as f64 * h,
+                    [a0 * factor, (a1 - a0) * per_step],
+                    k + 1,
+                ),
+                // The free tail after the record: g = 0.
+                _ => (tau + h, [0.0; 2], k),
             };
             if !(end < tau_end) {
                 break;
             }
-            let (ok0, e0, in0, s0) = m0.swing_step(x[0], v[0], ground, loads[0], &b0);
-            let (ok1, e1, in1, s1) = m1.swing_step(x[1], v[1], ground, loads[1], &b1);
-            if !(ok0 & ok1) {
-                break;
+            let s0 = lanes[0].step::<ACCEL>(x[0], v[0], ground, &bands[0]);
+            let s1 = lanes[1].step::<ACCEL>(x[1], v[1], ground, &bands[1]);
+            if !(s0.clear & s1.clear & (x[0] - x[1] + s0.swing_x + s1.swing_x < ceiling)) {
+                // Not cleared by the swings: the full tests of one sample
+                // (monotone ends, majorants, peaks located inside), on the
+                // same branches; if they clear it, the peaks they raised
+                // give new bands and the run goes on.
+                (self.x, self.v, self.tau, self.work) = (x, v, tau, work);
+                self.sample_cursor = (tau, k);
+                if self.sample_interval(end, ground, next_k) {
+                    (x, v, tau, k, work) = (self.x, self.v, self.tau, next_k, self.work);
+                    (bands, ceiling) = self.quiet_bands::<ACCEL>();
+                    taken += 1;
+                    continue;
+                }
+                self.segments += taken;
+                return;
             }
-            if !(x[0] - x[1] + s0 + s1 < ceiling) {
-                break;
-            }
-            if energy {
-                self.work.add_quiet([
-                    sample::work(m0, masses[0], &in0, loads[0], [x[0], e0[0]]),
-                    sample::work(m1, masses[1], &in1, loads[1], [x[1], e1[0]]),
+            if ENERGY {
+                work.add_quiet([
+                    sample::work(&m0, masses[0], &s0.inputs, loads[0], [x[0], s0.end[0]]),
+                    sample::work(&m1, masses[1], &s1.inputs, loads[1], [x[1], s1.end[0]]),
                 ]);
             }
-            x = [e0[0], e1[0]];
-            v = [e0[1], e1[1]];
+            x = [s0.end[0], s1.end[0]];
+            v = [s0.end[1], s1.end[1]];
             tau = end;
             k = next_k;
             taken += 1;
@@ -730,8 +784,36 @@ impl<'a> Run<'a> {
         self.x = x;
         self.v = v;
         self.tau = tau;
+        self.work = work;
         self.sample_cursor = (tau, k);
         self.segments += taken;
+    }
+
+    /// The bands of both structures' quiet samples (x, ẋ, and |ẍ + g|
+    /// where `ACCEL`) from their branches and running peaks, and the
+    /// ceiling of x1 − x2: the gap and, until a first impact, its running
+    /// maximum (the minimum gap of SPEC §11).
+    fn quiet_bands<const ACCEL: bool>(&self) -> ([Bands; 2], f64) {
+        let bands = [0, 1].map(|i| {
+            let peaks = self.result.structure(i);
+            Bands::new(
+                self.branch[i],
+                self.structures[i].yield_displacement,
+                peaks.peak_displacement,
+                peaks.peak_velocity,
+                if ACCEL {
+                    peaks.peak_absolute_acceleration
+                } else {
+                    f64::INFINITY
+                },
+            )
+        });
+        let ceiling = if self.result.impacts.is_empty() {
+            self.p.gap.min(self.max_relative_displacement)
+        } else {
+            self.p.gap
+        };
+        (bands, ceiling)
     }
 
     /// The excitation's phasor at τ for a quiet segment: rotated on from the

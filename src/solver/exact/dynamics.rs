@@ -197,10 +197,15 @@ pub fn free_series(
         // The constant load enters the first step only.
         x[i].c[2] = (qi * inv_m - g.c[0] - c[i] * v0[i] - k[i] * x0[i]) * INV_PAIR[0];
     }
+    // The last two coefficients of each chain ride in registers, so that
+    // each step waits on one multiply-add and not on a store and a load.
+    let mut last = [[x[0].c[1], x[0].c[2]], [x[1].c[1], x[1].c[2]]];
     for j in 1..n.saturating_sub(1) {
         for i in 0..2 {
-            let xi = &mut x[i];
-            xi.c[j + 2] = next_free_coefficient(c[i], k[i], g.c[j], j, xi.c[j], xi.c[j + 1]);
+            let [xj, xj1] = last[i];
+            let next = next_free_coefficient(c[i], k[i], g.c[j], j, xj, xj1);
+            x[i].c[j + 2] = next;
+            last[i] = [xj1, next];
         }
     }
 }
@@ -226,8 +231,12 @@ pub fn oscillator(c: f64, k: f64, load: f64, x0: f64, v0: f64, g: &Series, n: us
     if n >= 2 {
         x.c[2] = (load - g.c[0] - c * v0 - k * x0) * INV_PAIR[0];
     }
+    // As in free_series: the last two coefficients in registers.
+    let [mut xj, mut xj1] = [x.c[1], x.c[2]];
     for j in 1..n.saturating_sub(1) {
-        x.c[j + 2] = next_free_coefficient(c, k, g.c[j], j, x.c[j], x.c[j + 1]);
+        let next = next_free_coefficient(c, k, g.c[j], j, xj, xj1);
+        x.c[j + 2] = next;
+        [xj, xj1] = [xj1, next];
     }
     x
 }
@@ -364,9 +373,12 @@ impl Orders<'_> {
         let [xa, xb] = x;
         let t = self.table;
         let [sa, sb] = self.spring;
+        // Orders j and j + 1 of x1, x2 and δ ride in registers, so that the
+        // chain waits on multiply-adds and not on stores and loads.
+        let (mut a, mut b, mut d) = ([xa.c[0], xa.c[1]], [xb.c[0], xb.c[1]], [delta[0], delta[1]]);
         for j in 0..n.saturating_sub(1).min(MAX_DEGREE - 1) {
             let next = NEXT[j];
-            let mut f = self.kc * delta[j];
+            let mut f = self.kc * d[0];
             if HERTZ && j > 0 {
                 f = madd(
                     self.half_h * next,
@@ -374,18 +386,19 @@ impl Orders<'_> {
                     f,
                 );
             }
-            let f = madd(self.rate_gain * next, delta[j + 1], f);
+            let f = madd(self.rate_gain * next, d[1], f);
             let ground = INV_PAIR[j] * g.c[j];
-            let mut ua = madd(t.rate[0][j], xa.c[j + 1], madd(sa[j], xa.c[j], -ground));
-            let mut ub = madd(t.rate[1][j], xb.c[j + 1], madd(sb[j], xb.c[j], -ground));
+            let mut ua = madd(t.rate[0][j], a[1], madd(sa[j], a[0], -ground));
+            let mut ub = madd(t.rate[1][j], b[1], madd(sb[j], b[0], -ground));
             if j == 0 {
                 ua += self.load[0];
                 ub += self.load[1];
             }
             force.c[j] = f;
-            xa.c[j + 2] = madd(-t.push[0][j], f, ua);
-            xb.c[j + 2] = madd(t.push[1][j], f, ub);
-            delta[j + 2] = madd(-t.push_sum[j], f, ua - ub);
+            let (a2, b2) = (madd(-t.push[0][j], f, ua), madd(t.push[1][j], f, ub));
+            let d2 = madd(-t.push_sum[j], f, ua - ub);
+            (xa.c[j + 2], xb.c[j + 2], delta[j + 2]) = (a2, b2, d2);
+            (a, b, d) = ([a[1], a2], [b[1], b2], [d[1], d2]);
         }
     }
 }

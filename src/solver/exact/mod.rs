@@ -43,6 +43,8 @@ pub mod peaks;
 pub mod quiet;
 pub mod roots;
 pub mod sample;
+pub mod sample_peaks;
+pub mod sample_run;
 pub mod segment;
 pub mod series;
 

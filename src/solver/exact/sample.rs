@@ -28,6 +28,8 @@
 use super::acceleration;
 use super::dynamics::{Branch, Structure, oscillator};
 use super::quiet::Bands;
+use super::sample_peaks::IntervalSeries;
+use super::sample_run::Lane;
 use super::series::{MAX_DEGREE, Series};
 
 use super::linear_map;
@@ -47,6 +49,10 @@ pub struct SampleMap {
     /// ∫₀ʰ ẋ_j ẋ_l dt of their rates: the work integrals of [`work`].
     moment: [f64; INPUTS],
     gram: [[f64; INPUTS]; INPUTS],
+    /// Degree of the interval's series where a peak inside it is located
+    /// ([`super::sample_peaks`]): that of a free segment of length h, set
+    /// by the run (the unit responses' own degree until then).
+    pub series_degree: usize,
     /// K/m and c/m of the branch, and 1/(K/m) (0 where K = 0).
     pub stiffness: f64,
     pub damping: f64,
@@ -91,6 +97,28 @@ impl SampleMap {
                 p *= h;
                 *w = p / e as f64;
             }
+            // Each rate's terms d_a t^a past the last one above 1e-4 ε of its
+            // largest on [0, h] are left out of the Gram matrix: each product
+            // they would add is below 1e-4 ε of the largest, far below the
+            // round-off of the sum itself (made once per run: a run's setup
+            // under a short record, four maps to degree 20, was a sixth of it).
+            let kept = rates.map(|du| {
+                let mut p = 1.0;
+                let sizes: [f64; MAX_DEGREE + 1] = std::array::from_fn(|a| {
+                    let size = if a <= du.degree {
+                        du.c[a].abs() * p
+                    } else {
+                        0.0
+                    };
+                    p *= h;
+                    size
+                });
+                let largest = sizes.iter().fold(0.0f64, |m, s| m.max(*s));
+                (0..=du.degree)
+                    .rev()
+                    .find(|&a| sizes[a] > 1e-4 * f64::EPSILON * largest)
+                    .unwrap_or(0)
+            });
             for j in 0..INPUTS {
                 let du = &rates[j];
                 // ∫₀ʰ t Σ d_a t^a dt = Σ d_a h^{a+2}/(a+2), smallest terms first.
@@ -99,8 +127,8 @@ impl SampleMap {
                     let (p, q) = (&rates[j], &rates[l]);
                     // ∫₀ʰ Σ p_a t^a Σ q_b t^b dt = Σ p_a q_b h^{a+b+1}/(a+b+1).
                     let mut sum = 0.0;
-                    for a in (0..=p.degree).rev() {
-                        for b in (0..=q.degree).rev() {
+                    for a in (0..=kept[j]).rev() {
+                        for b in (0..=kept[l]).rev() {
                             sum += p.c[a] * q.c[b] * power[a + b + 1];
                         }
                     }
@@ -115,6 +143,7 @@ impl SampleMap {
             swing,
             moment,
             gram,
+            series_degree: n,
             stiffness: k,
             damping: c,
             inverse_stiffness: if k > 0.0 { 1.0 / k } else { 0.0 },
@@ -133,6 +162,16 @@ impl SampleMap {
     #[inline(always)]
     pub fn advance(&self, inputs: &[f64; INPUTS], equilibrium: f64) -> [f64; 2] {
         linear_map::advance(&self.end, inputs, equilibrium)
+    }
+
+    /// This map with load Q/m, laid out for the tight loop of quiet samples.
+    pub fn lane(&self, load: f64) -> Lane {
+        Lane::new(
+            &self.end,
+            &self.swing,
+            [self.stiffness, self.inverse_stiffness, self.damping],
+            load,
+        )
     }
 
     /// One interval by the swing bounds alone: whether they keep x, ẋ and
@@ -223,8 +262,27 @@ impl SampleMajorants {
 /// ∫ g ẋ   = g_k (x₁ − x₀) + s ∫ t ẋ,    ∫ t ẋ = Σ_j input_j ∫ t u_j',
 /// ∫ ẋ²    = Σ_{j,l} input_j input_l ∫ u_j' u_l'.
 /// ```
+///
+/// Where K > 0 the load input is 0 and its terms, each exactly 0, are left
+/// out (the same sums to the bit, in fewer products).
 #[inline(always)]
 pub fn work(
+    map: &SampleMap,
+    mass: f64,
+    inputs: &[f64; INPUTS],
+    load: f64,
+    ends: [f64; 2],
+) -> [f64; 3] {
+    if inputs[INPUTS - 1] == 0.0 {
+        work_of::<{ INPUTS - 1 }>(map, mass, inputs, load, ends)
+    } else {
+        work_of::<INPUTS>(map, mass, inputs, load, ends)
+    }
+}
+
+/// [`work`] over the first `N` inputs.
+#[inline(always)]
+fn work_of<const N: usize>(
     map: &SampleMap,
     mass: f64,
     inputs: &[f64; INPUTS],
@@ -236,7 +294,7 @@ pub fn work(
     let mut moment = 0.0;
     let mut square = 0.0;
     // The Gram matrix is symmetric: Σ_j u_j (G_jj u_j + 2 Σ_{l<j} G_jl u_l).
-    for j in 0..INPUTS {
+    for j in 0..N {
         moment += inputs[j] * map.moment[j];
         let row = &map.gram[j];
         let mut r = 0.0;
@@ -301,8 +359,14 @@ pub fn below(q: f64, hi: f64) -> bool {
 ///    sample of one);
 /// 3. its cubic majorant keeps it inside its band.
 ///
-/// `None`: not shown quiet, the interval is left to the series, which
-/// locates the peak or event inside it.
+/// Where none clears |x| or |ẋ| but the event band alone holds (by the
+/// swing, else the majorant, against the yield surface or the loading side
+/// only), no event can happen and only the peak may rise inside: it is
+/// located on the interval's series ([`IntervalSeries`]), as a segment
+/// would locate it, and the sample stays on the map.
+///
+/// `None`: an event may happen (or |ẍ + g| may beat its peak), the interval
+/// is left to the series, which locates it.
 #[inline]
 pub fn clear(
     map: &SampleMap,
@@ -357,6 +421,8 @@ pub fn clear(
     let between = |m: &[f64; 4], [lo, hi]: [f64; 2]| {
         super::quiet::stays_below(m, hi, h) && super::quiet::stays_above(m, lo, h)
     };
+    let mut series: Option<IntervalSeries> = None;
+    let interval_series = || IntervalSeries::new(k, c, load, [x, v], ground, map.series_degree);
     // x: monotone while ẋ keeps its sign.
     let x_clear = (x - sx > bands.x[0] && x + sx < bands.x[1])
         || (v.abs() > sv && below(x_lo, end[0]) && below(end[0], x_hi) && {
@@ -365,7 +431,12 @@ pub fn clear(
         })
         || between(&majorant().x, bands.x);
     if !x_clear {
-        return None;
+        if !((x - sx > x_lo && x + sx < x_hi) || between(&majorant().x, [x_lo, x_hi])) {
+            return None;
+        }
+        series
+            .get_or_insert_with(interval_series)
+            .raise_displacement(h, sx, &mut peaks[0]);
     }
     // ẋ: monotone while ẍ keeps its sign.
     let accel_change = c * sv + k * sx + ground[1].abs() * h;
@@ -382,7 +453,12 @@ pub fn clear(
             })
         || between(&majorant().v, bands.v);
     if !v_clear {
-        return None;
+        if !((v - sv > v_lo && v + sv < v_hi) || between(&majorant().v, [v_lo, v_hi])) {
+            return None;
+        }
+        series
+            .get_or_insert_with(interval_series)
+            .raise_velocity(h, sv, &mut peaks[1]);
     }
     // ẍ + g: monotone while −(c/m) ẍ − (K/m) ẋ keeps its sign.
     let a_clear = within_a
@@ -493,6 +569,76 @@ mod tests {
             for (a, b) in [(input, qi * f), (damping, qd * f), (spring, qs * f)] {
                 assert!((a - b).abs() < 1e-13, "{a} vs {b}");
             }
+        }
+    }
+
+    /// An interval in which x turns (ẋ changes sign) above its running peak:
+    /// with the yield surface far, the sample is cleared and the peak is the
+    /// interior maximum, equal to the bit to the one a free segment's series
+    /// of the same degree locates; with the yield surface within reach, the
+    /// sample is left to the series.
+    #[test]
+    fn a_peak_inside_a_sample_is_located_and_a_reachable_yield_is_not_cleared() {
+        use crate::solver::exact::peaks::raise_abs_max;
+        let s = Structure::pair(&SET1)[1];
+        let h = 0.1;
+        let mut map = SampleMap::new(&s, s.stiffness, h, 20, false).expect("Ω h ≤ 1");
+        map.series_degree = 12;
+        // Rising at the start, falling at the end: a maximum inside.
+        let (x0, v0, ground, load) = (0.5, 0.4, [3.0, -2.0], 0.0);
+        let (inputs, eq) = map.inputs(x0, v0, ground, load);
+        let end = map.advance(&inputs, eq);
+        assert!(end[1] < 0.0, "ẋ changes sign: {end:?}");
+        let limits = |uy: f64| Limits {
+            displacement: x0.max(end[0].abs()),
+            velocity: 10.0,
+            absolute_acceleration: f64::INFINITY,
+            branch: Branch::Elastic { offset: 0.0 },
+            yield_displacement: uy,
+        };
+        let cleared = clear(&map, x0, v0, ground, load, &limits(f64::INFINITY))
+            .expect("no event can happen: the peak is located");
+        let mut g = Series {
+            degree: 1,
+            ..Series::default()
+        };
+        (g.c[0], g.c[1]) = (ground[0], ground[1]);
+        let inv_m = 1.0 / s.mass;
+        let q = oscillator(s.damping * inv_m, s.stiffness * inv_m, load, x0, v0, &g, 12);
+        let mut peak = limits(f64::INFINITY).displacement;
+        raise_abs_max(&q, Some(&q.derivative()), h, q.swing(h), &mut peak);
+        assert_eq!(cleared.peaks[0], peak);
+        assert!(peak > x0 && peak > end[0], "{peak} inside");
+        // The yield surface between the start and the maximum.
+        assert!(clear(&map, x0, v0, ground, load, &limits(0.5 * (x0 + peak))).is_none());
+    }
+
+    /// The tight loop's lane against the map: the same end state to a few
+    /// units in the last place and swings at least as large.
+    #[test]
+    fn a_lane_steps_as_the_map() {
+        let s = Structure::pair(&SET1)[0];
+        let h = 0.05;
+        let bands = Bands::new(
+            Branch::Elastic { offset: 0.0 },
+            f64::INFINITY,
+            9.0,
+            9.0,
+            9.0,
+        );
+        for (k, load) in [(s.stiffness, 0.3), (0.0, 0.2)] {
+            let map = SampleMap::new(&s, k, h, 20, false).expect("Ω h ≤ 1");
+            let lane = map.lane(load);
+            let (x, v, ground) = (0.7, -0.4, [0.6, 2.5]);
+            let (inputs, eq) = map.inputs(x, v, ground, load);
+            let end = map.advance(&inputs, eq);
+            let [sx, _] = map.swing(&inputs);
+            let step = lane.step::<true>(x, v, ground, &bands);
+            for (a, b) in step.end.iter().zip(end) {
+                assert!((a - b).abs() <= 4.0 * f64::EPSILON * b.abs().max(1.0));
+            }
+            assert!(step.swing_x >= sx * (1.0 - 1e-15) && step.clear);
+            assert_eq!(step.inputs, inputs);
         }
     }
 
