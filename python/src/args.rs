@@ -51,6 +51,14 @@ fn argv(command: &Command, kwargs: &Bound<'_, PyDict>) -> Result<Vec<String>, Fa
                     .into(),
             ));
         }
+        // A shard's part records the command line that made it, for the
+        // merge to replay: a Python process has none to record.
+        if matches!(key.as_str(), "shard" | "part" | "skip_done") {
+            return Err(Failure::Usage(format!(
+                "{key}: the module runs whole sweeps; shard them from the command line \
+                 (pounding COMMAND ... --shard K/N, then pounding merge)"
+            )));
+        }
         let flag = key.replace('_', "-");
         let arg = command
             .get_arguments()

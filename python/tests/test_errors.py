@@ -49,3 +49,11 @@ def test_a_switch_takes_a_bool():
 def test_format_is_not_an_option():
     with pytest.raises(ValueError, match="format: the module returns the report itself"):
         pounding.run(format="csv")
+
+
+@pytest.mark.parametrize("key", ["shard", "part", "skip_done"])
+def test_shards_are_cut_from_the_command_line_only(key):
+    # A part records the command line that made it, for the merge to replay.
+    value = True if key == "skip_done" else ("1/2" if key == "shard" else "p.part")
+    with pytest.raises(ValueError, match=f"{key}: the module runs whole sweeps"):
+        pounding.spectrum(**{key: value})
