@@ -28,7 +28,11 @@
 //! - [`risk`]: the risk picture of one pair over a suite: P(pounding)
 //!   against the gap, the IDA of the left drift and the pounding fragility;
 //! - [`suite_map`]: P(pounding) and the median amplification over two
-//!   physical quantities of the buildings, under a suite (SPEC §12).
+//!   physical quantities of the buildings, under a suite (SPEC §12);
+//! - [`shard`]: a sweep cut into shards balanced by estimated work, and
+//!   their parts merged;
+//! - [`work`]: what one run costs, estimated before it starts (the shards'
+//!   balance, the commands' bound on long requests, their progress bars).
 
 pub mod baseline;
 pub mod batch;
@@ -47,5 +51,6 @@ pub mod statistics;
 pub mod suite;
 pub mod suite_map;
 pub mod sweep;
+pub mod work;
 
 pub use crate::model::{family, grid, spectrum_spec};

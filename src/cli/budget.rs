@@ -1,22 +1,24 @@
 //! What a request will cost, estimated before it starts, and the bounds
 //! above which the user must confirm it (`--allow-long`, `--allow-large`).
 //!
-//! The estimate counts nominal Newmark steps, τ_end/Δτ per run: contact
-//! sub-steps add about 10 % on the paper's sets (set1: 55 840 accepted
-//! steps for 50 266 nominal) and more for stiff contact, so the estimate is
-//! a lower bound of the work and an order of magnitude of its time.
+//! The estimate counts nominal Newmark steps, τ_end/Δτ per run, and an exact
+//! run as the Newmark steps of the same time ([`run_steps`], from
+//! [`analysis::work`](crate::analysis::work)): contact sub-steps add about
+//! 10 % on the paper's sets (set1: 55 840 accepted steps for 50 266 nominal)
+//! and more for stiff contact, so the estimate is an order of magnitude of
+//! the work's time, not a measurement.
 
 use clap::Args;
 
 use super::CliError;
+use crate::analysis::work;
 use crate::model::Params;
 
 /// Work above which a command asks for `--allow-long`: 1e10 steps, about
 /// five minutes at [`SECONDS_PER_STEP`].
 pub const MAX_STEPS: f64 = 1e10;
-/// Cost of one step, measured on set1 in a release build: 29 ns
-/// (`pounding run --repeat 50`: 1.64 ms for 55 840 steps).
-pub const SECONDS_PER_STEP: f64 = 3e-8;
+/// Cost of one Newmark step ([`work::SECONDS_PER_NEWMARK_STEP`]): the unit of [`Work::steps`].
+pub const SECONDS_PER_STEP: f64 = work::SECONDS_PER_NEWMARK_STEP;
 /// History size above which `run` asks for `--allow-large`: 1 GB.
 pub const MAX_OUTPUT_BYTES: f64 = 1e9;
 /// Bytes of one history CSV row, as estimated.
@@ -28,7 +30,6 @@ pub const HISTORY_ROW_BYTES: f64 = 200.0;
 /// --allow-large`: 135 s of user time for 1.38e8 rows).
 pub const SECONDS_PER_ROW: f64 = 1e-6;
 
-/// Nominal Newmark steps of one run of `p`: τ_end/Δτ.
 /// `--allow-long`, as every command that can be asked for long work takes it.
 #[derive(Debug, Clone, Copy, Default, Args)]
 pub struct LongArg {
@@ -37,8 +38,17 @@ pub struct LongArg {
     pub allow_long: bool,
 }
 
+/// The work of one run of `p` in Newmark steps: τ_end/Δτ by Newmark; by
+/// the exact method, the Newmark steps of its estimated time (an exact run
+/// of set 1 costs about what 1 500 steps do, a thirtieth of Newmark's).
 pub fn run_steps(p: &Params) -> f64 {
-    p.tau_end() / p.dt
+    work::seconds(p) / SECONDS_PER_STEP
+}
+
+/// The work per unit τ of one run of `p` ([`run_steps`] / τ_end): how far a
+/// progress bar moves as the run advances.
+pub fn steps_per_tau(p: &Params) -> f64 {
+    run_steps(p) / p.tau_end()
 }
 
 /// The estimated cost of a request.
@@ -67,8 +77,8 @@ impl Work {
     pub fn check(&self, what: &str, allow_long: bool, allow_large: bool) -> Result<(), CliError> {
         if !allow_long && !within(self.steps, MAX_STEPS) {
             return Err(CliError::Usage(format!(
-                "{what}: about {:.1e} steps, an estimated {} (limit {MAX_STEPS:.0e} steps, about {}); \
-                 pass --allow-long to run it",
+                "{what}: about {:.1e} steps (Newmark's, or their time by the exact method), \
+                 an estimated {} (limit {MAX_STEPS:.0e} steps, about {}); pass --allow-long to run it",
                 self.steps,
                 duration(self.seconds()),
                 duration(MAX_STEPS * SECONDS_PER_STEP)

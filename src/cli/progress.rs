@@ -100,18 +100,18 @@ pub struct Tracked<'a, O> {
     progress: &'a Progress,
     /// Steps done before this run.
     offset: f64,
-    /// Steps per unit τ (1/Δτ).
+    /// Steps of work per unit τ ([`super::budget::steps_per_tau`]).
     rate: f64,
     tau: f64,
 }
 
 impl<'a, O: Observer> Tracked<'a, O> {
-    pub fn new(inner: O, progress: &'a Progress, offset: f64, dt: f64) -> Self {
+    pub fn new(inner: O, progress: &'a Progress, offset: f64, rate: f64) -> Self {
         Tracked {
             inner,
             progress,
             offset,
-            rate: 1.0 / dt,
+            rate,
             tau: 0.0,
         }
     }

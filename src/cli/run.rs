@@ -10,7 +10,7 @@ use clap::Args;
 use serde::Serialize;
 
 use super::CliError;
-use super::budget::{LongArg, Work, run_steps};
+use super::budget::{LongArg, Work, run_steps, steps_per_tau};
 use super::description::{Case, DIMENSIONLESS, Provenance, RecordNumbers};
 use super::output::{Emit, FormatArg, num, param_cells, param_columns, print};
 use super::params::ParamArgs;
@@ -92,7 +92,7 @@ pub fn report_with(
     let mut result = RunResult::default();
     for i in 0..args.repeat {
         let t = Instant::now();
-        let mut tracked = Tracked::new((), &progress, steps * f64::from(i), p.dt);
+        let mut tracked = Tracked::new((), &progress, steps * f64::from(i), steps_per_tau(&p));
         result = solve(&p, &mut tracked);
         times.push(t.elapsed().as_secs_f64() * 1e3);
     }
@@ -104,7 +104,7 @@ pub fn report_with(
     if let Some(target) = history {
         let offset = steps * f64::from(args.repeat);
         let csv = CsvHistory::with_ground(target, p.ground());
-        let mut csv = Tracked::new(csv, &progress, offset, p.dt);
+        let mut csv = Tracked::new(csv, &progress, offset, steps_per_tau(&p));
         solve(&p, &mut csv);
         let target = match csv.inner.finish() {
             Ok((target, _rows)) => target,

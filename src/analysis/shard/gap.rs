@@ -2,8 +2,8 @@
 //! free run each.
 
 use super::fingerprint::Fingerprint;
-use super::work;
 use crate::analysis::gap::{MinimumGap, minimum_gaps};
+use crate::analysis::work;
 use crate::model::Params;
 
 /// Each point's estimated work.

@@ -5,9 +5,9 @@
 use std::collections::HashMap;
 
 use super::fingerprint::Fingerprint;
-use super::work;
 use crate::analysis::baseline::BaselineKey;
 use crate::analysis::map::{MapCache, MapCell, MapPlan, compute_cells};
+use crate::analysis::work;
 use crate::model::Params;
 
 /// A map's units: the row-major indices of each unit's cells, and each unit's work.

@@ -27,7 +27,6 @@ pub mod partition;
 pub mod spec;
 pub mod spectrum;
 pub mod suite;
-pub mod work;
 
 pub use fingerprint::Fingerprint;
 pub use part::{Part, PartError, PartHeader};

@@ -12,9 +12,9 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::fingerprint::Fingerprint;
-use super::work;
 use crate::analysis::gap::free_params;
 use crate::analysis::suite::{MemberPlan, SuiteCase, SuiteRun, member_run, run_member};
+use crate::analysis::work;
 use crate::model::suite::SuiteMember;
 use crate::solver::RunResult;
 
