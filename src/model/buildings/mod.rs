@@ -1,0 +1,20 @@
+//! Buildings in a row (SPEC §13): lumped-mass shear buildings side by side,
+//! pounding where floors of neighbours stand at the same elevation.
+//!
+//! - [`row`]: the row as read, building by building, and its floor pairs;
+//! - [`preset`]: the TOML preset and its one-line errors;
+//! - [`builtin`]: the presets shipped under `presets/buildings/`;
+//! - [`matrices`]: mass, initial stiffness and Rayleigh damping, and the modes;
+//! - [`contact`]: the contact law of one floor pair in physical form;
+//! - [`ground`]: the ground acceleration a row is shaken by.
+
+pub mod builtin;
+pub mod contact;
+pub mod ground;
+pub mod matrices;
+pub mod preset;
+pub mod row;
+
+pub use ground::Ground;
+pub use preset::{BuildingsError, load, parse};
+pub use row::{Building, FloorPair, Joint, Row};
