@@ -29,6 +29,8 @@ pub struct RunArgs {
     pub params: ParamArgs,
     #[command(flatten)]
     pub output: FormatArg,
+    #[command(flatten)]
+    pub row: super::buildings::BuildingsArgs,
     /// Write the history as CSV (tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp, then the ground
     /// motion ag,vg,ug in Π form, SPEC §9), one row per step,
     /// streamed as it is computed. `-` is stdout (the summary then goes to stderr).
@@ -48,6 +50,9 @@ pub struct RunArgs {
 }
 
 pub fn execute(args: &RunArgs) -> Result<(), CliError> {
+    if args.row.buildings.is_some() {
+        return super::buildings::run(&args.row, &args.params, &args.output, args.repeat);
+    }
     let (preset, p) = args.params.resolve()?;
     let steps = run_steps(&p);
     let history_runs = f64::from(u8::from(args.history.is_some()));

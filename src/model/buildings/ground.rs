@@ -27,6 +27,9 @@ pub enum Ground {
 pub struct Piece {
     pub t0: f64,
     pub t1: f64,
+    /// t1 − t0, exactly DT for a record's full sample interval (so that
+    /// every interval has the same length, bit for bit).
+    pub length: f64,
     pub a: f64,
     pub rate: f64,
     pub sigma: f64,
@@ -109,6 +112,7 @@ impl Ground {
                     out.push(Piece {
                         t0: 0.0,
                         t1: end,
+                        length: end,
                         a: 0.0,
                         rate: amplitude * omega,
                         sigma: -omega * omega,
@@ -121,10 +125,12 @@ impl Ground {
                     if t0 >= end {
                         break;
                     }
-                    let t1 = ((k + 1) as f64 * dt).min(until);
+                    let full = (k + 1) as f64 * dt;
+                    let t1 = full.min(until);
                     out.push(Piece {
                         t0,
                         t1,
+                        length: if t1 == full { *dt } else { t1 - t0 },
                         a: acceleration[k],
                         rate: (acceleration[k + 1] - acceleration[k]) / dt,
                         sigma: 0.0,
@@ -137,6 +143,7 @@ impl Ground {
             out.push(Piece {
                 t0: last,
                 t1: until,
+                length: until - last,
                 a: 0.0,
                 rate: 0.0,
                 sigma: 0.0,

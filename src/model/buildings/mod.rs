@@ -5,16 +5,18 @@
 //! - [`preset`]: the TOML preset and its one-line errors;
 //! - [`builtin`]: the presets shipped under `presets/buildings/`;
 //! - [`matrices`]: mass, initial stiffness and Rayleigh damping, and the modes;
+//! - [`edit`]: `--set` edits of a preset, checked as the file is;
 //! - [`contact`]: the contact law of one floor pair in physical form;
 //! - [`ground`]: the ground acceleration a row is shaken by.
 
 pub mod builtin;
 pub mod contact;
+pub mod edit;
 pub mod ground;
 pub mod matrices;
 pub mod preset;
 pub mod row;
 
 pub use ground::Ground;
-pub use preset::{BuildingsError, load, parse};
+pub use preset::{BuildingsError, load, load_with, parse};
 pub use row::{Building, FloorPair, Joint, Row};

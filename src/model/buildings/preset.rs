@@ -54,8 +54,14 @@ const JOINT_KEYS: &[&str] = &["gap", "stiffness"];
 
 /// Reads a preset: a built-in name (`presets/buildings/NAME.toml`) or a path.
 pub fn load(name_or_path: &str) -> Result<Row, BuildingsError> {
+    load_with(name_or_path, &[])
+}
+
+/// As [`load`], with `--set` edits applied before the checks.
+pub fn load_with(name_or_path: &str, sets: &[String]) -> Result<Row, BuildingsError> {
     if let Some(text) = super::builtin::find(name_or_path) {
-        return parse(&format!("presets/buildings/{name_or_path}.toml"), text);
+        let file = format!("presets/buildings/{name_or_path}.toml");
+        return super::edit::parse_with(&file, text, sets);
     }
     let path = Path::new(name_or_path);
     let text = std::fs::read_to_string(path).map_err(|e| BuildingsError {
@@ -65,7 +71,7 @@ pub fn load(name_or_path: &str) -> Result<Row, BuildingsError> {
             super::builtin::names().join(", ")
         ),
     })?;
-    parse(name_or_path, &text)
+    super::edit::parse_with(name_or_path, &text, sets)
 }
 
 /// Parses and checks a preset's text; `file` names it in messages.

@@ -122,7 +122,7 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
         buf2: Vec::new(),
     };
     for piece in ground.pieces(options.duration) {
-        let length = piece.t1 - piece.t0;
+        let length = piece.length;
         if length <= 0.0 {
             continue;
         }
@@ -134,7 +134,7 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
             } else {
                 piece.t0 + (j + 1) as f64 * h
             };
-            if run.config.any_contact() || !run.quiet_step(&piece, tb - run.t) {
+            if run.config.any_contact() || !run.quiet_step(&piece, h) {
                 run.careful(&piece, tb)?;
             }
             run.t = tb;

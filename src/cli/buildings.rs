@@ -1,0 +1,154 @@
+//! `--buildings PRESET`: the row commands of SPEC §13 (`run`), parsing and
+//! printing only; the model, the methods and the report live in the library.
+
+use std::time::Instant;
+
+use clap::Args;
+
+use super::CliError;
+use super::output::{FormatArg, print, render};
+use super::params::ParamArgs;
+use crate::accuracy::timing::median;
+use crate::analysis::row_report::RowReport;
+use crate::model::buildings::matrices::periods;
+use crate::model::buildings::{Ground, Row, load_with};
+use crate::model::physical::parse_acceleration;
+use crate::solver::buildings::{RowOptions, run_row};
+
+/// The options of a row of buildings.
+#[derive(Debug, Clone, Default, Args)]
+pub struct BuildingsArgs {
+    /// A row of shear buildings (SPEC §13): a built-in row (two-buildings,
+    /// block-and-frame, three-in-series) or a path to a row preset. `--set
+    /// NAME.KEY=V` edits one building, `--set jointN.KEY=V` one joint.
+    #[arg(long, value_name = "NAME|PATH")]
+    pub buildings: Option<String>,
+    /// Scale factor on the ground motion (rows).
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    pub scale: Option<f64>,
+    /// Free vibration after the motion ends, in seconds [default: four times the longest fundamental period] (rows).
+    #[arg(long, value_name = "SECONDS")]
+    pub tail: Option<f64>,
+    /// Amplitude of a sine or pulse, in m/s² or with a `g` suffix [default: 0.3g] (rows).
+    #[arg(long, value_name = "A")]
+    pub amplitude: Option<String>,
+    /// Period of a sine or pulse in seconds [default: 1] (rows).
+    #[arg(long, value_name = "SECONDS")]
+    pub period: Option<f64>,
+}
+
+impl BuildingsArgs {
+    /// The row, with `--set` and `--model` applied.
+    pub fn row(&self, params: &ParamArgs) -> Result<Row, CliError> {
+        let name = self.buildings.as_deref().unwrap_or("block-and-frame");
+        let mut sets = params.overrides.clone();
+        if let Some(m) = &params.model {
+            sets.push(format!("model=\"{m}\""));
+        }
+        load_with(name, &sets).map_err(|e| CliError::Usage(e.to_string()))
+    }
+
+    /// The ground motion and its name, and the run's length.
+    pub fn ground(&self, params: &ParamArgs, row: &Row) -> Result<(Ground, String, f64), CliError> {
+        let scale = self.scale.unwrap_or(1.0);
+        if !scale.is_finite() {
+            return Err(CliError::Usage(format!(
+                "--scale {scale}: must be a finite number"
+            )));
+        }
+        let amplitude = match &self.amplitude {
+            None => 0.3 * crate::model::record::STANDARD_GRAVITY,
+            Some(a) => parse_acceleration(a).ok_or_else(|| {
+                CliError::Usage(format!(
+                    "--amplitude `{a}`: must be a number > 0 in m/s², or with a g suffix (0.3g)"
+                ))
+            })?,
+        } * scale;
+        let period = self.period.unwrap_or(1.0);
+        if !(period > 0.0 && period.is_finite()) {
+            return Err(CliError::Usage(format!(
+                "--period {period}: must be a finite number > 0 (s)"
+            )));
+        }
+        let omega = 2.0 * std::f64::consts::PI / period;
+        let name = params.excitation.as_deref().unwrap_or("sine");
+        let ground = match name {
+            "sine" => {
+                let cycles = match &params.cycles {
+                    None => 8.0,
+                    Some(c) => c
+                        .parse::<f64>()
+                        .ok()
+                        .filter(|c| *c > 0.0 && c.is_finite())
+                        .ok_or_else(|| {
+                            CliError::Usage(format!("--cycles `{c}`: must be a finite number > 0"))
+                        })?,
+                };
+                Ground::Sine {
+                    amplitude,
+                    omega,
+                    end: cycles * period,
+                }
+            }
+            "pulse-a" => Ground::Sine {
+                amplitude,
+                omega,
+                end: period,
+            },
+            spec if spec.starts_with("record:") => {
+                let record = crate::model::record::read(&spec["record:".len()..])
+                    .map_err(|e| CliError::Usage(e.to_string()))?;
+                Ground::from_record(&record, scale)
+            }
+            other => {
+                return Err(CliError::Usage(format!(
+                    "--excitation `{other}`: rows take sine, pulse-a or record:PATH"
+                )));
+            }
+        };
+        let longest = row
+            .buildings
+            .iter()
+            .map(|b| periods(b)[0])
+            .fold(0.0, f64::max);
+        let tail = self.tail.unwrap_or(4.0 * longest);
+        if !(tail >= 0.0 && tail.is_finite()) {
+            return Err(CliError::Usage(format!(
+                "--tail {tail}: must be a finite number ≥ 0 (s)"
+            )));
+        }
+        Ok((ground.clone(), name.to_string(), ground.end() + tail))
+    }
+}
+
+/// `pounding run --buildings`.
+pub fn run(
+    args: &BuildingsArgs,
+    params: &ParamArgs,
+    output: &FormatArg,
+    repeat: u32,
+) -> Result<(), CliError> {
+    let row = args.row(params)?;
+    let (ground, name, duration) = args.ground(params, &row)?;
+    let method = params.method.as_deref().unwrap_or("exact");
+    if method != "exact" {
+        return Err(CliError::Usage(format!(
+            "--method {method}: rows are run by the exact method"
+        )));
+    }
+    let options = RowOptions {
+        duration,
+        max_substep: None,
+    };
+    let mut times = Vec::new();
+    let mut result = None;
+    for _ in 0..repeat.max(1) {
+        let t = Instant::now();
+        result =
+            Some(run_row(&row, &ground, &options).map_err(|e| CliError::Usage(e.to_string()))?);
+        times.push(t.elapsed().as_secs_f64() * 1e3);
+    }
+    let result = result.expect("at least one run");
+    let report = RowReport::new(&row, &result, &name, method, median(times));
+    print(&render(&report, output.format)?)
+}
