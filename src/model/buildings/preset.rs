@@ -206,6 +206,7 @@ fn per_storey(
     default: Option<f64>,
     ok: (fn(f64) -> bool, &str),
 ) -> Result<Vec<f64>, String> {
+    let listed = matches!(t.get(key), Some(toml::Value::Array(_)));
     let values = match t.get(key) {
         Some(toml::Value::Array(items)) => {
             if items.len() != storeys {
@@ -225,7 +226,7 @@ fn per_storey(
     };
     for (i, &x) in values.iter().enumerate() {
         if !(ok.0)(x) {
-            let at = if values.len() > 1 {
+            let at = if listed {
                 format!("[{}]", i + 1)
             } else {
                 String::new()

@@ -467,6 +467,8 @@ impl Run<'_> {
             floors,
             pairs: self.pairs,
             duration,
+            final_displacement: self.u,
+            final_velocity: self.v,
             maps_made: self.propagator.made,
             map_steps: self.propagator.used,
             series_steps: self.series_steps,

@@ -59,6 +59,9 @@ pub struct RowRun {
     pub floors: Vec<Vec<FloorPeaks>>,
     pub pairs: Vec<PairResult>,
     pub duration: f64,
+    /// (u, u̇) of every floor at the end, in the row's order.
+    pub final_displacement: Vec<f64>,
+    pub final_velocity: Vec<f64>,
     /// Linear maps made, and sub-steps taken with them, and sub-steps that
     /// needed the series.
     pub maps_made: usize,
