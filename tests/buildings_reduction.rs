@@ -56,12 +56,8 @@ fn two_one_storey_buildings_are_the_sdof_pair() {
         sdof.left.peak_absolute_acceleration,
         sdof.right.peak_absolute_acceleration,
     ];
-    for b in 0..2 {
-        let got = r.floors[b][0].absolute_acceleration;
-        assert!(
-            (got - acc[b] * ap).abs() < 1e-9 * got,
-            "{got} {}",
-            acc[b] * ap
-        );
+    for (floors, want) in r.floors.iter().zip(acc) {
+        let got = floors[0].absolute_acceleration;
+        assert!((got - want * ap).abs() < 1e-9 * got, "{got} {}", want * ap);
     }
 }

@@ -13,7 +13,7 @@ use crate::analysis::row_report::RowReport;
 use crate::model::buildings::matrices::periods;
 use crate::model::buildings::{Ground, Row, load_with};
 use crate::model::physical::parse_acceleration;
-use crate::solver::buildings::{RowOptions, run_row};
+use crate::solver::buildings::{RowError, RowOptions, run_newmark, run_row};
 
 /// The options of a row of buildings.
 #[derive(Debug, Clone, Default, Args)]
@@ -121,6 +121,26 @@ impl BuildingsArgs {
     }
 }
 
+/// Default Newmark step for rows (s): within 1e-5 of the exact peaks on the
+/// shipped rows (tests/buildings_newmark.rs).
+pub const NEWMARK_STEP: f64 = 5e-5;
+
+/// `--dt` in seconds for rows.
+fn newmark_step(params: &ParamArgs) -> Result<f64, CliError> {
+    match &params.dt {
+        None => Ok(NEWMARK_STEP),
+        Some(text) => text
+            .parse::<f64>()
+            .ok()
+            .filter(|d| *d > 0.0 && d.is_finite())
+            .ok_or_else(|| {
+                CliError::Usage(format!(
+                    "--dt `{text}`: rows take a step in seconds, a finite number > 0"
+                ))
+            }),
+    }
+}
+
 /// `pounding run --buildings`.
 pub fn run(
     args: &BuildingsArgs,
@@ -131,11 +151,7 @@ pub fn run(
     let row = args.row(params)?;
     let (ground, name, duration) = args.ground(params, &row)?;
     let method = params.method.as_deref().unwrap_or("exact");
-    if method != "exact" {
-        return Err(CliError::Usage(format!(
-            "--method {method}: rows are run by the exact method"
-        )));
-    }
+    let dt = newmark_step(params)?;
     let options = RowOptions {
         duration,
         max_substep: None,
@@ -144,8 +160,15 @@ pub fn run(
     let mut result = None;
     for _ in 0..repeat.max(1) {
         let t = Instant::now();
-        result =
-            Some(run_row(&row, &ground, &options).map_err(|e| CliError::Usage(e.to_string()))?);
+        let run = if method == "newmark" {
+            run_newmark(&row, &ground, duration, dt)
+        } else {
+            run_row(&row, &ground, &options)
+        };
+        result = Some(run.map_err(|e| match e {
+            RowError::HertzianLaw(_) => CliError::Usage(e.to_string()),
+            RowError::Runaway(_) => CliError::Failed(e.to_string()),
+        })?);
         times.push(t.elapsed().as_secs_f64() * 1e3);
     }
     let result = result.expect("at least one run");

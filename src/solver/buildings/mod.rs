@@ -22,12 +22,14 @@
 //! - [`system`]: the linear system of one configuration;
 //! - [`peaks`]: the envelopes a run reports;
 //! - [`result`]: what a run returns;
-//! - [`driver`]: the loop over sub-steps and events.
+//! - [`driver`]: the loop over sub-steps and events;
+//! - [`newmark`]: Newmark-β on the row, the second method.
 
 pub mod config;
 pub mod driver;
 pub mod hermite;
 pub mod layout;
+pub mod newmark;
 pub mod peaks;
 pub mod poly;
 pub mod propagator;
@@ -35,5 +37,6 @@ pub mod result;
 pub mod system;
 pub mod taylor;
 
-pub use driver::{RowOptions, run_row};
+pub use driver::{RowError, RowOptions, run_row};
+pub use newmark::run_newmark;
 pub use result::{FloorPeaks, PairImpact, PairResult, RowRun};
