@@ -250,3 +250,68 @@ impl Report for RowReport {
             .collect()
     }
 }
+
+/// `bench --buildings`: the work-precision rows of one row and ground motion.
+#[derive(Debug, Clone, Serialize)]
+pub struct RowBenchReport {
+    pub row: String,
+    pub excitation: String,
+    pub duration: f64,
+    pub rows: Vec<crate::accuracy::row_bench::RowBenchRow>,
+}
+
+impl Report for RowBenchReport {
+    fn table(&self) -> String {
+        let mut s = format!(
+            "{}: {} excitation, {} s; error = largest peak difference (|u|, |u̇|, |Δ|) from the reference, relative per building\n",
+            self.row,
+            self.excitation,
+            Num(self.duration)
+        );
+        s += "method        setting       error        ms  impacts  counts match\n";
+        for r in &self.rows {
+            let _ = writeln!(
+                s,
+                "{:10} {:>10} {:11.3e} {:9.3} {:8}  {}",
+                r.method,
+                if r.setting > 0.0 {
+                    format!("{:e}", r.setting)
+                } else {
+                    "-".into()
+                },
+                r.error,
+                r.ms,
+                r.impacts,
+                if r.impacts_match { "yes" } else { "no" }
+            );
+        }
+        s
+    }
+
+    fn csv_header(&self) -> Vec<&'static str> {
+        vec![
+            "method",
+            "setting",
+            "error",
+            "ms",
+            "impacts",
+            "impacts_match",
+        ]
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        self.rows
+            .iter()
+            .map(|r| {
+                vec![
+                    r.method.clone(),
+                    Num(r.setting).to_string(),
+                    Num(r.error).to_string(),
+                    Num(r.ms).to_string(),
+                    r.impacts.to_string(),
+                    r.impacts_match.to_string(),
+                ]
+            })
+            .collect()
+    }
+}

@@ -39,17 +39,22 @@ pub struct BuildingsArgs {
 
 impl BuildingsArgs {
     /// The row, with `--set` and `--model` applied.
-    pub fn row(&self, params: &ParamArgs) -> Result<Row, CliError> {
+    pub fn row(&self, overrides: &[String], model: Option<&str>) -> Result<Row, CliError> {
         let name = self.buildings.as_deref().unwrap_or("block-and-frame");
-        let mut sets = params.overrides.clone();
-        if let Some(m) = &params.model {
+        let mut sets = overrides.to_vec();
+        if let Some(m) = model {
             sets.push(format!("model=\"{m}\""));
         }
         load_with(name, &sets).map_err(|e| CliError::Usage(e.to_string()))
     }
 
     /// The ground motion and its name, and the run's length.
-    pub fn ground(&self, params: &ParamArgs, row: &Row) -> Result<(Ground, String, f64), CliError> {
+    pub fn ground(
+        &self,
+        excitation: Option<&str>,
+        cycles: Option<&str>,
+        row: &Row,
+    ) -> Result<(Ground, String, f64), CliError> {
         let scale = self.scale.unwrap_or(1.0);
         if !scale.is_finite() {
             return Err(CliError::Usage(format!(
@@ -71,10 +76,10 @@ impl BuildingsArgs {
             )));
         }
         let omega = 2.0 * std::f64::consts::PI / period;
-        let name = params.excitation.as_deref().unwrap_or("sine");
+        let name = excitation.unwrap_or("sine");
         let ground = match name {
             "sine" => {
-                let cycles = match &params.cycles {
+                let cycles = match cycles {
                     None => 8.0,
                     Some(c) => c
                         .parse::<f64>()
@@ -95,6 +100,9 @@ impl BuildingsArgs {
                 omega,
                 end: period,
             },
+            spec if spec.starts_with("synthetic:") => {
+                Ground::from_record(&synthetic(&spec["synthetic:".len()..])?, scale)
+            }
             spec if spec.starts_with("record:") => {
                 let record = crate::model::record::read(&spec["record:".len()..])
                     .map_err(|e| CliError::Usage(e.to_string()))?;
@@ -119,6 +127,51 @@ impl BuildingsArgs {
         }
         Ok((ground.clone(), name.to_string(), ground.end() + tail))
     }
+}
+
+/// `synthetic:N`: one simulated record of N samples at DT = 0.005 s
+/// (seed 1, as `records synth`), PGA 0.3 g.
+fn synthetic(n: &str) -> Result<crate::model::record::Record, CliError> {
+    let samples: usize = n
+        .parse()
+        .ok()
+        .filter(|&n| n >= 11)
+        .ok_or_else(|| CliError::Usage(format!("synthetic:N needs N ≥ 11, not `{n}`")))?;
+    let simulation = crate::model::simulated::Simulation {
+        dt: 0.005,
+        duration: 0.005 * (samples - 1) as f64,
+        ..Default::default()
+    };
+    simulation
+        .validate()
+        .map_err(|e| CliError::Usage(e.to_string()))?;
+    Ok(simulation.record(
+        &format!("synthetic:{n}"),
+        crate::model::simulated::DEFAULT_SEED,
+        1,
+    ))
+}
+
+/// `pounding bench --buildings`: work-precision rows of both methods
+/// against the reference.
+pub fn bench(
+    args: &BuildingsArgs,
+    excitation: Option<&str>,
+    model: Option<&str>,
+    output: &FormatArg,
+) -> Result<(), CliError> {
+    let row = args.row(&[], model)?;
+    let (ground, name, duration) =
+        args.ground(Some(excitation.unwrap_or("synthetic:2000")), None, &row)?;
+    let rows = crate::accuracy::row_bench::row_bench(&row, &ground, duration)
+        .map_err(|e| CliError::Usage(e.to_string()))?;
+    let report = crate::analysis::row_report::RowBenchReport {
+        row: row.name.clone(),
+        excitation: name,
+        duration,
+        rows,
+    };
+    print(&render(&report, output.format)?)
 }
 
 /// Default Newmark step for rows (s): within 1e-5 of the exact peaks on the
@@ -148,8 +201,9 @@ pub fn run(
     output: &FormatArg,
     repeat: u32,
 ) -> Result<(), CliError> {
-    let row = args.row(params)?;
-    let (ground, name, duration) = args.ground(params, &row)?;
+    let row = args.row(&params.overrides, params.model.as_deref())?;
+    let (ground, name, duration) =
+        args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let method = params.method.as_deref().unwrap_or("exact");
     let dt = newmark_step(params)?;
     let options = RowOptions {
