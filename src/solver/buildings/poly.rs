@@ -28,18 +28,57 @@ pub fn bound(c: &[f64], s: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &x| acc * s + x.abs())
 }
 
-/// Refines a root of `f` bracketed by f(lo) ≤ 0 < f(hi); returns the end
-/// where f > 0, so that an event is applied on its far side.
-fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+/// p''(s).
+#[inline]
+pub fn eval_second_derivative(c: &[f64], s: f64) -> f64 {
+    let mut acc = 0.0;
+    for k in (2..c.len()).rev() {
+        acc = acc * s + (k * (k - 1)) as f64 * c[k];
+    }
+    acc
+}
+
+/// A root of `f` bracketed by f(lo) ≤ 0 < f(hi), by Newton's method kept
+/// inside the bracket (a bisection where a Newton step would leave it);
+/// returns a point where f > 0, within a few ulps of the root, so that an
+/// event is applied on its far side.
+fn bisect(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    let mut x = 0.5 * (lo + hi);
     for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
+        let fx = f(x);
+        if fx > 0.0 {
+            hi = x;
+        } else {
+            lo = x;
+        }
+        if hi - lo <= 4.0 * f64::EPSILON * hi.abs().max(f64::MIN_POSITIVE) {
             break;
         }
-        if f(mid) > 0.0 {
-            hi = mid;
+        let d = df(x);
+        let newton = x - fx / d;
+        if d != 0.0 && (newton - x).abs() <= 4.0 * f64::EPSILON * x.abs() {
+            // Converged: the first point past the root where f > 0.
+            let mut y = newton.max(lo);
+            for _ in 0..16 {
+                if y >= hi {
+                    break;
+                }
+                if f(y) > 0.0 {
+                    return y;
+                }
+                y = y.next_up();
+            }
+        }
+        x = if d != 0.0 && newton > lo && newton < hi {
+            newton
         } else {
-            lo = mid;
+            0.5 * (lo + hi)
+        };
+        if x == lo || x == hi {
+            x = 0.5 * (lo + hi);
+            if x == lo || x == hi {
+                break;
+            }
         }
     }
     hi
@@ -52,8 +91,13 @@ fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
 /// own root, and rounding put it a hair above zero) only after it has been
 /// non-positive again.
 pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
+    // p(s) ≤ c₀ + Σ_{k≥1} |c_k| s^k: when that stays ≤ 0, nothing to scan.
+    if c[0] <= 0.0 && c[0] + bound(&c[1..], end) * end <= 0.0 {
+        return None;
+    }
     let f = |s: f64| eval(c, s);
     let df = |s: f64| eval_derivative(c, s);
+    let ddf = |s: f64| eval_second_derivative(c, s);
     let mut lo = 0.0;
     let mut f_lo = f(0.0);
     let mut d_lo = df(0.0);
@@ -67,13 +111,13 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
         let ds = df(s);
         if armed {
             if fs > 0.0 {
-                return Some(bisect(f, lo, s));
+                return Some(bisect(f, df, lo, s));
             }
             if d_lo > 0.0 && ds < 0.0 {
                 // A maximum inside (lo, s): is it above zero?
-                let top = bisect(|x| -df(x), lo, s);
+                let top = bisect(|x| -df(x), |x| -ddf(x), lo, s);
                 if f(top) > 0.0 {
-                    return Some(bisect(f, lo, top));
+                    return Some(bisect(f, df, lo, top));
                 }
             }
         } else if fs <= 0.0 {
@@ -92,6 +136,7 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
 pub fn max_abs(c: &[f64], end: f64) -> f64 {
     let f = |s: f64| eval(c, s);
     let df = |s: f64| eval_derivative(c, s);
+    let ddf = |s: f64| eval_second_derivative(c, s);
     let mut best = f(0.0).abs().max(f(end).abs());
     let mut lo = 0.0;
     let mut d_lo = df(0.0);
@@ -100,9 +145,9 @@ pub fn max_abs(c: &[f64], end: f64) -> f64 {
         let ds = df(s);
         if (d_lo > 0.0) != (ds > 0.0) && d_lo != 0.0 {
             let root = if d_lo > 0.0 {
-                bisect(|x| -df(x), lo, s)
+                bisect(|x| -df(x), |x| -ddf(x), lo, s)
             } else {
-                bisect(df, lo, s)
+                bisect(df, ddf, lo, s)
             };
             best = best.max(f(root).abs());
         }
@@ -116,6 +161,7 @@ pub fn max_abs(c: &[f64], end: f64) -> f64 {
 pub fn max(c: &[f64], end: f64) -> f64 {
     let f = |s: f64| eval(c, s);
     let df = |s: f64| eval_derivative(c, s);
+    let ddf = |s: f64| eval_second_derivative(c, s);
     let mut best = f(0.0).max(f(end));
     let mut lo = 0.0;
     let mut d_lo = df(0.0);
@@ -123,7 +169,7 @@ pub fn max(c: &[f64], end: f64) -> f64 {
         let s = end * i as f64 / SCAN as f64;
         let ds = df(s);
         if d_lo > 0.0 && ds <= 0.0 {
-            best = best.max(f(bisect(|x| -df(x), lo, s)));
+            best = best.max(f(bisect(|x| -df(x), |x| -ddf(x), lo, s)));
         }
         lo = s;
         d_lo = ds;
