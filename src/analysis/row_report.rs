@@ -146,12 +146,12 @@ impl Report for RowReport {
         let mut s = String::new();
         let _ = writeln!(
             s,
-            "{}: {} excitation, {} contact, {} method, {} s",
+            "{}: {} excitation, {} contact, {} method, {:.3} s",
             self.row,
             self.excitation,
             self.model,
             self.method,
-            Num(self.duration)
+            self.duration
         );
         for b in &self.buildings {
             let t: Vec<String> = b
@@ -263,10 +263,10 @@ pub struct RowBenchReport {
 impl Report for RowBenchReport {
     fn table(&self) -> String {
         let mut s = format!(
-            "{}: {} excitation, {} s; error = largest peak difference (|u|, |u̇|, |Δ|) from the reference, relative per building\n",
+            "{}: {} excitation, {:.3} s; error = largest peak difference (|u|, |u̇|, |Δ|) from the reference, relative per building\n",
             self.row,
             self.excitation,
-            Num(self.duration)
+            self.duration
         );
         s += "method        setting       error        ms  impacts  counts match\n";
         for r in &self.rows {
