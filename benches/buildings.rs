@@ -28,6 +28,7 @@ fn rows(c: &mut Criterion) {
         let options = RowOptions {
             duration: g.end() + 4.0,
             max_substep: None,
+            energy: false,
         };
         c.bench_function(&format!("exact {name} synthetic:{samples}"), |b| {
             b.iter(|| black_box(run_row(&row, &g, &options).expect("runs")))

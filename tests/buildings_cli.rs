@@ -53,6 +53,8 @@ fn json_lists_buildings_floors_and_pairs() {
     assert_eq!(v["impacts"].as_u64().unwrap(), total);
     assert!(total > 0);
     assert_eq!(v["method"], "exact");
+    assert!(v["energy"]["residual"].as_f64().unwrap() < 1e-9);
+    assert!(v["energy"]["contact"].as_f64().unwrap() > 0.0);
     assert!(v["elapsed_ms"].as_f64().unwrap() >= 0.0);
 }
 

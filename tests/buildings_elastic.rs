@@ -80,6 +80,7 @@ fn elastic_rows_without_contact_are_modal_superposition() {
             &RowOptions {
                 duration,
                 max_substep: None,
+                energy: false,
             },
         )
         .unwrap();
@@ -119,6 +120,7 @@ fn the_mirror_image_gives_the_same_peaks() {
     let options = RowOptions {
         duration: ground.end() + 2.0,
         max_substep: None,
+        energy: false,
     };
     let a = run_row(&row, &ground, &options).unwrap();
     let b = run_row(&row.mirrored(), &ground.negated(), &options).unwrap();

@@ -30,6 +30,7 @@ fn an_isolated_impact_returns_e() {
             &RowOptions {
                 duration: 1.5,
                 max_substep: None,
+                energy: false,
             },
         )
         .unwrap();

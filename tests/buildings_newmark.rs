@@ -29,6 +29,7 @@ fn newmark_converges_to_the_exact_method_at_second_order() {
         &RowOptions {
             duration,
             max_substep: None,
+            energy: false,
         },
     )
     .unwrap();

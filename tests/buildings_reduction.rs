@@ -28,6 +28,7 @@ fn two_one_storey_buildings_are_the_sdof_pair() {
         &RowOptions {
             duration: 8.0,
             max_substep: None,
+            energy: false,
         },
     )
     .unwrap();

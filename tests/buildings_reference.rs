@@ -15,6 +15,7 @@ fn compare(name: &str, ground: &Ground, duration: f64, tolerance: f64) -> f64 {
         &RowOptions {
             duration,
             max_substep: None,
+            energy: false,
         },
     )
     .unwrap();

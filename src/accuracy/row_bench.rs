@@ -83,6 +83,7 @@ pub fn row_bench(row: &Row, ground: &Ground, duration: f64) -> Result<Vec<RowBen
     let options = RowOptions {
         duration,
         max_substep: None,
+        energy: false,
     };
     let (ms, exact) = best(10, || run_row(row, ground, &options));
     let exact = exact?;

@@ -48,6 +48,30 @@ pub struct PairReport {
     pub max_penetration: f64,
 }
 
+/// The energy balance of SPEC §6 summed over the row, kJ.
+#[derive(Debug, Clone, Serialize)]
+pub struct EnergyReport {
+    pub input: f64,
+    pub kinetic: f64,
+    pub damping: f64,
+    pub spring: f64,
+    pub contact: f64,
+    pub residual: f64,
+}
+
+impl EnergyReport {
+    pub fn of(e: &crate::solver::buildings::RowEnergy) -> EnergyReport {
+        EnergyReport {
+            input: e.input / 1e3,
+            kinetic: e.kinetic / 1e3,
+            damping: e.damping / 1e3,
+            spring: e.spring / 1e3,
+            contact: e.contact / 1e3,
+            residual: e.residual(),
+        }
+    }
+}
+
 /// How the exact method's cache of linear maps was used.
 #[derive(Debug, Clone, Serialize)]
 pub struct CacheReport {
@@ -73,6 +97,9 @@ pub struct RowReport {
     pub impacts: usize,
     pub elapsed_ms: f64,
     pub cache: CacheReport,
+    /// The energy balance (kJ), summed over buildings (exact method).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub energy: Option<EnergyReport>,
     /// Set when no floors pair up: the row runs, but nothing can pound.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
@@ -136,6 +163,7 @@ impl RowReport {
                 map_steps: run.map_steps,
                 series_steps: run.series_steps,
             },
+            energy: run.energy.as_ref().map(EnergyReport::of),
             note,
         }
     }
@@ -147,11 +175,7 @@ impl Report for RowReport {
         let _ = writeln!(
             s,
             "{}: {} excitation, {} contact, {} method, {:.3} s",
-            self.row,
-            self.excitation,
-            self.model,
-            self.method,
-            self.duration
+            self.row, self.excitation, self.model, self.method, self.duration
         );
         for b in &self.buildings {
             let t: Vec<String> = b
@@ -198,6 +222,13 @@ impl Report for RowReport {
                     p.max_penetration * 1e3
                 );
             }
+        }
+        if let Some(e) = &self.energy {
+            let _ = writeln!(
+                s,
+                "\nenergy kJ: input {:.3}, kinetic {:.3}, damping {:.3}, spring {:.3}, contact {:.3}; residual {:.1e}",
+                e.input, e.kinetic, e.damping, e.spring, e.contact, e.residual
+            );
         }
         if let Some(note) = &self.note {
             let _ = writeln!(s, "\n{note}");
@@ -264,9 +295,7 @@ impl Report for RowBenchReport {
     fn table(&self) -> String {
         let mut s = format!(
             "{}: {} excitation, {:.3} s; error = largest peak difference (|u|, |u̇|, |Δ|) from the reference, relative per building\n",
-            self.row,
-            self.excitation,
-            self.duration
+            self.row, self.excitation, self.duration
         );
         s += "method        setting       error        ms  impacts  counts match\n";
         for r in &self.rows {

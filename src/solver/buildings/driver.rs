@@ -22,6 +22,7 @@ use crate::model::buildings::ground::Piece;
 use crate::model::buildings::{Ground, Row};
 
 use super::config::{Branch, Closed, Config};
+use super::energy::{NODES, RowEnergy, gauss_legendre};
 use super::hermite::interior_range;
 use super::layout::Layout;
 use super::peaks::{Envelope, raise};
@@ -29,7 +30,7 @@ use super::poly;
 use super::propagator::{Propagator, apply};
 use super::result::{FloorPeaks, PairImpact, PairResult, RowRun};
 use super::system::System;
-use super::taylor::Series;
+use super::taylor::{ORDER, Series};
 
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -38,6 +39,9 @@ pub struct RowOptions {
     pub duration: f64,
     /// Longest sub-step (s); default one radian of the fastest mode out of contact.
     pub max_substep: Option<f64>,
+    /// Take the energy balance ([`super::energy`]): every sub-step then goes
+    /// by the series, on which the integrals are taken.
+    pub energy: bool,
 }
 
 /// A run that cannot be made.
@@ -93,6 +97,7 @@ struct Run<'a> {
     configurations: HashSet<Vec<u8>>,
     buf: Vec<f64>,
     buf2: Vec<f64>,
+    energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -120,6 +125,10 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
         configurations: HashSet::new(),
         buf: Vec::new(),
         buf2: Vec::new(),
+        energy: options.energy.then(|| {
+            let (x, w) = gauss_legendre(NODES);
+            (RowEnergy::default(), x, w)
+        }),
     };
     for piece in ground.pieces(options.duration) {
         let length = piece.length;
@@ -134,7 +143,7 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
             } else {
                 piece.t0 + (j + 1) as f64 * h
             };
-            if run.config.any_contact() || !run.quiet_step(&piece, h) {
+            if run.energy.is_some() || run.config.any_contact() || !run.quiet_step(&piece, h) {
                 run.careful(&piece, tb)?;
             }
             run.t = tb;
@@ -281,6 +290,9 @@ impl Run<'_> {
             let mut event = None;
             self.find_events(&series, &mut end, &mut event);
             self.peaks_on(&series, end);
+            if self.energy.is_some() {
+                self.work_on(&series, end);
+            }
             series.state(end, &mut un, &mut vn);
             std::mem::swap(&mut self.u, &mut un);
             std::mem::swap(&mut self.v, &mut vn);
@@ -403,6 +415,55 @@ impl Run<'_> {
         }
     }
 
+    /// The work terms of SPEC §6 on [0, end] of a Taylor step, by the
+    /// Gauss–Legendre rule ([`super::energy`]).
+    fn work_on(&mut self, series: &Series, end: f64) {
+        let n = self.layout.dofs;
+        let Some((mut e, x, w)) = self.energy.take() else {
+            return;
+        };
+        let mut u = vec![0.0; n];
+        let mut v = vec![0.0; n];
+        for (xi, wi) in x.iter().zip(&w) {
+            let s = 0.5 * end * (1.0 + xi);
+            let weight = 0.5 * end * wi;
+            series.state(s, &mut u, &mut v);
+            let ag = series.ground[..=ORDER]
+                .iter()
+                .rev()
+                .fold(0.0, |acc, &c| acc * s + c);
+            let mut damping = 0.0;
+            let mut input = 0.0;
+            for i in 0..n {
+                let cv: f64 = (0..n).map(|j| self.layout.damping[(i, j)] * v[j]).sum();
+                damping += self.layout.mass[i] * v[i] * cv;
+                input -= self.layout.mass[i] * v[i] * ag;
+            }
+            let mut spring = 0.0;
+            for (k, st) in self.layout.storeys.iter().enumerate() {
+                let d = self.layout.drift(st, &u);
+                let rate = self.layout.drift(st, &v);
+                let z = self.config.z(k, d, st.yield_drift);
+                spring +=
+                    (st.alpha * st.stiffness * d + (1.0 - st.alpha) * st.stiffness * z) * rate;
+            }
+            let mut contact = 0.0;
+            for (pi, p) in self.layout.pairs.iter().enumerate() {
+                if let Some(closed) = &self.config.contact[pi] {
+                    let delta = u[p.left_dof] - u[p.right_dof] - self.layout.gaps[pi];
+                    let rate = v[p.left_dof] - v[p.right_dof];
+                    contact += closed.law.force(delta, rate).force * rate;
+                }
+            }
+            e.damping += weight * damping;
+            e.input += weight * input;
+            e.spring += weight * spring;
+            e.contact += weight * contact;
+        }
+        e.max_input = e.max_input.max(e.input.abs());
+        self.energy = Some((e, x, w));
+    }
+
     fn apply(&mut self, event: Event) {
         match event {
             Event::Yield(k, branch) => self.config.branch[k] = branch,
@@ -463,7 +524,19 @@ impl Run<'_> {
             }
             floors.push(list);
         }
+        let energy = self.energy.as_ref().map(|(e, _, _)| RowEnergy {
+            kinetic: 0.5
+                * self
+                    .layout
+                    .mass
+                    .iter()
+                    .zip(&self.v)
+                    .map(|(m, v)| m * v * v)
+                    .sum::<f64>(),
+            ..*e
+        });
         RowRun {
+            energy,
             floors,
             pairs: self.pairs,
             duration,

@@ -21,12 +21,14 @@
 //! - [`config`]: the configuration (branches, contacts) and its cache key;
 //! - [`system`]: the linear system of one configuration;
 //! - [`peaks`]: the envelopes a run reports;
+//! - [`energy`]: the energy balance, by quadrature on the Taylor steps;
 //! - [`result`]: what a run returns;
 //! - [`driver`]: the loop over sub-steps and events;
 //! - [`newmark`]: Newmark-β on the row, the second method.
 
 pub mod config;
 pub mod driver;
+pub mod energy;
 pub mod hermite;
 pub mod layout;
 pub mod newmark;
@@ -38,5 +40,6 @@ pub mod system;
 pub mod taylor;
 
 pub use driver::{RowError, RowOptions, run_row};
+pub use energy::RowEnergy;
 pub use newmark::run_newmark;
 pub use result::{FloorPeaks, PairImpact, PairResult, RowRun};

@@ -304,6 +304,7 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         duration,
         final_displacement: p.u.iter().copied().collect(),
         final_velocity: p.v.iter().copied().collect(),
+        energy: None,
         maps_made: 0,
         map_steps: 0,
         series_steps: 0,

@@ -62,6 +62,8 @@ pub struct RowRun {
     /// (u, u̇) of every floor at the end, in the row's order.
     pub final_displacement: Vec<f64>,
     pub final_velocity: Vec<f64>,
+    /// The energy balance, when asked for ([`super::RowOptions::energy`]).
+    pub energy: Option<super::energy::RowEnergy>,
     /// Linear maps made, and sub-steps taken with them, and sub-steps that
     /// needed the series.
     pub maps_made: usize,
