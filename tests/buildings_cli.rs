@@ -166,3 +166,26 @@ fn bad_input_exits_2_with_one_line() {
         &["no building named `tower`"],
     );
 }
+
+#[test]
+fn gap_lists_each_joint_beside_the_code_rules() {
+    let v = json(&[
+        "gap",
+        "--buildings",
+        "three-in-series",
+        "--excitation",
+        "record:presets/synthetic.at2",
+        "--format",
+        "json",
+    ]);
+    let joints = v["joints"].as_array().unwrap();
+    assert_eq!(joints.len(), 2);
+    for j in joints {
+        let g = j["min_gap"].as_f64().unwrap();
+        let abs = j["abs"].as_f64().unwrap();
+        let srss = j["srss"].as_f64().unwrap();
+        let ddc = j["ddc"].as_f64().unwrap();
+        assert!(g > 0.0 && g <= abs + 1e-12, "{j}");
+        assert!(ddc <= srss && srss <= abs, "{j}");
+    }
+}

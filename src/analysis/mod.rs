@@ -39,6 +39,7 @@ pub mod ida;
 pub mod limit_state;
 pub mod map;
 pub mod risk;
+pub mod row_gap;
 pub mod row_report;
 pub mod separation;
 pub mod similarity;

@@ -241,3 +241,14 @@ pub fn run(
     let report = RowReport::new(&row, &result, &name, method, median(times));
     print(&render(&report, output.format)?)
 }
+
+/// `pounding gap --buildings`: per joint, the gap that prevents pounding
+/// beside the code rules.
+pub fn gap(args: &BuildingsArgs, params: &ParamArgs, output: &FormatArg) -> Result<(), CliError> {
+    let row = args.row(&params.overrides, params.model.as_deref())?;
+    let (ground, name, duration) =
+        args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
+    let report = crate::analysis::row_gap::row_gap(&row, &ground, duration, &name)
+        .map_err(|e| CliError::Failed(e.to_string()))?;
+    print(&render(&report, output.format)?)
+}

@@ -43,9 +43,14 @@ pub struct GapArgs {
     pub output: FormatArg,
     #[command(flatten)]
     pub long: LongArg,
+    #[command(flatten)]
+    pub row: super::buildings::BuildingsArgs,
 }
 
 pub fn execute(args: &GapArgs) -> Result<(), CliError> {
+    if args.row.buildings.is_some() {
+        return super::buildings::gap(&args.row, &args.params, &args.output);
+    }
     let others = [("--probability", args.probability.is_some())];
     if let Some(suite_args) = args
         .records

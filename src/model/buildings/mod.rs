@@ -3,6 +3,7 @@
 //!
 //! - [`row`]: the row as read, building by building, and its floor pairs;
 //! - [`preset`]: the TOML preset and its one-line errors;
+//! - [`load`]: a preset by built-in name or path, with `--set` edits;
 //! - [`builtin`]: the presets shipped under `presets/buildings/`;
 //! - [`matrices`]: mass, initial stiffness and Rayleigh damping, and the modes;
 //! - [`edit`]: `--set` edits of a preset, checked as the file is;
@@ -13,10 +14,12 @@ pub mod builtin;
 pub mod contact;
 pub mod edit;
 pub mod ground;
+pub mod load;
 pub mod matrices;
 pub mod preset;
 pub mod row;
 
 pub use ground::Ground;
-pub use preset::{BuildingsError, load, load_with, parse};
+pub use load::{load, load_with};
+pub use preset::{BuildingsError, parse};
 pub use row::{Building, FloorPair, Joint, Row};

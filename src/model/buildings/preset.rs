@@ -52,28 +52,6 @@ const BUILDING_KEYS: &[&str] = &[
 ];
 const JOINT_KEYS: &[&str] = &["gap", "stiffness"];
 
-/// Reads a preset: a built-in name (`presets/buildings/NAME.toml`) or a path.
-pub fn load(name_or_path: &str) -> Result<Row, BuildingsError> {
-    load_with(name_or_path, &[])
-}
-
-/// As [`load`], with `--set` edits applied before the checks.
-pub fn load_with(name_or_path: &str, sets: &[String]) -> Result<Row, BuildingsError> {
-    if let Some(text) = super::builtin::find(name_or_path) {
-        let file = format!("presets/buildings/{name_or_path}.toml");
-        return super::edit::parse_with(&file, text, sets);
-    }
-    let path = Path::new(name_or_path);
-    let text = std::fs::read_to_string(path).map_err(|e| BuildingsError {
-        file: name_or_path.to_string(),
-        message: format!(
-            "{e} (built-in rows: {})",
-            super::builtin::names().join(", ")
-        ),
-    })?;
-    super::edit::parse_with(name_or_path, &text, sets)
-}
-
 /// Parses and checks a preset's text; `file` names it in messages.
 pub fn parse(file: &str, text: &str) -> Result<Row, BuildingsError> {
     let fail = |message: String| BuildingsError {

@@ -97,10 +97,20 @@ impl Row {
     /// neighbours whose elevations agree within 1 mm. A joint with an infinite
     /// gap pairs nothing.
     pub fn pairs(&self) -> Vec<FloorPair> {
+        self.floor_pairs(false)
+    }
+
+    /// Floors of neighbours at the same elevation, whatever the gap: where
+    /// the gap that prevents pounding is measured (SPEC §13).
+    pub fn facing_floors(&self) -> Vec<FloorPair> {
+        self.floor_pairs(true)
+    }
+
+    fn floor_pairs(&self, with_infinite_gaps: bool) -> Vec<FloorPair> {
         let offsets = self.offsets();
         let mut out = Vec::new();
         for (j, joint) in self.joints.iter().enumerate() {
-            if !joint.gap.is_finite() {
+            if !(with_infinite_gaps || joint.gap.is_finite()) {
                 continue;
             }
             let (a, b) = (&self.buildings[j], &self.buildings[j + 1]);

@@ -112,7 +112,7 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
     let h_max = options.max_substep.unwrap_or(1.0 / layout.rate);
     let mut run = Run {
         row,
-        envelope: Envelope::new(n, layout.storeys.len()),
+        envelope: Envelope::new(n, layout.storeys.len(), layout.facing.len()),
         pairs: vec![PairResult::default(); layout.pairs.len()],
         layout,
         config,
@@ -233,6 +233,16 @@ impl Run<'_> {
                 }
             }
         }
+        for (k, p) in self.layout.facing.iter().enumerate() {
+            let (a, b) = (p.left_dof, p.right_dof);
+            let (x0, x1) = (self.u[a] - self.u[b], u1[a] - u1[b]);
+            let top = self.envelope.relative[k];
+            if let Some((_, hi)) = interior_range(x0, self.v[a] - self.v[b], x1, v1[a] - v1[b], h)
+                && hi > top - MARGIN * top.abs()
+            {
+                return false;
+            }
+        }
         for (p, &d) in self.layout.pairs.iter().zip(&self.layout.gaps) {
             let (a, b) = (p.left_dof, p.right_dof);
             let (x0, x1) = (self.u[a] - self.u[b], u1[a] - u1[b]);
@@ -262,6 +272,9 @@ impl Run<'_> {
         }
         for (k, s) in self.layout.storeys.iter().enumerate() {
             raise(&mut env.drift[k], self.layout.drift(s, &self.u));
+        }
+        for (k, p) in self.layout.facing.iter().enumerate() {
+            env.relative[k] = env.relative[k].max(self.u[p.left_dof] - self.u[p.right_dof]);
         }
     }
 
@@ -388,6 +401,12 @@ impl Run<'_> {
             series.combine(&du, &[], c);
             if poly::bound(c, end) > env.drift[k] {
                 raise(&mut env.drift[k], poly::max_abs(c, end));
+            }
+        }
+        for (k, p) in self.layout.facing.iter().enumerate() {
+            series.combine(&[(p.left_dof, 1.0), (p.right_dof, -1.0)], &[], c);
+            if poly::bound(c, end) > env.relative[k] {
+                env.relative[k] = env.relative[k].max(poly::max(c, end));
             }
         }
         for (pi, (p, &d)) in self.layout.pairs.iter().zip(&self.layout.gaps).enumerate() {
@@ -537,6 +556,7 @@ impl Run<'_> {
         });
         RowRun {
             energy,
+            max_relative: self.envelope.relative.clone(),
             floors,
             pairs: self.pairs,
             duration,

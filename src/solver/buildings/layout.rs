@@ -29,6 +29,9 @@ pub struct Layout {
     pub storeys: Vec<Storey>,
     pub pairs: Vec<FloorPair>,
     pub gaps: Vec<f64>,
+    /// Floors at the same elevation whatever the gap, whose largest
+    /// u_A − u_B is tracked (the gap that prevents pounding).
+    pub facing: Vec<FloorPair>,
     /// Largest rate of the row out of contact (Gershgorin bound of
     /// √‖M⁻¹K₀‖ and ‖M⁻¹C‖, 1/s): sub-steps are no longer than its inverse,
     /// so that each holds less than one radian of the fastest mode.
@@ -69,6 +72,7 @@ impl Layout {
             .map(|i| (0..n).map(|j| damping[(i, j)].abs()).sum::<f64>())
             .fold(0.0, f64::max);
         Layout {
+            facing: row.facing_floors(),
             dofs: n,
             mass,
             damping,

@@ -211,7 +211,7 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         a: DVector::from_element(n, -ground.at(0.0)),
         springs: vec![SpringState::default(); nm.layout.storeys.len()],
     };
-    let mut env = Envelope::new(n, nm.layout.storeys.len());
+    let mut env = Envelope::new(n, nm.layout.storeys.len(), nm.layout.facing.len());
     let mut pairs = vec![PairResult::default(); nm.layout.pairs.len()];
     let steps = (duration / dt).ceil().max(1.0) as usize;
     let h = duration / steps as f64;
@@ -224,6 +224,9 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         }
         for (k, s) in nm.layout.storeys.iter().enumerate() {
             raise(&mut env.drift[k], nm.layout.drift(s, p.u.as_slice()));
+        }
+        for (k, f) in nm.layout.facing.iter().enumerate() {
+            env.relative[k] = env.relative[k].max(p.u[f.left_dof] - p.u[f.right_dof]);
         }
         for (i, law) in nm.laws.iter().enumerate() {
             if let (Some(law), Some(last)) = (law, pairs[i].impacts.last_mut()) {
@@ -305,6 +308,7 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         final_displacement: p.u.iter().copied().collect(),
         final_velocity: p.v.iter().copied().collect(),
         energy: None,
+        max_relative: env.relative.clone(),
         maps_made: 0,
         map_steps: 0,
         series_steps: 0,

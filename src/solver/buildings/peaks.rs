@@ -8,15 +8,18 @@ pub struct Envelope {
     pub velocity: Vec<f64>,
     pub acceleration: Vec<f64>,
     pub drift: Vec<f64>,
+    /// max over time of u_A − u_B at each facing floor pair (signed).
+    pub relative: Vec<f64>,
 }
 
 impl Envelope {
-    pub fn new(dofs: usize, storeys: usize) -> Envelope {
+    pub fn new(dofs: usize, storeys: usize, facing: usize) -> Envelope {
         Envelope {
             displacement: vec![0.0; dofs],
             velocity: vec![0.0; dofs],
             acceleration: vec![0.0; dofs],
             drift: vec![0.0; storeys],
+            relative: vec![0.0; facing],
         }
     }
 }

@@ -62,6 +62,9 @@ pub struct RowRun {
     /// (u, u̇) of every floor at the end, in the row's order.
     pub final_displacement: Vec<f64>,
     pub final_velocity: Vec<f64>,
+    /// max over time of u_A − u_B at each facing floor pair
+    /// ([`crate::model::buildings::Row::facing_floors`]), m; at rest 0.
+    pub max_relative: Vec<f64>,
     /// The energy balance, when asked for ([`super::RowOptions::energy`]).
     pub energy: Option<super::energy::RowEnergy>,
     /// Linear maps made, and sub-steps taken with them, and sub-steps that
