@@ -25,11 +25,7 @@ fn rows(c: &mut Criterion) {
     for (name, samples) in [("block-and-frame", 2000), ("three-in-series", 8000)] {
         let row = buildings::load(name).expect("a shipped row");
         let g = ground(samples);
-        let options = RowOptions {
-            duration: g.end() + 4.0,
-            max_substep: None,
-            energy: false,
-        };
+        let options = RowOptions::lasting(g.end() + 4.0);
         c.bench_function(&format!("exact {name} synthetic:{samples}"), |b| {
             b.iter(|| black_box(run_row(&row, &g, &options).expect("runs")))
         });

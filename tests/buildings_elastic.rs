@@ -74,16 +74,7 @@ fn elastic_rows_without_contact_are_modal_superposition() {
     )
     .unwrap();
     for duration in [3.333, 7.5, 12.0] {
-        let r = run_row(
-            &row,
-            &ground,
-            &RowOptions {
-                duration,
-                max_substep: None,
-                energy: false,
-            },
-        )
-        .unwrap();
+        let r = run_row(&row, &ground, &RowOptions::lasting(duration)).unwrap();
         let mut at = 0;
         for (b, floors) in row.buildings.iter().zip(&r.floors) {
             let (u, v) = modal(b, record.dt, &ground_samples(&ground), duration);
@@ -117,11 +108,7 @@ fn the_mirror_image_gives_the_same_peaks() {
     let record = read("presets/synthetic.at2").unwrap();
     let ground = Ground::from_record(&record, 1.5);
     let row = buildings::load("three-in-series").unwrap();
-    let options = RowOptions {
-        duration: ground.end() + 2.0,
-        max_substep: None,
-        energy: false,
-    };
+    let options = RowOptions::lasting(ground.end() + 2.0);
     let a = run_row(&row, &ground, &options).unwrap();
     let b = run_row(&row.mirrored(), &ground.negated(), &options).unwrap();
     assert!(a.impacts() > 10, "{}", a.impacts());

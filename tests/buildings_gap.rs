@@ -39,16 +39,7 @@ fn a_gap_just_above_the_minimum_never_closes() {
         for (j, g) in r.joints.iter_mut().zip(&gaps.joints) {
             j.gap = g.min_gap * factor;
         }
-        let run = run_row(
-            &r,
-            &ground,
-            &RowOptions {
-                duration,
-                max_substep: None,
-                energy: false,
-            },
-        )
-        .unwrap();
+        let run = run_row(&r, &ground, &RowOptions::lasting(duration)).unwrap();
         for j in 0..r.joints.len() {
             let impacts: usize = r
                 .pairs()

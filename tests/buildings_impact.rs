@@ -24,16 +24,7 @@ fn an_isolated_impact_returns_e() {
             omega: 2.0 * std::f64::consts::PI,
             end: 1.0,
         };
-        let r = run_row(
-            &row,
-            &ground,
-            &RowOptions {
-                duration: 1.5,
-                max_substep: None,
-                energy: false,
-            },
-        )
-        .unwrap();
+        let r = run_row(&row, &ground, &RowOptions::lasting(1.5)).unwrap();
         let first = r.pairs[0].impacts[0];
         let achieved = first.separation_velocity / first.approach_velocity;
         assert!(first.approach_velocity > 0.01, "{first:?}");

@@ -23,16 +23,7 @@ fn newmark_converges_to_the_exact_method_at_second_order() {
     let ground = Ground::from_record(&record, 1.0);
     let row = buildings::load("block-and-frame").unwrap();
     let duration = 4.0;
-    let exact = run_row(
-        &row,
-        &ground,
-        &RowOptions {
-            duration,
-            max_substep: None,
-            energy: false,
-        },
-    )
-    .unwrap();
+    let exact = run_row(&row, &ground, &RowOptions::lasting(duration)).unwrap();
     assert!(exact.impacts() > 0);
     let errors: Vec<f64> = [4e-4, 2e-4, 1e-4, 5e-5]
         .iter()

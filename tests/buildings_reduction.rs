@@ -22,16 +22,7 @@ fn two_one_storey_buildings_are_the_sdof_pair() {
         omega: omega_p,
         end: 8.0,
     };
-    let r = run_row(
-        &row,
-        &ground,
-        &RowOptions {
-            duration: 8.0,
-            max_substep: None,
-            energy: false,
-        },
-    )
-    .unwrap();
+    let r = run_row(&row, &ground, &RowOptions::lasting(8.0)).unwrap();
     let want = [
         (
             sdof.left.peak_displacement * le,

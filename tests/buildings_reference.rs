@@ -9,16 +9,7 @@ use pounding::solver::buildings::{RowOptions, run_row};
 
 fn compare(name: &str, ground: &Ground, duration: f64, tolerance: f64) -> f64 {
     let row = buildings::load(name).unwrap();
-    let exact = run_row(
-        &row,
-        ground,
-        &RowOptions {
-            duration,
-            max_substep: None,
-            energy: false,
-        },
-    )
-    .unwrap();
+    let exact = run_row(&row, ground, &RowOptions::lasting(duration)).unwrap();
     let reference = reference_row(&row, ground, duration, 1e-13);
     let counts: Vec<usize> = exact.pairs.iter().map(|p| p.impacts.len()).collect();
     assert_eq!(counts, reference.impacts, "{name}: impacts per pair");

@@ -80,11 +80,7 @@ pub fn row_bench(row: &Row, ground: &Ground, duration: f64) -> Result<Vec<RowBen
         impacts: reference.impacts.iter().sum(),
         impacts_match: true,
     }];
-    let options = RowOptions {
-        duration,
-        max_substep: None,
-        energy: false,
-    };
+    let options = RowOptions::lasting(duration);
     let (ms, exact) = best(10, || run_row(row, ground, &options));
     let exact = exact?;
     rows.push(RowBenchRow {

@@ -47,15 +47,7 @@ pub fn row_gap(
     for j in &mut free.joints {
         j.gap = f64::INFINITY;
     }
-    let run = run_row(
-        &free,
-        ground,
-        &RowOptions {
-            duration,
-            max_substep: None,
-            energy: false,
-        },
-    )?;
+    let run = run_row(&free, ground, &RowOptions::lasting(duration))?;
     let facing = free.facing_floors();
     let joints = (0..row.joints.len())
         .map(|j| {

@@ -206,11 +206,7 @@ pub fn run(
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let method = params.method.as_deref().unwrap_or("exact");
     let dt = newmark_step(params)?;
-    let options = RowOptions {
-        duration,
-        max_substep: None,
-        energy: false,
-    };
+    let options = RowOptions::lasting(duration);
     let mut times = Vec::new();
     let mut result = None;
     for _ in 0..repeat.max(1) {

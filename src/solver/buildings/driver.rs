@@ -44,6 +44,17 @@ pub struct RowOptions {
     pub energy: bool,
 }
 
+impl RowOptions {
+    /// A run of `duration` seconds with the default sub-steps, peaks only.
+    pub fn lasting(duration: f64) -> RowOptions {
+        RowOptions {
+            duration,
+            max_substep: None,
+            energy: false,
+        }
+    }
+}
+
 /// A run that cannot be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RowError {
