@@ -189,3 +189,42 @@ fn gap_lists_each_joint_beside_the_code_rules() {
         assert!(ddc <= srss && srss <= abs, "{j}");
     }
 }
+
+#[test]
+fn figure_buildings_writes_envelopes_and_impact_forces() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("row.svg");
+    let out = out.to_string_lossy().into_owned();
+    common::succeeds(&[
+        "figure",
+        "buildings",
+        "--buildings",
+        "block-and-frame",
+        "--excitation",
+        "record:presets/synthetic.at2",
+        "--out",
+        &out,
+    ]);
+    let svg = std::fs::read_to_string(&out).unwrap();
+    for title in [
+        "peak floor displacement",
+        "peak storey drift ratio",
+        "peak floor acceleration",
+        "impact forces",
+        "frame apart",
+    ] {
+        assert!(svg.contains(title), "{title}");
+    }
+    fails(
+        &[
+            "figure",
+            "buildings",
+            "--buildings",
+            "block-and-frame",
+            "--out",
+            "x.gif",
+        ],
+        2,
+        &["--out x.gif", ".svg or .png"],
+    );
+}

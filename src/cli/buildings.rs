@@ -248,3 +248,45 @@ pub fn gap(args: &BuildingsArgs, params: &ParamArgs, output: &FormatArg) -> Resu
         .map_err(|e| CliError::Failed(e.to_string()))?;
     print(&render(&report, output.format)?)
 }
+
+/// `pounding figure buildings --out F.svg|png`: envelopes with and without
+/// pounding, and the impact forces.
+pub fn figure(
+    args: &BuildingsArgs,
+    params: &ParamArgs,
+    out: Option<&std::path::Path>,
+) -> Result<(), CliError> {
+    use crate::figure::{Format, encode};
+    let out =
+        out.ok_or_else(|| CliError::Usage("figure buildings needs --out F.svg or F.png".into()))?;
+    let format = match out.extension().and_then(|e| e.to_str()) {
+        Some("svg") => Format::Svg,
+        Some("png") => Format::Png,
+        _ => {
+            return Err(CliError::Usage(format!(
+                "--out {}: must end in .svg or .png",
+                out.display()
+            )));
+        }
+    };
+    let row = args.row(&params.overrides, params.model.as_deref())?;
+    let (ground, name, duration) =
+        args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
+    let mut apart = row.clone();
+    for j in &mut apart.joints {
+        j.gap = f64::INFINITY;
+    }
+    let failed = |e: crate::solver::buildings::RowError| CliError::Failed(e.to_string());
+    let with = run_row(&row, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
+    let without = run_row(&apart, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
+    let caption = format!(
+        "{} excitation, {} contact, exact method, {:.3} s; dashed: without pounding",
+        name,
+        row.model.name(),
+        duration
+    );
+    let fig = crate::figure::buildings::row_figure(&row, &with, &without, &caption);
+    let bytes = encode(&fig, format, (1400, 1000)).map_err(|e| CliError::Failed(e.to_string()))?;
+    crate::output::write_file(out, &bytes)?;
+    Ok(())
+}

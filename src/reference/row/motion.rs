@@ -2,8 +2,10 @@
 //! first-order system in y = (u, u̇), with each storey's shear and each
 //! closed pair's force computed directly from the law:
 //!
-//!     m_i ü_i = −(C u̇)_i − V_i + V_{i+1} ∓ Σ f_p − m_i ü_g(t),
-//!     V_i = αk_iΔ_i + (1 − α)k_i z_i,
+//! ```text
+//! m_i ü_i = −(C u̇)_i − V_i + V_{i+1} ∓ Σ f_p − m_i ü_g(t),
+//! V_i = αk_iΔ_i + (1 − α)k_i z_i,
+//! ```
 //!
 //! with z_i fixed by the storey's mode (Δ − p elastic, ±Δ_y yielding).
 

@@ -1,8 +1,10 @@
 //! The energy balance of a row (SPEC §6 summed over buildings, §13), in J:
 //!
-//!     E_in = −∫ Σ m_i u̇_i ü_g dt,   E_kin = ½ Σ m_i u̇_i²,
-//!     E_damp = ∫ u̇ᵀC u̇ dt,   E_spring = ∫ Σ V_j Δ̇_j dt,   E_contact = ∫ Σ f_p δ̇ dt,
-//!     residual = |E_kin + E_damp + E_spring + E_contact − E_in| / max |E_in|.
+//! ```text
+//! E_in = −∫ Σ m_i u̇_i ü_g dt,   E_kin = ½ Σ m_i u̇_i²,
+//! E_damp = ∫ u̇ᵀC u̇ dt,   E_spring = ∫ Σ V_j Δ̇_j dt,   E_contact = ∫ Σ f_p δ̇ dt,
+//! residual = |E_kin + E_damp + E_spring + E_contact − E_in| / max |E_in|.
+//! ```
 //!
 //! The integrals are taken on each Taylor step of the exact method by
 //! Gauss–Legendre quadrature: inside a step the motion is one analytic

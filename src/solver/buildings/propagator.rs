@@ -3,11 +3,13 @@
 //!
 //! With w = (u, u̇, a_g, ȧ_g, M⁻¹q) the motion is w' = 𝒜w,
 //!
-//!     𝒜 = [ 0      I      0   0  0 ]
-//!         [ −M⁻¹K  −M⁻¹C  −1  0  I ]
-//!         [ 0      0      0   1  0 ]
-//!         [ 0      0      σ   0  0 ]
-//!         [ 0      0      0   0  0 ],
+//! ```text
+//! 𝒜 = [ 0      I      0   0  0 ]
+//!     [ −M⁻¹K  −M⁻¹C  −1  0  I ]
+//!     [ 0      0      0   1  0 ]
+//!     [ 0      0      σ   0  0 ]
+//!     [ 0      0      0   0  0 ],
+//! ```
 //!
 //! so w(h) = e^{𝒜h} w(0) exactly; the map keeps the rows of (u, u̇). The
 //! plastic offsets only enter through M⁻¹q, a part of the state, so one map

@@ -1,6 +1,8 @@
 //! The linear system of one configuration (SPEC §13):
 //!
-//!     ü = −M⁻¹K u − M⁻¹C u̇ + M⁻¹q − 1 ü_g − M⁻¹ Σ_p h_p δ_p δ̇_p e_p.
+//! ```text
+//! ü = −M⁻¹K u − M⁻¹C u̇ + M⁻¹q − 1 ü_g − M⁻¹ Σ_p h_p δ_p δ̇_p e_p.
+//! ```
 //!
 //! - Storey i on the elastic branch: V_i = k_iΔ_i − (1−α)k_i p_i; yielding:
 //!   V_i = αk_iΔ_i ± (1−α)k_iΔ_y,i. It acts −V_i on its upper floor and

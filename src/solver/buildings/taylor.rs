@@ -1,8 +1,10 @@
 //! The Taylor series of the motion in one configuration (SPEC §13), from a
 //! state at s = 0:
 //!
-//!     u_{k+1} = u̇_k/(k+1),
-//!     u̇_{k+1} = (−M⁻¹K u_k − M⁻¹C u̇_k + M⁻¹q [k = 0] − a_k − M⁻¹ Σ_p h_p (δδ̇)_k e_p)/(k+1),
+//! ```text
+//! u_{k+1} = u̇_k/(k+1),
+//! u̇_{k+1} = (−M⁻¹K u_k − M⁻¹C u̇_k + M⁻¹q [k = 0] − a_k − M⁻¹ Σ_p h_p (δδ̇)_k e_p)/(k+1),
+//! ```
 //!
 //! with a_k the ground's coefficients (a_{k+2} = σ a_k/((k+1)(k+2)) on a
 //! piece where ä_g = σ a_g) and (δδ̇)_k = Σ_j δ_j δ̇_{k−j} the improved Kelvin
