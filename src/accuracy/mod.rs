@@ -18,6 +18,7 @@ pub mod method;
 pub mod plot;
 pub mod random;
 pub mod record_speed;
+pub mod row_bench;
 pub mod stress;
 pub mod timing;
 pub mod work_precision;

@@ -43,6 +43,8 @@ pub mod ida;
 pub mod limit_state;
 pub mod map;
 pub mod risk;
+pub mod row_gap;
+pub mod row_report;
 pub mod separation;
 pub mod shard;
 pub mod similarity;

@@ -43,9 +43,16 @@ pub struct BenchArgs {
     /// N samples at DT = 0.005 s (seed 1, as `records synth`).
     #[arg(long, value_name = "record:PATH|synthetic:N")]
     pub excitation: Option<String>,
+    /// A row of buildings (SPEC §13) instead of the pair: its work-precision rows.
+    #[command(flatten)]
+    pub row: super::buildings::BuildingsArgs,
 }
 
 pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
+    if args.row.buildings.is_some() {
+        let model = args.model.first().map(String::as_str);
+        return super::buildings::bench(&args.row, args.excitation.as_deref(), model, &args.output);
+    }
     if args.spectra {
         return spectra(args);
     }

@@ -48,6 +48,9 @@ pub struct FigureArgs {
     /// The suite study of ida, fragility and separation.
     #[command(flatten)]
     pub risk: RiskArgs,
+    /// The row for `figure buildings` (SPEC §13).
+    #[command(flatten)]
+    pub row: super::buildings::BuildingsArgs,
 }
 
 fn usage(msg: impl std::fmt::Display) -> CliError {
@@ -100,6 +103,9 @@ fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
 }
 
 pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
+    if args.name.trim() == "buildings" {
+        return super::buildings::figure(&args.row, &args.params, args.out.as_deref());
+    }
     let all = args.name.trim() == "all";
     let name = if all {
         None

@@ -45,6 +45,8 @@ pub struct GapArgs {
     pub long: LongArg,
     #[command(flatten)]
     pub shard: super::shard::ShardArgs,
+    #[command(flatten)]
+    pub row: super::buildings::BuildingsArgs,
 }
 
 pub fn execute(args: &GapArgs) -> Result<(), CliError> {
@@ -57,6 +59,9 @@ pub fn report_with(
     args: &GapArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
+    if args.row.buildings.is_some() {
+        return super::buildings::gap(&args.row, &args.params, emit);
+    }
     let others = [("--probability", args.probability.is_some())];
     if let Some(suite_args) = args
         .records

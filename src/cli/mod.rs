@@ -12,6 +12,7 @@
 
 pub mod bench;
 pub mod budget;
+pub mod buildings;
 pub mod description;
 pub mod figure;
 pub mod figure_risk;

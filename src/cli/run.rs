@@ -29,6 +29,8 @@ pub struct RunArgs {
     pub params: ParamArgs,
     #[command(flatten)]
     pub output: FormatArg,
+    #[command(flatten)]
+    pub row: super::buildings::BuildingsArgs,
     /// Write the history as CSV (tau,x1,v1,a1,x2,v2,a2,fs1,fs2,fp, then the ground
     /// motion ag,vg,ug in Π form, SPEC §9), one row per step,
     /// streamed as it is computed. `-` is stdout (the summary then goes to stderr).
@@ -71,6 +73,9 @@ pub fn report_with(
     args: &RunArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
+    if args.row.buildings.is_some() {
+        return super::buildings::run(&args.row, &args.params, args.repeat, emit);
+    }
     let (preset, p) = args.params.resolve()?;
     let steps = run_steps(&p);
     let history_runs = f64::from(u8::from(args.history.is_some()));

@@ -17,6 +17,7 @@
 //! let png = encode(&fig, Format::Png, (1200, 900)).unwrap();
 //! ```
 
+pub mod buildings;
 pub mod caption;
 pub mod font;
 pub mod history;

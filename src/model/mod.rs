@@ -1,6 +1,7 @@
 //! The physical model: parameters (SPEC §1), bilinear springs (§3), contact
 //! laws (§4, §10), the excitation (§2, §9), recorded ground motions and presets.
 
+pub mod buildings;
 pub mod contact;
 pub mod excitation;
 pub mod family;

@@ -18,6 +18,7 @@ pub mod closed_form;
 pub use crate::numerics::dopri5;
 pub mod events;
 pub mod integrate;
+pub mod row;
 pub mod system;
 
 pub use integrate::{

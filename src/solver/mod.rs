@@ -11,6 +11,7 @@
 //! - [`observer`]: what gets recorded (nothing, a full history, a decimated one);
 //! - [`result`]: what a run reports (SPEC §6).
 
+pub mod buildings;
 pub mod dispatch;
 pub mod exact;
 pub mod newmark;

@@ -1,0 +1,346 @@
+//! What `pounding run --buildings` reports (SPEC §13): per building its
+//! periods and per floor the peaks and drift demands, per floor pair its
+//! impacts, in SI (accelerations in g, forces in kN).
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use crate::model::buildings::Row;
+use crate::model::buildings::matrices::periods;
+use crate::model::record::STANDARD_GRAVITY;
+use crate::output::Num;
+use crate::output::report::{Report, float_or_inf};
+use crate::solver::buildings::RowRun;
+
+#[derive(Debug, Clone, Serialize)]
+pub struct FloorReport {
+    pub floor: usize,
+    pub peak_displacement: f64,
+    pub peak_velocity: f64,
+    /// g.
+    pub peak_absolute_acceleration: f64,
+    pub peak_drift: f64,
+    pub drift_ratio: f64,
+    #[serde(serialize_with = "float_or_inf")]
+    pub ductility: f64,
+    pub residual_drift: f64,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct BuildingReport {
+    pub name: String,
+    /// s, longest first.
+    pub periods: Vec<f64>,
+    pub floors: Vec<FloorReport>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct PairReport {
+    pub left: String,
+    pub right: String,
+    pub left_floor: usize,
+    pub right_floor: usize,
+    pub impacts: usize,
+    /// kN.
+    pub max_force: f64,
+    /// m.
+    pub max_penetration: f64,
+}
+
+/// The energy balance of SPEC §6 summed over the row, kJ.
+#[derive(Debug, Clone, Serialize)]
+pub struct EnergyReport {
+    pub input: f64,
+    pub kinetic: f64,
+    pub damping: f64,
+    pub spring: f64,
+    pub contact: f64,
+    pub residual: f64,
+}
+
+impl EnergyReport {
+    pub fn of(e: &crate::solver::buildings::RowEnergy) -> EnergyReport {
+        EnergyReport {
+            input: e.input / 1e3,
+            kinetic: e.kinetic / 1e3,
+            damping: e.damping / 1e3,
+            spring: e.spring / 1e3,
+            contact: e.contact / 1e3,
+            residual: e.residual(),
+        }
+    }
+}
+
+/// How the exact method's cache of linear maps was used.
+#[derive(Debug, Clone, Serialize)]
+pub struct CacheReport {
+    /// Matrix exponentials made (distinct (configuration, h, σ)).
+    pub maps: usize,
+    /// Branch patterns seen out of contact.
+    pub configurations: usize,
+    /// Sub-steps taken by a cached map, and Taylor steps.
+    pub map_steps: usize,
+    pub series_steps: usize,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct RowReport {
+    pub row: String,
+    pub model: String,
+    pub excitation: String,
+    pub method: String,
+    /// s.
+    pub duration: f64,
+    pub buildings: Vec<BuildingReport>,
+    pub pairs: Vec<PairReport>,
+    pub impacts: usize,
+    pub elapsed_ms: f64,
+    pub cache: CacheReport,
+    /// The energy balance (kJ), summed over buildings (exact method).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub energy: Option<EnergyReport>,
+    /// Set when no floors pair up: the row runs, but nothing can pound.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+impl RowReport {
+    pub fn new(row: &Row, run: &RowRun, excitation: &str, method: &str, elapsed_ms: f64) -> Self {
+        let buildings = row
+            .buildings
+            .iter()
+            .zip(&run.floors)
+            .map(|(b, floors)| BuildingReport {
+                name: b.name.clone(),
+                periods: periods(b),
+                floors: floors
+                    .iter()
+                    .enumerate()
+                    .map(|(i, f)| FloorReport {
+                        floor: i + 1,
+                        peak_displacement: f.displacement,
+                        peak_velocity: f.velocity,
+                        peak_absolute_acceleration: f.absolute_acceleration / STANDARD_GRAVITY,
+                        peak_drift: f.drift,
+                        drift_ratio: f.drift_ratio,
+                        ductility: f.ductility,
+                        residual_drift: f.residual_drift,
+                    })
+                    .collect(),
+            })
+            .collect();
+        let pairs: Vec<PairReport> = row
+            .pairs()
+            .iter()
+            .zip(&run.pairs)
+            .map(|(p, r)| PairReport {
+                left: row.buildings[p.left].name.clone(),
+                right: row.buildings[p.right].name.clone(),
+                left_floor: p.left_floor,
+                right_floor: p.right_floor,
+                impacts: r.impacts.len(),
+                max_force: r.max_force() / 1e3,
+                max_penetration: r.max_penetration(),
+            })
+            .collect();
+        let note = (pairs.is_empty() && row.buildings.len() > 1).then(|| {
+            "no floors pair up (none at the same elevation within 1 mm, or every gap is inf): the buildings cannot pound".to_string()
+        });
+        RowReport {
+            row: row.name.clone(),
+            model: row.model.name().to_string(),
+            excitation: excitation.to_string(),
+            method: method.to_string(),
+            duration: run.duration,
+            buildings,
+            pairs,
+            impacts: run.impacts(),
+            elapsed_ms,
+            cache: CacheReport {
+                maps: run.maps_made,
+                configurations: run.configurations,
+                map_steps: run.map_steps,
+                series_steps: run.series_steps,
+            },
+            energy: run.energy.as_ref().map(EnergyReport::of),
+            note,
+        }
+    }
+}
+
+impl Report for RowReport {
+    fn table(&self) -> String {
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "{}: {} excitation, {} contact, {} method, {:.3} s",
+            self.row, self.excitation, self.model, self.method, self.duration
+        );
+        for b in &self.buildings {
+            let t: Vec<String> = b
+                .periods
+                .iter()
+                .take(3)
+                .map(|p| format!("{p:.3}"))
+                .collect();
+            let _ = writeln!(s, "\n{} (T = {} s)", b.name, t.join(", "));
+            let _ = writeln!(
+                s,
+                "floor      u mm    v m/s      A g  drift mm   drift %        μ  resid mm"
+            );
+            for f in b.floors.iter().rev() {
+                let _ = writeln!(
+                    s,
+                    "{:5} {:9.2} {:8.3} {:8.3} {:9.2} {:9.3} {:8.3} {:9.2}",
+                    f.floor,
+                    f.peak_displacement * 1e3,
+                    f.peak_velocity,
+                    f.peak_absolute_acceleration,
+                    f.peak_drift * 1e3,
+                    f.drift_ratio * 100.0,
+                    f.ductility,
+                    f.residual_drift * 1e3
+                );
+            }
+        }
+        if !self.pairs.is_empty() {
+            let _ = writeln!(
+                s,
+                "\npair                         impacts  max force kN  penetration mm"
+            );
+            for p in &self.pairs {
+                let name = format!(
+                    "{} {} – {} {}",
+                    p.left, p.left_floor, p.right, p.right_floor
+                );
+                let _ = writeln!(
+                    s,
+                    "{name:28} {:7} {:13.0} {:15.3}",
+                    p.impacts,
+                    p.max_force,
+                    p.max_penetration * 1e3
+                );
+            }
+        }
+        if let Some(e) = &self.energy {
+            let _ = writeln!(
+                s,
+                "\nenergy kJ: input {:.3}, kinetic {:.3}, damping {:.3}, spring {:.3}, contact {:.3}; residual {:.1e}",
+                e.input, e.kinetic, e.damping, e.spring, e.contact, e.residual
+            );
+        }
+        if let Some(note) = &self.note {
+            let _ = writeln!(s, "\n{note}");
+        }
+        let _ = writeln!(
+            s,
+            "\nimpacts {}   {:.3} ms   cache: {} maps for {} configurations, {} map steps, {} series steps",
+            self.impacts,
+            self.elapsed_ms,
+            self.cache.maps,
+            self.cache.configurations,
+            self.cache.map_steps,
+            self.cache.series_steps
+        );
+        s
+    }
+
+    fn csv_header(&self) -> Vec<&'static str> {
+        vec![
+            "building",
+            "floor",
+            "peak_displacement",
+            "peak_velocity",
+            "peak_absolute_acceleration",
+            "peak_drift",
+            "drift_ratio",
+            "ductility",
+            "residual_drift",
+        ]
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        self.buildings
+            .iter()
+            .flat_map(|b| {
+                b.floors.iter().map(|f| {
+                    vec![
+                        b.name.clone(),
+                        f.floor.to_string(),
+                        Num(f.peak_displacement).to_string(),
+                        Num(f.peak_velocity).to_string(),
+                        Num(f.peak_absolute_acceleration).to_string(),
+                        Num(f.peak_drift).to_string(),
+                        Num(f.drift_ratio).to_string(),
+                        Num(f.ductility).to_string(),
+                        Num(f.residual_drift).to_string(),
+                    ]
+                })
+            })
+            .collect()
+    }
+}
+
+/// `bench --buildings`: the work-precision rows of one row and ground motion.
+#[derive(Debug, Clone, Serialize)]
+pub struct RowBenchReport {
+    pub row: String,
+    pub excitation: String,
+    pub duration: f64,
+    pub rows: Vec<crate::accuracy::row_bench::RowBenchRow>,
+}
+
+impl Report for RowBenchReport {
+    fn table(&self) -> String {
+        let mut s = format!(
+            "{}: {} excitation, {:.3} s; error = largest peak difference (|u|, |u̇|, |Δ|) from the reference, relative per building\n",
+            self.row, self.excitation, self.duration
+        );
+        s += "method        setting       error        ms  impacts  counts match\n";
+        for r in &self.rows {
+            let _ = writeln!(
+                s,
+                "{:10} {:>10} {:11.3e} {:9.3} {:8}  {}",
+                r.method,
+                if r.setting > 0.0 {
+                    format!("{:e}", r.setting)
+                } else {
+                    "-".into()
+                },
+                r.error,
+                r.ms,
+                r.impacts,
+                if r.impacts_match { "yes" } else { "no" }
+            );
+        }
+        s
+    }
+
+    fn csv_header(&self) -> Vec<&'static str> {
+        vec![
+            "method",
+            "setting",
+            "error",
+            "ms",
+            "impacts",
+            "impacts_match",
+        ]
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        self.rows
+            .iter()
+            .map(|r| {
+                vec![
+                    r.method.clone(),
+                    Num(r.setting).to_string(),
+                    Num(r.error).to_string(),
+                    Num(r.ms).to_string(),
+                    r.impacts.to_string(),
+                    r.impacts_match.to_string(),
+                ]
+            })
+            .collect()
+    }
+}

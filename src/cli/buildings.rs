@@ -1,0 +1,296 @@
+//! `--buildings PRESET`: the row commands of SPEC §13 (`run`), parsing and
+//! printing only; the model, the methods and the report live in the library.
+
+use std::time::Instant;
+
+use clap::Args;
+
+use super::CliError;
+use super::output::{Emit, FormatArg, print, render};
+use super::params::ParamArgs;
+use crate::accuracy::timing::median;
+use crate::analysis::row_report::RowReport;
+use crate::model::buildings::matrices::periods;
+use crate::model::buildings::{Ground, Row, load_with};
+use crate::model::physical::parse_acceleration;
+use crate::solver::buildings::{RowError, RowOptions, run_newmark, run_row};
+
+/// The options of a row of buildings.
+#[derive(Debug, Clone, Default, Args)]
+pub struct BuildingsArgs {
+    /// A row of shear buildings (SPEC §13): a built-in row (two-buildings,
+    /// block-and-frame, three-in-series) or a path to a row preset. `--set
+    /// NAME.KEY=V` edits one building, `--set jointN.KEY=V` one joint.
+    #[arg(long, value_name = "NAME|PATH")]
+    pub buildings: Option<String>,
+    /// Scale factor on the ground motion (rows).
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    pub scale: Option<f64>,
+    /// Free vibration after the motion ends, in seconds [default: four times the longest fundamental period] (rows).
+    #[arg(long, value_name = "SECONDS")]
+    pub tail: Option<f64>,
+    /// Amplitude of a sine or pulse, in m/s² or with a `g` suffix [default: 0.3g] (rows).
+    #[arg(long, value_name = "A")]
+    pub amplitude: Option<String>,
+    /// Period of a sine or pulse in seconds [default: 1] (rows).
+    #[arg(long, value_name = "SECONDS")]
+    pub period: Option<f64>,
+}
+
+impl BuildingsArgs {
+    /// The row, with `--set` and `--model` applied.
+    pub fn row(&self, overrides: &[String], model: Option<&str>) -> Result<Row, CliError> {
+        let name = self.buildings.as_deref().unwrap_or("block-and-frame");
+        let mut sets = overrides.to_vec();
+        if let Some(m) = model {
+            sets.push(format!("model=\"{m}\""));
+        }
+        load_with(name, &sets).map_err(|e| CliError::Usage(e.to_string()))
+    }
+
+    /// The ground motion and its name, and the run's length.
+    pub fn ground(
+        &self,
+        excitation: Option<&str>,
+        cycles: Option<&str>,
+        row: &Row,
+    ) -> Result<(Ground, String, f64), CliError> {
+        let scale = self.scale.unwrap_or(1.0);
+        if !scale.is_finite() {
+            return Err(CliError::Usage(format!(
+                "--scale {scale}: must be a finite number"
+            )));
+        }
+        let amplitude = match &self.amplitude {
+            None => 0.3 * crate::model::record::STANDARD_GRAVITY,
+            Some(a) => parse_acceleration(a).ok_or_else(|| {
+                CliError::Usage(format!(
+                    "--amplitude `{a}`: must be a number > 0 in m/s², or with a g suffix (0.3g)"
+                ))
+            })?,
+        } * scale;
+        let period = self.period.unwrap_or(1.0);
+        if !(period > 0.0 && period.is_finite()) {
+            return Err(CliError::Usage(format!(
+                "--period {period}: must be a finite number > 0 (s)"
+            )));
+        }
+        let omega = 2.0 * std::f64::consts::PI / period;
+        let name = excitation.unwrap_or("sine");
+        let ground = match name {
+            "sine" => {
+                let cycles = match cycles {
+                    None => 8.0,
+                    Some(c) => c
+                        .parse::<f64>()
+                        .ok()
+                        .filter(|c| *c > 0.0 && c.is_finite())
+                        .ok_or_else(|| {
+                            CliError::Usage(format!("--cycles `{c}`: must be a finite number > 0"))
+                        })?,
+                };
+                Ground::Sine {
+                    amplitude,
+                    omega,
+                    end: cycles * period,
+                }
+            }
+            "pulse-a" => Ground::Sine {
+                amplitude,
+                omega,
+                end: period,
+            },
+            spec if spec.starts_with("synthetic:") => {
+                Ground::from_record(&synthetic(&spec["synthetic:".len()..])?, scale)
+            }
+            spec if spec.starts_with("record:") => {
+                let record = crate::model::record::read(&spec["record:".len()..])
+                    .map_err(|e| CliError::Usage(e.to_string()))?;
+                Ground::from_record(&record, scale)
+            }
+            other => {
+                return Err(CliError::Usage(format!(
+                    "--excitation `{other}`: rows take sine, pulse-a or record:PATH"
+                )));
+            }
+        };
+        let longest = row
+            .buildings
+            .iter()
+            .map(|b| periods(b)[0])
+            .fold(0.0, f64::max);
+        let tail = self.tail.unwrap_or(4.0 * longest);
+        if !(tail >= 0.0 && tail.is_finite()) {
+            return Err(CliError::Usage(format!(
+                "--tail {tail}: must be a finite number ≥ 0 (s)"
+            )));
+        }
+        Ok((ground.clone(), name.to_string(), ground.end() + tail))
+    }
+}
+
+/// `synthetic:N`: one simulated record of N samples at DT = 0.005 s
+/// (seed 1, as `records synth`), PGA 0.3 g.
+fn synthetic(n: &str) -> Result<crate::model::record::Record, CliError> {
+    let samples: usize = n
+        .parse()
+        .ok()
+        .filter(|&n| n >= 11)
+        .ok_or_else(|| CliError::Usage(format!("synthetic:N needs N ≥ 11, not `{n}`")))?;
+    let simulation = crate::model::simulated::Simulation {
+        dt: 0.005,
+        duration: 0.005 * (samples - 1) as f64,
+        ..Default::default()
+    };
+    simulation
+        .validate()
+        .map_err(|e| CliError::Usage(e.to_string()))?;
+    Ok(simulation.record(
+        &format!("synthetic:{n}"),
+        crate::model::simulated::DEFAULT_SEED,
+        1,
+    ))
+}
+
+/// `pounding bench --buildings`: work-precision rows of both methods
+/// against the reference.
+pub fn bench(
+    args: &BuildingsArgs,
+    excitation: Option<&str>,
+    model: Option<&str>,
+    output: &FormatArg,
+) -> Result<(), CliError> {
+    let row = args.row(&[], model)?;
+    let (ground, name, duration) =
+        args.ground(Some(excitation.unwrap_or("synthetic:2000")), None, &row)?;
+    let rows = crate::accuracy::row_bench::row_bench(&row, &ground, duration)
+        .map_err(|e| CliError::Usage(e.to_string()))?;
+    let report = crate::analysis::row_report::RowBenchReport {
+        row: row.name.clone(),
+        excitation: name,
+        duration,
+        rows,
+    };
+    print(&render(&report, output.format)?)
+}
+
+/// Default Newmark step for rows (s): within 1e-5 of the exact peaks on the
+/// shipped rows (tests/buildings_newmark.rs).
+pub const NEWMARK_STEP: f64 = 5e-5;
+
+/// `--dt` in seconds for rows.
+fn newmark_step(params: &ParamArgs) -> Result<f64, CliError> {
+    match &params.dt {
+        None => Ok(NEWMARK_STEP),
+        Some(text) => text
+            .parse::<f64>()
+            .ok()
+            .filter(|d| *d > 0.0 && d.is_finite())
+            .ok_or_else(|| {
+                CliError::Usage(format!(
+                    "--dt `{text}`: rows take a step in seconds, a finite number > 0"
+                ))
+            }),
+    }
+}
+
+/// `pounding run --buildings`.
+pub fn run(
+    args: &BuildingsArgs,
+    params: &ParamArgs,
+    repeat: u32,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
+    let row = args.row(&params.overrides, params.model.as_deref())?;
+    let (ground, name, duration) =
+        args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
+    let method = params.method.as_deref().unwrap_or("exact");
+    let dt = newmark_step(params)?;
+    let options = RowOptions::lasting(duration);
+    let mut times = Vec::new();
+    let mut result = None;
+    for _ in 0..repeat.max(1) {
+        let t = Instant::now();
+        let run = if method == "newmark" {
+            run_newmark(&row, &ground, duration, dt)
+        } else {
+            run_row(&row, &ground, &options)
+        };
+        result = Some(run.map_err(|e| match e {
+            RowError::HertzianLaw(_) => CliError::Usage(e.to_string()),
+            RowError::Runaway(_) => CliError::Failed(e.to_string()),
+        })?);
+        times.push(t.elapsed().as_secs_f64() * 1e3);
+    }
+    let mut result = result.expect("at least one run");
+    if method != "newmark" {
+        // The balance from one more run, which takes every sub-step by the
+        // series to integrate on it; the time above is without it.
+        let with_energy = RowOptions {
+            energy: true,
+            ..options
+        };
+        result.energy = run_row(&row, &ground, &with_energy)
+            .map_err(|e| CliError::Failed(e.to_string()))?
+            .energy;
+    }
+    let report = RowReport::new(&row, &result, &name, method, median(times));
+    emit(&report)
+}
+
+/// `pounding gap --buildings`: per joint, the gap that prevents pounding
+/// beside the code rules.
+pub fn gap(
+    args: &BuildingsArgs,
+    params: &ParamArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
+    let row = args.row(&params.overrides, params.model.as_deref())?;
+    let (ground, name, duration) =
+        args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
+    let report = crate::analysis::row_gap::row_gap(&row, &ground, duration, &name)
+        .map_err(|e| CliError::Failed(e.to_string()))?;
+    emit(&report)
+}
+
+/// `pounding figure buildings --out F.svg|png`: envelopes with and without
+/// pounding, and the impact forces.
+pub fn figure(
+    args: &BuildingsArgs,
+    params: &ParamArgs,
+    out: Option<&std::path::Path>,
+) -> Result<(), CliError> {
+    use crate::figure::{Format, encode};
+    let out =
+        out.ok_or_else(|| CliError::Usage("figure buildings needs --out F.svg or F.png".into()))?;
+    let format = match out.extension().and_then(|e| e.to_str()) {
+        Some("svg") => Format::Svg,
+        Some("png") => Format::Png,
+        _ => {
+            return Err(CliError::Usage(format!(
+                "--out {}: must end in .svg or .png",
+                out.display()
+            )));
+        }
+    };
+    let row = args.row(&params.overrides, params.model.as_deref())?;
+    let (ground, name, duration) =
+        args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
+    let mut apart = row.clone();
+    for j in &mut apart.joints {
+        j.gap = f64::INFINITY;
+    }
+    let failed = |e: crate::solver::buildings::RowError| CliError::Failed(e.to_string());
+    let with = run_row(&row, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
+    let without = run_row(&apart, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
+    let caption = format!(
+        "{} excitation, {} contact, exact method, {:.3} s; dashed: without pounding",
+        name,
+        row.model.name(),
+        duration
+    );
+    let fig = crate::figure::buildings::row_figure(&row, &with, &without, &caption);
+    let bytes = encode(&fig, format, (1400, 1000)).map_err(|e| CliError::Failed(e.to_string()))?;
+    crate::output::write_file(out, &bytes)?;
+    Ok(())
+}

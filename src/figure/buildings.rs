@@ -1,0 +1,82 @@
+//! The figure of a row of buildings (SPEC §13): envelopes over height of
+//! peak floor displacement, storey drift ratio and floor acceleration, with
+//! pounding (solid) and without it (dashed), one colour per building; and
+//! the peak force of every impact at its onset time, one colour per floor
+//! pair.
+
+use crate::model::buildings::Row;
+use crate::model::record::STANDARD_GRAVITY;
+use crate::solver::buildings::RowRun;
+
+use super::spec::{Figure, Panel, Pen, Series, Stroke};
+
+/// The figure from a run with contact and one without.
+pub fn row_figure(row: &Row, with: &RowRun, without: &RowRun, caption: &str) -> Figure {
+    let titles = [
+        ("peak floor displacement", "u (mm)"),
+        ("peak storey drift ratio", "drift (%)"),
+        ("peak floor acceleration", "A (g)"),
+    ];
+    let mut panels: Vec<Panel> = titles
+        .iter()
+        .enumerate()
+        .map(|(i, (t, x))| Panel::new(i, *t, x, "height (m)"))
+        .collect();
+    for (b, building) in row.buildings.iter().enumerate() {
+        for (run, stroke, tag) in [
+            (with, Stroke::Solid, ""),
+            (without, Stroke::Dashed, " apart"),
+        ] {
+            let floors = &run.floors[b];
+            // Floor i at its elevation; storey i's drift at mid-storey.
+            let at = |i: usize| building.elevation(i + 1);
+            let mid = |i: usize| building.elevation(i) + 0.5 * building.height[i];
+            let mut pts = [vec![(0.0, 0.0)], Vec::new(), vec![(0.0, 0.0)]];
+            for (i, f) in floors.iter().enumerate() {
+                pts[0].push((f.displacement * 1e3, at(i)));
+                pts[1].push((f.drift_ratio * 100.0, mid(i)));
+                pts[2].push((f.absolute_acceleration / STANDARD_GRAVITY, at(i)));
+            }
+            for (panel, points) in panels.iter_mut().zip(pts) {
+                panel.series.push(Series::new(
+                    format!("{}{tag}", building.name),
+                    b,
+                    stroke,
+                    points,
+                ));
+            }
+        }
+    }
+    let mut forces = Panel::new(3, "impact forces", "t (s)", "peak force (kN)");
+    for (k, (p, r)) in row.pairs().iter().zip(&with.pairs).enumerate() {
+        if r.impacts.is_empty() {
+            continue;
+        }
+        let points = r
+            .impacts
+            .iter()
+            .map(|i| (i.start, i.max_force / 1e3))
+            .collect();
+        forces.series.push(
+            Series::new(
+                format!(
+                    "{} {} – {} {}",
+                    row.buildings[p.left].name,
+                    p.left_floor,
+                    row.buildings[p.right].name,
+                    p.right_floor
+                ),
+                row.buildings.len() + k,
+                Stroke::Solid,
+                points,
+            )
+            .with_pen(Pen::Markers),
+        );
+    }
+    panels.push(forces);
+    Figure {
+        title: format!("{}: envelopes over height and impact forces", row.name),
+        panels,
+        caption: caption.to_string(),
+    }
+}

@@ -1,0 +1,54 @@
+//! The contact law of one floor pair in physical form (SPEC §13, with §4 and §10).
+//!
+//! With m̄ = m_A,i m_B,j/(m_A,i + m_B,j) and the joint's stiffness k̄ (β for the
+//! Hertz-type laws), the law is [`ContactLaw`] of SPEC §4/§10 with
+//! - Kelvin: f = k̄δ + 2ζ√(k̄m̄) δ̇, ζ = −ln e/√(π² + ln² e);
+//! - improved Kelvin: f = k̄δ(1 + 3(1−e)/(2e) · δ̇/v₀);
+//! - Hertz-type: f = βδ^{3/2}(1 + λδ̇) + 2ζ_J√(βm̄) δ^{1/4} δ̇⁺,
+//!   so the one-storey row is the pair of SPEC §2 exactly.
+
+use crate::model::ContactModel;
+use crate::model::contact::{ContactLaw, Hertzian, jankowski_damping_ratio, kelvin_damping_ratio};
+
+use super::row::{FloorPair, Row};
+
+/// m̄ of a floor pair.
+pub fn reduced_mass(row: &Row, pair: &FloorPair) -> f64 {
+    let ma = row.buildings[pair.left].mass[pair.left_floor - 1];
+    let mb = row.buildings[pair.right].mass[pair.right_floor - 1];
+    ma * mb / (ma + mb)
+}
+
+/// The law of a contact at `pair` that began with approach velocity `v0` (m/s).
+pub fn pair_law(row: &Row, pair: &FloorPair, approach_velocity: f64) -> ContactLaw {
+    let k = row.joints[pair.joint].stiffness;
+    let m_bar = reduced_mass(row, pair);
+    let e = row.restitution;
+    let v0 = approach_velocity.max(row.min_impact_velocity);
+    let kelvin = |linear_damping, hertz_damping| ContactLaw {
+        stiffness: k,
+        linear_damping,
+        hertz_damping,
+        hertzian: None,
+    };
+    let hertzian = |hysteresis, approach_damping| ContactLaw {
+        stiffness: 0.0,
+        linear_damping: 0.0,
+        hertz_damping: 0.0,
+        hertzian: Some(Hertzian {
+            stiffness: k,
+            hysteresis,
+            approach_damping,
+        }),
+    };
+    match row.model {
+        ContactModel::Kelvin => kelvin(2.0 * kelvin_damping_ratio(e) * (k * m_bar).sqrt(), 0.0),
+        ContactModel::ImprovedKelvin => kelvin(0.0, k * 3.0 * (1.0 - e) / (2.0 * e * v0)),
+        ContactModel::Hertz => hertzian(0.0, 0.0),
+        ContactModel::HertzDamp => hertzian(3.0 * (1.0 - e * e) / (4.0 * v0), 0.0),
+        ContactModel::HuntCrossley => hertzian(3.0 * (1.0 - e) / (2.0 * v0), 0.0),
+        ContactModel::Jankowski => {
+            hertzian(0.0, 2.0 * jankowski_damping_ratio(e) * (k * m_bar).sqrt())
+        }
+    }
+}

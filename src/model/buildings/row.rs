@@ -1,0 +1,145 @@
+//! A row of shear buildings (SPEC §13), left to right, with the floors that
+//! can pound.
+
+use crate::model::ContactModel;
+
+/// Floors of neighbours pair up when their elevations differ by at most this (m).
+pub const ELEVATION_TOLERANCE: f64 = 1e-3;
+
+/// One lumped-mass shear building: floor i (1 … n, bottom to top) has mass
+/// m_i; storey i joins floors i−1 and i with the bilinear shear of SPEC §3 on
+/// its drift Δ_i = u_i − u_{i−1}.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Building {
+    pub name: String,
+    /// m_i, kg per floor, bottom to top.
+    pub mass: Vec<f64>,
+    /// k_i, N/m per storey.
+    pub stiffness: Vec<f64>,
+    /// h_i, m per storey.
+    pub height: Vec<f64>,
+    /// Δ_y,i, m per storey (infinite: elastic).
+    pub yield_drift: Vec<f64>,
+    /// Post-yield stiffness ratio α.
+    pub alpha: f64,
+    /// ξ of the Rayleigh damping at modes 1 and 2.
+    pub damping: f64,
+}
+
+impl Building {
+    pub fn storeys(&self) -> usize {
+        self.mass.len()
+    }
+
+    /// Elevation of floor i (1-based) above the ground: Σ_{j ≤ i} h_j.
+    pub fn elevation(&self, floor: usize) -> f64 {
+        self.height[..floor].iter().sum()
+    }
+}
+
+/// The joint between two neighbours: gap at rest and contact stiffness.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Joint {
+    /// d, m at rest (may be infinite: no pounding).
+    pub gap: f64,
+    /// k̄ (N/m) of the Kelvin family; β (N/m^{3/2}) of the Hertz-type laws.
+    pub stiffness: f64,
+}
+
+/// Floor `left_floor` of building `left` and floor `right_floor` of its right
+/// neighbour, at the same elevation (within [`ELEVATION_TOLERANCE`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FloorPair {
+    /// Index of the joint (= index of the left building).
+    pub joint: usize,
+    pub left: usize,
+    pub right: usize,
+    /// 1-based floor numbers.
+    pub left_floor: usize,
+    pub right_floor: usize,
+    /// Degrees of freedom of the two floors in the row's state.
+    pub left_dof: usize,
+    pub right_dof: usize,
+}
+
+/// The row: buildings left to right, the joints between them, the contact law.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    pub name: String,
+    pub buildings: Vec<Building>,
+    pub joints: Vec<Joint>,
+    pub model: ContactModel,
+    pub restitution: f64,
+    /// v₀ floor of the laws that divide by it (m/s).
+    pub min_impact_velocity: f64,
+}
+
+impl Row {
+    /// Total number of floors: the row's degrees of freedom.
+    pub fn dofs(&self) -> usize {
+        self.buildings.iter().map(|b| b.storeys()).sum()
+    }
+
+    /// Index of the first floor of each building in the row's state.
+    pub fn offsets(&self) -> Vec<usize> {
+        let mut at = 0;
+        self.buildings
+            .iter()
+            .map(|b| {
+                let o = at;
+                at += b.storeys();
+                o
+            })
+            .collect()
+    }
+
+    /// The floors that can pound, joint by joint, bottom to top: floors of
+    /// neighbours whose elevations agree within 1 mm. A joint with an infinite
+    /// gap pairs nothing.
+    pub fn pairs(&self) -> Vec<FloorPair> {
+        self.floor_pairs(false)
+    }
+
+    /// Floors of neighbours at the same elevation, whatever the gap: where
+    /// the gap that prevents pounding is measured (SPEC §13).
+    pub fn facing_floors(&self) -> Vec<FloorPair> {
+        self.floor_pairs(true)
+    }
+
+    fn floor_pairs(&self, with_infinite_gaps: bool) -> Vec<FloorPair> {
+        let offsets = self.offsets();
+        let mut out = Vec::new();
+        for (j, joint) in self.joints.iter().enumerate() {
+            if !(with_infinite_gaps || joint.gap.is_finite()) {
+                continue;
+            }
+            let (a, b) = (&self.buildings[j], &self.buildings[j + 1]);
+            for i in 1..=a.storeys() {
+                let z = a.elevation(i);
+                if let Some(k) =
+                    (1..=b.storeys()).find(|&k| (b.elevation(k) - z).abs() <= ELEVATION_TOLERANCE)
+                {
+                    out.push(FloorPair {
+                        joint: j,
+                        left: j,
+                        right: j + 1,
+                        left_floor: i,
+                        right_floor: k,
+                        left_dof: offsets[j] + i - 1,
+                        right_dof: offsets[j + 1] + k - 1,
+                    });
+                }
+            }
+        }
+        out
+    }
+
+    /// The row in mirror image: buildings right to left, joints reversed
+    /// (with a ground motion negated, the response is the mirror image).
+    pub fn mirrored(&self) -> Row {
+        let mut r = self.clone();
+        r.buildings.reverse();
+        r.joints.reverse();
+        r
+    }
+}

@@ -1,0 +1,210 @@
+//! The reference run of a row: adaptive Dormand–Prince 5(4) from event to
+//! event, one ground piece at a time (so that the right-hand side is smooth
+//! inside every step). After each accepted step, every event function
+//! (yield, unloading, contact onset, separation) is checked at its end; if
+//! one turned positive, its first instant is found by bisection, each trial
+//! a step retaken from the step's start, and the step is retaken to it.
+//! Peaks of |u|, |u̇| and |Δ| inside a step are found the same way, where
+//! the quantity's rate changes sign.
+
+use crate::model::buildings::contact::pair_law;
+use crate::model::buildings::{Ground, Row};
+
+use super::motion::{Mode, Motion};
+use super::rk::step;
+
+/// Peaks and impact counts of a reference run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowReference {
+    /// Per building, per floor: max |u|, max |u̇|, max |Δ| of the storey below.
+    pub displacement: Vec<Vec<f64>>,
+    pub velocity: Vec<Vec<f64>>,
+    pub drift: Vec<Vec<f64>>,
+    /// Impacts per floor pair (the row's pairs in order).
+    pub impacts: Vec<usize>,
+    /// Accepted steps.
+    pub steps: usize,
+}
+
+/// Largest step (s): no event or turning point hides in one.
+const MAX_STEP: f64 = 2e-3;
+
+/// Runs the reference on `row` under `ground` for `duration` seconds, with
+/// local error tolerance `tolerance` (absolute in m and m/s, and relative).
+pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) -> RowReference {
+    let motion = Motion::new(row, ground);
+    let n = motion.n;
+    let mut mode = Mode {
+        branch: vec![0; motion.storeys.len()],
+        plastic: vec![0.0; motion.storeys.len()],
+        laws: vec![None; motion.pairs.len()],
+    };
+    let mut y = vec![0.0; 2 * n];
+    let mut peak_u = vec![0.0f64; n];
+    let mut peak_v = vec![0.0f64; n];
+    let mut peak_d = vec![0.0f64; motion.storeys.len()];
+    let mut impacts = vec![0; motion.pairs.len()];
+    let mut steps = 0;
+    let mut h: f64 = 1e-4;
+    for piece in ground.pieces(duration) {
+        let mut t = piece.t0;
+        while t < piece.t1 {
+            let f = |tt: f64, yy: &[f64], out: &mut [f64]| motion.rhs(&mode, tt, yy, out);
+            let hh = h.min(piece.t1 - t).min(MAX_STEP);
+            let (y1, err) = step(&f, t, &y, hh);
+            let norm = (0..2 * n)
+                .map(|i| {
+                    let s = tolerance * (1.0 + y[i].abs().max(y1[i].abs()));
+                    (err[i] / s).powi(2)
+                })
+                .sum::<f64>()
+                .sqrt()
+                / ((2 * n) as f64).sqrt();
+            if norm > 1.0 {
+                h = hh * (0.9 * norm.powf(-0.2)).max(0.2);
+                continue;
+            }
+            // Accepted: is there an event inside?
+            let armed: Vec<bool> = events(&motion, &mode, &y)
+                .iter()
+                .map(|&g| g <= 0.0)
+                .collect();
+            let fires = |yy: &[f64]| {
+                events(&motion, &mode, yy)
+                    .iter()
+                    .zip(&armed)
+                    .any(|(&g, &a)| a && g > 0.0)
+            };
+            let (mut end, mut y_end) = (hh, y1.clone());
+            if fires(&y1) {
+                let (mut lo, mut hi) = (0.0, hh);
+                for _ in 0..60 {
+                    let mid = 0.5 * (lo + hi);
+                    if mid <= lo || mid >= hi {
+                        break;
+                    }
+                    if fires(&step(&f, t, &y, mid).0) {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                end = hi;
+                y_end = step(&f, t, &y, hi).0;
+            }
+            // Turning points inside [t, t + end].
+            let mut f0 = vec![0.0; 2 * n];
+            let mut f1 = vec![0.0; 2 * n];
+            f(t, &y, &mut f0);
+            f(t + end, &y_end, &mut f1);
+            let locate = |rate: &dyn Fn(&[f64], &[f64]) -> f64, value: &dyn Fn(&[f64]) -> f64| {
+                let (r0, r1) = (rate(&y, &f0), rate(&y_end, &f1));
+                if (r0 > 0.0) == (r1 > 0.0) {
+                    return 0.0;
+                }
+                let (mut lo, mut hi) = (0.0, end);
+                let mut fy = vec![0.0; 2 * n];
+                for _ in 0..60 {
+                    let mid = 0.5 * (lo + hi);
+                    if mid <= lo || mid >= hi {
+                        break;
+                    }
+                    let ym = step(&f, t, &y, mid).0;
+                    f(t + mid, &ym, &mut fy);
+                    if (rate(&ym, &fy) > 0.0) == (r0 > 0.0) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                value(&step(&f, t, &y, 0.5 * (lo + hi)).0).abs()
+            };
+            for i in 0..n {
+                let u_i = |yy: &[f64]| yy[i];
+                let v_i = |yy: &[f64], _: &[f64]| yy[n + i];
+                peak_u[i] = peak_u[i].max(y_end[i].abs()).max(locate(&v_i, &u_i));
+                let w_i = |yy: &[f64]| yy[n + i];
+                let a_i = |_: &[f64], ff: &[f64]| ff[n + i];
+                peak_v[i] = peak_v[i].max(y_end[n + i].abs()).max(locate(&a_i, &w_i));
+            }
+            for (k, s) in motion.storeys.iter().enumerate() {
+                let d = |yy: &[f64]| motion.drift(s, &yy[..n]);
+                let r = |yy: &[f64], _: &[f64]| motion.drift(s, &yy[n..]);
+                peak_d[k] = peak_d[k].max(d(&y_end).abs()).max(locate(&r, &d));
+            }
+            // Switch the mode where an event fired.
+            if end < hh {
+                let g = events(&motion, &mode, &y_end);
+                let ns = motion.storeys.len();
+                for (j, (&gj, &a)) in g.iter().zip(&armed).enumerate() {
+                    if !(a && gj > 0.0) {
+                        continue;
+                    }
+                    if j < ns {
+                        let s = &motion.storeys[j];
+                        let d = motion.drift(s, &y_end[..n]);
+                        if mode.branch[j] == 0 {
+                            mode.branch[j] = if d - mode.plastic[j] > 0.0 { 1 } else { -1 };
+                        } else {
+                            let z = f64::from(mode.branch[j]) * s.yield_drift;
+                            mode.plastic[j] = d - z;
+                            mode.branch[j] = 0;
+                        }
+                    } else {
+                        let pi = j - ns;
+                        let p = &motion.pairs[pi];
+                        if mode.laws[pi].is_some() {
+                            mode.laws[pi] = None;
+                        } else {
+                            let v0 = y_end[n + p.left_dof] - y_end[n + p.right_dof];
+                            mode.laws[pi] = Some(pair_law(row, p, v0));
+                            impacts[pi] += 1;
+                        }
+                    }
+                }
+            }
+            t = if end >= piece.t1 - t {
+                piece.t1
+            } else {
+                t + end
+            };
+            y = y_end;
+            steps += 1;
+            h = hh * (0.9 * norm.max(1e-10).powf(-0.2)).min(5.0);
+        }
+    }
+    let offsets = row.offsets();
+    let split = |v: &[f64]| -> Vec<Vec<f64>> {
+        row.buildings
+            .iter()
+            .zip(&offsets)
+            .map(|(b, &o)| v[o..o + b.storeys()].to_vec())
+            .collect()
+    };
+    RowReference {
+        displacement: split(&peak_u),
+        velocity: split(&peak_v),
+        drift: split(&peak_d),
+        impacts,
+        steps,
+    }
+}
+
+/// Event functions (an event where one turns positive): per storey, then per pair.
+fn events(motion: &Motion, mode: &Mode, y: &[f64]) -> Vec<f64> {
+    let n = motion.n;
+    let mut g = Vec::with_capacity(motion.storeys.len() + motion.pairs.len());
+    for (i, s) in motion.storeys.iter().enumerate() {
+        let d = motion.drift(s, &y[..n]);
+        let rate = motion.drift(s, &y[n..]);
+        g.push(match mode.branch[i] {
+            0 => (d - mode.plastic[i]).abs() - s.yield_drift,
+            b => -f64::from(b) * rate,
+        });
+    }
+    for ((p, law), &gap) in motion.pairs.iter().zip(&mode.laws).zip(&motion.gaps) {
+        let delta = y[p.left_dof] - y[p.right_dof] - gap;
+        g.push(if law.is_some() { -delta } else { delta });
+    }
+    g
+}

@@ -1,0 +1,582 @@
+//! The loop of the exact method for a row (SPEC §13): ground pieces, cut
+//! into equal sub-steps no longer than one radian of the fastest mode; each
+//! sub-step out of contact by the cached linear map when nothing can happen
+//! inside it, and otherwise by Taylor steps from event to event.
+//!
+//! Events (each the first instant a polynomial turns positive):
+//! - an elastic storey yields: |Δ − p| reaches Δ_y (SPEC §3);
+//! - a yielding storey unloads: Δ̇ changes sign against z; then p = Δ − z;
+//! - a floor pair touches: δ = u_A − u_B − d turns positive; v₀ = δ̇ there;
+//! - a pair separates: δ returns to 0.
+//!
+//! A sub-step is quiet when, on the cubic Hermite interpolant of every
+//! watched quantity ([`super::hermite`]), no event function comes within
+//! 1 % of zero and no floor's turning point within 1 % of its running peak;
+//! a quiet sub-step's interior cannot hold an event or a new peak, so its
+//! end is all that is recorded.
+
+use std::collections::HashSet;
+
+use crate::model::buildings::contact::pair_law;
+use crate::model::buildings::ground::Piece;
+use crate::model::buildings::{Ground, Row};
+
+use super::config::{Branch, Closed, Config};
+use super::energy::{NODES, RowEnergy, gauss_legendre};
+use super::hermite::interior_range;
+use super::layout::Layout;
+use super::peaks::{Envelope, raise};
+use super::poly;
+use super::propagator::{Propagator, apply};
+use super::result::{FloorPeaks, PairImpact, PairResult, RowRun};
+use super::system::System;
+use super::taylor::{ORDER, Series};
+
+/// Knobs of a row run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RowOptions {
+    /// Length of the run (s).
+    pub duration: f64,
+    /// Longest sub-step (s); default one radian of the fastest mode out of contact.
+    pub max_substep: Option<f64>,
+    /// Take the energy balance ([`super::energy`]): every sub-step then goes
+    /// by the series, on which the integrals are taken.
+    pub energy: bool,
+}
+
+impl RowOptions {
+    /// A run of `duration` seconds with the default sub-steps, peaks only.
+    pub fn lasting(duration: f64) -> RowOptions {
+        RowOptions {
+            duration,
+            max_substep: None,
+            energy: false,
+        }
+    }
+}
+
+/// A run that cannot be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RowError {
+    #[error(
+        "the exact method carries the Kelvin family (kelvin, improved-kelvin) at floor pairs; `{0}` is a Hertz-type law: use --method newmark"
+    )]
+    HertzianLaw(&'static str),
+    #[error("the run stopped at t = {0} s: more than 10⁸ events or series steps")]
+    Runaway(f64),
+}
+
+/// Hermite margin: the interpolant is within 1/384 of a quantity's amplitude.
+const MARGIN: f64 = 0.01;
+/// Most series steps in one run.
+const MAX_SERIES_STEPS: usize = 100_000_000;
+
+/// Ground (a, ȧ) at time t on `piece` (ä = σa: a line or a sine).
+fn ground_at(piece: &Piece, t: f64) -> (f64, f64) {
+    let s = t - piece.t0;
+    if piece.sigma == 0.0 {
+        (piece.a + piece.rate * s, piece.rate)
+    } else {
+        let w = (-piece.sigma).sqrt();
+        let (sn, cs) = (w * s).sin_cos();
+        (
+            piece.a * cs + piece.rate / w * sn,
+            -piece.a * w * sn + piece.rate * cs,
+        )
+    }
+}
+
+enum Event {
+    Yield(usize, Branch),
+    Unload(usize),
+    Onset(usize),
+    Separation(usize),
+}
+
+struct Run<'a> {
+    row: &'a Row,
+    layout: Layout,
+    config: Config,
+    system: System,
+    u: Vec<f64>,
+    v: Vec<f64>,
+    t: f64,
+    envelope: Envelope,
+    pairs: Vec<PairResult>,
+    propagator: Propagator,
+    series_steps: usize,
+    configurations: HashSet<Vec<u8>>,
+    buf: Vec<f64>,
+    buf2: Vec<f64>,
+    energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
+}
+
+/// Runs the exact method on `row` under `ground`.
+pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRun, RowError> {
+    if row.model.is_hertzian() {
+        return Err(RowError::HertzianLaw(row.model.name()));
+    }
+    let layout = Layout::of(row);
+    let n = layout.dofs;
+    let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
+    let system = System::of(&layout, &config);
+    let h_max = options.max_substep.unwrap_or(1.0 / layout.rate);
+    let mut run = Run {
+        row,
+        envelope: Envelope::new(n, layout.storeys.len(), layout.facing.len()),
+        pairs: vec![PairResult::default(); layout.pairs.len()],
+        layout,
+        config,
+        system,
+        u: vec![0.0; n],
+        v: vec![0.0; n],
+        t: 0.0,
+        propagator: Propagator::default(),
+        series_steps: 0,
+        configurations: HashSet::new(),
+        buf: Vec::new(),
+        buf2: Vec::new(),
+        energy: options.energy.then(|| {
+            let (x, w) = gauss_legendre(NODES);
+            (RowEnergy::default(), x, w)
+        }),
+    };
+    for piece in ground.pieces(options.duration) {
+        let length = piece.length;
+        if length <= 0.0 {
+            continue;
+        }
+        let m = (length / h_max).ceil().max(1.0) as usize;
+        let h = length / m as f64;
+        for j in 0..m {
+            let tb = if j + 1 == m {
+                piece.t1
+            } else {
+                piece.t0 + (j + 1) as f64 * h
+            };
+            if run.energy.is_some() || run.config.any_contact() || !run.quiet_step(&piece, h) {
+                run.careful(&piece, tb)?;
+            }
+            run.t = tb;
+        }
+    }
+    Ok(run.finish(options.duration))
+}
+
+impl Run<'_> {
+    /// Tries the sub-step to t + h by the cached map; keeps it and returns
+    /// true when it is quiet.
+    fn quiet_step(&mut self, piece: &Piece, h: f64) -> bool {
+        let n = self.layout.dofs;
+        let (a0, r0) = ground_at(piece, self.t);
+        let (a1, r1) = ground_at(piece, self.t + h);
+        let key = self.config.key();
+        self.configurations.insert(key.clone());
+        let map = self.propagator.map(key, &self.system, h, piece.sigma);
+        let mut u1 = vec![0.0; n];
+        let mut v1 = vec![0.0; n];
+        apply(
+            map,
+            (&self.u, &self.v),
+            (a0, r0),
+            &self.system.load,
+            (&mut u1, &mut v1),
+        );
+        let mut acc0 = vec![0.0; n];
+        let mut acc1 = vec![0.0; n];
+        self.system.acceleration(&self.u, &self.v, a0, &mut acc0);
+        self.system.acceleration(&u1, &v1, a1, &mut acc1);
+        let jerk = |v: &[f64], acc: &[f64], rate: f64, i: usize| {
+            let mut s = -rate;
+            for j in 0..n {
+                s -= self.system.stiffness[(i, j)] * v[j] + self.system.damping[(i, j)] * acc[j];
+            }
+            s
+        };
+        let env = &self.envelope;
+        let near = |range: Option<(f64, f64)>, peak: f64| {
+            range.is_some_and(|(lo, hi)| lo.abs().max(hi.abs()) > (1.0 - MARGIN) * peak)
+        };
+        for i in 0..n {
+            if near(
+                interior_range(self.u[i], self.v[i], u1[i], v1[i], h),
+                env.displacement[i],
+            ) || near(
+                interior_range(self.v[i], acc0[i], v1[i], acc1[i], h),
+                env.velocity[i],
+            ) {
+                return false;
+            }
+            let (j0, j1) = (jerk(&self.v, &acc0, r0, i), jerk(&v1, &acc1, r1, i));
+            if near(
+                interior_range(acc0[i] + a0, j0 + r0, acc1[i] + a1, j1 + r1, h),
+                env.acceleration[i],
+            ) {
+                return false;
+            }
+        }
+        let diff =
+            |x: &[f64], s: &super::layout::Storey| x[s.upper] - s.lower.map_or(0.0, |l| x[l]);
+        for (k, s) in self.layout.storeys.iter().enumerate() {
+            let (d0, d1) = (diff(&self.u, s), diff(&u1, s));
+            let (r0s, r1s) = (diff(&self.v, s), diff(&v1, s));
+            if near(interior_range(d0, r0s, d1, r1s, h), env.drift[k]) {
+                return false;
+            }
+            match self.config.branch[k] {
+                Branch::Elastic => {
+                    let p = self.config.plastic[k];
+                    let limit = (1.0 - MARGIN) * s.yield_drift;
+                    if (d1 - p).abs() > limit
+                        || near(interior_range(d0 - p, r0s, d1 - p, r1s, h), s.yield_drift)
+                    {
+                        return false;
+                    }
+                }
+                sign => {
+                    let sg = if sign == Branch::Plus { 1.0 } else { -1.0 };
+                    let (q0, q1) = (diff(&acc0, s), diff(&acc1, s));
+                    let low = interior_range(sg * r0s, sg * q0, sg * r1s, sg * q1, h)
+                        .map_or(f64::INFINITY, |(lo, _)| lo);
+                    if sg * r1s <= 0.0 || low <= MARGIN * (sg * r0s).abs() {
+                        return false;
+                    }
+                }
+            }
+        }
+        for (k, p) in self.layout.facing.iter().enumerate() {
+            let (a, b) = (p.left_dof, p.right_dof);
+            let (x0, x1) = (self.u[a] - self.u[b], u1[a] - u1[b]);
+            let top = self.envelope.relative[k];
+            if let Some((_, hi)) = interior_range(x0, self.v[a] - self.v[b], x1, v1[a] - v1[b], h)
+                && hi > top - MARGIN * top.abs()
+            {
+                return false;
+            }
+        }
+        for (p, &d) in self.layout.pairs.iter().zip(&self.layout.gaps) {
+            let (a, b) = (p.left_dof, p.right_dof);
+            let (x0, x1) = (self.u[a] - self.u[b], u1[a] - u1[b]);
+            let margin = MARGIN * (x0.abs().max(x1.abs()) + d);
+            if x1 - d > -margin {
+                return false;
+            }
+            if let Some((_, hi)) = interior_range(x0, self.v[a] - self.v[b], x1, v1[a] - v1[b], h)
+                && hi - d > -margin
+            {
+                return false;
+            }
+        }
+        self.u = u1;
+        self.v = v1;
+        self.record_point(&acc1, a1);
+        true
+    }
+
+    /// Peaks at the current point, with ü already known.
+    fn record_point(&mut self, acc: &[f64], a: f64) {
+        let env = &mut self.envelope;
+        for (i, &acc) in acc.iter().enumerate() {
+            raise(&mut env.displacement[i], self.u[i]);
+            raise(&mut env.velocity[i], self.v[i]);
+            raise(&mut env.acceleration[i], acc + a);
+        }
+        for (k, s) in self.layout.storeys.iter().enumerate() {
+            raise(&mut env.drift[k], self.layout.drift(s, &self.u));
+        }
+        for (k, p) in self.layout.facing.iter().enumerate() {
+            env.relative[k] = env.relative[k].max(self.u[p.left_dof] - self.u[p.right_dof]);
+        }
+    }
+
+    /// The sub-step to `tb` by Taylor steps from event to event.
+    fn careful(&mut self, piece: &Piece, tb: f64) -> Result<(), RowError> {
+        let n = self.layout.dofs;
+        let mut un = vec![0.0; n];
+        let mut vn = vec![0.0; n];
+        while self.t < tb {
+            self.series_steps += 1;
+            if self.series_steps > MAX_SERIES_STEPS {
+                return Err(RowError::Runaway(self.t));
+            }
+            let rem = tb - self.t;
+            let (a, rate) = ground_at(piece, self.t);
+            let su = self.u.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
+            let sv = self.v.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
+            let series = Series::new(
+                &self.system,
+                &self.u,
+                &self.v,
+                (a, rate, piece.sigma),
+                (su, sv),
+            );
+            let mut end = rem.min(series.radius);
+            let mut event = None;
+            self.find_events(&series, &mut end, &mut event);
+            self.peaks_on(&series, end);
+            if self.energy.is_some() {
+                self.work_on(&series, end);
+            }
+            series.state(end, &mut un, &mut vn);
+            std::mem::swap(&mut self.u, &mut un);
+            std::mem::swap(&mut self.v, &mut vn);
+            self.t = if end >= rem { tb } else { self.t + end };
+            if let Some(e) = event {
+                self.apply(e);
+            }
+            // The point itself, with ü of the configuration now in force.
+            let (a1, _) = ground_at(piece, self.t);
+            let mut acc = vec![0.0; n];
+            self.system.acceleration(&self.u, &self.v, a1, &mut acc);
+            self.record_point(&acc, a1);
+        }
+        Ok(())
+    }
+
+    fn find_events(&mut self, series: &Series, end: &mut f64, event: &mut Option<Event>) {
+        let take = |c: &[f64], e: Event, end: &mut f64, event: &mut Option<Event>| {
+            if let Some(s) = poly::first_rise(c, *end)
+                && (s < *end || event.is_none())
+            {
+                *end = s;
+                *event = Some(e);
+            }
+        };
+        let c = &mut self.buf;
+        for (k, s) in self.layout.storeys.iter().enumerate() {
+            let mut du = vec![(s.upper, 1.0)];
+            if let Some(l) = s.lower {
+                du.push((l, -1.0));
+            }
+            match self.config.branch[k] {
+                Branch::Elastic => {
+                    if !s.yield_drift.is_finite() {
+                        continue;
+                    }
+                    series.combine(&du, &[], c);
+                    c[0] -= self.config.plastic[k];
+                    // z − Δ_y and −z − Δ_y.
+                    c[0] -= s.yield_drift;
+                    take(c, Event::Yield(k, Branch::Plus), end, event);
+                    c[0] += s.yield_drift;
+                    c.iter_mut().for_each(|x| *x = -*x);
+                    c[0] -= s.yield_drift;
+                    take(c, Event::Yield(k, Branch::Minus), end, event);
+                }
+                sign => {
+                    let w = if sign == Branch::Plus { -1.0 } else { 1.0 };
+                    let dv: Vec<_> = du.iter().map(|&(i, x)| (i, w * x)).collect();
+                    series.combine(&[], &dv, c);
+                    take(c, Event::Unload(k), end, event);
+                }
+            }
+        }
+        for (pi, (p, &d)) in self.layout.pairs.iter().zip(&self.layout.gaps).enumerate() {
+            let closed = self.config.contact[pi].is_some();
+            let w = if closed { -1.0 } else { 1.0 };
+            series.combine(&[(p.left_dof, w), (p.right_dof, -w)], &[], c);
+            c[0] -= w * d;
+            let e = if closed {
+                Event::Separation(pi)
+            } else {
+                Event::Onset(pi)
+            };
+            take(c, e, end, event);
+        }
+    }
+
+    /// Turning points on [0, end] that may raise a peak (Σ|c_k|s^k above it),
+    /// and the force and penetration of closed pairs.
+    fn peaks_on(&mut self, series: &Series, end: f64) {
+        let c = &mut self.buf;
+        let env = &mut self.envelope;
+        for i in 0..self.layout.dofs {
+            series.combine(&[(i, 1.0)], &[], c);
+            if poly::bound(c, end) > env.displacement[i] {
+                raise(&mut env.displacement[i], poly::max_abs(c, end));
+            }
+            series.combine(&[], &[(i, 1.0)], c);
+            if poly::bound(c, end) > env.velocity[i] {
+                raise(&mut env.velocity[i], poly::max_abs(c, end));
+            }
+            series.absolute_acceleration(i, c);
+            if poly::bound(c, end) > env.acceleration[i] {
+                raise(&mut env.acceleration[i], poly::max_abs(c, end));
+            }
+        }
+        for (k, s) in self.layout.storeys.iter().enumerate() {
+            let mut du = vec![(s.upper, 1.0)];
+            if let Some(l) = s.lower {
+                du.push((l, -1.0));
+            }
+            series.combine(&du, &[], c);
+            if poly::bound(c, end) > env.drift[k] {
+                raise(&mut env.drift[k], poly::max_abs(c, end));
+            }
+        }
+        for (k, p) in self.layout.facing.iter().enumerate() {
+            series.combine(&[(p.left_dof, 1.0), (p.right_dof, -1.0)], &[], c);
+            if poly::bound(c, end) > env.relative[k] {
+                env.relative[k] = env.relative[k].max(poly::max(c, end));
+            }
+        }
+        for (pi, (p, &d)) in self.layout.pairs.iter().zip(&self.layout.gaps).enumerate() {
+            let Some(closed) = &self.config.contact[pi] else {
+                continue;
+            };
+            let (a, b) = (p.left_dof, p.right_dof);
+            series.combine(&[(a, 1.0), (b, -1.0)], &[], c);
+            c[0] -= d;
+            let penetration = poly::max(c, end);
+            let dd = &mut self.buf2;
+            series.combine(&[], &[(a, 1.0), (b, -1.0)], dd);
+            let law = &closed.law;
+            let force: Vec<f64> = (0..c.len())
+                .map(|k| {
+                    let conv: f64 = (0..=k).map(|j| c[j] * dd[k - j]).sum();
+                    law.stiffness * c[k] + law.linear_damping * dd[k] + law.hertz_damping * conv
+                })
+                .collect();
+            let f = poly::max(&force, end);
+            if let Some(last) = self.pairs[pi].impacts.last_mut() {
+                last.max_penetration = last.max_penetration.max(penetration);
+                last.max_force = last.max_force.max(f);
+            }
+        }
+    }
+
+    /// The work terms of SPEC §6 on [0, end] of a Taylor step, by the
+    /// Gauss–Legendre rule ([`super::energy`]).
+    fn work_on(&mut self, series: &Series, end: f64) {
+        let n = self.layout.dofs;
+        let Some((mut e, x, w)) = self.energy.take() else {
+            return;
+        };
+        let mut u = vec![0.0; n];
+        let mut v = vec![0.0; n];
+        for (xi, wi) in x.iter().zip(&w) {
+            let s = 0.5 * end * (1.0 + xi);
+            let weight = 0.5 * end * wi;
+            series.state(s, &mut u, &mut v);
+            let ag = series.ground[..=ORDER]
+                .iter()
+                .rev()
+                .fold(0.0, |acc, &c| acc * s + c);
+            let mut damping = 0.0;
+            let mut input = 0.0;
+            for i in 0..n {
+                let cv: f64 = (0..n).map(|j| self.layout.damping[(i, j)] * v[j]).sum();
+                damping += self.layout.mass[i] * v[i] * cv;
+                input -= self.layout.mass[i] * v[i] * ag;
+            }
+            let mut spring = 0.0;
+            for (k, st) in self.layout.storeys.iter().enumerate() {
+                let d = self.layout.drift(st, &u);
+                let rate = self.layout.drift(st, &v);
+                let z = self.config.z(k, d, st.yield_drift);
+                spring +=
+                    (st.alpha * st.stiffness * d + (1.0 - st.alpha) * st.stiffness * z) * rate;
+            }
+            let mut contact = 0.0;
+            for (pi, p) in self.layout.pairs.iter().enumerate() {
+                if let Some(closed) = &self.config.contact[pi] {
+                    let delta = u[p.left_dof] - u[p.right_dof] - self.layout.gaps[pi];
+                    let rate = v[p.left_dof] - v[p.right_dof];
+                    contact += closed.law.force(delta, rate).force * rate;
+                }
+            }
+            e.damping += weight * damping;
+            e.input += weight * input;
+            e.spring += weight * spring;
+            e.contact += weight * contact;
+        }
+        e.max_input = e.max_input.max(e.input.abs());
+        self.energy = Some((e, x, w));
+    }
+
+    fn apply(&mut self, event: Event) {
+        match event {
+            Event::Yield(k, branch) => self.config.branch[k] = branch,
+            Event::Unload(k) => {
+                let s = &self.layout.storeys[k];
+                let z = self.config.z(k, 0.0, s.yield_drift);
+                self.config.plastic[k] = self.layout.drift(s, &self.u) - z;
+                self.config.branch[k] = Branch::Elastic;
+            }
+            Event::Onset(pi) => {
+                let p = self.layout.pairs[pi];
+                let v0 = self.v[p.left_dof] - self.v[p.right_dof];
+                self.config.contact[pi] = Some(Closed {
+                    law: pair_law(self.row, &p, v0),
+                    approach_velocity: v0,
+                });
+                self.pairs[pi].impacts.push(PairImpact {
+                    start: self.t,
+                    end: f64::NAN,
+                    approach_velocity: v0,
+                    separation_velocity: f64::NAN,
+                    max_force: 0.0,
+                    max_penetration: 0.0,
+                });
+            }
+            Event::Separation(pi) => {
+                let p = self.layout.pairs[pi];
+                self.config.contact[pi] = None;
+                if let Some(last) = self.pairs[pi].impacts.last_mut() {
+                    last.end = self.t;
+                    last.separation_velocity = -(self.v[p.left_dof] - self.v[p.right_dof]);
+                }
+            }
+        }
+        self.system = System::of(&self.layout, &self.config);
+    }
+
+    fn finish(self, duration: f64) -> RowRun {
+        let mut floors = Vec::new();
+        let mut k = 0;
+        for (b, &o) in self.row.buildings.iter().zip(&self.row.offsets()) {
+            let mut list = Vec::new();
+            for i in 0..b.storeys() {
+                let s = &self.layout.storeys[k];
+                let drift = self.envelope.drift[k];
+                let now = self.layout.drift(s, &self.u);
+                let z = self.config.z(k, now, s.yield_drift);
+                list.push(FloorPeaks {
+                    displacement: self.envelope.displacement[o + i],
+                    velocity: self.envelope.velocity[o + i],
+                    absolute_acceleration: self.envelope.acceleration[o + i],
+                    drift,
+                    drift_ratio: drift / s.height,
+                    ductility: drift / s.yield_drift,
+                    residual_drift: (1.0 - s.alpha) * (now - z),
+                });
+                k += 1;
+            }
+            floors.push(list);
+        }
+        let energy = self.energy.as_ref().map(|(e, _, _)| RowEnergy {
+            kinetic: 0.5
+                * self
+                    .layout
+                    .mass
+                    .iter()
+                    .zip(&self.v)
+                    .map(|(m, v)| m * v * v)
+                    .sum::<f64>(),
+            ..*e
+        });
+        RowRun {
+            energy,
+            max_relative: self.envelope.relative.clone(),
+            floors,
+            pairs: self.pairs,
+            duration,
+            final_displacement: self.u,
+            final_velocity: self.v,
+            maps_made: self.propagator.made,
+            map_steps: self.propagator.used,
+            series_steps: self.series_steps,
+            configurations: self.configurations.len(),
+        }
+    }
+}

@@ -1,0 +1,91 @@
+//! The row's constant part (SPEC §13), laid out once per run: masses,
+//! M⁻¹C of Rayleigh damping, each storey's floors and constants, the floor
+//! pairs and their gaps.
+
+use nalgebra::DMatrix;
+
+use crate::model::buildings::matrices::RowMatrices;
+use crate::model::buildings::{FloorPair, Row};
+
+/// One storey: it joins floor `lower` (None: the ground) and floor `upper`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Storey {
+    pub building: usize,
+    pub lower: Option<usize>,
+    pub upper: usize,
+    pub stiffness: f64,
+    pub alpha: f64,
+    pub yield_drift: f64,
+    pub height: f64,
+}
+
+/// What every configuration of a run shares.
+#[derive(Debug, Clone)]
+pub struct Layout {
+    pub dofs: usize,
+    pub mass: Vec<f64>,
+    /// M⁻¹C (Rayleigh, SPEC §13).
+    pub damping: DMatrix<f64>,
+    pub storeys: Vec<Storey>,
+    pub pairs: Vec<FloorPair>,
+    pub gaps: Vec<f64>,
+    /// Floors at the same elevation whatever the gap, whose largest
+    /// u_A − u_B is tracked (the gap that prevents pounding).
+    pub facing: Vec<FloorPair>,
+    /// Largest rate of the row out of contact (Gershgorin bound of
+    /// √‖M⁻¹K₀‖ and ‖M⁻¹C‖, 1/s): sub-steps are no longer than its inverse,
+    /// so that each holds less than one radian of the fastest mode.
+    pub rate: f64,
+}
+
+impl Layout {
+    pub fn of(row: &Row) -> Layout {
+        let m = RowMatrices::of(row);
+        let n = row.dofs();
+        let mass: Vec<f64> = m.mass.iter().copied().collect();
+        let mut damping = m.damping.clone();
+        for i in 0..n {
+            for j in 0..n {
+                damping[(i, j)] /= mass[i];
+            }
+        }
+        let mut storeys = Vec::new();
+        for (bi, (b, &o)) in row.buildings.iter().zip(&row.offsets()).enumerate() {
+            for i in 0..b.storeys() {
+                storeys.push(Storey {
+                    building: bi,
+                    lower: (i > 0).then(|| o + i - 1),
+                    upper: o + i,
+                    stiffness: b.stiffness[i],
+                    alpha: b.alpha,
+                    yield_drift: b.yield_drift[i],
+                    height: b.height[i],
+                });
+            }
+        }
+        let pairs = row.pairs();
+        let gaps = pairs.iter().map(|p| row.joints[p.joint].gap).collect();
+        let stiff = (0..n)
+            .map(|i| (0..n).map(|j| m.stiffness[(i, j)].abs()).sum::<f64>() / mass[i])
+            .fold(0.0, f64::max);
+        let damp = (0..n)
+            .map(|i| (0..n).map(|j| damping[(i, j)].abs()).sum::<f64>())
+            .fold(0.0, f64::max);
+        Layout {
+            facing: row.facing_floors(),
+            dofs: n,
+            mass,
+            damping,
+            storeys,
+            pairs,
+            gaps,
+            rate: stiff.sqrt().max(damp),
+        }
+    }
+
+    /// Drift Δ = u_upper − u_lower of a storey from displacements `u`.
+    #[inline]
+    pub fn drift(&self, s: &Storey, u: &[f64]) -> f64 {
+        u[s.upper] - s.lower.map_or(0.0, |l| u[l])
+    }
+}

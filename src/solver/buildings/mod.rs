@@ -1,0 +1,45 @@
+//! The exact event-driven method for a row of shear buildings (SPEC §13).
+//!
+//! Between events the motion of the row is linear, M ü + C u̇ + K u = q − M 1 ü_g(t),
+//! with K and q fixed by the configuration (which storeys yield, which floor
+//! pairs are in contact) and ü_g one smooth piece of the ground motion
+//! (ä_g = σ a_g on it: a line under a record, a sine). So the state is
+//! advanced in closed form:
+//!
+//! - out of contact, over a sub-step of fixed length h, by the matrix
+//!   exponential of the augmented system ([`propagator`]), made once per
+//!   (configuration, h, σ) and cached;
+//! - wherever something may happen inside the sub-step (a storey may yield
+//!   or unload, a floor pair may touch, a floor's peak may be passed), and
+//!   through every contact phase, by the Taylor series of the same motion
+//!   ([`taylor`]), which carries the improved Kelvin law's δδ̇ term exactly;
+//!   events and peaks are roots of polynomials on it ([`poly`]).
+//!
+//! One storey each gives the SDOF pair of SPEC §2.
+//!
+//! - [`layout`]: the row's constant matrices and storeys, once per run;
+//! - [`config`]: the configuration (branches, contacts) and its cache key;
+//! - [`system`]: the linear system of one configuration;
+//! - [`peaks`]: the envelopes a run reports;
+//! - [`energy`]: the energy balance, by quadrature on the Taylor steps;
+//! - [`result`]: what a run returns;
+//! - [`driver`]: the loop over sub-steps and events;
+//! - [`newmark`]: Newmark-β on the row, the second method.
+
+pub mod config;
+pub mod driver;
+pub mod energy;
+pub mod hermite;
+pub mod layout;
+pub mod newmark;
+pub mod peaks;
+pub mod poly;
+pub mod propagator;
+pub mod result;
+pub mod system;
+pub mod taylor;
+
+pub use driver::{RowError, RowOptions, run_row};
+pub use energy::RowEnergy;
+pub use newmark::run_newmark;
+pub use result::{FloorPeaks, PairImpact, PairResult, RowRun};

@@ -1,0 +1,319 @@
+//! Newmark-β for a row (SPEC §5 and §13): γ = ½, β = ¼, Newton on the whole
+//! row each step with the consistent tangent (storeys' return-map tangents,
+//! the contact tangent ∂f/∂δ + γ/(βΔt) ∂f/∂δ̇), and every contact onset and
+//! separation located inside its step and the step split there, so that
+//! the method stays second order and v₀ is the onset's own.
+//!
+//! With u the unknown at t_{n+1}:
+//!
+//! ```text
+//! ü_{n+1} = (u − u_n)/(βΔt²) − u̇_n/(βΔt) − (1/(2β) − 1) ü_n,
+//! u̇_{n+1} = u̇_n + Δt((1 − γ) ü_n + γ ü_{n+1}),
+//! R(u) = M ü_{n+1} + C u̇_{n+1} + F_s(u) ± f_p + M 1 ü_g(t_{n+1}) = 0.
+//! ```
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::model::buildings::contact::pair_law;
+use crate::model::buildings::matrices::RowMatrices;
+use crate::model::buildings::{Ground, Row};
+use crate::model::{Bilinear, ContactLaw, SpringState};
+
+use super::driver::RowError;
+use super::layout::Layout;
+use super::peaks::{Envelope, raise};
+use super::result::{FloorPeaks, PairImpact, PairResult, RowRun};
+
+const GAMMA: f64 = 0.5;
+const BETA: f64 = 0.25;
+
+/// Where one Newmark step ends.
+#[derive(Clone)]
+struct Point {
+    t: f64,
+    u: DVector<f64>,
+    v: DVector<f64>,
+    a: DVector<f64>,
+    springs: Vec<SpringState>,
+}
+
+struct Newmark<'a> {
+    ground: &'a Ground,
+    layout: Layout,
+    mass: DVector<f64>,
+    damping: DMatrix<f64>,
+    springs: Vec<Bilinear>,
+    laws: Vec<Option<ContactLaw>>,
+}
+
+impl Newmark<'_> {
+    /// Storey forces on the floors, their tangent, and the trial spring states.
+    fn storeys(
+        &self,
+        p: &Point,
+        u: &DVector<f64>,
+        f: &mut DVector<f64>,
+        k: &mut DMatrix<f64>,
+    ) -> Vec<SpringState> {
+        let mut out = Vec::with_capacity(self.springs.len());
+        for ((s, b), from) in self
+            .layout
+            .storeys
+            .iter()
+            .zip(&self.springs)
+            .zip(&p.springs)
+        {
+            let d = u[s.upper] - s.lower.map_or(0.0, |l| u[l]);
+            let r = b.respond(*from, d);
+            f[s.upper] += r.force;
+            k[(s.upper, s.upper)] += r.tangent;
+            if let Some(l) = s.lower {
+                f[l] -= r.force;
+                k[(l, l)] += r.tangent;
+                k[(l, s.upper)] -= r.tangent;
+                k[(s.upper, l)] -= r.tangent;
+            }
+            out.push(r.state);
+        }
+        out
+    }
+
+    /// One step from `p` to p.t + dt with the current contact laws.
+    fn step(&self, p: &Point, dt: f64) -> Result<Point, RowError> {
+        let n = self.layout.dofs;
+        let t = p.t + dt;
+        let ag = self.ground.at(t);
+        let c1 = 1.0 / (BETA * dt * dt);
+        let c2 = GAMMA / (BETA * dt);
+        let mut u = &p.u + dt * &p.v + 0.5 * dt * dt * &p.a;
+        let scale = p.u.amax().max(1e-6);
+        for _ in 0..60 {
+            let a = c1 * (&u - &p.u) - &p.v / (BETA * dt) - (0.5 / BETA - 1.0) * &p.a;
+            let v = &p.v + dt * ((1.0 - GAMMA) * &p.a + GAMMA * &a);
+            let mut f = self.mass.component_mul(&a) + &self.damping * &v;
+            let mut k = c2 * &self.damping;
+            for i in 0..n {
+                f[i] += self.mass[i] * ag;
+                k[(i, i)] += c1 * self.mass[i];
+            }
+            self.storeys(p, &u, &mut f, &mut k);
+            for ((pair, law), &gap) in self
+                .layout
+                .pairs
+                .iter()
+                .zip(&self.laws)
+                .zip(&self.layout.gaps)
+            {
+                let Some(law) = law else { continue };
+                let (i, j) = (pair.left_dof, pair.right_dof);
+                let c = law.force(u[i] - u[j] - gap, v[i] - v[j]);
+                let kt = c.d_penetration + c2 * c.d_rate;
+                f[i] += c.force;
+                f[j] -= c.force;
+                k[(i, i)] += kt;
+                k[(j, j)] += kt;
+                k[(i, j)] -= kt;
+                k[(j, i)] -= kt;
+            }
+            let du = k.lu().solve(&(-&f)).ok_or(RowError::Runaway(t))?;
+            u += &du;
+            if du.amax() <= 1e-13 * scale.max(u.amax()) {
+                let a = c1 * (&u - &p.u) - &p.v / (BETA * dt) - (0.5 / BETA - 1.0) * &p.a;
+                let v = &p.v + dt * ((1.0 - GAMMA) * &p.a + GAMMA * &a);
+                // The accepted spring states, at the converged displacements.
+                let springs =
+                    self.storeys(p, &u, &mut DVector::zeros(n), &mut DMatrix::zeros(n, n));
+                return Ok(Point {
+                    t,
+                    u,
+                    v,
+                    a,
+                    springs,
+                });
+            }
+        }
+        Err(RowError::Runaway(t))
+    }
+
+    /// δ of every pair at a point.
+    fn penetration(&self, p: &Point, i: usize) -> (f64, f64) {
+        let pair = &self.layout.pairs[i];
+        (
+            p.u[pair.left_dof] - p.u[pair.right_dof] - self.layout.gaps[i],
+            p.v[pair.left_dof] - p.v[pair.right_dof],
+        )
+    }
+
+    /// The first pair whose contact state changes in (p, q], and the fraction θ
+    /// of the step where it does (the root of the cubic Hermite of δ).
+    fn change(&self, p: &Point, q: &Point, dt: f64) -> Option<(usize, f64)> {
+        let mut first: Option<(usize, f64)> = None;
+        for i in 0..self.layout.pairs.len() {
+            let (d0, r0) = self.penetration(p, i);
+            let (d1, r1) = self.penetration(q, i);
+            let closed = self.laws[i].is_some();
+            let crosses = if closed { d1 <= 0.0 } else { d1 > 0.0 };
+            if !crosses {
+                continue;
+            }
+            // Bisection on the Hermite cubic through (δ, δ̇) at both ends.
+            let h = |th: f64| {
+                let (h00, h10, h01, h11) = (
+                    2.0 * th.powi(3) - 3.0 * th * th + 1.0,
+                    th.powi(3) - 2.0 * th * th + th,
+                    -2.0 * th.powi(3) + 3.0 * th * th,
+                    th.powi(3) - th * th,
+                );
+                h00 * d0 + h10 * dt * r0 + h01 * d1 + h11 * dt * r1
+            };
+            let sign = if closed { -1.0 } else { 1.0 };
+            let (mut lo, mut hi) = (0.0, 1.0);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if sign * h(mid) > 0.0 {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            if first.is_none_or(|(_, th)| hi < th) {
+                first = Some((i, hi));
+            }
+        }
+        first
+    }
+}
+
+/// Runs Newmark with step `dt` on `row` under `ground` for `duration` seconds.
+pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result<RowRun, RowError> {
+    let layout = Layout::of(row);
+    let m = RowMatrices::of(row);
+    let n = layout.dofs;
+    let springs = layout
+        .storeys
+        .iter()
+        .map(|s| Bilinear {
+            stiffness: s.stiffness,
+            yield_displacement: s.yield_drift,
+            alpha: s.alpha,
+        })
+        .collect();
+    let mut nm = Newmark {
+        ground,
+        mass: m.mass.clone(),
+        damping: m.damping.clone(),
+        springs,
+        laws: vec![None; layout.pairs.len()],
+        layout,
+    };
+    let mut p = Point {
+        t: 0.0,
+        u: DVector::zeros(n),
+        v: DVector::zeros(n),
+        a: DVector::from_element(n, -ground.at(0.0)),
+        springs: vec![SpringState::default(); nm.layout.storeys.len()],
+    };
+    let mut env = Envelope::new(n, nm.layout.storeys.len(), nm.layout.facing.len());
+    let mut pairs = vec![PairResult::default(); nm.layout.pairs.len()];
+    let steps = (duration / dt).ceil().max(1.0) as usize;
+    let h = duration / steps as f64;
+    let mut record = |p: &Point, nm: &Newmark, pairs: &mut [PairResult]| {
+        let ag = ground.at(p.t);
+        for i in 0..n {
+            raise(&mut env.displacement[i], p.u[i]);
+            raise(&mut env.velocity[i], p.v[i]);
+            raise(&mut env.acceleration[i], p.a[i] + ag);
+        }
+        for (k, s) in nm.layout.storeys.iter().enumerate() {
+            raise(&mut env.drift[k], nm.layout.drift(s, p.u.as_slice()));
+        }
+        for (k, f) in nm.layout.facing.iter().enumerate() {
+            env.relative[k] = env.relative[k].max(p.u[f.left_dof] - p.u[f.right_dof]);
+        }
+        for (i, law) in nm.laws.iter().enumerate() {
+            if let (Some(law), Some(last)) = (law, pairs[i].impacts.last_mut()) {
+                let (d, r) = nm.penetration(p, i);
+                last.max_penetration = last.max_penetration.max(d);
+                last.max_force = last.max_force.max(law.force(d, r).force);
+            }
+        }
+    };
+    for k in 0..steps {
+        let t_end = if k + 1 == steps {
+            duration
+        } else {
+            (k + 1) as f64 * h
+        };
+        // Split the step at each contact change inside it.
+        for _ in 0..1000 {
+            let dt = t_end - p.t;
+            if dt <= 1e-15 * t_end.max(1.0) {
+                break;
+            }
+            let q = nm.step(&p, dt)?;
+            match nm.change(&p, &q, dt) {
+                None => {
+                    p = q;
+                    record(&p, &nm, &mut pairs);
+                    break;
+                }
+                Some((i, theta)) => {
+                    p = nm.step(&p, theta * dt)?;
+                    record(&p, &nm, &mut pairs);
+                    let (_, rate) = nm.penetration(&p, i);
+                    if nm.laws[i].is_some() {
+                        nm.laws[i] = None;
+                        if let Some(last) = pairs[i].impacts.last_mut() {
+                            last.end = p.t;
+                            last.separation_velocity = -rate;
+                        }
+                    } else {
+                        nm.laws[i] = Some(pair_law(row, &nm.layout.pairs[i], rate));
+                        pairs[i].impacts.push(PairImpact {
+                            start: p.t,
+                            end: f64::NAN,
+                            approach_velocity: rate,
+                            separation_velocity: f64::NAN,
+                            max_force: 0.0,
+                            max_penetration: 0.0,
+                        });
+                    }
+                }
+            }
+        }
+    }
+    let mut floors = Vec::new();
+    let mut at = 0;
+    for (b, &o) in row.buildings.iter().zip(&row.offsets()) {
+        let mut list = Vec::new();
+        for i in 0..b.storeys() {
+            let s = &nm.layout.storeys[at];
+            let drift = env.drift[at];
+            let spring = p.springs[at];
+            list.push(FloorPeaks {
+                displacement: env.displacement[o + i],
+                velocity: env.velocity[o + i],
+                absolute_acceleration: env.acceleration[o + i],
+                drift,
+                drift_ratio: drift / s.height,
+                ductility: drift / s.yield_drift,
+                residual_drift: (1.0 - s.alpha) * (spring.x - spring.z),
+            });
+            at += 1;
+        }
+        floors.push(list);
+    }
+    Ok(RowRun {
+        floors,
+        pairs,
+        duration,
+        final_displacement: p.u.iter().copied().collect(),
+        final_velocity: p.v.iter().copied().collect(),
+        energy: None,
+        max_relative: env.relative.clone(),
+        maps_made: 0,
+        map_steps: 0,
+        series_steps: 0,
+        configurations: 0,
+    })
+}

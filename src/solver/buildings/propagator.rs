@@ -1,0 +1,94 @@
+//! The closed-form map over one sub-step out of contact (SPEC §13), cached
+//! by (configuration, h, σ).
+//!
+//! With w = (u, u̇, a_g, ȧ_g, M⁻¹q) the motion is w' = 𝒜w,
+//!
+//! ```text
+//! 𝒜 = [ 0      I      0   0  0 ]
+//!     [ −M⁻¹K  −M⁻¹C  −1  0  I ]
+//!     [ 0      0      0   1  0 ]
+//!     [ 0      0      σ   0  0 ]
+//!     [ 0      0      0   0  0 ],
+//! ```
+//!
+//! so w(h) = e^{𝒜h} w(0) exactly; the map keeps the rows of (u, u̇). The
+//! plastic offsets only enter through M⁻¹q, a part of the state, so one map
+//! serves every configuration with the same branches.
+
+use std::collections::HashMap;
+
+use nalgebra::DMatrix;
+
+use super::system::System;
+
+/// Cache key: the branches, h and σ (as bits).
+pub type Key = (Vec<u8>, u64, u64);
+
+/// The cache of linear maps, and how it was used.
+#[derive(Debug, Default)]
+pub struct Propagator {
+    maps: HashMap<Key, DMatrix<f64>>,
+    /// Maps made (matrix exponentials computed).
+    pub made: usize,
+    /// Sub-steps taken with a cached map.
+    pub used: usize,
+}
+
+impl Propagator {
+    /// The map of `system` (no contact) over h on a piece with σ.
+    pub fn map(&mut self, key: Vec<u8>, system: &System, h: f64, sigma: f64) -> &DMatrix<f64> {
+        let n = system.load.len();
+        self.used += 1;
+        let made = &mut self.made;
+        self.maps
+            .entry((key, h.to_bits(), sigma.to_bits()))
+            .or_insert_with(|| {
+                *made += 1;
+                let d = 3 * n + 2;
+                let mut a = DMatrix::<f64>::zeros(d, d);
+                for i in 0..n {
+                    a[(i, n + i)] = 1.0;
+                    for j in 0..n {
+                        a[(n + i, j)] = -system.stiffness[(i, j)];
+                        a[(n + i, n + j)] = -system.damping[(i, j)];
+                    }
+                    a[(n + i, 2 * n)] = -1.0;
+                    a[(n + i, 2 * n + 2 + i)] = 1.0;
+                }
+                a[(2 * n, 2 * n + 1)] = 1.0;
+                a[(2 * n + 1, 2 * n)] = sigma;
+                (a * h).exp().rows(0, 2 * n).into_owned()
+            })
+    }
+
+    /// Distinct maps held.
+    pub fn len(&self) -> usize {
+        self.maps.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.maps.is_empty()
+    }
+}
+
+/// (u, u̇) after the map from (u, u̇) under ground (a, ȧ) and load M⁻¹q.
+pub fn apply(
+    map: &DMatrix<f64>,
+    (u, v): (&[f64], &[f64]),
+    (a, rate): (f64, f64),
+    load: &[f64],
+    (u1, v1): (&mut [f64], &mut [f64]),
+) {
+    let n = u.len();
+    for r in 0..2 * n {
+        let mut s = map[(r, 2 * n)] * a + map[(r, 2 * n + 1)] * rate;
+        for j in 0..n {
+            s += map[(r, j)] * u[j] + map[(r, n + j)] * v[j] + map[(r, 2 * n + 2 + j)] * load[j];
+        }
+        if r < n {
+            u1[r] = s;
+        } else {
+            v1[r - n] = s;
+        }
+    }
+}

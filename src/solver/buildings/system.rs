@@ -1,0 +1,130 @@
+//! The linear system of one configuration (SPEC §13):
+//!
+//! ```text
+//! ü = −M⁻¹K u − M⁻¹C u̇ + M⁻¹q − 1 ü_g − M⁻¹ Σ_p h_p δ_p δ̇_p e_p.
+//! ```
+//!
+//! - Storey i on the elastic branch: V_i = k_iΔ_i − (1−α)k_i p_i; yielding:
+//!   V_i = αk_iΔ_i ± (1−α)k_iΔ_y,i. It acts −V_i on its upper floor and
+//!   +V_i on its lower one.
+//! - A closed pair p (floors A left, B right), δ = u_A − u_B − d: the law
+//!   f = k̄δ + cδ̇ + hδδ̇ (SPEC §4) acts −f on A and +f on B; k̄ and c go into
+//!   K and C, k̄d into q, and the improved Kelvin law's hδδ̇ stays the one
+//!   nonlinear term (e_p = +1 at A, −1 at B).
+
+use nalgebra::DMatrix;
+
+use super::config::{Branch, Config};
+use super::layout::Layout;
+
+/// The nonlinear term of one closed pair: h δ δ̇.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Product {
+    pub left: usize,
+    pub right: usize,
+    pub gap: f64,
+    /// h/m_A and h/m_B.
+    pub left_rate: f64,
+    pub right_rate: f64,
+}
+
+/// M⁻¹K, M⁻¹C, M⁻¹q and the nonlinear terms of one configuration.
+#[derive(Debug, Clone)]
+pub struct System {
+    pub stiffness: DMatrix<f64>,
+    pub damping: DMatrix<f64>,
+    pub load: Vec<f64>,
+    pub products: Vec<Product>,
+}
+
+impl System {
+    pub fn of(layout: &Layout, config: &Config) -> System {
+        let n = layout.dofs;
+        let mut k = DMatrix::<f64>::zeros(n, n);
+        let mut c = layout.damping.clone();
+        let mut q = vec![0.0; n];
+        for (i, s) in layout.storeys.iter().enumerate() {
+            let (ke, v0) = match config.branch[i] {
+                Branch::Elastic => (
+                    s.stiffness,
+                    -(1.0 - s.alpha) * s.stiffness * config.plastic[i],
+                ),
+                Branch::Plus => (
+                    s.alpha * s.stiffness,
+                    (1.0 - s.alpha) * s.stiffness * s.yield_drift,
+                ),
+                Branch::Minus => (
+                    s.alpha * s.stiffness,
+                    -(1.0 - s.alpha) * s.stiffness * s.yield_drift,
+                ),
+            };
+            let up = s.upper;
+            k[(up, up)] += ke;
+            q[up] -= v0;
+            if let Some(lo) = s.lower {
+                k[(lo, lo)] += ke;
+                k[(up, lo)] -= ke;
+                k[(lo, up)] -= ke;
+                q[lo] += v0;
+            }
+        }
+        let mut products = Vec::new();
+        for (pi, (p, closed)) in layout.pairs.iter().zip(&config.contact).enumerate() {
+            let Some(closed) = closed else { continue };
+            let (a, b) = (p.left_dof, p.right_dof);
+            let d = layout.gaps[pi];
+            let law = &closed.law;
+            let (kk, cc) = (law.stiffness, law.linear_damping);
+            k[(a, a)] += kk;
+            k[(b, b)] += kk;
+            k[(a, b)] -= kk;
+            k[(b, a)] -= kk;
+            // `c` is M⁻¹C already: the dashpot enters divided by each floor's mass.
+            let (ma, mb) = (layout.mass[a], layout.mass[b]);
+            c[(a, a)] += cc / ma;
+            c[(a, b)] -= cc / ma;
+            c[(b, b)] += cc / mb;
+            c[(b, a)] -= cc / mb;
+            q[a] += kk * d;
+            q[b] -= kk * d;
+            if law.hertz_damping != 0.0 {
+                products.push(Product {
+                    left: a,
+                    right: b,
+                    gap: d,
+                    left_rate: law.hertz_damping / ma,
+                    right_rate: law.hertz_damping / mb,
+                });
+            }
+        }
+        for i in 0..n {
+            let m = layout.mass[i];
+            for j in 0..n {
+                k[(i, j)] /= m;
+            }
+            q[i] /= m;
+        }
+        System {
+            stiffness: k,
+            damping: c,
+            load: q,
+            products,
+        }
+    }
+
+    /// ü at (u, u̇) under ground acceleration a (the equation above).
+    pub fn acceleration(&self, u: &[f64], v: &[f64], a: f64, out: &mut [f64]) {
+        for (i, out) in out.iter_mut().enumerate() {
+            let mut s = self.load[i] - a;
+            for (j, (&uj, &vj)) in u.iter().zip(v).enumerate() {
+                s -= self.stiffness[(i, j)] * uj + self.damping[(i, j)] * vj;
+            }
+            *out = s;
+        }
+        for p in &self.products {
+            let f = (u[p.left] - u[p.right] - p.gap) * (v[p.left] - v[p.right]);
+            out[p.left] -= p.left_rate * f;
+            out[p.right] += p.right_rate * f;
+        }
+    }
+}

@@ -1,0 +1,151 @@
+//! The Taylor series of the motion in one configuration (SPEC §13), from a
+//! state at s = 0:
+//!
+//! ```text
+//! u_{k+1} = u̇_k/(k+1),
+//! u̇_{k+1} = (−M⁻¹K u_k − M⁻¹C u̇_k + M⁻¹q [k = 0] − a_k − M⁻¹ Σ_p h_p (δδ̇)_k e_p)/(k+1),
+//! ```
+//!
+//! with a_k the ground's coefficients (a_{k+2} = σ a_k/((k+1)(k+2)) on a
+//! piece where ä_g = σ a_g) and (δδ̇)_k = Σ_j δ_j δ̇_{k−j} the improved Kelvin
+//! law's product, so that a contact phase of the Kelvin family is carried
+//! exactly too. The series is used on [0, radius], where its last two terms
+//! are below [`TOLERANCE`] of the state's scale.
+
+use super::system::System;
+
+/// Highest order kept.
+pub const ORDER: usize = 24;
+/// Relative size of the last terms at the end of a step.
+pub const TOLERANCE: f64 = 1e-17;
+
+/// Coefficients of u and u̇, order by order (each a block of `n`).
+#[derive(Debug, Clone)]
+pub struct Series {
+    pub n: usize,
+    pub u: Vec<f64>,
+    pub v: Vec<f64>,
+    /// The ground's coefficients a_k.
+    pub ground: [f64; ORDER + 1],
+    /// Where the series stays within [`TOLERANCE`].
+    pub radius: f64,
+}
+
+impl Series {
+    /// The series from (u, u̇) with ground acceleration `a`, its rate and σ.
+    /// `scale` = (displacement, velocity) of the motion, for the radius.
+    pub fn new(
+        system: &System,
+        u0: &[f64],
+        v0: &[f64],
+        ground: (f64, f64, f64),
+        scale: (f64, f64),
+    ) -> Series {
+        let n = u0.len();
+        let mut u = vec![0.0; (ORDER + 1) * n];
+        let mut v = vec![0.0; (ORDER + 1) * n];
+        u[..n].copy_from_slice(u0);
+        v[..n].copy_from_slice(v0);
+        let (a, rate, sigma) = ground;
+        let mut g = [0.0; ORDER + 1];
+        g[0] = a;
+        g[1] = rate;
+        for k in 0..ORDER - 1 {
+            g[k + 2] = sigma * g[k] / ((k + 1) * (k + 2)) as f64;
+        }
+        let np = system.products.len();
+        let mut delta = vec![0.0; np * (ORDER + 1)];
+        let mut rate_d = vec![0.0; np * (ORDER + 1)];
+        let mut acc = vec![0.0; n];
+        for k in 0..ORDER {
+            let (uk, vk) = (&u[k * n..(k + 1) * n], &v[k * n..(k + 1) * n]);
+            for (i, acc) in acc.iter_mut().enumerate() {
+                let mut s = -g[k];
+                if k == 0 {
+                    s += system.load[i];
+                }
+                for (j, (&uj, &vj)) in uk.iter().zip(vk).enumerate() {
+                    s -= system.stiffness[(i, j)] * uj + system.damping[(i, j)] * vj;
+                }
+                *acc = s;
+            }
+            for (pi, p) in system.products.iter().enumerate() {
+                let row = pi * (ORDER + 1);
+                delta[row + k] = uk[p.left] - uk[p.right] - if k == 0 { p.gap } else { 0.0 };
+                rate_d[row + k] = vk[p.left] - vk[p.right];
+                let conv: f64 = (0..=k).map(|j| delta[row + j] * rate_d[row + k - j]).sum();
+                acc[p.left] -= p.left_rate * conv;
+                acc[p.right] += p.right_rate * conv;
+            }
+            let inv = 1.0 / (k + 1) as f64;
+            for i in 0..n {
+                u[(k + 1) * n + i] = v[k * n + i] * inv;
+                v[(k + 1) * n + i] = acc[i] * inv;
+            }
+        }
+        let norm = |k: usize| {
+            let b = k * n..(k + 1) * n;
+            let nu = u[b.clone()].iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale.0;
+            let nv = v[b].iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale.1;
+            nu.max(nv)
+        };
+        let radius = [ORDER - 1, ORDER]
+            .iter()
+            .map(|&k| {
+                let nk = norm(k);
+                if nk > 0.0 {
+                    (TOLERANCE / nk).powf(1.0 / k as f64)
+                } else {
+                    f64::INFINITY
+                }
+            })
+            .fold(f64::INFINITY, f64::min);
+        Series {
+            n,
+            u,
+            v,
+            ground: g,
+            radius,
+        }
+    }
+
+    /// (u, u̇) at s.
+    pub fn state(&self, s: f64, u: &mut [f64], v: &mut [f64]) {
+        let n = self.n;
+        for i in 0..n {
+            let mut a = 0.0;
+            let mut b = 0.0;
+            for k in (0..=ORDER).rev() {
+                a = a * s + self.u[k * n + i];
+                b = b * s + self.v[k * n + i];
+            }
+            u[i] = a;
+            v[i] = b;
+        }
+    }
+
+    /// Coefficients of Σ_i (wu_i u_i + wv_i u̇_i) over the given (dof, weight) terms.
+    pub fn combine(&self, du: &[(usize, f64)], dv: &[(usize, f64)], out: &mut Vec<f64>) {
+        out.clear();
+        let n = self.n;
+        for k in 0..=ORDER {
+            let mut s = 0.0;
+            for &(i, w) in du {
+                s += w * self.u[k * n + i];
+            }
+            for &(i, w) in dv {
+                s += w * self.v[k * n + i];
+            }
+            out.push(s);
+        }
+    }
+
+    /// Coefficients of the absolute acceleration ü_i + ü_g (one order fewer).
+    pub fn absolute_acceleration(&self, i: usize, out: &mut Vec<f64>) {
+        out.clear();
+        let n = self.n;
+        for k in 0..ORDER {
+            out.push((k + 1) as f64 * self.v[(k + 1) * n + i] + self.ground[k]);
+        }
+    }
+}

@@ -1,0 +1,230 @@
+//! `pounding run --buildings` (SPEC §13): the JSON shape, `--set`, a row
+//! whose floors do not pair, and bad input: exit 2 with one line naming the
+//! file, the building or joint, the key, the value and what is allowed.
+
+mod common;
+
+use common::{fails, json};
+
+const ROW: &str = "model = \"improved-kelvin\"\n\
+    [[building]]\nname = \"low\"\nstoreys = 2\nmass = 1e5\nstiffness = [2e8, 1e8]\nheight = 3\nyield_drift = 0.01\n\
+    [[building]]\nname = \"high\"\nstoreys = 3\nmass = 1e5\nstiffness = 1e8\nheight = 3\n\
+    [[joint]]\ngap = 0.01\nstiffness = 1e10\n";
+
+fn write(dir: &tempfile::TempDir, name: &str, text: &str) -> String {
+    let p = dir.path().join(name);
+    std::fs::write(&p, text).unwrap();
+    p.to_string_lossy().into_owned()
+}
+
+#[test]
+fn json_lists_buildings_floors_and_pairs() {
+    let v = json(&[
+        "run",
+        "--buildings",
+        "block-and-frame",
+        "--excitation",
+        "record:presets/synthetic.at2",
+        "--format",
+        "json",
+    ]);
+    let b = v["buildings"].as_array().unwrap();
+    assert_eq!(b.len(), 2);
+    assert_eq!(b[0]["name"], "block");
+    assert_eq!(b[0]["floors"].as_array().unwrap().len(), 3);
+    assert_eq!(b[1]["floors"].as_array().unwrap().len(), 8);
+    for key in [
+        "peak_displacement",
+        "peak_velocity",
+        "peak_absolute_acceleration",
+        "peak_drift",
+        "drift_ratio",
+        "ductility",
+        "residual_drift",
+    ] {
+        assert!(b[1]["floors"][7][key].is_number(), "{key}");
+    }
+    assert!(b[1]["periods"][0].as_f64().unwrap() > 0.5);
+    let pairs = v["pairs"].as_array().unwrap();
+    assert_eq!(pairs.len(), 3);
+    assert_eq!(pairs[2]["left_floor"], 3);
+    assert_eq!(pairs[2]["right_floor"], 3);
+    let total: u64 = pairs.iter().map(|p| p["impacts"].as_u64().unwrap()).sum();
+    assert_eq!(v["impacts"].as_u64().unwrap(), total);
+    assert!(total > 0);
+    assert_eq!(v["method"], "exact");
+    assert!(v["energy"]["residual"].as_f64().unwrap() < 1e-9);
+    assert!(v["energy"]["contact"].as_f64().unwrap() > 0.0);
+    assert!(v["elapsed_ms"].as_f64().unwrap() >= 0.0);
+}
+
+#[test]
+fn a_row_whose_floors_do_not_pair_runs_and_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(&dir, "apart.toml", &ROW.replace("height = 3\n\n[[building]]\nname = \"high\"\nstoreys = 3\nmass = 1e5\nstiffness = 1e8\nheight = 3", "height = 3\n\n[[building]]\nname = \"high\"\nstoreys = 3\nmass = 1e5\nstiffness = 1e8\nheight = 3.5").replace("stiffness = 1e8\nheight = 3\n", "stiffness = 1e8\nheight = 3.5\n"));
+    let v = json(&["run", "--buildings", &path, "--format", "json"]);
+    assert_eq!(v["pairs"].as_array().unwrap().len(), 0);
+    assert!(v["note"].as_str().unwrap().contains("no floors pair up"));
+}
+
+#[test]
+fn bad_input_exits_2_with_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: Vec<(String, Vec<&str>)> = vec![
+        (
+            ROW.replace("[2e8, 1e8]", "[2e8, 1e8, 1e8]"),
+            vec!["building `low`", "`stiffness` has 3 values", "list of 2"],
+        ),
+        (
+            ROW.replace("mass = 1e5\nstiffness = 1e8", "mass = -1\nstiffness = 1e8"),
+            vec!["building `high`", "`mass` = -1", "finite number > 0"],
+        ),
+        (
+            ROW.replace(
+                "mass = 1e5\nstiffness = 1e8",
+                "mass = 1e5\nstiffness = \"inf\"",
+            ),
+            vec!["building `high`", "`stiffness` = inf", "finite number > 0"],
+        ),
+        (
+            ROW.replace("yield_drift = 0.01", "yield_drift = 0"),
+            vec!["building `low`", "`yield_drift` = 0", "> 0"],
+        ),
+        (
+            format!("{ROW}[[joint]]\ngap = 0.01\nstiffness = 1e10\n"),
+            vec!["2 [[joint]] tables for 2 buildings", "must be 1"],
+        ),
+        (
+            ROW.replace("storeys = 3", "storeys = 201"),
+            vec!["building `high`", "`storeys` = 201", "1 to 200"],
+        ),
+        (
+            ROW.replace("storeys = 3", "storeys = 0"),
+            vec!["`storeys` = 0", "1 to 200"],
+        ),
+        (
+            ROW.replace("height = 3\nyield_drift", "heigth = 3\nyield_drift"),
+            vec!["building `low`", "unknown key `heigth`"],
+        ),
+        (
+            ROW.replace("gap = 0.01", "gap = 0.01\nwidth = 2"),
+            vec!["joint1", "unknown key `width`"],
+        ),
+    ];
+    for (i, (text, fragments)) in cases.iter().enumerate() {
+        let path = write(&dir, &format!("bad{i}.toml"), text);
+        let mut all = fragments.clone();
+        all.push(&path);
+        fails(&["run", "--buildings", &path], 2, &all);
+    }
+    // Eleven buildings.
+    let mut many = String::from("model = \"kelvin\"\n");
+    for i in 0..11 {
+        many += &format!("[[building]]\nname = \"b{i}\"\nstoreys = 1\nmass = 1\nstiffness = 1\n");
+    }
+    for _ in 0..10 {
+        many += "[[joint]]\ngap = 0.01\nstiffness = 1\n";
+    }
+    let path = write(&dir, "many.toml", &many);
+    fails(
+        &["run", "--buildings", &path],
+        2,
+        &["11 [[building]] tables", "1 to 10"],
+    );
+    // --set names the building and joint it edits.
+    fails(
+        &[
+            "run",
+            "--buildings",
+            "block-and-frame",
+            "--set",
+            "frame.mass=[1, 2]",
+        ],
+        2,
+        &["building `frame`", "`mass` has 2 values", "list of 8"],
+    );
+    fails(
+        &[
+            "run",
+            "--buildings",
+            "block-and-frame",
+            "--set",
+            "joint1.stiffness=-5",
+        ],
+        2,
+        &["joint1", "`stiffness` = -5"],
+    );
+    fails(
+        &[
+            "run",
+            "--buildings",
+            "block-and-frame",
+            "--set",
+            "tower.mass=1",
+        ],
+        2,
+        &["no building named `tower`"],
+    );
+}
+
+#[test]
+fn gap_lists_each_joint_beside_the_code_rules() {
+    let v = json(&[
+        "gap",
+        "--buildings",
+        "three-in-series",
+        "--excitation",
+        "record:presets/synthetic.at2",
+        "--format",
+        "json",
+    ]);
+    let joints = v["joints"].as_array().unwrap();
+    assert_eq!(joints.len(), 2);
+    for j in joints {
+        let g = j["min_gap"].as_f64().unwrap();
+        let abs = j["abs"].as_f64().unwrap();
+        let srss = j["srss"].as_f64().unwrap();
+        let ddc = j["ddc"].as_f64().unwrap();
+        assert!(g > 0.0 && g <= abs + 1e-12, "{j}");
+        assert!(ddc <= srss && srss <= abs, "{j}");
+    }
+}
+
+#[test]
+fn figure_buildings_writes_envelopes_and_impact_forces() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("row.svg");
+    let out = out.to_string_lossy().into_owned();
+    common::succeeds(&[
+        "figure",
+        "buildings",
+        "--buildings",
+        "block-and-frame",
+        "--excitation",
+        "record:presets/synthetic.at2",
+        "--out",
+        &out,
+    ]);
+    let svg = std::fs::read_to_string(&out).unwrap();
+    for title in [
+        "peak floor displacement",
+        "peak storey drift ratio",
+        "peak floor acceleration",
+        "impact forces",
+        "frame apart",
+    ] {
+        assert!(svg.contains(title), "{title}");
+    }
+    fails(
+        &[
+            "figure",
+            "buildings",
+            "--buildings",
+            "block-and-frame",
+            "--out",
+            "x.gif",
+        ],
+        2,
+        &["--out x.gif", ".svg or .png"],
+    );
+}
