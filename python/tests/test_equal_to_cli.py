@@ -47,6 +47,17 @@ def test_run_defaults_and_keys_are_the_cli_json(cli):
     same(without_time(ours), without_time(theirs))
 
 
+def test_a_row_of_buildings_is_the_cli_json(cli):
+    # The row's report (floors and floor pairs, SPEC §13) through the same emit.
+    record = "record:presets/synthetic.at2"
+    ours = pounding.run(buildings="block-and-frame", excitation=record)
+    theirs = cli.json("run", "--buildings", "block-and-frame", "--excitation", record)
+    same(without_time(ours), without_time(theirs))
+    assert ours["impacts"] > 0 and [b["name"] for b in ours["buildings"]] == ["block", "frame"]
+    gap = pounding.gap(buildings="block-and-frame", excitation=record)
+    same(gap, cli.json("gap", "--buildings", "block-and-frame", "--excitation", record))
+
+
 def test_run_history(cli):
     r = pounding.run(preset="set1", method="exact", history=True)
     h = r["history"]
