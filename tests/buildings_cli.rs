@@ -165,6 +165,22 @@ fn bad_input_exits_2_with_one_line() {
         2,
         &["no building named `tower`"],
     );
+    // Work beyond the commands' bound (a tail of 1e7 s, a Newmark step of
+    // 1 ns) is refused at once, never a wait without end.
+    let block = ["--buildings", "block-and-frame"];
+    for (what, extra) in [
+        ("run --buildings", vec!["run", "--tail", "1e7"]),
+        (
+            "run --buildings",
+            vec!["run", "--method", "newmark", "--dt", "1e-9"],
+        ),
+        ("gap --buildings", vec!["gap", "--tail", "1e7"]),
+        ("bench --buildings", vec!["bench", "--tail", "1e6"]),
+    ] {
+        let mut args = extra.clone();
+        args.extend(block);
+        fails(&args, 2, &[what, "--allow-long"]);
+    }
 }
 
 #[test]

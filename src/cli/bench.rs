@@ -46,12 +46,21 @@ pub struct BenchArgs {
     /// A row of buildings (SPEC §13) instead of the pair: its work-precision rows.
     #[command(flatten)]
     pub row: super::buildings::BuildingsArgs,
+    #[command(flatten)]
+    pub long: super::budget::LongArg,
 }
 
 pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
     if args.row.buildings.is_some() {
         let model = args.model.first().map(String::as_str);
-        return super::buildings::bench(&args.row, args.excitation.as_deref(), model, &args.output);
+        let long = args.long.allow_long;
+        return super::buildings::bench(
+            &args.row,
+            args.excitation.as_deref(),
+            model,
+            &args.output,
+            long,
+        );
     }
     if args.spectra {
         return spectra(args);

@@ -6,10 +6,12 @@ use std::time::Instant;
 use clap::Args;
 
 use super::CliError;
+use super::budget::{SECONDS_PER_STEP, Work};
 use super::output::{Emit, FormatArg, print, render};
 use super::params::ParamArgs;
 use crate::accuracy::timing::median;
 use crate::analysis::row_report::RowReport;
+use crate::analysis::work;
 use crate::model::buildings::matrices::periods;
 use crate::model::buildings::{Ground, Row, load_with};
 use crate::model::physical::parse_acceleration;
@@ -159,10 +161,20 @@ pub fn bench(
     excitation: Option<&str>,
     model: Option<&str>,
     output: &FormatArg,
+    allow_long: bool,
 ) -> Result<(), CliError> {
     let row = args.row(&[], model)?;
     let (ground, name, duration) =
         args.ground(Some(excitation.unwrap_or("synthetic:2000")), None, &row)?;
+    // The reference costs about twenty exact runs; Newmark runs at the
+    // default step and at two, four and eight times it.
+    let exact = work::row_seconds(row.dofs(), duration, None);
+    let newmark = work::row_seconds(row.dofs(), duration, Some(NEWMARK_STEP));
+    bounded(
+        "bench --buildings",
+        21.0 * exact + 1.875 * newmark,
+        allow_long,
+    )?;
     let rows = crate::accuracy::row_bench::row_bench(&row, &ground, duration)
         .map_err(|e| CliError::Usage(e.to_string()))?;
     let report = crate::analysis::row_report::RowBenchReport {
@@ -194,11 +206,24 @@ fn newmark_step(params: &ParamArgs) -> Result<f64, CliError> {
     }
 }
 
+/// Refuses a request on `row` estimated beyond the commands' work bound
+/// (`cli::budget`) without `--allow-long`: `seconds` of runs estimated by
+/// [`work::row_seconds`], so that a long tail or a tiny Newmark step
+/// is a clear error rather than a wait without end.
+fn bounded(what: &str, seconds: f64, allow_long: bool) -> Result<(), CliError> {
+    Work {
+        steps: seconds / SECONDS_PER_STEP,
+        rows: 0.0,
+    }
+    .check(what, allow_long, true)
+}
+
 /// `pounding run --buildings`.
 pub fn run(
     args: &BuildingsArgs,
     params: &ParamArgs,
     repeat: u32,
+    allow_long: bool,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let row = args.row(&params.overrides, params.model.as_deref())?;
@@ -206,6 +231,11 @@ pub fn run(
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let method = params.method.as_deref().unwrap_or("exact");
     let dt = newmark_step(params)?;
+    // The runs asked for, and the exact method's one more for its energy.
+    let step = (method == "newmark").then_some(dt);
+    let runs = f64::from(repeat.max(1)) + f64::from(u8::from(step.is_none()));
+    let seconds = runs * work::row_seconds(row.dofs(), duration, step);
+    bounded("run --buildings", seconds, allow_long)?;
     let options = RowOptions::lasting(duration);
     let mut times = Vec::new();
     let mut result = None;
@@ -243,11 +273,14 @@ pub fn run(
 pub fn gap(
     args: &BuildingsArgs,
     params: &ParamArgs,
+    allow_long: bool,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let row = args.row(&params.overrides, params.model.as_deref())?;
     let (ground, name, duration) =
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
+    let seconds = 2.0 * work::row_seconds(row.dofs(), duration, None);
+    bounded("gap --buildings", seconds, allow_long)?;
     let report = crate::analysis::row_gap::row_gap(&row, &ground, duration, &name)
         .map_err(|e| CliError::Failed(e.to_string()))?;
     emit(&report)
@@ -259,6 +292,7 @@ pub fn figure(
     args: &BuildingsArgs,
     params: &ParamArgs,
     out: Option<&std::path::Path>,
+    allow_long: bool,
 ) -> Result<(), CliError> {
     use crate::figure::{Format, encode};
     let out =
@@ -276,6 +310,8 @@ pub fn figure(
     let row = args.row(&params.overrides, params.model.as_deref())?;
     let (ground, name, duration) =
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
+    let seconds = 2.0 * work::row_seconds(row.dofs(), duration, None);
+    bounded("figure buildings", seconds, allow_long)?;
     let mut apart = row.clone();
     for j in &mut apart.joints {
         j.gap = f64::INFINITY;

@@ -104,7 +104,8 @@ fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
 
 pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
     if args.name.trim() == "buildings" {
-        return super::buildings::figure(&args.row, &args.params, args.out.as_deref());
+        let long = args.risk.long.allow_long;
+        return super::buildings::figure(&args.row, &args.params, args.out.as_deref(), long);
     }
     let all = args.name.trim() == "all";
     let name = if all {

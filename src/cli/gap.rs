@@ -60,7 +60,7 @@ pub fn report_with(
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     if args.row.buildings.is_some() {
-        return super::buildings::gap(&args.row, &args.params, emit);
+        return super::buildings::gap(&args.row, &args.params, args.long.allow_long, emit);
     }
     let others = [("--probability", args.probability.is_some())];
     if let Some(suite_args) = args

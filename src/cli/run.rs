@@ -74,7 +74,8 @@ pub fn report_with(
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     if args.row.buildings.is_some() {
-        return super::buildings::run(&args.row, &args.params, args.repeat, emit);
+        let long = args.long.allow_long;
+        return super::buildings::run(&args.row, &args.params, args.repeat, long, emit);
     }
     let (preset, p) = args.params.resolve()?;
     let steps = run_steps(&p);
