@@ -61,18 +61,21 @@ pub fn pounding_run(p: &Params) -> f64 {
 }
 
 /// Estimated seconds of one run of a row of buildings (SPEC §13) with
-/// `floors` floors in all, over `duration` seconds of ground motion and
-/// tail: by the exact method (`newmark_step` `None`) about 71 µs per
-/// second and floor (block-and-frame, 11 floors: 11.4 ms for 14.6 s;
-/// three-in-series, 17 floors: 40 ms for about 45 s); by Newmark at step
-/// Δt (s), duration/Δt steps of about 12 ns × floors² each, its Newton
-/// system being dense (block-and-frame: 430 ms for 292 000 steps;
-/// three-in-series: 3.4 s for 900 000). An order of magnitude, as
-/// [`seconds`] is.
+/// `floors` floors in all (n), over `duration` seconds of ground motion and
+/// tail: an order of magnitude, as [`seconds`] is.
+/// - The exact method takes sub-steps of one radian of the fastest mode,
+///   each a dense map of the 2n-state: about 6.4 µs × n² per second
+///   (block-and-frame, n = 11: 11.4 ms for 14.6 s; three-in-series, n = 17,
+///   0.9 ms a second, half that), and a matrix exponential of the 2n-state
+///   per configuration, (2n)³ operations at about a nanosecond, two at least.
+/// - Newmark at step Δt (`newmark_step`) takes duration/Δt steps, each a
+///   Newton solve of the dense n-system: about 12 ns × n² on small rows
+///   (block-and-frame: 430 ms for 292 000 steps; three-in-series: 3.4 s for
+///   900 000), and its LU's n³/3 operations on tall ones.
 pub fn row_seconds(floors: usize, duration: f64, newmark_step: Option<f64>) -> f64 {
     let n = floors as f64;
     match newmark_step {
-        None => 7.1e-5 * n * duration,
-        Some(dt) => duration / dt * 1.24e-8 * n * n,
+        None => 6.4e-6 * n * n * duration + 2.0 * 1e-9 * (2.0 * n).powi(3),
+        Some(dt) => duration / dt * (1.24e-8 * n * n + 3.3e-10 * n.powi(3)),
     }
 }
