@@ -26,9 +26,11 @@
 //! configuration, h and σ, so they are made with its map and cached. A
 //! sub-step then costs one ∞-norm of the state and, at each end, ü and its
 //! next two rates for every floor (three products by M⁻¹K and M⁻¹C,
-//! O(dofs²)), of which each quantity's q, q̇, q̈ are a few terms. The bound follows the whole state (a high
-//! mode's swing shows in q⁗ even when q's own end values are small), which
-//! is what the Hermite estimate alone cannot see.
+//! O(dofs²)), of which each quantity's q, q̇, q̈ are a few terms. The bound
+//! follows the whole state (a high mode's swing shows in q⁗ even when q's
+//! own end values are small), which is what the Hermite estimate alone
+//! cannot see. B is widened by a relative 1e-6 for the round-off of the
+//! exponential and the norms, far above it.
 
 use nalgebra::{DMatrix, DVector, DVectorView};
 
@@ -36,7 +38,8 @@ use super::system::System;
 
 /// Grid of the sweep of ‖e^{𝒜̃t}‖ over the sub-step.
 const GRID: usize = 16;
-/// Relative allowance for the round-off of the exponential and the norms.
+/// Relative allowance for the round-off of the exponential and the norms
+/// (of order 1e-13 for the rows' sizes met here).
 const ROUNDING: f64 = 1e-6;
 
 /// A watched quantity: q = Σ weight · x_i^(order) over its terms (floor i,
