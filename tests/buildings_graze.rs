@@ -1,9 +1,10 @@
 //! Grazes: a floor pair whose relative displacement only just passes the
-//! gap, by 1e-5 of its amplitude, somewhere inside a sub-step. The quiet
-//! test of the exact method (SPEC §13) is a bound, not an estimate, so the
-//! impact is found, as the reference finds it, at the default sub-steps
-//! and at sub-steps of several radians of the fastest mode, where the cubic
-//! Hermite interpolant alone is off by far more than the graze.
+//! gap, by 1e-5 of its largest value, somewhere inside a sub-step. The
+//! quiet test of the exact method (SPEC §13) is a bound, not an estimate,
+//! so the impact is found, as the reference finds it, at the default
+//! sub-steps and at sub-steps of four radians of the fastest mode (under
+//! the sine; a record's pieces are shorter), where the Hermite cubic's own
+//! error allowance, (ωh)⁴/384 of the amplitude, is far above the graze.
 
 use pounding::model::buildings::{self, Ground, Row};
 use pounding::model::record::read;
