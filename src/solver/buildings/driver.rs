@@ -9,11 +9,12 @@
 //! - a floor pair touches: δ = u_A − u_B − d turns positive; v₀ = δ̇ there;
 //! - a pair separates: δ returns to 0.
 //!
-//! A sub-step is quiet when, on the cubic Hermite interpolant of every
-//! watched quantity ([`super::hermite`]), no event function comes within
-//! 1 % of zero and no floor's turning point within 1 % of its running peak;
-//! a quiet sub-step's interior cannot hold an event or a new peak, so its
-//! end is all that is recorded.
+//! A sub-step is quiet when, on rigorous ranges of every watched quantity
+//! and of its rate over the sub-step ([`super::bound`]: the cubic Hermite
+//! interpolant widened by a bound on its error from the whole state), no
+//! event function reaches zero and no quantity can pass its running peak
+//! inside; a quiet sub-step's interior then holds no event and no new
+//! peak, so its end is all that is recorded.
 
 use std::collections::HashSet;
 
@@ -21,9 +22,10 @@ use crate::model::buildings::contact::pair_law;
 use crate::model::buildings::ground::Piece;
 use crate::model::buildings::{Ground, Row};
 
+use super::bound::{Stack, Watch};
 use super::config::{Branch, Closed, Config};
 use super::energy::{NODES, RowEnergy, gauss_legendre};
-use super::hermite::interior_range;
+use super::hermite::range;
 use super::layout::Layout;
 use super::peaks::{Envelope, raise};
 use super::poly;
@@ -66,8 +68,6 @@ pub enum RowError {
     Runaway(f64),
 }
 
-/// Hermite margin: the interpolant is within 1/384 of a quantity's amplitude.
-const MARGIN: f64 = 0.01;
 /// Most series steps in one run.
 const MAX_SERIES_STEPS: usize = 100_000_000;
 
@@ -84,6 +84,36 @@ fn ground_at(piece: &Piece, t: f64) -> (f64, f64) {
             -piece.a * w * sn + piece.rate * cs,
         )
     }
+}
+
+/// The quantities the quiet test watches, as combinations of the augmented
+/// state (u, u̇, a_g, ȧ_g, M⁻¹q) of [`super::propagator`], in this order:
+/// u_i, u̇_i and ü_i + a_g of every floor, every storey's drift, the
+/// relative displacement u_A − u_B of every facing pair, then of every
+/// pounding pair.
+fn watched(layout: &Layout) -> Vec<Watch> {
+    let n = layout.dofs;
+    let mut w = Vec::new();
+    for order in 0..3 {
+        w.extend((0..n).map(|i| Watch {
+            terms: vec![(i, 1.0)],
+            order,
+        }));
+    }
+    for s in &layout.storeys {
+        let mut terms = vec![(s.upper, 1.0)];
+        if let Some(l) = s.lower {
+            terms.push((l, -1.0));
+        }
+        w.push(Watch { terms, order: 0 });
+    }
+    for p in layout.facing.iter().chain(&layout.pairs) {
+        w.push(Watch {
+            terms: vec![(p.left_dof, 1.0), (p.right_dof, -1.0)],
+            order: 0,
+        });
+    }
+    w
 }
 
 enum Event {
@@ -108,6 +138,11 @@ struct Run<'a> {
     configurations: HashSet<Vec<u8>>,
     buf: Vec<f64>,
     buf2: Vec<f64>,
+    /// The quantities of the quiet test ([`watched`]).
+    watch: Vec<Watch>,
+    /// The stack at the end of the last quiet sub-step, with its ground
+    /// (a, ȧ, σ); dropped whenever the state moves otherwise.
+    stack: Option<((f64, f64, f64), Stack)>,
     energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
 }
 
@@ -121,6 +156,7 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
     let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
     let system = System::of(&layout, &config);
     let h_max = options.max_substep.unwrap_or(1.0 / layout.rate);
+    let watch = watched(&layout);
     let mut run = Run {
         row,
         envelope: Envelope::new(n, layout.storeys.len(), layout.facing.len()),
@@ -136,6 +172,8 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
         configurations: HashSet::new(),
         buf: Vec::new(),
         buf2: Vec::new(),
+        watch,
+        stack: None,
         energy: options.energy.then(|| {
             let (x, w) = gauss_legendre(NODES);
             (RowEnergy::default(), x, w)
@@ -165,14 +203,24 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
 
 impl Run<'_> {
     /// Tries the sub-step to t + h by the cached map; keeps it and returns
-    /// true when it is quiet.
+    /// true when it is quiet: on the rigorous ranges of [`super::bound`]
+    /// (the Hermite cubic of each watched quantity widened by its error
+    /// bound), no storey reaches yield or unloads, no floor pair closes,
+    /// and no quantity can pass its running peak inside unless it is
+    /// monotone there (then its extremes are the ends, which are recorded).
     fn quiet_step(&mut self, piece: &Piece, h: f64) -> bool {
         let n = self.layout.dofs;
         let (a0, r0) = ground_at(piece, self.t);
         let (a1, r1) = ground_at(piece, self.t + h);
         let key = self.config.key();
         self.configurations.insert(key.clone());
-        let map = self.propagator.map(key, &self.system, h, piece.sigma);
+        let (map, bounds) = self.propagator.map(
+            key,
+            &self.system,
+            (h, piece.sigma),
+            self.layout.rate,
+            &self.watch,
+        );
         let mut u1 = vec![0.0; n];
         let mut v1 = vec![0.0; n];
         apply(
@@ -182,94 +230,81 @@ impl Run<'_> {
             &self.system.load,
             (&mut u1, &mut v1),
         );
-        let mut acc0 = vec![0.0; n];
-        let mut acc1 = vec![0.0; n];
-        self.system.acceleration(&self.u, &self.v, a0, &mut acc0);
-        self.system.acceleration(&u1, &v1, a1, &mut acc1);
-        let jerk = |v: &[f64], acc: &[f64], rate: f64, i: usize| {
-            let mut s = -rate;
-            for j in 0..n {
-                s -= self.system.stiffness[(i, j)] * v[j] + self.system.damping[(i, j)] * acc[j];
-            }
-            s
+        let sigma = piece.sigma;
+        // The end of a quiet sub-step is the start of the next one: its
+        // stack is kept while the state, ground and σ are the same.
+        let start = match self.stack.take() {
+            Some((g, stack)) if g == (a0, r0, sigma) => stack,
+            _ => Stack::at(&self.system, (&self.u, &self.v), (a0, r0, sigma)),
         };
-        let env = &self.envelope;
-        let near = |range: Option<(f64, f64)>, peak: f64| {
-            range.is_some_and(|(lo, hi)| lo.abs().max(hi.abs()) > (1.0 - MARGIN) * peak)
+        let end = Stack::at(&self.system, (&u1, &v1), (a1, r1, sigma));
+        let size = bounds.size((&self.u, &self.v), (a0, r0), &self.system.load);
+        let ends = |k: usize| (start.of(&self.watch[k]), end.of(&self.watch[k]));
+        // The rigorous range of q of quantity k over the sub-step.
+        let values = |k: usize, (q0, q1): ([f64; 3], [f64; 3])| {
+            let ev = bounds.errors(k, size).0;
+            let (lo, hi) = range(q0[0], q0[1], q1[0], q1[1], h);
+            (lo - ev, hi + ev)
         };
-        for i in 0..n {
-            if near(
-                interior_range(self.u[i], self.v[i], u1[i], v1[i], h),
-                env.displacement[i],
-            ) || near(
-                interior_range(self.v[i], acc0[i], v1[i], acc1[i], h),
-                env.velocity[i],
-            ) {
-                return false;
-            }
-            let (j0, j1) = (jerk(&self.v, &acc0, r0, i), jerk(&v1, &acc1, r1, i));
-            if near(
-                interior_range(acc0[i] + a0, j0 + r0, acc1[i] + a1, j1 + r1, h),
-                env.acceleration[i],
-            ) {
+        // Whether q̇ keeps one sign over the sub-step (rigorous range).
+        let monotone = |k: usize, (q0, q1): ([f64; 3], [f64; 3])| {
+            let er = bounds.errors(k, size).1;
+            let (lo, hi) = range(q0[1], q0[2], q1[1], q1[2], h);
+            lo - er > 0.0 || hi + er < 0.0
+        };
+        // |q| cannot pass `peak` inside: bounded below it, or monotone.
+        let clear = |k: usize, peak: f64| {
+            let q = ends(k);
+            let (lo, hi) = values(k, q);
+            lo.abs().max(hi.abs()) <= peak || monotone(k, q)
+        };
+        let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
+        for (k, &d) in self.layout.gaps.iter().enumerate() {
+            if values(base + k, ends(base + k)).1 >= d {
                 return false;
             }
         }
-        let diff =
-            |x: &[f64], s: &super::layout::Storey| x[s.upper] - s.lower.map_or(0.0, |l| x[l]);
-        for (k, s) in self.layout.storeys.iter().enumerate() {
-            let (d0, d1) = (diff(&self.u, s), diff(&u1, s));
-            let (r0s, r1s) = (diff(&self.v, s), diff(&v1, s));
-            if near(interior_range(d0, r0s, d1, r1s, h), env.drift[k]) {
+        let env = &self.envelope;
+        for i in 0..n {
+            if !clear(i, env.displacement[i])
+                || !clear(n + i, env.velocity[i])
+                || !clear(2 * n + i, env.acceleration[i])
+            {
                 return false;
             }
-            match self.config.branch[k] {
+        }
+        let base = 3 * n;
+        for (k, s) in self.layout.storeys.iter().enumerate() {
+            let q = ends(base + k);
+            let (lo, hi) = values(base + k, q);
+            let rate = || {
+                let er = bounds.errors(base + k, size).1;
+                let (rlo, rhi) = range(q.0[1], q.0[2], q.1[1], q.1[2], h);
+                (rlo - er, rhi + er)
+            };
+            let quiet = match self.config.branch[k] {
                 Branch::Elastic => {
                     let p = self.config.plastic[k];
-                    let limit = (1.0 - MARGIN) * s.yield_drift;
-                    if (d1 - p).abs() > limit
-                        || near(interior_range(d0 - p, r0s, d1 - p, r1s, h), s.yield_drift)
-                    {
-                        return false;
-                    }
+                    (lo - p).abs().max((hi - p).abs()) < s.yield_drift
                 }
-                sign => {
-                    let sg = if sign == Branch::Plus { 1.0 } else { -1.0 };
-                    let (q0, q1) = (diff(&acc0, s), diff(&acc1, s));
-                    let low = interior_range(sg * r0s, sg * q0, sg * r1s, sg * q1, h)
-                        .map_or(f64::INFINITY, |(lo, _)| lo);
-                    if sg * r1s <= 0.0 || low <= MARGIN * (sg * r0s).abs() {
-                        return false;
-                    }
-                }
-            }
-        }
-        for (k, p) in self.layout.facing.iter().enumerate() {
-            let (a, b) = (p.left_dof, p.right_dof);
-            let (x0, x1) = (self.u[a] - self.u[b], u1[a] - u1[b]);
-            let top = self.envelope.relative[k];
-            if let Some((_, hi)) = interior_range(x0, self.v[a] - self.v[b], x1, v1[a] - v1[b], h)
-                && hi > top - MARGIN * top.abs()
-            {
+                Branch::Plus => rate().0 > 0.0,
+                Branch::Minus => rate().1 < 0.0,
+            };
+            if !quiet || (lo.abs().max(hi.abs()) > env.drift[k] && !monotone(base + k, q)) {
                 return false;
             }
         }
-        for (p, &d) in self.layout.pairs.iter().zip(&self.layout.gaps) {
-            let (a, b) = (p.left_dof, p.right_dof);
-            let (x0, x1) = (self.u[a] - self.u[b], u1[a] - u1[b]);
-            let margin = MARGIN * (x0.abs().max(x1.abs()) + d);
-            if x1 - d > -margin {
-                return false;
-            }
-            if let Some((_, hi)) = interior_range(x0, self.v[a] - self.v[b], x1, v1[a] - v1[b], h)
-                && hi - d > -margin
-            {
+        let base = base + self.layout.storeys.len();
+        for k in 0..self.layout.facing.len() {
+            let q = ends(base + k);
+            if values(base + k, q).1 > env.relative[k] && !monotone(base + k, q) {
                 return false;
             }
         }
         self.u = u1;
         self.v = v1;
-        self.record_point(&acc1, a1);
+        self.record_point(&end.rates[2], a1);
+        self.stack = Some(((a1, r1, sigma), end));
         true
     }
 
@@ -291,6 +326,7 @@ impl Run<'_> {
 
     /// The sub-step to `tb` by Taylor steps from event to event.
     fn careful(&mut self, piece: &Piece, tb: f64) -> Result<(), RowError> {
+        self.stack = None;
         let n = self.layout.dofs;
         let mut un = vec![0.0; n];
         let mut vn = vec![0.0; n];

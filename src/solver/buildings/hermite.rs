@@ -1,44 +1,82 @@
 //! The cubic Hermite interpolant through a quantity's values and rates at
-//! both ends of a sub-step: a cheap estimate of its range inside, which
-//! decides whether the sub-step needs the Taylor series (an event or a peak
-//! may lie inside). With ωh ≤ 1 for the fastest mode the cubic is within
-//! about h⁴ max|q⁗|/384 ≤ 1/384 of the quantity's amplitude; the callers
-//! keep a margin of 1 % above that.
+//! both ends of a sub-step, and its range over the sub-step (SPEC §13).
+//!
+//! The interpolant H matches q and q̇ at 0 and h, so q − H vanishes to
+//! second order at both ends, and the classical remainder of Hermite
+//! interpolation gives, for some ξ in the sub-step,
+//!
+//! ```text
+//! q(t) − H(t) = q⁗(ξ)/4! · t²(t − h)²,   so   |q − H| ≤ h⁴/384 · max|q⁗|,
+//! ```
+//!
+//! since t²(h − t)² peaks at h⁴/16 at the midpoint. The range of H widened
+//! by that bound therefore holds q's range; [`super::bound`] supplies
+//! max|q⁗|.
 
-/// (min, max) over the interior turning points of the cubic through
-/// (0, q0, d0) and (h, q1, d1); `None` when the rate keeps its sign.
-pub fn interior_range(q0: f64, d0: f64, q1: f64, d1: f64, h: f64) -> Option<(f64, f64)> {
-    if (d0 > 0.0) == (d1 > 0.0) {
-        return None;
-    }
+/// (min, max) of the cubic through (0, q0, d0) and (h, q1, d1) over the
+/// whole sub-step: its ends and every interior turning point.
+pub fn range(q0: f64, d0: f64, q1: f64, d1: f64, h: f64) -> (f64, f64) {
     // H(θ) on θ ∈ [0, 1]: q0 + d0hθ + (3Δ − (2d0 + d1)h)θ² + ((d0 + d1)h − 2Δ)θ³.
     let dq = q1 - q0;
     let c1 = d0 * h;
     let c2 = 3.0 * dq - (2.0 * d0 + d1) * h;
     let c3 = (d0 + d1) * h - 2.0 * dq;
     let value = |t: f64| q0 + t * (c1 + t * (c2 + t * c3));
-    // H' = c1 + 2c2θ + 3c3θ².
-    let (a, b, c) = (3.0 * c3, 2.0 * c2, c1);
-    let mut lo = f64::INFINITY;
-    let mut hi = f64::NEG_INFINITY;
+    let mut lo = q0.min(q1);
+    let mut hi = q0.max(q1);
+    // The Bernstein control points q0 + d0h/3 and q1 − d1h/3 hold the cubic
+    // in their hull with the ends: inside the ends' range, so is the cubic.
+    let (b1, b2) = (q0 + c1 / 3.0, q1 - d1 * h / 3.0);
+    if b1 >= lo && b1 <= hi && b2 >= lo && b2 <= hi {
+        return (lo, hi);
+    }
     let mut take = |t: f64| {
-        if (0.0..=1.0).contains(&t) {
+        if t > 0.0 && t < 1.0 {
             let v = value(t);
             lo = lo.min(v);
             hi = hi.max(v);
         }
     };
-    if a.abs() < 1e-300 {
+    // H' = c1 + 2c2θ + 3c3θ².
+    let (a, b, c) = (3.0 * c3, 2.0 * c2, c1);
+    if a == 0.0 {
         if b != 0.0 {
             take(-c / b);
         }
     } else {
         let disc = b * b - 4.0 * a * c;
         if disc >= 0.0 {
+            // The stable pair of roots: q = −(b + sign(b)√disc)/2, θ = q/a, c/q.
             let r = disc.sqrt();
-            take((-b + r) / (2.0 * a));
-            take((-b - r) / (2.0 * a));
+            let q = -0.5 * (b + r.copysign(b));
+            take(q / a);
+            if q != 0.0 {
+                take(c / q);
+            }
         }
     }
-    (lo <= hi).then_some((lo, hi))
+    (lo, hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::range;
+
+    #[test]
+    fn holds_the_turning_points_and_the_ends() {
+        // sin on [0, π]: H has its peak near 1 at the middle.
+        let h = std::f64::consts::PI;
+        let (lo, hi) = range(0.0, 1.0, 0.0, -1.0, h);
+        assert_eq!(lo, 0.0);
+        assert!((hi - h / 4.0).abs() < 1e-12);
+        // Same-sign rates at both ends, two turning points inside.
+        let (lo, hi) = range(0.0, 1.0, 0.0, 1.0, 1.0);
+        assert!(lo < 0.0 && hi > 0.0);
+        // Monotone: the ends.
+        assert_eq!(range(1.0, 2.0, 3.0, 2.0, 1.0), (1.0, 3.0));
+        // A turning point just past an end, by the exact roots.
+        let (lo, hi) = range(0.0, 1.0, 0.0, -0.1, 1.0);
+        assert_eq!(lo, 0.0);
+        assert!(hi > 0.0);
+    }
 }

@@ -26,6 +26,7 @@
 //! - [`driver`]: the loop over sub-steps and events;
 //! - [`newmark`]: Newmark-β on the row, the second method.
 
+pub mod bound;
 pub mod config;
 pub mod driver;
 pub mod energy;

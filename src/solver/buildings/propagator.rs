@@ -13,52 +13,73 @@
 //!
 //! so w(h) = e^{𝒜h} w(0) exactly; the map keeps the rows of (u, u̇). The
 //! plastic offsets only enter through M⁻¹q, a part of the state, so one map
-//! serves every configuration with the same branches.
+//! serves every configuration with the same branches. The bounds of the
+//! quiet test ([`super::bound`]) depend on the same data and are cached with it.
 
 use std::collections::HashMap;
 
 use nalgebra::DMatrix;
 
+use super::bound::{Bounds, Watch};
 use super::system::System;
 
 /// Cache key: the branches, h and σ (as bits).
 pub type Key = (Vec<u8>, u64, u64);
 
-/// The cache of linear maps, and how it was used.
+/// The cache of linear maps with their quiet-test bounds, and how it was used.
 #[derive(Debug, Default)]
 pub struct Propagator {
-    maps: HashMap<Key, DMatrix<f64>>,
+    maps: HashMap<Key, (DMatrix<f64>, Bounds)>,
     /// Maps made (matrix exponentials computed).
     pub made: usize,
     /// Sub-steps taken with a cached map.
     pub used: usize,
 }
 
+/// The augmented matrix 𝒜 of `system` (no contact) on a piece with σ.
+pub fn augmented(system: &System, sigma: f64) -> DMatrix<f64> {
+    let n = system.load.len();
+    let d = 3 * n + 2;
+    let mut a = DMatrix::<f64>::zeros(d, d);
+    for i in 0..n {
+        a[(i, n + i)] = 1.0;
+        for j in 0..n {
+            a[(n + i, j)] = -system.stiffness[(i, j)];
+            a[(n + i, n + j)] = -system.damping[(i, j)];
+        }
+        a[(n + i, 2 * n)] = -1.0;
+        a[(n + i, 2 * n + 2 + i)] = 1.0;
+    }
+    a[(2 * n, 2 * n + 1)] = 1.0;
+    a[(2 * n + 1, 2 * n)] = sigma;
+    a
+}
+
 impl Propagator {
-    /// The map of `system` (no contact) over h on a piece with σ.
-    pub fn map(&mut self, key: Vec<u8>, system: &System, h: f64, sigma: f64) -> &DMatrix<f64> {
+    /// The map of `system` (no contact) over h on a piece with σ, and the
+    /// bounds of the quantities `watch` over it ([`Bounds`], scaled by the
+    /// row's fastest rate `rate`).
+    pub fn map(
+        &mut self,
+        key: Vec<u8>,
+        system: &System,
+        (h, sigma): (f64, f64),
+        rate: f64,
+        watch: &[Watch],
+    ) -> (&DMatrix<f64>, &Bounds) {
         let n = system.load.len();
         self.used += 1;
         let made = &mut self.made;
-        self.maps
+        let (map, bounds) = self
+            .maps
             .entry((key, h.to_bits(), sigma.to_bits()))
             .or_insert_with(|| {
                 *made += 1;
-                let d = 3 * n + 2;
-                let mut a = DMatrix::<f64>::zeros(d, d);
-                for i in 0..n {
-                    a[(i, n + i)] = 1.0;
-                    for j in 0..n {
-                        a[(n + i, j)] = -system.stiffness[(i, j)];
-                        a[(n + i, n + j)] = -system.damping[(i, j)];
-                    }
-                    a[(n + i, 2 * n)] = -1.0;
-                    a[(n + i, 2 * n + 2 + i)] = 1.0;
-                }
-                a[(2 * n, 2 * n + 1)] = 1.0;
-                a[(2 * n + 1, 2 * n)] = sigma;
-                (a * h).exp().rows(0, 2 * n).into_owned()
-            })
+                let a = augmented(system, sigma);
+                let bounds = Bounds::new(&a, n, h, rate, watch);
+                ((a * h).exp().rows(0, 2 * n).into_owned(), bounds)
+            });
+        (map, bounds)
     }
 
     /// Distinct maps held.

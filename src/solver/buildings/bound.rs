@@ -1,0 +1,211 @@
+//! Rigorous ranges of the watched quantities over a sub-step out of contact
+//! (SPEC §13), which decide whether the cached map may take it.
+//!
+//! Out of contact, on fixed branches, the augmented state w = (u, u̇, a_g,
+//! ȧ_g, M⁻¹q) of [`super::propagator`] moves by w' = 𝒜w exactly, so every
+//! watched quantity q = cᵀw (a displacement, a velocity, an absolute
+//! acceleration, a drift, a relative displacement) has the derivatives
+//! q⁽ᵏ⁾ = cᵀ𝒜ᵏw, all linear in the state. At the two ends of a sub-step
+//! q, q̇ and q̈ are therefore known exactly, and the Hermite cubic through
+//! (q, q̇) has the range of q within h⁴/384 · max|q⁗| ([`super::hermite`]);
+//! the cubic through (q̇, q̈) bounds q̇ the same way with max|q⁽⁵⁾|.
+//!
+//! The bound on max|q⁽ᵏ⁾| over the sub-step: with the diagonal scaling
+//! D = diag(sI, I, 1/s, 1/s², I/s) (s the fastest rate of the row, so
+//! that 𝒜̃ = D𝒜D⁻¹ has entries of order s and ‖𝒜̃‖h stays a few units) and
+//! the ∞-norm,
+//!
+//! ```text
+//! |q⁽ᵏ⁾(t)| = |(cᵀ𝒜ᵏD⁻¹)(D w(t))| ≤ ‖cᵀ𝒜ᵏD⁻¹‖₁ · ‖e^{𝒜̃t}‖∞ · ‖D w(0)‖∞,
+//! ```
+//!
+//! and sup over t ∈ [0, h] of ‖e^{𝒜̃t}‖∞ is at most B = max_j ‖e^{𝒜̃t_j}‖∞ ·
+//! e^{‖𝒜̃‖∞h/N} on the grid t_j = jh/N, j < N: any t lies in some
+//! [t_j, t_j + h/N], and e^{𝒜̃t} = e^{𝒜̃(t − t_j)} e^{𝒜̃t_j} with
+//! ‖e^{𝒜̃τ}‖ ≤ e^{‖𝒜̃‖τ}. The row norms and B depend only on the
+//! configuration, h and σ, so they are made with its map and cached. A
+//! sub-step then costs one ∞-norm of the state and, at each end, ü and its
+//! next two rates for every floor (three products by M⁻¹K and M⁻¹C,
+//! O(dofs²)), of which each quantity's q, q̇, q̈ are a few terms. The bound
+//! follows the whole state (a high mode's swing shows in q⁗ even when q's
+//! own end values are small), which is what the Hermite estimate alone
+//! cannot see. B is widened by a relative 1e-6 for the round-off of the
+//! exponential and the norms, far above it.
+
+use nalgebra::{DMatrix, DVector, DVectorView};
+
+use super::system::System;
+
+/// Grid of the sweep of ‖e^{𝒜̃t}‖ over the sub-step.
+const GRID: usize = 16;
+/// Relative allowance for the round-off of the exponential and the norms
+/// (of order 1e-13 for the rows' sizes met here).
+const ROUNDING: f64 = 1e-6;
+
+/// A watched quantity: q = Σ weight · x_i^(order) over its terms (floor i,
+/// weight), where order 0 is u, 1 is u̇ and 2 the absolute acceleration
+/// ü + a_g (the ground term taken once per unit weight).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Watch {
+    pub terms: Vec<(usize, f64)>,
+    pub order: usize,
+}
+
+/// The per-configuration part of the bounds: the error allowances of each
+/// quantity's two Hermite cubics per unit of ‖D w(0)‖∞.
+#[derive(Debug, Clone)]
+pub struct Bounds {
+    /// h⁴/384 · ‖cᵀ𝒜⁴D⁻¹‖₁ · B: the cubic of q.
+    value_error: Vec<f64>,
+    /// h⁴/384 · ‖cᵀ𝒜⁵D⁻¹‖₁ · B: the cubic of q̇.
+    rate_error: Vec<f64>,
+    scale: Vec<f64>,
+}
+
+/// u, u̇, ü, u⃛, u⁗ of every floor at one instant out of contact, and the
+/// ground's a_g, ȧ_g, ä_g: the exact derivatives of the motion there.
+#[derive(Debug, Clone, Default)]
+pub struct Stack {
+    pub rates: [Vec<f64>; 5],
+    pub ground: [f64; 3],
+}
+
+impl Stack {
+    /// At (u, u̇) under ground (a, ȧ) on a piece with σ, for `system`:
+    /// ü = −M⁻¹Ku − M⁻¹Cu̇ + M⁻¹q − a_g, then each further rate by the same
+    /// equation differentiated (the load constant, ä_g = σa_g).
+    pub fn at(
+        system: &System,
+        (u, v): (&[f64], &[f64]),
+        (a, rate, sigma): (f64, f64, f64),
+    ) -> Stack {
+        let n = u.len();
+        let ground = [a, rate, sigma * a];
+        let next = |x: &[f64], y: &[f64], g: f64, load: bool| -> Vec<f64> {
+            let mut out = if load {
+                DVector::from_iterator(n, system.load.iter().map(|q| q - g))
+            } else {
+                DVector::from_element(n, -g)
+            };
+            out.gemv(-1.0, &system.stiffness, &DVectorView::from_slice(x, n), 1.0);
+            out.gemv(-1.0, &system.damping, &DVectorView::from_slice(y, n), 1.0);
+            out.data.into()
+        };
+        let acc = next(u, v, a, true);
+        let jerk = next(v, &acc, rate, false);
+        let snap = next(&acc, &jerk, sigma * a, false);
+        Stack {
+            rates: [u.to_vec(), v.to_vec(), acc, jerk, snap],
+            ground,
+        }
+    }
+
+    /// q, q̇, q̈ of `w`.
+    pub fn of(&self, w: &Watch) -> [f64; 3] {
+        let mut out = [0.0; 3];
+        for (k, out) in out.iter_mut().enumerate() {
+            let x = &self.rates[w.order + k];
+            for &(i, c) in &w.terms {
+                *out += c * x[i];
+                if w.order == 2 {
+                    *out += c * self.ground[k];
+                }
+            }
+        }
+        out
+    }
+}
+
+fn row_times(r: &[f64], a: &DMatrix<f64>) -> Vec<f64> {
+    (0..a.ncols())
+        .map(|j| r.iter().enumerate().map(|(i, &x)| x * a[(i, j)]).sum())
+        .collect()
+}
+
+fn inf_norm(a: &DMatrix<f64>) -> f64 {
+    a.row_iter()
+        .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+        .fold(0.0, f64::max)
+}
+
+impl Bounds {
+    /// For the augmented matrix `a` (dofs `n`), over length `h`, with the
+    /// scaling rate `s`.
+    pub fn new(a: &DMatrix<f64>, n: usize, h: f64, s: f64, watch: &[Watch]) -> Bounds {
+        let d = a.nrows();
+        let mut scale = vec![1.0; d];
+        for i in 0..n {
+            scale[i] = s;
+            scale[2 * n + 2 + i] = 1.0 / s;
+        }
+        scale[2 * n] = 1.0 / s;
+        scale[2 * n + 1] = 1.0 / (s * s);
+        let scaled = DMatrix::from_fn(d, d, |i, j| scale[i] * a[(i, j)] / scale[j]);
+        let step = (&scaled * (h / GRID as f64)).exp();
+        let mut power = DMatrix::<f64>::identity(d, d);
+        let mut sweep = 1.0f64;
+        for _ in 1..GRID {
+            power = &step * &power;
+            sweep = sweep.max(inf_norm(&power));
+        }
+        let sweep = sweep * (inf_norm(&scaled) * h / GRID as f64).exp() * (1.0 + ROUNDING);
+        let factor = h.powi(4) / 384.0 * sweep;
+        let scaled_norm = |r: &[f64]| {
+            r.iter()
+                .zip(&scale)
+                .map(|(x, s)| (x / s).abs())
+                .sum::<f64>()
+        };
+        let mut value_error = Vec::with_capacity(watch.len());
+        let mut rate_error = Vec::with_capacity(watch.len());
+        for w in watch {
+            let mut c = vec![0.0; d];
+            for &(i, x) in &w.terms {
+                match w.order {
+                    0 => c[i] += x,
+                    1 => c[n + i] += x,
+                    _ => {
+                        // ü_i + a_g = (row n + i of 𝒜)·w + a_g.
+                        for (j, c) in c.iter_mut().enumerate() {
+                            *c += x * a[(n + i, j)];
+                        }
+                        c[2 * n] += x;
+                    }
+                }
+            }
+            let r1 = row_times(&c, a);
+            let r2 = row_times(&r1, a);
+            let r3 = row_times(&r2, a);
+            let r4 = row_times(&r3, a);
+            let r5 = row_times(&r4, a);
+            value_error.push(factor * scaled_norm(&r4));
+            rate_error.push(factor * scaled_norm(&r5));
+        }
+        Bounds {
+            value_error,
+            rate_error,
+            scale,
+        }
+    }
+
+    /// ‖D w‖∞ of the augmented state at (u, u̇) under ground (a, ȧ) with
+    /// load M⁻¹q.
+    pub fn size(&self, (u, v): (&[f64], &[f64]), (a, rate): (f64, f64), load: &[f64]) -> f64 {
+        let n = u.len();
+        let s = &self.scale;
+        let mut m = (a * s[2 * n]).abs().max((rate * s[2 * n + 1]).abs());
+        for i in 0..n {
+            m = m
+                .max((u[i] * s[i]).abs())
+                .max((v[i] * s[n + i]).abs())
+                .max((load[i] * s[2 * n + 2 + i]).abs());
+        }
+        m
+    }
+
+    /// Bounds on the errors of the cubics of q and q̇ of quantity `k`, for a
+    /// sub-step starting from a state of size `size` ([`Bounds::size`]).
+    pub fn errors(&self, k: usize, size: f64) -> (f64, f64) {
+        (self.value_error[k] * size, self.rate_error[k] * size)
+    }
+}
