@@ -155,19 +155,7 @@ fn record_speed(args: &BenchArgs, spec: &str) -> Result<(), CliError> {
     use crate::model::{Excitation, RecordMotion};
     let excitation = match spec.trim().strip_prefix("synthetic:") {
         Some(n) => {
-            let samples: usize =
-                n.parse().ok().filter(|&n| n >= 11).ok_or_else(|| {
-                    CliError::Usage(format!("synthetic:N needs N ≥ 11, not `{n}`"))
-                })?;
-            let simulation = crate::model::simulated::Simulation {
-                dt: 0.005,
-                duration: 0.005 * (samples - 1) as f64,
-                ..Default::default()
-            };
-            simulation
-                .validate()
-                .map_err(|e| CliError::Usage(e.to_string()))?;
-            let record = simulation.record(spec, crate::model::simulated::DEFAULT_SEED, 1);
+            let record = super::records::synthetic_record(spec, n)?;
             Excitation::Record(RecordMotion::new(crate::model::record::intern(record)))
         }
         None => Excitation::parse(spec)

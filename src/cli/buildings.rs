@@ -102,9 +102,7 @@ impl BuildingsArgs {
                 omega,
                 end: period,
             },
-            spec if spec.starts_with("synthetic:") => {
-                Ground::from_record(&synthetic(&spec["synthetic:".len()..])?, scale)
-            }
+            spec if spec.starts_with("synthetic:") => Ground::from_record(&synthetic(spec)?, scale),
             spec if spec.starts_with("record:") => {
                 let record = crate::model::record::read(&spec["record:".len()..])
                     .map_err(|e| CliError::Usage(e.to_string()))?;
@@ -131,27 +129,10 @@ impl BuildingsArgs {
     }
 }
 
-/// `synthetic:N`: one simulated record of N samples at DT = 0.005 s
-/// (seed 1, as `records synth`), PGA 0.3 g.
-fn synthetic(n: &str) -> Result<crate::model::record::Record, CliError> {
-    let samples: usize = n
-        .parse()
-        .ok()
-        .filter(|&n| n >= 11)
-        .ok_or_else(|| CliError::Usage(format!("synthetic:N needs N ≥ 11, not `{n}`")))?;
-    let simulation = crate::model::simulated::Simulation {
-        dt: 0.005,
-        duration: 0.005 * (samples - 1) as f64,
-        ..Default::default()
-    };
-    simulation
-        .validate()
-        .map_err(|e| CliError::Usage(e.to_string()))?;
-    Ok(simulation.record(
-        &format!("synthetic:{n}"),
-        crate::model::simulated::DEFAULT_SEED,
-        1,
-    ))
+/// `synthetic:N`: one simulated record of N samples at DT = 0.005 s, PGA 0.3 g.
+fn synthetic(spec: &str) -> Result<crate::model::record::Record, CliError> {
+    let n = &spec["synthetic:".len()..];
+    super::records::synthetic_record(&format!("synthetic:{n}"), n)
 }
 
 /// `pounding bench --buildings`: work-precision rows of both methods

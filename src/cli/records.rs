@@ -115,6 +115,25 @@ impl SynthArgs {
 }
 
 /// A parameter out of range, named by its flag: `--zeta-g -1: must be in (0, 5]`.
+/// `synthetic:N` of `--excitation`: one simulated record of N ≥ 11 samples
+/// at DT = 0.005 s (seed 1, as `records synth`), named `name`.
+pub fn synthetic_record(name: &str, n: &str) -> Result<crate::model::record::Record, CliError> {
+    let samples: usize = n
+        .parse()
+        .ok()
+        .filter(|&n| n >= 11)
+        .ok_or_else(|| CliError::Usage(format!("synthetic:N needs N ≥ 11, not `{n}`")))?;
+    let simulation = Simulation {
+        dt: 0.005,
+        duration: 0.005 * (samples - 1) as f64,
+        ..Default::default()
+    };
+    simulation
+        .validate()
+        .map_err(|e| CliError::Usage(e.to_string()))?;
+    Ok(simulation.record(name, simulated::DEFAULT_SEED, 1))
+}
+
 fn flag_error(e: SimulationError) -> CliError {
     CliError::Usage(format!(
         "--{} {}: must be {}",
