@@ -182,16 +182,6 @@ impl ContactConstants {
         let e = self.restitution;
         let v0 = approach_velocity.max(self.min_impact_velocity);
         let k = self.hertz_stiffness;
-        let hertzian = |hysteresis: f64, approach_damping: f64| ContactLaw {
-            stiffness: 0.0,
-            linear_damping: 0.0,
-            hertz_damping: 0.0,
-            hertzian: Some(Hertzian {
-                stiffness: k,
-                hysteresis,
-                approach_damping,
-            }),
-        };
         match self.model {
             ContactModel::Kelvin | ContactModel::ImprovedKelvin => ContactLaw::new(
                 self.model,
@@ -201,17 +191,40 @@ impl ContactConstants {
                 approach_velocity,
                 self.min_impact_velocity,
             ),
-            ContactModel::Hertz => hertzian(0.0, 0.0),
-            ContactModel::HertzDamp => hertzian(3.0 * (1.0 - e * e) / (4.0 * v0), 0.0),
-            ContactModel::HuntCrossley => hertzian(3.0 * (1.0 - e) / (2.0 * v0), 0.0),
-            ContactModel::Jankowski => {
-                hertzian(0.0, 2.0 * jankowski_damping_ratio(e) * (k * m_bar).sqrt())
-            }
+            hertzian => ContactLaw::hertz_type(hertzian, k, m_bar, e, v0),
         }
     }
 }
 
 impl ContactLaw {
+    /// A Hertz-type law of SPEC §10 in any consistent units: stiffness β
+    /// (Π_K, or N/m^{3/2}), reduced mass m̄, restitution e and the floored
+    /// approach velocity v₀. λ = 3(1 − e²)/(4v₀) (Hertz with damping),
+    /// 3(1 − e)/(2v₀) (Hunt–Crossley); η = 2ζ_J√(βm̄) (Jankowski); the bare
+    /// Hertz law has neither. The Kelvin family is not Hertz-type and must
+    /// not be asked for: it is given the bare Hertz law.
+    pub fn hertz_type(model: ContactModel, stiffness: f64, m_bar: f64, e: f64, v0: f64) -> Self {
+        let (hysteresis, approach_damping) = match model {
+            ContactModel::HertzDamp => (3.0 * (1.0 - e * e) / (4.0 * v0), 0.0),
+            ContactModel::HuntCrossley => (3.0 * (1.0 - e) / (2.0 * v0), 0.0),
+            ContactModel::Jankowski => (
+                0.0,
+                2.0 * jankowski_damping_ratio(e) * (stiffness * m_bar).sqrt(),
+            ),
+            ContactModel::Hertz | ContactModel::Kelvin | ContactModel::ImprovedKelvin => (0.0, 0.0),
+        };
+        ContactLaw {
+            stiffness: 0.0,
+            linear_damping: 0.0,
+            hertz_damping: 0.0,
+            hertzian: Some(Hertzian {
+                stiffness,
+                hysteresis,
+                approach_damping,
+            }),
+        }
+    }
+
     /// The Kelvin-family law for a contact that began with approach velocity
     /// `approach_velocity` (δ̇ at onset). The Hertz-type laws need Π_K:
     /// [`ContactConstants::law`].

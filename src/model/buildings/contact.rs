@@ -8,7 +8,7 @@
 //!   so the one-storey row is the pair of SPEC §2 exactly.
 
 use crate::model::ContactModel;
-use crate::model::contact::{ContactLaw, Hertzian, jankowski_damping_ratio, kelvin_damping_ratio};
+use crate::model::contact::{ContactLaw, kelvin_damping_ratio};
 
 use super::row::{FloorPair, Row};
 
@@ -31,24 +31,9 @@ pub fn pair_law(row: &Row, pair: &FloorPair, approach_velocity: f64) -> ContactL
         hertz_damping,
         hertzian: None,
     };
-    let hertzian = |hysteresis, approach_damping| ContactLaw {
-        stiffness: 0.0,
-        linear_damping: 0.0,
-        hertz_damping: 0.0,
-        hertzian: Some(Hertzian {
-            stiffness: k,
-            hysteresis,
-            approach_damping,
-        }),
-    };
     match row.model {
         ContactModel::Kelvin => kelvin(2.0 * kelvin_damping_ratio(e) * (k * m_bar).sqrt(), 0.0),
         ContactModel::ImprovedKelvin => kelvin(0.0, k * 3.0 * (1.0 - e) / (2.0 * e * v0)),
-        ContactModel::Hertz => hertzian(0.0, 0.0),
-        ContactModel::HertzDamp => hertzian(3.0 * (1.0 - e * e) / (4.0 * v0), 0.0),
-        ContactModel::HuntCrossley => hertzian(3.0 * (1.0 - e) / (2.0 * v0), 0.0),
-        ContactModel::Jankowski => {
-            hertzian(0.0, 2.0 * jankowski_damping_ratio(e) * (k * m_bar).sqrt())
-        }
+        hertzian => ContactLaw::hertz_type(hertzian, k, m_bar, e, v0),
     }
 }
