@@ -20,9 +20,8 @@ fn the_balance_closes_with_the_exact_method() {
             &row,
             &ground,
             &RowOptions {
-                duration: ground.end() + 2.0,
-                max_substep: None,
                 energy: true,
+                ..RowOptions::lasting(ground.end() + 2.0)
             },
         )
         .unwrap();

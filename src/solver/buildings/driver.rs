@@ -30,7 +30,7 @@ use super::layout::Layout;
 use super::peaks::{Envelope, raise};
 use super::poly;
 use super::propagator::{Propagator, apply};
-use super::result::{FloorPeaks, PairImpact, PairResult, RowRun};
+use super::result::{FloorPeaks, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
 use super::taylor::{ORDER, Series};
 
@@ -44,6 +44,9 @@ pub struct RowOptions {
     /// Take the energy balance ([`super::energy`]): every sub-step then goes
     /// by the series, on which the integrals are taken.
     pub energy: bool,
+    /// Keep every floor's displacement at the end of every sub-step
+    /// ([`super::result::RowTrace`]), for drawing the row in time.
+    pub trace: bool,
 }
 
 impl RowOptions {
@@ -53,6 +56,7 @@ impl RowOptions {
             duration,
             max_substep: None,
             energy: false,
+            trace: false,
         }
     }
 }
@@ -179,6 +183,7 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
             (RowEnergy::default(), x, w)
         }),
     };
+    let mut trace = options.trace.then(|| RowTrace::new(n));
     for piece in ground.pieces(options.duration) {
         let length = piece.length;
         if length <= 0.0 {
@@ -196,9 +201,14 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
                 run.careful(&piece, tb)?;
             }
             run.t = tb;
+            if let Some(trace) = trace.as_mut() {
+                trace.push(tb, &run.u);
+            }
         }
     }
-    Ok(run.finish(options.duration))
+    let mut done = run.finish(options.duration);
+    done.trace = trace;
+    Ok(done)
 }
 
 impl Run<'_> {
@@ -613,6 +623,7 @@ impl Run<'_> {
             map_steps: self.propagator.used,
             series_steps: self.series_steps,
             configurations: self.configurations.len(),
+            trace: None,
         }
     }
 }

@@ -43,4 +43,4 @@ pub mod taylor;
 pub use driver::{RowError, RowOptions, run_row};
 pub use energy::RowEnergy;
 pub use newmark::run_newmark;
-pub use result::{FloorPeaks, PairImpact, PairResult, RowRun};
+pub use result::{FloorPeaks, PairImpact, PairResult, RowRun, RowTrace};

@@ -315,5 +315,6 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         map_steps: 0,
         series_steps: 0,
         configurations: 0,
+        trace: None,
     })
 }

@@ -74,6 +74,63 @@ pub struct RowRun {
     pub series_steps: usize,
     /// Configurations (branch patterns) seen out of contact.
     pub configurations: usize,
+    /// The floors' displacements over time, when asked for
+    /// ([`super::RowOptions::trace`]).
+    pub trace: Option<RowTrace>,
+}
+
+/// The displacement u_i(t) of every floor at the end of every sub-step:
+/// exact there (SPEC §13's closed form or its series), and at most one
+/// sub-step apart (one radian of the fastest mode, and the record's samples).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RowTrace {
+    /// Floors in the row's order.
+    pub dofs: usize,
+    /// Times (s), increasing, from 0.
+    pub times: Vec<f64>,
+    /// u of every floor at each time, `dofs` values a time (m).
+    pub displacement: Vec<f64>,
+}
+
+impl RowTrace {
+    pub fn new(dofs: usize) -> RowTrace {
+        RowTrace {
+            dofs,
+            times: vec![0.0],
+            displacement: vec![0.0; dofs],
+        }
+    }
+
+    /// Appends the state u at time t.
+    pub fn push(&mut self, t: f64, u: &[f64]) {
+        self.times.push(t);
+        self.displacement.extend_from_slice(u);
+    }
+
+    /// The displacements at the k-th recorded time.
+    pub fn point(&self, k: usize) -> &[f64] {
+        &self.displacement[k * self.dofs..(k + 1) * self.dofs]
+    }
+
+    /// u of every floor at time t, linear between the two recorded times
+    /// around it (the recorded values themselves at those times); the ends
+    /// hold outside [0, last time].
+    pub fn at(&self, t: f64) -> Vec<f64> {
+        let k = self.times.partition_point(|&s| s <= t);
+        if k == 0 {
+            return self.point(0).to_vec();
+        }
+        if k == self.times.len() {
+            return self.point(k - 1).to_vec();
+        }
+        let (t0, t1) = (self.times[k - 1], self.times[k]);
+        let w = if t1 > t0 { (t - t0) / (t1 - t0) } else { 0.0 };
+        self.point(k - 1)
+            .iter()
+            .zip(self.point(k))
+            .map(|(a, b)| a + w * (b - a))
+            .collect()
+    }
 }
 
 impl RowRun {
