@@ -12,7 +12,7 @@ use super::params::ParamArgs;
 use crate::accuracy::timing::median;
 use crate::analysis::row_report::RowReport;
 use crate::analysis::work;
-use crate::model::buildings::matrices::periods;
+use crate::model::buildings::matrices::default_tail;
 use crate::model::buildings::{Ground, Row, load_with};
 use crate::model::physical::parse_acceleration;
 use crate::solver::buildings::{RowError, RowOptions, run_newmark, run_row};
@@ -114,12 +114,7 @@ impl BuildingsArgs {
                 )));
             }
         };
-        let longest = row
-            .buildings
-            .iter()
-            .map(|b| periods(b)[0])
-            .fold(0.0, f64::max);
-        let tail = self.tail.unwrap_or(4.0 * longest);
+        let tail = self.tail.unwrap_or_else(|| default_tail(row));
         if !(tail >= 0.0 && tail.is_finite()) {
             return Err(CliError::Usage(format!(
                 "--tail {tail}: must be a finite number ≥ 0 (s)"

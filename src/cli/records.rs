@@ -114,7 +114,6 @@ impl SynthArgs {
     }
 }
 
-/// A parameter out of range, named by its flag: `--zeta-g -1: must be in (0, 5]`.
 /// `synthetic:N` of `--excitation`: one simulated record of N ≥ 11 samples
 /// at DT = 0.005 s (seed 1, as `records synth`), named `name`.
 pub fn synthetic_record(name: &str, n: &str) -> Result<crate::model::record::Record, CliError> {
@@ -123,17 +122,10 @@ pub fn synthetic_record(name: &str, n: &str) -> Result<crate::model::record::Rec
         .ok()
         .filter(|&n| n >= 11)
         .ok_or_else(|| CliError::Usage(format!("synthetic:N needs N ≥ 11, not `{n}`")))?;
-    let simulation = Simulation {
-        dt: 0.005,
-        duration: 0.005 * (samples - 1) as f64,
-        ..Default::default()
-    };
-    simulation
-        .validate()
-        .map_err(|e| CliError::Usage(e.to_string()))?;
-    Ok(simulation.record(name, simulated::DEFAULT_SEED, 1))
+    Simulation::synthetic(name, samples).map_err(|e| CliError::Usage(e.to_string()))
 }
 
+/// A parameter out of range, named by its flag: `--zeta-g -1: must be in (0, 5]`.
 fn flag_error(e: SimulationError) -> CliError {
     CliError::Usage(format!(
         "--{} {}: must be {}",

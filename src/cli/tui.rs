@@ -2,13 +2,18 @@
 //! open the terminal explorer.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use clap::Args;
 
 use super::CliError;
+use super::buildings::BuildingsArgs;
 use super::params::user_preset_dir;
 use crate::model::Preset;
 use crate::tui::app::{App, Exit, Look};
+use crate::tui::row_keys::DEFAULT_GROUND;
+use crate::tui::row_pane::RowPane;
+use crate::tui::scene::Scene;
 use crate::tui::{explorer, presets, terminal};
 
 #[derive(Debug, Clone, Default, Args)]
@@ -25,6 +30,17 @@ pub struct TuiArgs {
     /// Directory of the user's own presets [default: $XDG_CONFIG_HOME/pounding/presets].
     #[arg(long, value_name = "DIR")]
     pub presets: Option<PathBuf>,
+    /// Open the buildings scene on this row of shear buildings (SPEC §13):
+    /// a built-in row (two-buildings, block-and-frame, three-in-series) or
+    /// a path to a row preset.
+    #[arg(long, value_name = "NAME|PATH")]
+    pub buildings: Option<String>,
+    /// The row's ground: synthetic:N, record:PATH, sine or pulse-a [default: synthetic:2000].
+    #[arg(long, value_name = "GROUND")]
+    pub excitation: Option<String>,
+    /// Scale factor on the row's ground.
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    pub scale: Option<f64>,
 }
 
 /// Where exports and figures are proposed: the current directory when it
@@ -58,7 +74,28 @@ pub fn app(args: &TuiArgs) -> Result<App, CliError> {
     let list = presets::load(dir.as_deref());
     let mut app = App::new(left, right, list, dir, look);
     app.export_dir = export_dir();
+    if let Some(source) = &args.buildings {
+        app.row = Some(row_pane(args, source)?);
+        app.view.scene = Scene::Buildings;
+    } else if args.excitation.is_some() || args.scale.is_some() {
+        return Err(CliError::Usage(
+            "--excitation and --scale of the explorer apply to a row: give --buildings".into(),
+        ));
+    }
     Ok(app)
+}
+
+/// The row of `--buildings` on its ground, checked as `run --buildings` checks them.
+fn row_pane(args: &TuiArgs, source: &str) -> Result<RowPane, CliError> {
+    let buildings = BuildingsArgs {
+        buildings: Some(source.to_string()),
+        scale: args.scale,
+        ..BuildingsArgs::default()
+    };
+    let row = buildings.row(&[], None)?;
+    let excitation = args.excitation.as_deref().unwrap_or(DEFAULT_GROUND);
+    let (ground, name, _) = buildings.ground(Some(excitation), None, &row)?;
+    RowPane::open(source, Arc::new(ground), &name, None).map_err(CliError::Usage)
 }
 
 pub fn execute(args: &TuiArgs) -> Result<(), CliError> {

@@ -233,6 +233,19 @@ impl Simulation {
         out.iter().map(|a| a * scale).collect()
     }
 
+    /// `synthetic:N`: one record of `samples` ≥ 11 samples at DT = 0.005 s
+    /// with the default filter, PGA and envelope, record 1 of the default
+    /// seed (as `records synth`), named `name`.
+    pub fn synthetic(name: &str, samples: usize) -> Result<Record, SimulationError> {
+        let simulation = Simulation {
+            dt: 0.005,
+            duration: 0.005 * samples.saturating_sub(1) as f64,
+            ..Default::default()
+        };
+        simulation.validate()?;
+        Ok(simulation.record(name, DEFAULT_SEED, 1))
+    }
+
     /// Record `index` of `seed` as a [`Record`] named `name`, built exactly
     /// as the `.AT2` reader builds it from [`Simulation::at2_text`].
     pub fn record(&self, name: &str, seed: u64, index: usize) -> Record {

@@ -20,6 +20,7 @@ use super::map_grid;
 use super::physical::{self, Base};
 use super::presets;
 use super::risk_job::{self, RiskSpec};
+use super::row_pane::RowPane;
 use super::scene::MAP_Y;
 use super::scene::{Scene, View};
 use super::text_field::{FieldKey, TextField};
@@ -104,6 +105,15 @@ pub enum Mode {
     },
 }
 
+/// One line of the preset picker.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PickerEntry {
+    pub name: String,
+    /// `built-in`, `yours` or `row`.
+    pub kind: &'static str,
+    pub description: String,
+}
+
 /// How the process should end (the exit status follows the signal).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Exit {
@@ -146,6 +156,8 @@ pub struct App {
     pub jobs: Jobs,
     /// Whether mouse buttons are captured.
     pub mouse: bool,
+    /// The row of buildings of the buildings scene, once opened.
+    pub row: Option<RowPane>,
 }
 
 impl App {
@@ -170,6 +182,7 @@ impl App {
             look,
             jobs: Jobs::default(),
             mouse: true,
+            row: None,
         }
     }
 
@@ -200,7 +213,13 @@ impl App {
 
     /// Rows of the panes.
     pub fn pane_rows(&self) -> usize {
-        if self.physical_view() {
+        if let Some(pane) = self
+            .row
+            .as_ref()
+            .filter(|_| self.scene() == Scene::Buildings)
+        {
+            pane.fields().len()
+        } else if self.physical_view() {
             physical::ROWS.len()
         } else {
             FIELDS.len()
@@ -264,6 +283,11 @@ impl App {
             Scene::Risk => Need {
                 risk: Some(self.risk_spec()),
                 ..Need::runs(vec![active])
+            },
+            // The row alone: the pair's runs are not on screen.
+            Scene::Buildings => Need {
+                row: self.row.as_ref().map(|p| p.spec()),
+                ..Need::default()
             },
             Scene::Spectrum => {
                 let p = self.active_params();
@@ -366,7 +390,7 @@ impl App {
     /// A click selects a pane row or puts the cursor on the time axis; the
     /// wheel nudges only over the panes.
     pub fn on_mouse(&mut self, m: MouseEvent) {
-        if self.mode != Mode::Normal {
+        if self.mode != Mode::Normal || self.scene() == Scene::Buildings {
             return;
         }
         let pane = layout::pane_hit(self.size, self.pane_rows(), self.selected, m.column, m.row);
@@ -461,6 +485,9 @@ impl App {
             return None;
         }
         self.status = None;
+        if self.scene() == Scene::Buildings && self.on_row_key(key, size).is_some() {
+            return None;
+        }
         let tau_end = self.tau_end();
         let columns = layout::chart_columns(self.size);
         match key.code {
@@ -613,6 +640,9 @@ impl App {
             KeyCode::Char(c) => {
                 if let Some(s) = Scene::ALL.iter().find(|s| s.key() == c) {
                     self.view.scene = *s;
+                    if *s == Scene::Buildings {
+                        self.ensure_row();
+                    }
                 }
             }
             _ => {}
@@ -722,6 +752,13 @@ impl App {
             }
         }
         let text = field.text();
+        if self.scene() == Scene::Buildings {
+            if let Err(e) = self.on_row_edit(&text) {
+                field.error = Some(e);
+                self.mode = Mode::Editing(field);
+            }
+            return;
+        }
         let s = &self.sets[self.active];
         let outcome = if self.physical_view() {
             let base = s.base.expect("physical view has a base");
@@ -745,8 +782,46 @@ impl App {
         }
     }
 
+    /// The picker's entries: in the buildings scene the row presets, else
+    /// the pair's presets followed by the rows.
+    pub fn picker_entries(&self) -> Vec<PickerEntry> {
+        let rows = super::row_keys::row_presets()
+            .into_iter()
+            .map(|name| PickerEntry {
+                name: name.to_string(),
+                kind: "row",
+                description: crate::model::buildings::builtin::description(name)
+                    .unwrap_or_default(),
+            });
+        if self.scene() == Scene::Buildings {
+            return rows.collect();
+        }
+        self.presets
+            .iter()
+            .map(|p| PickerEntry {
+                name: p.name.clone(),
+                kind: if p.path.is_some() {
+                    "yours"
+                } else {
+                    "built-in"
+                },
+                description: p.description.clone(),
+            })
+            .chain(rows)
+            .collect()
+    }
+
+    /// Loads picker entry `index`: a row preset opens the buildings scene.
+    fn pick(&mut self, index: usize) {
+        let entries = self.picker_entries();
+        match entries.get(index) {
+            Some(e) if e.kind == "row" => self.recall_row(&e.name.clone()),
+            _ => self.recall(index),
+        }
+    }
+
     fn on_picker_key(&mut self, key: KeyEvent, selected: usize) {
-        let n = self.presets.len().max(1);
+        let n = self.picker_entries().len().max(1);
         let next = match key.code {
             KeyCode::Up | KeyCode::Char('k') => (selected + n - 1) % n,
             KeyCode::Down | KeyCode::Char('j') => (selected + 1) % n,
@@ -754,8 +829,8 @@ impl App {
             KeyCode::End => n - 1,
             KeyCode::PageUp => selected.saturating_sub(5),
             KeyCode::PageDown => (selected + 5).min(n - 1),
-            KeyCode::Enter => return self.recall(selected),
-            KeyCode::Char(c @ '1'..='9') => return self.recall(c as usize - '1' as usize),
+            KeyCode::Enter => return self.pick(selected),
+            KeyCode::Char(c @ '1'..='9') => return self.pick(c as usize - '1' as usize),
             _ => return,
         };
         self.mode = Mode::Picker { selected: next };
@@ -939,8 +1014,8 @@ impl App {
             Scene::Laws => FigureName::ContactLaws,
             Scene::Map => FigureName::Map,
             Scene::Spectrum => FigureName::Spectrum,
-            // No figure of its own (`g` says so): the set's histories.
-            Scene::Risk => FigureName::History,
+            // No figure of their own (`g` says so): the set's histories.
+            Scene::Risk | Scene::Buildings => FigureName::History,
         };
         (name, p)
     }

@@ -41,13 +41,21 @@ pub fn run(mut app: App) -> std::io::Result<Exit> {
                     pace.started(Instant::now());
                 }
             }
-            let first = match pace.next(Instant::now(), app.jobs.computing) {
-                Step::Draw => {
+            // Playback wakes the loop for its next frame, whatever else waits.
+            if app.frame_due().is_some_and(|f| f <= Instant::now()) && app.on_tick(Instant::now()) {
+                pace.input();
+            }
+            let frame = app.frame_due();
+            let wait =
+                |until: Instant| rx.recv_timeout(until.saturating_duration_since(Instant::now()));
+            let first = match (pace.next(Instant::now(), app.jobs.computing), frame) {
+                (Step::Draw, _) => {
                     terminal::draw(&mut tty, |f| ui::render(&app, f))?;
                     continue;
                 }
-                Step::Sleep => rx.recv().map_err(|_| RecvTimeoutError::Disconnected),
-                Step::WaitUntil(t) => rx.recv_timeout(t.saturating_duration_since(Instant::now())),
+                (Step::Sleep, None) => rx.recv().map_err(|_| RecvTimeoutError::Disconnected),
+                (Step::Sleep, Some(f)) => wait(f),
+                (Step::WaitUntil(t), f) => wait(f.map_or(t, |f| f.min(t))),
             };
             let first = match first {
                 Ok(ev) => ev,

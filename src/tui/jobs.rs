@@ -3,6 +3,7 @@
 //! to a scene or set costs nothing, and which results are current.
 
 use super::risk_job::{RiskOutput, RiskSpec};
+use super::row_job::{RowOutput, RowSpec};
 use super::worker::{Job, MapSpec, Output, RunOutput, RunSpec, Slot, SpectrumSpec};
 use crate::analysis::map::MapCell;
 use crate::analysis::risk::RiskPicture;
@@ -10,6 +11,8 @@ use crate::analysis::spectrum::SpectrumPoint;
 
 /// Results kept for reuse (switching scenes or sets back does not recompute).
 const CACHE: usize = 12;
+/// Row results kept (each holds its traces).
+const ROW_CACHE: usize = 4;
 
 /// The runs, the spectrum, the map and the risk picture a scene needs.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -18,6 +21,7 @@ pub struct Need {
     pub spectrum: Option<SpectrumSpec>,
     pub map: Option<MapSpec>,
     pub risk: Option<RiskSpec>,
+    pub row: Option<RowSpec>,
 }
 
 impl Need {
@@ -107,6 +111,10 @@ pub struct Jobs {
     pub spectrum: Option<SpectrumState>,
     pub map: Option<MapState>,
     pub risk: Option<RiskState>,
+    /// The buildings scene's finished runs, newest last (a few kept).
+    pub rows: Vec<RowOutput>,
+    /// The last row spec the solver refused, and its one line.
+    pub row_error: Option<(RowSpec, String)>,
 }
 
 impl Jobs {
@@ -123,7 +131,12 @@ impl Jobs {
             spectrum,
             map,
             risk,
+            row,
         } = need;
+        let row = row.filter(|r| {
+            !self.rows.iter().any(|o| o.spec == *r)
+                && !self.row_error.as_ref().is_some_and(|(s, _)| s == r)
+        });
         let runs: Vec<RunSpec> = runs
             .into_iter()
             .filter(|s| self.cached(s).is_none())
@@ -192,7 +205,11 @@ impl Jobs {
                 }
             }
         }
-        self.computing = !runs.is_empty() || spectrum.is_some() || map.is_some() || risk.is_some();
+        self.computing = !runs.is_empty()
+            || spectrum.is_some()
+            || map.is_some()
+            || risk.is_some()
+            || row.is_some();
         if !self.computing {
             return None;
         }
@@ -202,7 +219,26 @@ impl Jobs {
             spectrum,
             map,
             risk,
+            row,
         })
+    }
+
+    /// The row runs to show: those asked for if computed, else the latest
+    /// (shown while the new ones compute, or when they were refused).
+    pub fn shown_row(&self) -> Option<&RowOutput> {
+        let asked = self.requested.as_ref().and_then(|n| n.row.as_ref());
+        asked
+            .and_then(|r| self.rows.iter().rev().find(|o| o.spec == *r))
+            .or_else(|| self.rows.last())
+    }
+
+    /// The solver's line on the row asked for, when it refused it.
+    pub fn row_refusal(&self) -> Option<&str> {
+        let asked = self.requested.as_ref().and_then(|n| n.row.as_ref())?;
+        self.row_error
+            .as_ref()
+            .filter(|(s, _)| s == asked)
+            .map(|(_, e)| e.as_str())
     }
 
     fn cached(&self, spec: &RunSpec) -> Option<&RunOutput> {
@@ -276,6 +312,16 @@ impl Jobs {
                     }
                 }
             }
+            Output::Row { output, .. } => match output {
+                Ok(output) => {
+                    self.rows.retain(|o| o.spec != output.spec);
+                    self.rows.push(*output);
+                    if self.rows.len() > ROW_CACHE {
+                        self.rows.remove(0);
+                    }
+                }
+                Err(refused) => self.row_error = Some(refused),
+            },
             Output::Done { .. } => self.computing = false,
         }
     }

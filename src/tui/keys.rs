@@ -3,7 +3,7 @@
 //! them, the overlay draws them).
 
 /// Every key, as the help overlay and the README list them.
-pub const KEYS: [(&str, &str); 31] = [
+pub const KEYS: [(&str, &str); 34] = [
     ("?", "this help (↑↓ scroll; other keys close)"),
     ("↑/↓, k/j", "select a parameter"),
     ("←/→, h/l, -/+", "nudge it by one step"),
@@ -29,6 +29,9 @@ pub const KEYS: [(&str, &str); 31] = [
     ("i", "scene: impact table and energy terms"),
     ("a", "scene: map (y axis, o ratio, [ ]{ })"),
     ("x", "scene: risk over a suite ([ ] level, o PGA/Sa)"),
+    ("d", "scene: a row of buildings (o panel, | both laws)"),
+    ("space, ( / )", "row: play / pause, slower / faster"),
+    ("< / >", "row: displacements drawn ÷2 / ×2"),
     ("u", "physical units (presets with [physical])"),
     ("[ / ]", "move the time cursor ({ } by ten)"),
     ("n / N", "cursor to the next / previous impact"),

@@ -11,6 +11,8 @@
 //! - [`text_field`]: the one text-entry type;
 //! - [`jobs`] and [`worker`]: what to compute, on a background thread, latest wins;
 //! - [`risk_job`]: the risk scene's suite, a coarse pass then the whole;
+//! - [`row_pane`], [`row_fields`], [`row_job`], [`playback`]: the buildings
+//!   scene's row and its edits, its runs, and playing them in time;
 //! - [`trace`]: the history decimated to the visible window;
 //! - [`effects`], [`export`], [`presets`]: saving, exporting, figures, the preset list;
 //! - [`fields`], [`physical`]: the pane rows in Π-groups or physical units;
@@ -39,8 +41,13 @@ pub mod look;
 pub mod map_grid;
 pub mod pace;
 pub mod physical;
+pub mod playback;
 pub mod presets;
 pub mod risk_job;
+pub mod row_fields;
+pub mod row_job;
+pub mod row_keys;
+pub mod row_pane;
 pub mod scene;
 pub mod short_codes;
 pub mod terminal;

@@ -26,10 +26,13 @@ pub enum Scene {
     /// The active set's buildings over a suite: P(pounding) against the
     /// gap, the IDA of the left drift and the pounding fragility (SPEC §12).
     Risk,
+    /// A row of shear buildings drawn in time, with its envelopes and
+    /// impacts (SPEC §13).
+    Buildings,
 }
 
 impl Scene {
-    pub const ALL: [Scene; 8] = [
+    pub const ALL: [Scene; 9] = [
         Scene::History,
         Scene::Loops,
         Scene::Laws,
@@ -38,6 +41,7 @@ impl Scene {
         Scene::Impacts,
         Scene::Map,
         Scene::Risk,
+        Scene::Buildings,
     ];
 
     pub fn key(self) -> char {
@@ -50,6 +54,7 @@ impl Scene {
             Scene::Impacts => 'i',
             Scene::Map => 'a',
             Scene::Risk => 'x',
+            Scene::Buildings => 'd',
         }
     }
 
@@ -63,6 +68,7 @@ impl Scene {
             Scene::Impacts => "impacts",
             Scene::Map => "map",
             Scene::Risk => "risk",
+            Scene::Buildings => "buildings",
         }
     }
 

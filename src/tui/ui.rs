@@ -28,8 +28,20 @@ pub fn render(app: &App, frame: &mut Frame) {
     } else {
         let a = layout::areas(area, app.pane_rows());
         header(app, frame, a.header);
-        views::params::render(app, frame, a.panes);
-        views::params::render_info(app, frame, a.info);
+        match app
+            .row
+            .as_ref()
+            .filter(|_| app.view.scene == Scene::Buildings)
+        {
+            Some(pane) => {
+                views::row_params::render(app, pane, frame, a.panes);
+                views::row_params::render_info(app, pane, frame, a.info);
+            }
+            None => {
+                views::params::render(app, frame, a.panes);
+                views::params::render_info(app, frame, a.info);
+            }
+        }
         match app.view.scene {
             Scene::History => views::history::render(app, frame, a.scene),
             Scene::Loops => views::loops::render(app, frame, a.scene),
@@ -39,6 +51,7 @@ pub fn render(app: &App, frame: &mut Frame) {
             Scene::Impacts => views::impacts::render(app, frame, a.scene),
             Scene::Map => views::map::render(app, frame, a.scene),
             Scene::Risk => views::risk::render(app.jobs.risk.as_ref(), app.look, frame, a.scene),
+            Scene::Buildings => views::row::render(app, frame, a.scene),
         }
         views::summary::render(app, frame, a.summary);
         footer(app, frame, a.footer);
@@ -99,6 +112,17 @@ pub fn key_bar(app: &App, width: usize) -> String {
             "Enter sets it",
             "Esc cancels",
             "Ctrl-U clears",
+        ],
+        _ if app.view.scene == Scene::Buildings => &[
+            "↑↓ select",
+            "←→ nudge",
+            "space play",
+            "[ ] time",
+            "< > scale",
+            "o panel",
+            "| both laws",
+            "p rows",
+            "Enter type",
         ],
         _ => &[
             "↑↓ select",

@@ -13,6 +13,7 @@ use std::time::{Duration, Instant};
 use rayon::prelude::*;
 
 use super::risk_job::{RiskOutput, RiskSpec, run_risk};
+use super::row_job::{self, RowOutput, RowSpec};
 use super::trace::Trace;
 use crate::analysis::gap::{MinimumGap, free_params, minimum_gap};
 use crate::analysis::map::{MapCache, MapCell, MapPlan, compute_rows};
@@ -93,6 +94,7 @@ pub struct Job {
     pub spectrum: Option<SpectrumSpec>,
     pub map: Option<MapSpec>,
     pub risk: Option<RiskSpec>,
+    pub row: Option<RowSpec>,
 }
 
 /// A finished run.
@@ -140,6 +142,11 @@ pub enum Output {
     MapError { generation: u64, message: String },
     /// A pass of the risk picture, or why there is none.
     Risk { generation: u64, output: RiskOutput },
+    /// The buildings scene's runs, or the solver's one line on why not.
+    Row {
+        generation: u64,
+        output: Result<Box<RowOutput>, (RowSpec, String)>,
+    },
     /// The job ended, complete or cancelled by a newer one.
     Done { generation: u64, cancelled: bool },
 }
@@ -152,6 +159,7 @@ impl Output {
             | Output::MapRows { generation, .. }
             | Output::MapError { generation, .. }
             | Output::Risk { generation, .. }
+            | Output::Row { generation, .. }
             | Output::Done { generation, .. } => *generation,
         }
     }
@@ -253,6 +261,18 @@ fn worker_loop(shared: &Shared, send: &dyn Fn(Output)) {
 
 /// Runs every part of a job while `current()` holds; false if it stopped early.
 pub fn run_job(job: &Job, current: &dyn Fn() -> bool, send: &dyn Fn(Output)) -> bool {
+    if let Some(spec) = &job.row {
+        let output = row_job::run(spec)
+            .map(Box::new)
+            .map_err(|e| (spec.clone(), e));
+        if !current() {
+            return false;
+        }
+        send(Output::Row {
+            generation: job.generation,
+            output,
+        });
+    }
     for spec in &job.runs {
         if !current() {
             return false;

@@ -25,3 +25,9 @@ pub fn find(name: &str) -> Option<&'static str> {
 pub fn names() -> Vec<&'static str> {
     BUILTIN.iter().map(|(n, _)| *n).collect()
 }
+
+/// The `description` line of the built-in row `name`.
+pub fn description(name: &str) -> Option<String> {
+    let table: toml::Table = find(name)?.parse().ok()?;
+    table.get("description")?.as_str().map(str::to_string)
+}

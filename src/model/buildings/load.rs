@@ -13,9 +13,16 @@ pub fn load(name_or_path: &str) -> Result<Row, BuildingsError> {
 
 /// As [`load`], with `--set` edits applied before the checks.
 pub fn load_with(name_or_path: &str, sets: &[String]) -> Result<Row, BuildingsError> {
+    let (file, text) = text_of(name_or_path)?;
+    super::edit::parse_with(&file, &text, sets)
+}
+
+/// The file a preset is named by in messages, and its text: a built-in
+/// name (`presets/buildings/NAME.toml`) or a path.
+pub fn text_of(name_or_path: &str) -> Result<(String, String), BuildingsError> {
     if let Some(text) = super::builtin::find(name_or_path) {
         let file = format!("presets/buildings/{name_or_path}.toml");
-        return super::edit::parse_with(&file, text, sets);
+        return Ok((file, text.to_string()));
     }
     let path = Path::new(name_or_path);
     let text = std::fs::read_to_string(path).map_err(|e| BuildingsError {
@@ -25,5 +32,5 @@ pub fn load_with(name_or_path: &str, sets: &[String]) -> Result<Row, BuildingsEr
             super::builtin::names().join(", ")
         ),
     })?;
-    super::edit::parse_with(name_or_path, &text, sets)
+    Ok((name_or_path.to_string(), text))
 }

@@ -63,6 +63,16 @@ pub fn periods(b: &Building) -> Vec<f64> {
         .collect()
 }
 
+/// The free vibration a row's run keeps after its ground motion ends when
+/// none is asked for: four times the longest fundamental period (s).
+pub fn default_tail(row: &Row) -> f64 {
+    4.0 * row
+        .buildings
+        .iter()
+        .map(|b| periods(b)[0])
+        .fold(0.0, f64::max)
+}
+
 /// Rayleigh coefficients (a₀, a₁) of one building.
 pub fn rayleigh(b: &Building) -> (f64, f64) {
     let w = circular_frequencies(b);

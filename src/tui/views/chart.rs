@@ -18,6 +18,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
 
+use super::raster::Raster;
 use super::ticks::{self, LABEL_WIDTH};
 use crate::tui::fit::fit;
 use crate::tui::look::Look;
@@ -193,122 +194,37 @@ fn width(s: &str) -> u16 {
     s.chars().count() as u16
 }
 
-/// Pixel grid of the plot: Braille (2×4 dots per cell) or one cell per dot.
-struct Raster {
-    cols: usize,
-    rows: usize,
-    /// Dots per cell across and down.
-    dx: usize,
-    dy: usize,
-    bits: Vec<u8>,
-    /// The last series drawn through each cell.
-    owner: Vec<Option<usize>>,
-    /// Every series drawn through each cell, a bit each (the first 64).
-    through: Vec<u64>,
-    x: [f64; 2],
-    y: [f64; 2],
-}
-
-impl Raster {
-    fn new(plot: Rect, braille: bool, x: [f64; 2], y: [f64; 2]) -> Raster {
-        let (dx, dy) = if braille { (2, 4) } else { (1, 1) };
-        let n = plot.width as usize * plot.height as usize;
-        Raster {
-            cols: plot.width as usize,
-            rows: plot.height as usize,
-            dx,
-            dy,
-            bits: vec![0; n],
-            owner: vec![None; n],
-            through: vec![0; n],
-            x,
-            y,
-        }
-    }
-
-    fn px(&self, x: f64) -> f64 {
-        (x - self.x[0]) / (self.x[1] - self.x[0]) * ((self.cols * self.dx) as f64 - 1.0)
-    }
-
-    fn py(&self, y: f64) -> f64 {
-        (self.y[1] - y) / (self.y[1] - self.y[0]) * ((self.rows * self.dy) as f64 - 1.0)
-    }
-
-    /// The cell row of a value (for labels and the zero line).
-    fn row(&self, y: f64) -> usize {
-        ((self.py(y).round().max(0.0) as usize) / self.dy).min(self.rows.saturating_sub(1))
-    }
-
-    fn col(&self, x: f64) -> usize {
-        ((self.px(x).round().max(0.0) as usize) / self.dx).min(self.cols.saturating_sub(1))
-    }
-
-    fn dot(&mut self, px: i64, py: i64, series: usize) {
-        let (w, h) = ((self.cols * self.dx) as i64, (self.rows * self.dy) as i64);
-        if px < 0 || py < 0 || px >= w || py >= h {
-            return;
-        }
-        let (cx, cy) = (px as usize / self.dx, py as usize / self.dy);
-        let i = cy * self.cols + cx;
-        let bit = if self.dx == 2 {
-            const DOTS: [[u8; 4]; 2] = [[0x01, 0x02, 0x04, 0x40], [0x08, 0x10, 0x20, 0x80]];
-            DOTS[px as usize % 2][py as usize % 4]
-        } else {
-            1
-        };
-        self.bits[i] |= bit;
-        self.owner[i] = Some(series);
-        self.through[i] |= 1u64.checked_shl(series as u32).unwrap_or(0);
-    }
-
-    fn segment(&mut self, a: (f64, f64), b: (f64, f64), series: usize) {
-        if !(a.0.is_finite() && a.1.is_finite() && b.0.is_finite() && b.1.is_finite()) {
-            return;
-        }
-        let lim = |v: f64, n: usize| v.clamp(-(n as f64), 2.0 * n as f64);
-        let (w, h) = (self.cols * self.dx, self.rows * self.dy);
-        let (x0, y0) = (lim(self.px(a.0), w), lim(self.py(a.1), h));
-        let (x1, y1) = (lim(self.px(b.0), w), lim(self.py(b.1), h));
-        let n = (x1 - x0).abs().max((y1 - y0).abs()).ceil().max(1.0) as usize;
-        for k in 0..=n {
-            let t = k as f64 / n as f64;
-            let x = (x0 + (x1 - x0) * t).round() as i64;
-            let y = (y0 + (y1 - y0) * t).round() as i64;
-            self.dot(x, y, series);
-        }
-    }
-
-    fn draw(&mut self, s: &Series, index: usize) {
-        match &s.shape {
-            Shape::Line(points) => {
-                if points.len() == 1 {
-                    self.segment(points[0], points[0], index);
-                }
-                for w in points.windows(2) {
-                    self.segment(w[0], w[1], index);
-                }
+/// Draws one series into the raster, as series `index`.
+fn trace(raster: &mut Raster, s: &Series, index: usize) {
+    match &s.shape {
+        Shape::Line(points) => {
+            if points.len() == 1 {
+                raster.segment(points[0], points[0], index);
             }
-            Shape::Spans(spans) => {
-                let mut previous: Option<(f64, f64, f64)> = None;
-                for &(x, lo, hi) in spans {
-                    // Join to the previous bucket so the trace is continuous.
-                    let (a, b) = match previous {
-                        Some((_, plo, phi)) => (lo.min(phi), hi.max(plo)),
-                        None => (lo, hi),
-                    };
-                    self.segment((x, a), (x, b), index);
-                    previous = Some((x, lo, hi));
-                }
+            for w in points.windows(2) {
+                raster.segment(w[0], w[1], index);
             }
-            Shape::Bars(bars) => {
-                for &(x, lo, hi) in bars {
-                    self.segment((x, lo), (x, hi), index);
-                }
+        }
+        Shape::Spans(spans) => {
+            let mut previous: Option<(f64, f64, f64)> = None;
+            for &(x, lo, hi) in spans {
+                // Join to the previous bucket so the trace is continuous.
+                let (a, b) = match previous {
+                    Some((_, plo, phi)) => (lo.min(phi), hi.max(plo)),
+                    None => (lo, hi),
+                };
+                raster.segment((x, a), (x, b), index);
+                previous = Some((x, lo, hi));
             }
-            Shape::Points(points) => {
-                for &p in points {
-                    self.segment(p, p, index);
-                }
+        }
+        Shape::Bars(bars) => {
+            for &(x, lo, hi) in bars {
+                raster.segment((x, lo), (x, hi), index);
+            }
+        }
+        Shape::Points(points) => {
+            for &p in points {
+                raster.segment(p, p, index);
             }
         }
     }
@@ -370,7 +286,7 @@ pub fn draw(buf: &mut Buffer, area: Rect, look: Look, spec: &ChartSpec, series: 
 
     let mut raster = Raster::new(plot, braille, x_range, yt.bounds);
     for (i, s) in series.iter().enumerate() {
-        raster.draw(s, i);
+        trace(&mut raster, s, i);
     }
     // Data cells, each in its series' colour (the blanks between them are
     // sent in whatever colour is set: the terminal backend sees to that). A

@@ -72,8 +72,8 @@ pub fn help(app: &App, top: usize, frame: &mut Frame, area: Rect) {
 }
 
 pub fn picker(app: &App, selected: usize, frame: &mut Frame, area: Rect) {
-    let items: Vec<ListItem> = app
-        .presets
+    let entries = app.picker_entries();
+    let items: Vec<ListItem> = entries
         .iter()
         .enumerate()
         .map(|(i, p)| {
@@ -82,14 +82,9 @@ pub fn picker(app: &App, selected: usize, frame: &mut Frame, area: Rect) {
             } else {
                 " ".into()
             };
-            let kind = if p.path.is_some() {
-                "yours"
-            } else {
-                "built-in"
-            };
             ListItem::new(app.look.text(&format!(
-                "{number} {:<14} {kind:<8} {}",
-                p.name, p.description
+                "{number} {:<15} {:<8} {}",
+                p.name, p.kind, p.description
             )))
         })
         .collect();
@@ -98,10 +93,14 @@ pub fn picker(app: &App, selected: usize, frame: &mut Frame, area: Rect) {
     frame.render_widget(Clear, r);
     let list = List::new(items)
         .block(Block::bordered().title(format!(
-            " preset for set {} ({}/{}, Enter loads, Esc closes) ",
-            app.active + 1,
+            " {} ({}/{}, Enter loads, Esc closes) ",
+            if app.scene() == crate::tui::scene::Scene::Buildings {
+                "row preset".to_string()
+            } else {
+                format!("preset for set {}", app.active + 1)
+            },
             selected + 1,
-            app.presets.len()
+            entries.len()
         )))
         .highlight_style(Style::new().add_modifier(Modifier::REVERSED));
     // A fresh state each frame: the list scrolls so the selection shows.

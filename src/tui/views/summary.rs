@@ -105,7 +105,8 @@ fn slots(app: &App) -> Vec<(String, Slot)> {
         | Scene::Spectrum
         | Scene::Impacts
         | Scene::Map
-        | Scene::Risk => {
+        | Scene::Risk
+        | Scene::Buildings => {
             vec![set(app.active)]
         }
         Scene::Sets => vec![set(0), set(1)],
@@ -145,6 +146,12 @@ pub fn readout(app: &App, run: &RunOutput, tau: f64, width: usize) -> Option<[St
 
 pub fn render(app: &App, frame: &mut Frame, area: Rect) {
     let width = area.width as usize;
+    if app.view.scene == Scene::Buildings {
+        let lines = super::row::summary(app, width);
+        let lines: Vec<Line> = lines.iter().map(|l| Line::from(app.look.text(l))).collect();
+        frame.render_widget(Paragraph::new(lines), area);
+        return;
+    }
     let active = app.shown(Slot::Set(app.active));
     let cursor = app.view.cursor.filter(|_| app.view.scene.timed());
     if let (Some(tau), Some(run)) = (cursor, active)
