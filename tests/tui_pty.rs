@@ -436,3 +436,43 @@ fn the_risk_scene_draws_a_first_pass_then_the_whole_suite() {
     s.send(b"\x03");
     s.exit_status();
 }
+
+/// The buildings scene in a real terminal at 80×24: it opens on the row,
+/// plays and pauses, takes a storey count typed in its pane, recalls a
+/// row preset and quits cleanly.
+#[test]
+fn the_buildings_scene_plays_edits_and_recalls_in_a_pty() {
+    let dir = scratch("buildings");
+    let mut s = Session::start_with(
+        80,
+        24,
+        &dir,
+        &dir,
+        false,
+        &["--buildings", "block-and-frame"],
+    );
+    s.wait_for("improved-kelvin: 46 impacts");
+    s.send(b" ");
+    s.wait_for("▶ 0.5×");
+    std::thread::sleep(Duration::from_millis(400));
+    s.send(b" ");
+    let text = s.wait_for("‖ 0.5×");
+    assert!(
+        !text.contains("t 0.00/14.6 s"),
+        "the cursor did not move:\n{text}"
+    );
+    // The block's storeys, typed: 4.
+    s.send(b"jj\r4\r");
+    s.wait_for("block storeys     4");
+    s.wait_for("improved-kelvin: ");
+    // The third row preset from the picker.
+    s.send(b"p");
+    s.wait_for("row preset");
+    s.send(b"3");
+    s.wait_for("row three-in-series");
+    s.wait_for("mid storeys");
+    s.send(b"q");
+    let status = s.exit_status();
+    assert!(status.success(), "{status:?}");
+    assert!(!s.screen.lock().unwrap().screen().alternate_screen());
+}

@@ -277,7 +277,7 @@ pub fn render(buf: &mut Buffer, area: Rect, look: Look, drawing: &Drawing, title
     }
     for &(gap, middle) in &drawing.joints {
         let text = if gap.is_finite() {
-            format!("{:.0}mm", gap * 1e3)
+            format!("{:.0} mm", gap * 1e3)
         } else {
             "open".into()
         };
