@@ -785,7 +785,7 @@ impl App {
     /// The picker's entries: in the buildings scene the row presets, else
     /// the pair's presets followed by the rows.
     pub fn picker_entries(&self) -> Vec<PickerEntry> {
-        let rows = super::row_keys::row_presets()
+        let rows = crate::model::buildings::builtin::names()
             .into_iter()
             .map(|name| PickerEntry {
                 name: name.to_string(),

@@ -22,11 +22,6 @@ pub const DEFAULT_GROUND: &str = "synthetic:2000";
 /// The row opened then.
 pub const DEFAULT_ROW: &str = "block-and-frame";
 
-/// The built-in rows, in the order the picker and the digits recall them.
-pub fn row_presets() -> Vec<&'static str> {
-    builtin::names()
-}
-
 impl App {
     /// The row of the buildings scene, opened on the default row and ground
     /// when there is none yet.
@@ -130,13 +125,13 @@ impl App {
             }
             KeyCode::Char(c @ '1'..='9') => {
                 let k = c as usize - '1' as usize;
-                match row_presets().get(k) {
+                match builtin::names().get(k) {
                     Some(name) => self.recall_row(name),
                     None => {
                         self.status = Some(format!(
                             "no row preset {} (there are {})",
                             k + 1,
-                            row_presets().len()
+                            builtin::names().len()
                         ))
                     }
                 }
