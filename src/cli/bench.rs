@@ -20,8 +20,10 @@ pub struct BenchArgs {
     /// Preset to measure (repeatable) [default: set1 and set2].
     #[arg(long, value_name = "NAME|PATH")]
     pub preset: Vec<String>,
-    /// Contact law of the paper's pair, kelvin or improved-kelvin (repeatable) [default: both].
-    #[arg(long, value_parser = ["kelvin", "improved-kelvin"])]
+    /// Contact law (repeatable) [default: the paper's two, kelvin and improved-kelvin;
+    /// with --buildings, the row's own]. Any of kelvin, improved-kelvin, hertz,
+    /// hertzdamp, jankowski, hunt-crossley.
+    #[arg(long, value_parser = ["kelvin", "improved-kelvin", "hertz", "hertzdamp", "jankowski", "hunt-crossley"])]
     pub model: Vec<String>,
     #[command(flatten)]
     pub output: FormatArg,

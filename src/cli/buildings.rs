@@ -223,7 +223,6 @@ pub fn run(
             run_row(&row, &ground, &options)
         };
         result = Some(run.map_err(|e| match e {
-            RowError::HertzianLaw(_) => CliError::Usage(e.to_string()),
             RowError::Runaway(_) => CliError::Failed(e.to_string()),
         })?);
         times.push(t.elapsed().as_secs_f64() * 1e3);

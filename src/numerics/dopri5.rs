@@ -5,7 +5,7 @@
 //! One step from (t, y) with size h computes seven stages kᵢ = f(t + cᵢh, y + hΣ aᵢⱼkⱼ);
 //! the 5th-order solution is y₁ = y + h Σ bᵢkᵢ (b = the last row of a, so the
 //! last stage is f(t+h, y₁): "first same as last"), and the embedded error
-//! estimate is h Σ eᵢkᵢ with eᵢ = bᵢ − b̂ᵢ. The state is a fixed-size array;
+//! estimate is h Σ eᵢkᵢ with eᵢ = bᵢ − b̂ᵢ. The state is a [`State`]: a fixed-size array or a vector;
 //! nothing here knows about structures or contact.
 
 /// Dimension of the state: (x1, ẋ1, x2, ẋ2).
@@ -52,35 +52,59 @@ const D5: f64 = 701980252875.0 / 199316789632.0;
 const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
+/// A state the pair can step: a fixed array (the SDOF pair's four
+/// components) or a vector sized at run time (a row's 2n).
+pub trait State: Clone + AsRef<[f64]> + AsMut<[f64]> {}
+
+impl<T: Clone + AsRef<[f64]> + AsMut<[f64]>> State for T {}
+
 /// y + h Σ cⱼ kⱼ over the given (coefficient, stage) pairs.
 #[inline]
-fn combine(y: &Vector, h: f64, terms: &[(f64, &Vector)]) -> Vector {
-    std::array::from_fn(|i| y[i] + h * terms.iter().map(|(c, k)| c * k[i]).sum::<f64>())
+fn combine<S: State>(y: &S, h: f64, terms: &[(f64, &S)]) -> S {
+    let mut out = y.clone();
+    for (i, o) in out.as_mut().iter_mut().enumerate() {
+        *o += h * terms.iter().map(|(c, k)| c * k.as_ref()[i]).sum::<f64>();
+    }
+    out
+}
+
+/// h Σ cⱼ kⱼ (a combination of stages alone), shaped like `like`.
+#[inline]
+fn stages<S: State>(like: &S, h: f64, terms: &[(f64, &S)]) -> S {
+    let mut zero = like.clone();
+    zero.as_mut().fill(0.0);
+    combine(&zero, h, terms)
+}
+
+/// a·x + b·y, component by component.
+#[inline]
+fn axpby<S: State>(a: f64, x: &S, b: f64, y: &S) -> S {
+    let mut out = x.clone();
+    for (o, &yi) in out.as_mut().iter_mut().zip(y.as_ref()) {
+        *o = a * *o + b * yi;
+    }
+    out
 }
 
 /// One attempted step: the 5th-order solution, f at its end, the error estimate
 /// and the dense-output polynomial.
-#[derive(Debug, Clone, Copy)]
-pub struct Step {
+#[derive(Debug, Clone)]
+pub struct Step<S = Vector> {
     pub t0: f64,
     pub h: f64,
-    pub y1: Vector,
+    pub y1: S,
     /// f(t0 + h, y1), the first stage of the next step.
-    pub f1: Vector,
+    pub f1: S,
     /// Embedded local error estimate h Σ eᵢ kᵢ.
-    pub error: Vector,
-    dense: [Vector; 5],
+    pub error: S,
+    dense: [S; 5],
 }
 
+impl<S: State + Copy> Copy for Step<S> {}
+
 /// Takes one step of size `h` from (t0, y0); `f0` = f(t0, y0).
-pub fn step(
-    f: &impl Fn(f64, &Vector) -> Vector,
-    t0: f64,
-    y0: &Vector,
-    f0: &Vector,
-    h: f64,
-) -> Step {
-    let k1 = *f0;
+pub fn step<S: State>(f: &impl Fn(f64, &S) -> S, t0: f64, y0: &S, f0: &S, h: f64) -> Step<S> {
+    let k1 = f0.clone();
     let k2 = f(t0 + C2 * h, &combine(y0, h, &[(A21, &k1)]));
     let k3 = f(t0 + C3 * h, &combine(y0, h, &[(A31, &k1), (A32, &k2)]));
     let k4 = f(
@@ -105,8 +129,8 @@ pub fn step(
         &[(A71, &k1), (A73, &k3), (A74, &k4), (A75, &k5), (A76, &k6)],
     );
     let k7 = f(t0 + h, &y1);
-    let error = combine(
-        &[0.0; DIM],
+    let error = stages(
+        y0,
         h,
         &[
             (E1, &k1),
@@ -118,11 +142,11 @@ pub fn step(
         ],
     );
     // Dense output (Hairer's CONTD5): y(θ) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))).
-    let r2: Vector = std::array::from_fn(|i| y1[i] - y0[i]);
-    let r3: Vector = std::array::from_fn(|i| h * k1[i] - r2[i]);
-    let r4: Vector = std::array::from_fn(|i| r2[i] - h * k7[i] - r3[i]);
-    let r5 = combine(
-        &[0.0; DIM],
+    let r2 = axpby(1.0, &y1, -1.0, y0);
+    let r3 = axpby(h, &k1, -1.0, &r2);
+    let r4 = axpby(1.0, &axpby(1.0, &r2, -h, &k7), -1.0, &r3);
+    let r5 = stages(
+        y0,
         h,
         &[
             (D1, &k1),
@@ -139,28 +163,34 @@ pub fn step(
         y1,
         f1: k7,
         error,
-        dense: [*y0, r2, r3, r4, r5],
+        dense: [y0.clone(), r2, r3, r4, r5],
     }
 }
 
-impl Step {
+impl<S: State> Step<S> {
     /// The dense-output state at θ ∈ [0, 1] (t = t0 + θh), 4th order.
     #[inline]
-    pub fn at(&self, theta: f64) -> Vector {
+    pub fn at(&self, theta: f64) -> S {
         let [r1, r2, r3, r4, r5] = &self.dense;
         let s = 1.0 - theta;
-        std::array::from_fn(|i| r1[i] + theta * (r2[i] + s * (r3[i] + theta * (r4[i] + s * r5[i]))))
+        let mut out = r1.clone();
+        let (r2, r3, r4, r5) = (r2.as_ref(), r3.as_ref(), r4.as_ref(), r5.as_ref());
+        for (i, o) in out.as_mut().iter_mut().enumerate() {
+            *o += theta * (r2[i] + s * (r3[i] + theta * (r4[i] + s * r5[i])));
+        }
+        out
     }
 
     /// Scaled RMS error norm with atol = rtol = `tolerance` (≤ 1: accept).
-    pub fn error_norm(&self, y0: &Vector, tolerance: f64) -> f64 {
-        let sum: f64 = (0..DIM)
+    pub fn error_norm(&self, y0: &S, tolerance: f64) -> f64 {
+        let (y0, y1, error) = (y0.as_ref(), self.y1.as_ref(), self.error.as_ref());
+        let sum: f64 = (0..y0.len())
             .map(|i| {
-                let scale = tolerance * (1.0 + y0[i].abs().max(self.y1[i].abs()));
-                (self.error[i] / scale).powi(2)
+                let scale = tolerance * (1.0 + y0[i].abs().max(y1[i].abs()));
+                (error[i] / scale).powi(2)
             })
             .sum();
-        (sum / DIM as f64).sqrt()
+        (sum / y0.len() as f64).sqrt()
     }
 }
 

@@ -7,7 +7,12 @@
 //! - an elastic storey yields: |Δ − p| reaches Δ_y (SPEC §3);
 //! - a yielding storey unloads: Δ̇ changes sign against z; then p = Δ − z;
 //! - a floor pair touches: δ = u_A − u_B − d turns positive; v₀ = δ̇ there;
-//! - a pair separates: δ returns to 0.
+//! - a pair separates: δ returns to 0;
+//! - under the Jankowski law, a closed pair's δ̇ turns negative (its
+//!   damping switches off there).
+//!
+//! While a pair under a Hertz-type law is closed, the steps are those of
+//! the Runge–Kutta pair of [`super::contact_rk`] instead of the series.
 //!
 //! A sub-step is quiet when, on rigorous ranges of every watched quantity
 //! and of its rate over the sub-step ([`super::bound`]: the cubic Hermite
@@ -24,7 +29,9 @@ use crate::model::buildings::{Ground, Row};
 
 use super::bound::{Stack, Watch};
 use super::config::{Branch, Closed, Config};
+use super::contact_rk::{self, Contact, any_hertzian};
 use super::energy::{NODES, RowEnergy, gauss_legendre};
+use super::event_function::EventFunction;
 use super::hermite::range;
 use super::layout::Layout;
 use super::peaks::{Envelope, raise};
@@ -33,6 +40,7 @@ use super::propagator::{Propagator, apply};
 use super::result::{FloorPeaks, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
 use super::taylor::{ORDER, Series};
+use crate::numerics::dopri5::Step;
 
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -64,10 +72,6 @@ impl RowOptions {
 /// A run that cannot be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RowError {
-    #[error(
-        "the exact method carries the Kelvin family (kelvin, improved-kelvin) at floor pairs; `{0}` is a Hertz-type law: use --method newmark"
-    )]
-    HertzianLaw(&'static str),
     #[error("the run stopped at t = {0} s: more than 10⁸ events or series steps")]
     Runaway(f64),
 }
@@ -125,6 +129,8 @@ enum Event {
     Unload(usize),
     Onset(usize),
     Separation(usize),
+    /// δ̇ of a closed Jankowski pair turns negative.
+    Turn,
 }
 
 struct Run<'a> {
@@ -148,13 +154,12 @@ struct Run<'a> {
     /// (a, ȧ, σ); dropped whenever the state moves otherwise.
     stack: Option<((f64, f64, f64), Stack)>,
     energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
+    /// Suggested length of the next Runge–Kutta step in contact (0: none yet).
+    contact_step: f64,
 }
 
 /// Runs the exact method on `row` under `ground`.
 pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRun, RowError> {
-    if row.model.is_hertzian() {
-        return Err(RowError::HertzianLaw(row.model.name()));
-    }
     let layout = Layout::of(row);
     let n = layout.dofs;
     let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
@@ -182,6 +187,7 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
             let (x, w) = gauss_legendre(NODES);
             (RowEnergy::default(), x, w)
         }),
+        contact_step: 0.0,
     };
     let mut trace = options.trace.then(|| RowTrace::new(n));
     for piece in ground.pieces(options.duration) {
@@ -349,25 +355,43 @@ impl Run<'_> {
             let (a, rate) = ground_at(piece, self.t);
             let su = self.u.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
             let sv = self.v.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
-            let series = Series::new(
-                &self.system,
-                &self.u,
-                &self.v,
-                (a, rate, piece.sigma),
-                (su, sv),
-            );
+            let ground = (a, rate, piece.sigma);
+            let hertzian = any_hertzian(&self.config);
+            let (series, mut rk) = if hertzian {
+                let (series, step) = self.contact_step(piece, rem, ground, (su, sv));
+                (series, Some(step))
+            } else {
+                let series = Series::new(&self.system, &self.u, &self.v, ground, (su, sv));
+                (series, None)
+            };
             let mut end = rem.min(series.radius);
             let mut event = None;
             self.find_events(&series, &mut end, &mut event);
+            if let (Some((y0, f0, step)), Some((_, g))) = (&mut rk, &event)
+                && end < step.h
+            {
+                let t = self.t;
+                let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
+                    ground_at(piece, t + s).0
+                });
+                *step = contact.settle((y0, f0), g, end);
+                end = step.h;
+            }
             self.peaks_on(&series, end);
             if self.energy.is_some() {
                 self.work_on(&series, end);
             }
-            series.state(end, &mut un, &mut vn);
+            match &rk {
+                Some((_, _, step)) => {
+                    un.copy_from_slice(&step.y1[..n]);
+                    vn.copy_from_slice(&step.y1[n..]);
+                }
+                None => series.state(end, &mut un, &mut vn),
+            }
             std::mem::swap(&mut self.u, &mut un);
             std::mem::swap(&mut self.v, &mut vn);
             self.t = if end >= rem { tb } else { self.t + end };
-            if let Some(e) = event {
+            if let Some((e, _)) = event {
                 self.apply(e);
             }
             // The point itself, with ü of the configuration now in force.
@@ -379,56 +403,94 @@ impl Run<'_> {
         Ok(())
     }
 
-    fn find_events(&mut self, series: &Series, end: &mut f64, event: &mut Option<Event>) {
-        let take = |c: &[f64], e: Event, end: &mut f64, event: &mut Option<Event>| {
-            if let Some(s) = poly::first_rise(c, *end)
-                && (s < *end || event.is_none())
-            {
-                *end = s;
-                *event = Some(e);
-            }
+    /// One Runge–Kutta step of a Hertz-type contact phase
+    /// ([`super::contact_rk`]) from the current state, at most `rem` long,
+    /// as a series on its length, with its start (y, ẏ) and the step.
+    fn contact_step(
+        &mut self,
+        piece: &Piece,
+        rem: f64,
+        ground: (f64, f64, f64),
+        scale: (f64, f64),
+    ) -> (Series, (Vec<f64>, Vec<f64>, Step<Vec<f64>>)) {
+        let t = self.t;
+        let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
+            ground_at(piece, t + s).0
+        });
+        let y0: Vec<f64> = self.u.iter().chain(&self.v).copied().collect();
+        let f0 = contact.rate(0.0, &y0);
+        let fastest = 1.0 / self.layout.rate;
+        let guess = match self.contact_step {
+            h if h > 0.0 => h,
+            _ => 1e-3 * fastest,
         };
-        let c = &mut self.buf;
+        let (step, next) = contact.step((&y0, &f0), (guess, rem, 1e-12 * fastest), scale);
+        self.contact_step = next;
+        let series = contact_rk::series((&y0, &f0), &step, ground);
+        (series, (y0, f0, step))
+    }
+
+    /// Each event that can happen from the current configuration, with its
+    /// function ([`EventFunction`]).
+    fn watched_events(&self, mut each: impl FnMut(Event, EventFunction)) {
         for (k, s) in self.layout.storeys.iter().enumerate() {
-            let mut du = vec![(s.upper, 1.0)];
-            if let Some(l) = s.lower {
-                du.push((l, -1.0));
-            }
             match self.config.branch[k] {
                 Branch::Elastic => {
                     if !s.yield_drift.is_finite() {
                         continue;
                     }
-                    series.combine(&du, &[], c);
-                    c[0] -= self.config.plastic[k];
-                    // z − Δ_y and −z − Δ_y.
-                    c[0] -= s.yield_drift;
-                    take(c, Event::Yield(k, Branch::Plus), end, event);
-                    c[0] += s.yield_drift;
-                    c.iter_mut().for_each(|x| *x = -*x);
-                    c[0] -= s.yield_drift;
-                    take(c, Event::Yield(k, Branch::Minus), end, event);
+                    // z − Δ_y and −z − Δ_y, z = Δ − p.
+                    let (p, dy) = (self.config.plastic[k], s.yield_drift);
+                    let up = EventFunction::drift(s.upper, s.lower, 1.0, -p - dy);
+                    each(Event::Yield(k, Branch::Plus), up);
+                    let down = EventFunction::drift(s.upper, s.lower, -1.0, p - dy);
+                    each(Event::Yield(k, Branch::Minus), down);
                 }
                 sign => {
                     let w = if sign == Branch::Plus { -1.0 } else { 1.0 };
-                    let dv: Vec<_> = du.iter().map(|&(i, x)| (i, w * x)).collect();
-                    series.combine(&[], &dv, c);
-                    take(c, Event::Unload(k), end, event);
+                    each(
+                        Event::Unload(k),
+                        EventFunction::drift_rate(s.upper, s.lower, w),
+                    );
                 }
             }
         }
         for (pi, (p, &d)) in self.layout.pairs.iter().zip(&self.layout.gaps).enumerate() {
-            let closed = self.config.contact[pi].is_some();
-            let w = if closed { -1.0 } else { 1.0 };
-            series.combine(&[(p.left_dof, w), (p.right_dof, -w)], &[], c);
-            c[0] -= w * d;
-            let e = if closed {
-                Event::Separation(pi)
-            } else {
-                Event::Onset(pi)
-            };
-            take(c, e, end, event);
+            let closed = &self.config.contact[pi];
+            let (a, b) = (p.left_dof, p.right_dof);
+            match closed {
+                None => each(Event::Onset(pi), EventFunction::drift(a, Some(b), 1.0, -d)),
+                Some(c) => {
+                    each(
+                        Event::Separation(pi),
+                        EventFunction::drift(a, Some(b), -1.0, d),
+                    );
+                    let jankowski = c.law.hertzian.is_some_and(|h| h.approach_damping > 0.0);
+                    if jankowski && self.v[a] - self.v[b] > 0.0 {
+                        each(Event::Turn, EventFunction::drift_rate(a, Some(b), -1.0));
+                    }
+                }
+            }
         }
+    }
+
+    fn find_events(
+        &mut self,
+        series: &Series,
+        end: &mut f64,
+        event: &mut Option<(Event, EventFunction)>,
+    ) {
+        let mut c = std::mem::take(&mut self.buf);
+        self.watched_events(|e, g| {
+            g.on(series, &mut c);
+            if let Some(s) = poly::first_rise(&c, *end)
+                && (s < *end || event.is_none())
+            {
+                *end = s;
+                *event = Some((e, g));
+            }
+        });
+        self.buf = c;
     }
 
     /// Turning points on [0, end] that may raise a peak (Σ|c_k|s^k above it),
@@ -477,12 +539,15 @@ impl Run<'_> {
             let dd = &mut self.buf2;
             series.combine(&[], &[(a, 1.0), (b, -1.0)], dd);
             let law = &closed.law;
-            let force: Vec<f64> = (0..c.len())
-                .map(|k| {
-                    let conv: f64 = (0..=k).map(|j| c[j] * dd[k - j]).sum();
-                    law.stiffness * c[k] + law.linear_damping * dd[k] + law.hertz_damping * conv
-                })
-                .collect();
+            let force: Vec<f64> = match &law.hertzian {
+                Some(h) => contact_rk::force_polynomial(h, c, dd, end),
+                None => (0..c.len())
+                    .map(|k| {
+                        let conv: f64 = (0..=k).map(|j| c[j] * dd[k - j]).sum();
+                        law.stiffness * c[k] + law.linear_damping * dd[k] + law.hertz_damping * conv
+                    })
+                    .collect(),
+            };
             let f = poly::max(&force, end);
             if let Some(last) = self.pairs[pi].impacts.last_mut() {
                 last.max_penetration = last.max_penetration.max(penetration);
@@ -565,6 +630,7 @@ impl Run<'_> {
                     max_penetration: 0.0,
                 });
             }
+            Event::Turn => return,
             Event::Separation(pi) => {
                 let p = self.layout.pairs[pi];
                 self.config.contact[pi] = None;

@@ -28,8 +28,10 @@
 
 pub mod bound;
 pub mod config;
+pub mod contact_rk;
 pub mod driver;
 pub mod energy;
+pub mod event_function;
 pub mod hermite;
 pub mod layout;
 pub mod newmark;

@@ -19,6 +19,18 @@ pub const ORDER: usize = 24;
 /// Relative size of the last terms at the end of a step.
 pub const TOLERANCE: f64 = 1e-17;
 
+/// The ground's Taylor coefficients a_k from (a, ȧ, σ) at s = 0:
+/// a₀ = a, a₁ = ȧ, a_{k+2} = σ a_k/((k+1)(k+2)) (ä_g = σ a_g on the piece).
+pub fn ground_coefficients((a, rate, sigma): (f64, f64, f64)) -> [f64; ORDER + 1] {
+    let mut g = [0.0; ORDER + 1];
+    g[0] = a;
+    g[1] = rate;
+    for k in 0..ORDER - 1 {
+        g[k + 2] = sigma * g[k] / ((k + 1) * (k + 2)) as f64;
+    }
+    g
+}
+
 /// Coefficients of u and u̇, order by order (each a block of `n`).
 #[derive(Debug, Clone)]
 pub struct Series {
@@ -46,13 +58,7 @@ impl Series {
         let mut v = vec![0.0; (ORDER + 1) * n];
         u[..n].copy_from_slice(u0);
         v[..n].copy_from_slice(v0);
-        let (a, rate, sigma) = ground;
-        let mut g = [0.0; ORDER + 1];
-        g[0] = a;
-        g[1] = rate;
-        for k in 0..ORDER - 1 {
-            g[k + 2] = sigma * g[k] / ((k + 1) * (k + 2)) as f64;
-        }
+        let g = ground_coefficients(ground);
         let np = system.products.len();
         let mut delta = vec![0.0; np * (ORDER + 1)];
         let mut rate_d = vec![0.0; np * (ORDER + 1)];

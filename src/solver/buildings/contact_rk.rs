@@ -1,0 +1,245 @@
+//! Contact phases of the Hertz-type laws in a row (SPEC §13 with §10), by
+//! the embedded Runge–Kutta pair of [`crate::numerics::dopri5`], as the
+//! pair's exact method carries them ([`crate::solver::exact::contact_rk`]).
+//!
+//! With f = βδ^{3/2}(1 + λδ̇) + ηδ^{1/4}δ̇⁺ and δ ≈ v₀t after onset, the motion
+//! holds terms in t^{7/2}: it is not analytic at onset or separation, so the
+//! Taylor series cannot carry it. While such a pair is closed, each step is
+//! one accepted step of the Dormand–Prince 5(4) pair on y = (u, u̇),
+//!
+//! ```text
+//! ü = −M⁻¹K u − M⁻¹C u̇ + M⁻¹q − 1 ü_g(t) − M⁻¹ Σ_p f_p(δ_p, δ̇_p) e_p,
+//! ```
+//!
+//! (K, C and q of the configuration's storeys: a Hertz-type law puts
+//! nothing into them), its local error held below [`TOLERANCE`] of the
+//! motion's scales (largest |u| for displacements, largest |u̇| for
+//! velocities). On the accepted step each u_i is the quintic Hermite
+//! polynomial through (u, u̇, ü) at both ends (error O(h⁶), the step's own
+//! order) and u̇_i its derivative, written as a [`Series`], so that events
+//! and peaks are found by the Taylor steps' own machinery; an event found
+//! inside is then placed on the motion itself by Newton's method on its
+//! function, each trial a step retaken from the start to that instant
+//! ([`Contact::settle`]).
+
+use crate::model::contact::Hertzian;
+use crate::numerics::dopri5::{self, Step};
+use crate::solver::exact::contact_rk::{equispaced_quintic, hermite_quintic};
+
+use super::config::Config;
+use super::event_function::EventFunction;
+use super::layout::Layout;
+use super::system::System;
+use super::taylor::{ORDER, Series, ground_coefficients};
+
+/// Local error asked of each step, relative to the motion's scales: the
+/// pair's error per step then sits a decade below the 1e-9 to which the
+/// row's peaks are checked.
+pub const TOLERANCE: f64 = 1e-12;
+
+/// Newton iterations at most when placing an event on the motion.
+const NEWTON: usize = 8;
+
+/// One closed pair under a Hertz-type law.
+#[derive(Debug, Clone, Copy)]
+struct HertzPair {
+    left: usize,
+    right: usize,
+    gap: f64,
+    law: Hertzian,
+    /// 1/m_A and 1/m_B.
+    left_rate: f64,
+    right_rate: f64,
+}
+
+/// The row's motion through Hertz-type contact phases in one configuration.
+pub struct Contact<'a, G: Fn(f64) -> f64> {
+    system: &'a System,
+    pairs: Vec<HertzPair>,
+    /// ü_g at offset s from the step's start.
+    ground: G,
+}
+
+/// Whether any closed pair of `config` is under a Hertz-type law.
+pub fn any_hertzian(config: &Config) -> bool {
+    config
+        .contact
+        .iter()
+        .flatten()
+        .any(|c| !c.law.is_analytic())
+}
+
+impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
+    pub fn new(layout: &Layout, config: &Config, system: &'a System, ground: G) -> Self {
+        let pairs = layout
+            .pairs
+            .iter()
+            .zip(&layout.gaps)
+            .zip(&config.contact)
+            .filter_map(|((p, &gap), closed)| {
+                let law = closed.as_ref()?.law.hertzian?;
+                Some(HertzPair {
+                    left: p.left_dof,
+                    right: p.right_dof,
+                    gap,
+                    law,
+                    left_rate: 1.0 / layout.mass[p.left_dof],
+                    right_rate: 1.0 / layout.mass[p.right_dof],
+                })
+            })
+            .collect();
+        Contact {
+            system,
+            pairs,
+            ground,
+        }
+    }
+
+    /// ẏ at offset s, y = (u, u̇) (the equation above).
+    pub fn rate(&self, s: f64, y: &Vec<f64>) -> Vec<f64> {
+        let n = y.len() / 2;
+        let (u, v) = y.split_at(n);
+        let mut out = vec![0.0; 2 * n];
+        out[..n].copy_from_slice(v);
+        let acc = &mut out[n..];
+        self.system.acceleration(u, v, (self.ground)(s), acc);
+        for p in &self.pairs {
+            let delta = u[p.left] - u[p.right] - p.gap;
+            let f = p.law.force(delta, v[p.left] - v[p.right]).force;
+            acc[p.left] -= p.left_rate * f;
+            acc[p.right] += p.right_rate * f;
+        }
+        out
+    }
+
+    /// One accepted step from y0 (f0 = ẏ there), at most `h_max` long,
+    /// from the suggestion `h_try`, shrunk until the error is within
+    /// [`TOLERANCE`] of `scale` = (displacement, velocity); steps below
+    /// `h_min` are accepted (round-off floor). Returns the step and the
+    /// suggested length of the next.
+    pub fn step(
+        &self,
+        (y0, f0): (&Vec<f64>, &Vec<f64>),
+        (h_try, h_max, h_min): (f64, f64, f64),
+        scale: (f64, f64),
+    ) -> (Step<Vec<f64>>, f64) {
+        let n = y0.len() / 2;
+        let mut h = h_try.min(h_max);
+        loop {
+            let step = dopri5::step(&|s, y| self.rate(s, y), 0.0, y0, f0, h);
+            let err = step
+                .error
+                .iter()
+                .enumerate()
+                .map(|(i, e)| (e / (TOLERANCE * if i < n { scale.0 } else { scale.1 })).abs())
+                .fold(0.0, f64::max);
+            let factor = if err > 0.0 {
+                (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
+            } else {
+                5.0
+            };
+            if err <= 1.0 || h <= h_min {
+                // A step cut short by h_max says nothing against h_try.
+                let next = if h < h_try {
+                    h_try.max(h * factor)
+                } else {
+                    h * factor
+                };
+                return (step, next);
+            }
+            h *= factor.min(0.9);
+        }
+    }
+
+    /// The step of length s from y0, taken again.
+    pub fn retake(&self, (y0, f0): (&Vec<f64>, &Vec<f64>), s: f64) -> Step<Vec<f64>> {
+        dopri5::step(&|t, y| self.rate(t, y), 0.0, y0, f0, s)
+    }
+
+    /// The event of function `g`, found near `s` on the polynomials, placed
+    /// on the motion: Newton's method s ← s − g/ġ, with g and ġ from a step
+    /// retaken to each trial, until the update is a few ulps; then moved
+    /// just past the root (g > 0), so that the event is applied on its far
+    /// side, as on the series.
+    pub fn settle(
+        &self,
+        start: (&Vec<f64>, &Vec<f64>),
+        g: &EventFunction,
+        mut s: f64,
+    ) -> Step<Vec<f64>> {
+        let n = start.0.len() / 2;
+        let value = |step: &Step<Vec<f64>>| {
+            let (u, v) = step.y1.split_at(n);
+            g.at(u, v, &step.f1[n..])
+        };
+        let mut step = self.retake(start, s);
+        for _ in 0..NEWTON {
+            let (gs, rate) = value(&step);
+            let ds = -gs / rate;
+            if !ds.is_finite() || rate <= 0.0 || s + ds < 0.0 {
+                break;
+            }
+            if ds.abs() <= 4.0 * f64::EPSILON * s && gs > 0.0 {
+                break;
+            }
+            s = (s + ds).max(if gs <= 0.0 { s.next_up() } else { 0.0 });
+            step = self.retake(start, s);
+        }
+        for _ in 0..NEWTON {
+            let (gs, rate) = value(&step);
+            if gs > 0.0 {
+                break;
+            }
+            let ds = if rate > 0.0 { -gs / rate } else { 0.0 };
+            s = (s + 2.0 * ds).max(s.next_up().next_up());
+            step = self.retake(start, s);
+        }
+        step
+    }
+}
+
+/// u on the accepted `step` from y0 (f0 = ẏ there) as the quintic Hermite
+/// polynomial through (u, u̇, ü) at both ends, u̇ as its derivative, with
+/// the ground (a, ȧ, σ) at the start: a [`Series`] on [0, h].
+pub fn series(
+    (y0, f0): (&Vec<f64>, &Vec<f64>),
+    step: &Step<Vec<f64>>,
+    ground: (f64, f64, f64),
+) -> Series {
+    let n = y0.len() / 2;
+    let mut u = vec![0.0; (ORDER + 1) * n];
+    let mut v = vec![0.0; (ORDER + 1) * n];
+    let (y1, f1) = (&step.y1, &step.f1);
+    for i in 0..n {
+        let q = hermite_quintic(
+            [y0[i], y0[n + i], f0[n + i]],
+            [y1[i], y1[n + i], f1[n + i]],
+            step.h,
+        );
+        for k in 0..=5 {
+            u[k * n + i] = q.c[k];
+        }
+        for k in 0..5 {
+            v[k * n + i] = (k + 1) as f64 * q.c[k + 1];
+        }
+    }
+    Series {
+        n,
+        u,
+        v,
+        ground: ground_coefficients(ground),
+        radius: step.h,
+    }
+}
+
+/// f = law(δ, δ̇) on [0, end] as the quintic through six equally spaced
+/// values, δ and δ̇ the polynomials `delta` and `rate`: the contact force's
+/// peak is its largest value.
+pub fn force_polynomial(law: &Hertzian, delta: &[f64], rate: &[f64], end: f64) -> Vec<f64> {
+    let values = std::array::from_fn(|j| {
+        let s = end * j as f64 / 5.0;
+        law.force(super::poly::eval(delta, s), super::poly::eval(rate, s))
+            .force
+    });
+    equispaced_quintic(&values, end).c[..=5].to_vec()
+}
