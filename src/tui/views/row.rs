@@ -114,7 +114,15 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
             continue;
         };
         let g = geometry(row, run, trace, pane.cursor, x);
-        let title = format!("{}: {} impacts", law.name(), run.impacts());
+        // The law's short name (K, IK, …) where the whole one does not fit.
+        let mut title = format!("{}: {} impacts", law.name(), run.impacts());
+        if title.chars().count() >= usize::from(d.width) {
+            let short = crate::tui::fit::short_law(law.name()).unwrap_or(law.name());
+            title = crate::tui::fit::fit(
+                &format!("{short}: {} impacts", run.impacts()),
+                usize::from(d.width.saturating_sub(1)),
+            );
+        }
         row_drawing::render(buf, *d, app.look, &g, &title);
     }
     match pane.panel {
