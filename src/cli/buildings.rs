@@ -12,7 +12,7 @@ use super::params::ParamArgs;
 use crate::accuracy::timing::median;
 use crate::analysis::row_report::RowReport;
 use crate::analysis::work;
-use crate::model::buildings::matrices::periods;
+use crate::model::buildings::matrices::default_tail;
 use crate::model::buildings::{Ground, Row, load_with};
 use crate::model::physical::parse_acceleration;
 use crate::solver::buildings::{RowError, RowOptions, run_newmark, run_row};
@@ -114,12 +114,7 @@ impl BuildingsArgs {
                 )));
             }
         };
-        let longest = row
-            .buildings
-            .iter()
-            .map(|b| periods(b)[0])
-            .fold(0.0, f64::max);
-        let tail = self.tail.unwrap_or(4.0 * longest);
+        let tail = self.tail.unwrap_or_else(|| default_tail(row));
         if !(tail >= 0.0 && tail.is_finite()) {
             return Err(CliError::Usage(format!(
                 "--tail {tail}: must be a finite number ≥ 0 (s)"
@@ -293,10 +288,7 @@ pub fn figure(
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let seconds = 2.0 * work::row_seconds(row.dofs(), duration, None);
     bounded("figure buildings", seconds, allow_long)?;
-    let mut apart = row.clone();
-    for j in &mut apart.joints {
-        j.gap = f64::INFINITY;
-    }
+    let apart = row.apart();
     let failed = |e: crate::solver::buildings::RowError| CliError::Failed(e.to_string());
     let with = run_row(&row, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
     let without = run_row(&apart, &ground, &RowOptions::lasting(duration)).map_err(failed)?;

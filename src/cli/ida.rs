@@ -37,6 +37,24 @@ pub struct IdaArgs {
     pub levels: String,
     #[command(flatten)]
     pub limits: LimitStateArgs,
+    #[command(flatten)]
+    pub row_limits: RowLimitArgs,
+}
+
+/// The limit states of a row of buildings beside `--acceleration`,
+/// `--force` and pounding (SPEC §12, §13; [`crate::analysis::row_limit_state`]).
+#[derive(Debug, Clone, Default, Args)]
+pub struct RowLimitArgs {
+    /// With --buildings: storey drift ratio limit states, each in (0, 1),
+    /// e.g. 0.005,0.01,0.02 (FEMA's IO, LS, CP for frames) or frame:0.01.
+    #[arg(long, value_name = "[NAME:]RATIO,…")]
+    pub drift: Option<String>,
+    /// With --buildings: the building the limit states read when an item
+    /// names none, and the pounding limit state's: a building of the row
+    /// or `any` [default: any]. `--acceleration`, `--force` and `--drift`
+    /// items may name their own (`frame:0.5g`).
+    #[arg(long, value_name = "NAME|any")]
+    pub building: Option<String>,
 }
 
 /// The limit states beside pounding (SPEC §12), as `ida` and `figure
@@ -88,6 +106,20 @@ pub fn report_with(
         return Err(usage(
             "--level: an IDA runs every level of --levels; use `pounding suite` for one".into(),
         ));
+    }
+    if args.suite.buildings.is_some() {
+        return super::row_ida::report_with(args, emit);
+    }
+    for (flag, given) in [
+        ("--drift", args.row_limits.drift.is_some()),
+        ("--building", args.row_limits.building.is_some()),
+    ] {
+        if given {
+            return Err(usage(format!(
+                "{flag}: applies to a row of buildings; give --buildings PRESET \
+                 (a pair's limit states are --ductility, --acceleration, --force)"
+            )));
+        }
     }
     let levels = parse_levels(&args.levels).map_err(usage)?;
     let states = args.limits.parse()?;
@@ -271,55 +303,8 @@ impl Report for IdaReport<'_> {
                 median("min_gap_m", 1e3)
             );
         }
-        let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "fragility P(exceed | IM = x) = Φ(ln(x/θ)/β), maximum likelihood over all levels (SPEC §12)"
-        );
-        let width = self
-            .fragility
-            .iter()
-            .map(|f| f.limit_state.chars().count())
-            .max()
-            .unwrap_or(11)
-            .max(11);
-        let _ = writeln!(
-            s,
-            "{:<width$}  {:<36}  {}",
-            "limit state", "with pounding", "without pounding (gap = ∞)"
-        );
-        for f in &self.fragility {
-            let _ = writeln!(
-                s,
-                "{:<width$}  {:<36}  {}",
-                f.limit_state,
-                describe(&f.fragility),
-                f.no_pounding_fragility
-                    .as_ref()
-                    .map_or("-".to_string(), describe)
-            );
-        }
-        let _ = writeln!(s);
-        let _ = writeln!(s, "records exceeding each limit state, per level:");
-        let _ = write!(s, "{:<width$}", "level g");
-        for l in &self.levels {
-            let _ = write!(s, " {:>6}", g4(l.level_g));
-        }
-        let _ = writeln!(s);
-        for f in &self.fragility {
-            let _ = write!(s, "{:<width$}", f.limit_state);
-            for c in &f.counts {
-                let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
-            }
-            let _ = writeln!(s);
-            if let Some(free) = &f.no_pounding_counts {
-                let _ = write!(s, "{:<width$}", "  without pounding");
-                for c in free {
-                    let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
-                }
-                let _ = writeln!(s);
-            }
-        }
+        let levels: Vec<f64> = self.levels.iter().map(|l| l.level_g).collect();
+        fragility_table(&mut s, &self.fragility, &levels);
         if let Some(last) = self.levels.last() {
             let _ = writeln!(s);
             let _ = writeln!(
@@ -332,5 +317,59 @@ impl Report for IdaReport<'_> {
         }
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
         s
+    }
+}
+
+/// The fragility of each limit state (SPEC §12), with pounding and
+/// without, and the records exceeding it at each of `levels` (g): the
+/// tables of `ida`, for a pair or a row.
+pub fn fragility_table(s: &mut String, fragility: &[LimitStateFragility], levels: &[f64]) {
+    let _ = writeln!(s);
+    let _ = writeln!(
+        s,
+        "fragility P(exceed | IM = x) = Φ(ln(x/θ)/β), maximum likelihood over all levels (SPEC §12)"
+    );
+    let width = fragility
+        .iter()
+        .map(|f| f.limit_state.chars().count())
+        .max()
+        .unwrap_or(11)
+        .max(11);
+    let _ = writeln!(
+        s,
+        "{:<width$}  {:<36}  {}",
+        "limit state", "with pounding", "without pounding (gap = ∞)"
+    );
+    for f in fragility {
+        let _ = writeln!(
+            s,
+            "{:<width$}  {:<36}  {}",
+            f.limit_state,
+            describe(&f.fragility),
+            f.no_pounding_fragility
+                .as_ref()
+                .map_or("-".to_string(), describe)
+        );
+    }
+    let _ = writeln!(s);
+    let _ = writeln!(s, "records exceeding each limit state, per level:");
+    let _ = write!(s, "{:<width$}", "level g");
+    for l in levels {
+        let _ = write!(s, " {:>6}", g4(*l));
+    }
+    let _ = writeln!(s);
+    for f in fragility {
+        let _ = write!(s, "{:<width$}", f.limit_state);
+        for c in &f.counts {
+            let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
+        }
+        let _ = writeln!(s);
+        if let Some(free) = &f.no_pounding_counts {
+            let _ = write!(s, "{:<width$}", "  without pounding");
+            for c in free {
+                let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
+            }
+            let _ = writeln!(s);
+        }
     }
 }
