@@ -185,23 +185,39 @@ pub fn fragilities(
     );
     all.iter()
         .map(|state| {
-            let with = counts(levels, runs, |r| {
-                state.exceeded(&observed(&r.result, &r.si, yields(r)))
-            });
-            let without = (*state != LimitState::Pounding).then(|| {
-                counts(levels, runs, |r| {
+            fragility_of(
+                state.label(),
+                levels,
+                runs,
+                |r| state.exceeded(&observed(&r.result, &r.si, yields(r))),
+                (*state != LimitState::Pounding).then_some(|r: &SuiteRun| {
                     state.exceeded(&observed(&r.free, &r.free_si, yields(r)))
-                })
-            });
-            LimitStateFragility {
-                limit_state: state.label(),
-                fragility: fragility::fit(&with),
-                counts: with,
-                no_pounding_fragility: without.as_deref().map(fragility::fit),
-                no_pounding_counts: without,
-            }
+                }),
+            )
         })
         .collect()
+}
+
+/// One limit state's counts and fragility over an IDA's runs (`runs[l]` at
+/// `levels[l]`, of a pair or a row): `with` says whether a run exceeds it,
+/// `without` whether the same run without contact does (none for the
+/// pounding limit state, which that run never reaches).
+pub fn fragility_of<R>(
+    label: String,
+    levels: &[f64],
+    runs: &[Vec<R>],
+    with: impl Fn(&R) -> bool,
+    without: Option<impl Fn(&R) -> bool>,
+) -> LimitStateFragility {
+    let with = counts(levels, runs, with);
+    let without = without.map(|exceeds| counts(levels, runs, exceeds));
+    LimitStateFragility {
+        limit_state: label,
+        fragility: fragility::fit(&with),
+        counts: with,
+        no_pounding_fragility: without.as_deref().map(fragility::fit),
+        no_pounding_counts: without,
+    }
 }
 
 #[cfg(test)]

@@ -10,8 +10,7 @@
 //! ([`fragility::fit`], Baker 2015, SPEC §12), and the same fit on the runs
 //! without contact sits beside it.
 
-use super::fragility;
-use super::ida::{LimitStateFragility, counts, over_levels};
+use super::ida::{LimitStateFragility, fragility_of, over_levels};
 use super::row_limit_state::RowLimitState;
 use super::row_suite::{RowCaches, RowSuiteCase, RowSuiteError, RowSuiteRun, run_member};
 use super::suite::{raw_intensity, scaled};
@@ -78,21 +77,14 @@ pub fn fragilities(
     states
         .iter()
         .map(|state| {
-            let with = counts(levels, runs, |r: &RowSuiteRun| {
-                state.exceeded(&r.demands.buildings)
-            });
-            let without = (!state.is_pounding()).then(|| {
-                counts(levels, runs, |r: &RowSuiteRun| {
-                    state.exceeded(&r.demands.no_pounding)
-                })
-            });
-            LimitStateFragility {
-                limit_state: state.label(),
-                fragility: fragility::fit(&with),
-                counts: with,
-                no_pounding_fragility: without.as_deref().map(fragility::fit),
-                no_pounding_counts: without,
-            }
+            fragility_of(
+                state.label(),
+                levels,
+                runs,
+                |r: &RowSuiteRun| state.exceeded(&r.demands.buildings),
+                (!state.is_pounding())
+                    .then_some(|r: &RowSuiteRun| state.exceeded(&r.demands.no_pounding)),
+            )
         })
         .collect()
 }

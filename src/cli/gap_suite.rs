@@ -25,6 +25,16 @@ fn usage(message: String) -> CliError {
     CliError::Usage(message)
 }
 
+/// The probabilities of `--probability` ([`DEFAULT_PROBABILITIES`] when
+/// `None`), each in (0, 1).
+pub fn probabilities(probability: Option<&str>) -> Result<Vec<f64>, CliError> {
+    parse_probabilities(
+        "--probability",
+        probability.unwrap_or(DEFAULT_PROBABILITIES),
+    )
+    .map_err(|e| usage(e.to_string()))
+}
+
 /// Runs the suite of `suite_args` and reports the separation at each of
 /// `probability` (a list, [`DEFAULT_PROBABILITIES`] when `None`), its typed
 /// report handed to `emit`.
@@ -33,11 +43,7 @@ pub fn report_with(
     probability: Option<&str>,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let probabilities = parse_probabilities(
-        "--probability",
-        probability.unwrap_or(DEFAULT_PROBABILITIES),
-    )
-    .map_err(|e| usage(e.to_string()))?;
+    let probabilities = probabilities(probability)?;
     let suite = suite_args.suite.as_str();
     let Ran {
         preset,

@@ -303,27 +303,43 @@ impl Report for IdaReport<'_> {
                 median("min_gap_m", 1e3)
             );
         }
-        let levels: Vec<f64> = self.levels.iter().map(|l| l.level_g).collect();
-        fragility_table(&mut s, &self.fragility, &levels);
-        if let Some(last) = self.levels.last() {
-            let _ = writeln!(s);
-            let _ = writeln!(
-                s,
-                "statistics at the highest level, {} g ({} pounded):",
-                g4(last.level_g),
-                last.statistics.pounded
-            );
-            statistics_table(&mut s, &last.statistics);
-        }
-        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
+        let levels: Vec<(f64, &SuiteStatistics)> = self
+            .levels
+            .iter()
+            .map(|l| (l.level_g, &l.statistics))
+            .collect();
+        closing_tables(&mut s, &self.fragility, &levels, self.elapsed_ms);
         s
     }
 }
 
+/// The closing tables of `ida`, for a pair or a row: the fragility of each
+/// limit state, the statistics at the highest of `levels` (g, with each
+/// level's statistics) and the wall time.
+pub fn closing_tables(
+    s: &mut String,
+    fragility: &[LimitStateFragility],
+    levels: &[(f64, &SuiteStatistics)],
+    elapsed_ms: f64,
+) {
+    let level_values: Vec<f64> = levels.iter().map(|l| l.0).collect();
+    fragility_table(s, fragility, &level_values);
+    if let Some((level, statistics)) = levels.last() {
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "statistics at the highest level, {} g ({} pounded):",
+            g4(*level),
+            statistics.pounded
+        );
+        statistics_table(s, statistics);
+    }
+    let _ = writeln!(s, "elapsed {elapsed_ms:.0} ms");
+}
+
 /// The fragility of each limit state (SPEC §12), with pounding and
-/// without, and the records exceeding it at each of `levels` (g): the
-/// tables of `ida`, for a pair or a row.
-pub fn fragility_table(s: &mut String, fragility: &[LimitStateFragility], levels: &[f64]) {
+/// without, and the records exceeding it at each of `levels` (g).
+fn fragility_table(s: &mut String, fragility: &[LimitStateFragility], levels: &[f64]) {
     let _ = writeln!(s);
     let _ = writeln!(
         s,

@@ -10,29 +10,24 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::CliError;
-use super::gap_suite::{DEFAULT_PROBABILITIES, study_table};
+use super::gap_suite::{probabilities, study_table};
 use super::output::{Emit, num};
 use super::row_suite::{RowHeader, RowRan, run};
 use super::suite::SuiteArgs;
 use crate::analysis::row_gap::JointGap;
 use crate::analysis::row_separation::{JointSeparation, joint_separations};
-use crate::analysis::separation::parse_probabilities;
 use crate::model::params::echo::g4;
 use crate::output::report::Report;
 
 /// Runs the row suite of `suite_args` and reports, per joint, the
-/// separation at each of `probability` ([`DEFAULT_PROBABILITIES`] when
+/// separation at each of `probability` ([`super::gap_suite::DEFAULT_PROBABILITIES`] when
 /// `None`), its typed report handed to `emit`.
 pub fn report_with(
     suite_args: &SuiteArgs,
     probability: Option<&str>,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let probabilities = parse_probabilities(
-        "--probability",
-        probability.unwrap_or(DEFAULT_PROBABILITIES),
-    )
-    .map_err(|e| CliError::Usage(e.to_string()))?;
+    let probabilities = probabilities(probability)?;
     let RowRan {
         case,
         runs,

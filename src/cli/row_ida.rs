@@ -10,11 +10,10 @@ use std::time::Instant;
 use serde::Serialize;
 
 use super::CliError;
-use super::ida::{IdaArgs, fragility_table};
+use super::ida::{IdaArgs, closing_tables};
 use super::output::{Emit, num};
 use super::progress::Progress;
 use super::row_suite::{RowHeader, RowSuiteRow, UNITS, case_of, failed, record_steps, work_of};
-use super::suite::statistics_table;
 use crate::analysis::ida::{LimitStateFragility, parse_levels};
 use crate::analysis::row_ida::{fragilities, plan_levels, run_levels};
 use crate::analysis::row_limit_state::{RowLimitParser, RowLimitState};
@@ -200,19 +199,12 @@ impl Report for RowIdaReport<'_> {
             }
             let _ = writeln!(s);
         }
-        let levels: Vec<f64> = self.levels.iter().map(|l| l.level_g).collect();
-        fragility_table(&mut s, &self.fragility, &levels);
-        if let Some(last) = self.levels.last() {
-            let _ = writeln!(s);
-            let _ = writeln!(
-                s,
-                "statistics at the highest level, {} g ({} pounded):",
-                g4(last.level_g),
-                last.statistics.pounded
-            );
-            statistics_table(&mut s, &last.statistics);
-        }
-        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
+        let levels: Vec<(f64, &SuiteStatistics)> = self
+            .levels
+            .iter()
+            .map(|l| (l.level_g, &l.statistics))
+            .collect();
+        closing_tables(&mut s, &self.fragility, &levels, self.elapsed_ms);
         s
     }
 }

@@ -256,17 +256,7 @@ impl<'a> RowHeader<'a> {
 
     /// The opening lines of a table: the suite, the row and the scaling.
     pub fn table(&self, records: usize, s: &mut String) {
-        let level = match self.scaling.level_g {
-            Some(x) => format!(
-                "each record scaled to {} = {} g",
-                self.scaling.measure,
-                num(x)
-            ),
-            None => format!(
-                "records at their list's scale; {} reported",
-                self.scaling.measure
-            ),
-        };
+        let level = self.scaling.words();
         let _ = writeln!(
             s,
             "suite {} ({records} records), row {}: {}, {} method; {level}",

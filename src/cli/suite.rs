@@ -428,6 +428,16 @@ pub struct ScalingReport {
     pub level_g: Option<f64>,
 }
 
+impl ScalingReport {
+    /// The scaling in words, for a table's opening lines.
+    pub fn words(&self) -> String {
+        match self.level_g {
+            Some(x) => format!("each record scaled to {} = {} g", self.measure, num(x)),
+            None => format!("records at their list's scale; {} reported", self.measure),
+        }
+    }
+}
+
 /// `pounding suite` in every format.
 #[derive(Debug, Serialize)]
 struct SuiteReport<'a> {
@@ -514,17 +524,7 @@ impl Report for SuiteReport<'_> {
 
     fn table(&self) -> String {
         let mut s = String::new();
-        let level = match self.scaling.level_g {
-            Some(x) => format!(
-                "each record scaled to {} = {} g",
-                self.scaling.measure,
-                num(x)
-            ),
-            None => format!(
-                "records at their list's scale; {} reported",
-                self.scaling.measure
-            ),
-        };
+        let level = self.scaling.words();
         let _ = writeln!(
             s,
             "suite {} ({} records), preset {}: {}, {} method",
