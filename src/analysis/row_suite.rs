@@ -88,14 +88,12 @@ pub struct BuildingDemands {
 /// One joint's demands in one record.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct JointDemands {
-    pub left: String,
-    pub right: String,
     /// Impacts over its floor pairs.
     pub impacts: usize,
     /// The largest impact force over its floor pairs, kN (0 without impacts).
     pub max_force_kn: f64,
-    /// The gap that prevents pounding (m) and the code rules, from the run
-    /// without contact ([`joint_gaps`]).
+    /// The joint's buildings, its gap that prevents pounding (m) and the
+    /// code rules, from the run without contact ([`joint_gaps`]).
     #[serde(flatten)]
     pub gap: JointGap,
 }
@@ -268,8 +266,6 @@ impl RowDemands {
                     (n + r.impacts.len(), f.max(r.max_force()))
                 });
                 JointDemands {
-                    left: gap.left.clone(),
-                    right: gap.right.clone(),
                     impacts,
                     max_force_kn: force / 1e3,
                     gap,

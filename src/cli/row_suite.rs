@@ -15,7 +15,7 @@ use super::buildings::BuildingsArgs;
 use super::description::Provenance;
 use super::output::{Emit, num};
 use super::progress::Progress;
-use super::suite::{ScalingReport, SuiteArgs, clip, members, parse_level, statistics_table};
+use super::suite::{ScalingReport, SuiteArgs, clip, members, over_suite_table, parse_level};
 use crate::analysis::row_suite::{
     RowDemands, RowSuiteCase, RowSuiteError, RowSuiteRun, plan, row_intensity, run_suite,
     statistics,
@@ -375,7 +375,7 @@ impl RowSuiteRow {
             lines.push(line);
         }
         for (j, joint) in d.joints.iter().enumerate() {
-            let name = format!("joint{} {}–{}", j + 1, joint.left, joint.right);
+            let name = format!("joint{} {}–{}", j + 1, joint.gap.left, joint.gap.right);
             let mut line = head("joint", &name, joint.impacts, joint.max_force_kn);
             line.extend(std::iter::repeat_n(String::new(), 6));
             line.extend(
@@ -492,15 +492,7 @@ impl Report for RowSuiteReport<'_> {
         let mut s = String::new();
         self.row.table(self.records.len(), &mut s);
         records_table(&mut s, &self.records);
-        let st = &self.statistics;
-        let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "statistics over {} records ({} pounded): median, 16th and 84th percentiles, \
-             lognormal dispersion β",
-            st.records, st.pounded
-        );
-        statistics_table(&mut s, st);
+        over_suite_table(&mut s, &self.statistics);
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
         s
     }

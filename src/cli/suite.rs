@@ -602,18 +602,22 @@ impl Report for SuiteReport<'_> {
                 );
             }
         }
-        let st = &self.statistics;
-        let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "statistics over {} records ({} pounded): median, 16th and 84th percentiles, \
-             lognormal dispersion β",
-            st.records, st.pounded
-        );
-        statistics_table(&mut s, st);
+        over_suite_table(&mut s, &self.statistics);
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
         s
     }
+}
+
+/// The statistics over a suite's records (SPEC §12), with their heading.
+pub fn over_suite_table(s: &mut String, st: &SuiteStatistics) {
+    let _ = writeln!(s);
+    let _ = writeln!(
+        s,
+        "statistics over {} records ({} pounded): median, 16th and 84th percentiles, \
+         lognormal dispersion β",
+        st.records, st.pounded
+    );
+    statistics_table(s, st);
 }
 
 /// The statistics of a suite (SPEC §12), one line per demand.
