@@ -34,16 +34,18 @@ TEXT = "Optional[str]"
 NUMBER = "Union[float, str, None]"
 SUITE = [("im", TEXT), ("level", NUMBER), ("allow_unreliable", "bool")]
 LIMITS = [("ductility", TEXT), ("acceleration", TEXT), ("force", TEXT)]
+ROW = [("buildings", TEXT)]
+ROW_LIMITS = [("drift", TEXT), ("building", TEXT)]
 
 # Each function: its leading arguments, then its own flags (keyword-only).
 COMMANDS = {
     "run": ([], [("history", "bool"), ("repeat", "int"), ("allow_large", "bool"), ("allow_unreliable", "bool")]),
     "spectrum": ([], [("omega1", TEXT), ("mu", NUMBER), ("family", TEXT)]),
     "map": ([("x", "str"), ("y", "str")], [("mu", NUMBER), ("suite", TEXT)] + SUITE[:2]),
-    "gap": ([], [("x", TEXT), ("mu", NUMBER), ("suite", TEXT), ("probability", TEXT)] + SUITE[:2]),
-    "suite": ([("suite", "str")], SUITE),
-    "ida": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS),
-    "fragility": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS),
+    "gap": ([], [("x", TEXT), ("mu", NUMBER), ("suite", TEXT), ("probability", TEXT)] + SUITE[:2] + ROW),
+    "suite": ([("suite", "str")], SUITE + ROW),
+    "ida": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS + ROW + ROW_LIMITS),
+    "fragility": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS + ROW + ROW_LIMITS),
 }
 
 

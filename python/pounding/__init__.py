@@ -198,6 +198,8 @@ def gap(*, preset: Optional[str] = None, **keys: Any) -> dict:
 
     x: sweep one parameter, ``KEY=START:STOP:STEP``; mu: frequency ratio.
     suite, im, level, probability: the separation over a suite of records.
+    buildings: a row of buildings (a built-in row or a path): per joint its
+        gap, or with suite its separation at each probability.
     The points (or records) are numpy arrays.
     {common}
     """
@@ -210,6 +212,9 @@ def suite(suite: str, *, preset: Optional[str] = None, **keys: Any) -> dict:
 
     suite: a directory, a list file, or ``synthetic:N[@SEED]``.
     im: pga or sa:T; level: scale every record to this intensity (g).
+    buildings: a row of buildings instead (``"block-and-frame"`` or a path):
+        per record each building's and joint's demands; im ``sa`` is Sa(T1)
+        of its leftmost building.
     allow_unreliable: return unreliable results (flagged) instead of raising.
     The records are numpy arrays.
     {common}
@@ -223,6 +228,8 @@ def ida(suite: str, levels: str, *, preset: Optional[str] = None, **keys: Any) -
 
     suite: the records; levels: intensities in g, START:STOP:STEP or X1,X2,…
     im: pga or sa:T; ductility, acceleration, force: limit states beside pounding.
+    buildings: a row of buildings; drift (storey drift ratios), acceleration
+        and force items ``[NAME:]VALUE``, building: the one they read by default.
     Each level's records, the levels, and each limit state's counts are numpy arrays.
     {common}
     """

@@ -135,6 +135,31 @@ def test_suite_ida_and_fragility(cli):
     same(f["fragility"][0]["fragility"], theirs["fragility"][0]["fragility"])
 
 
+def test_a_rows_suite_ida_and_gap_are_the_cli_json(cli):
+    # A row of buildings (SPEC §13) under a suite: the same reports as the command line's.
+    row = ("--buildings", "block-and-frame", "--suite", "synthetic:3")
+    s = pounding.suite(suite="synthetic:3", buildings="block-and-frame", level=0.3)
+    theirs = cli.json("suite", *row, "--level", "0.3")
+    assert list(s["records"]["record"]) == [r["record"] for r in theirs["records"]]
+    assert [v.hex() for v in s["records"]["scale"]] == [r["scale"].hex() for r in theirs["records"]]
+    for ours, their in zip(s["records"]["buildings"], theirs["records"]):
+        same(ours, their["buildings"])
+    same(s["statistics"], theirs["statistics"])
+    same(s["buildings"], theirs["buildings"])
+    levels = "0.1:0.3:0.1"
+    i = pounding.ida(suite="synthetic:3", levels=levels, buildings="block-and-frame", drift="0.005,0.01")
+    theirs = cli.json("ida", *row, "--levels", levels, "--drift", "0.005,0.01")
+    np.testing.assert_array_equal(i["levels"]["level_g"], [0.1, 0.2, 0.3])
+    assert [f["limit_state"] for f in i["fragility"]] == [f["limit_state"] for f in theirs["fragility"]]
+    for ours, their in zip(i["fragility"], theirs["fragility"]):
+        same(ours["fragility"], their["fragility"])
+        np.testing.assert_array_equal(ours["counts"]["exceeded"], [c["exceeded"] for c in their["counts"]])
+    f = pounding.fragility(suite="synthetic:3", levels=levels, buildings="block-and-frame", drift="frame:0.01")
+    assert f["fragility"][1]["limit_state"] == "drift>0.01 (frame)"
+    g = pounding.gap(suite="synthetic:3", buildings="block-and-frame", level=0.3)
+    same(g["joints"], cli.json("gap", *row, "--level", "0.3")["joints"])
+
+
 def test_presets_and_params(cli):
     names = [p["name"] for p in pounding.presets()]
     assert names[:2] == ["set1", "set2"] and "two-buildings" in names

@@ -14,6 +14,8 @@
 //! (gap = ∞), so the same fragility of the no-pounding pair sits beside it,
 //! and the effect of pounding on a limit state is one comparison.
 
+use std::sync::Mutex;
+
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -71,23 +73,50 @@ pub fn run_levels(
     plans: &[Vec<MemberPlan>],
     done: &(dyn Fn(&SuiteRun) + Sync),
 ) -> Vec<Vec<SuiteRun>> {
-    let pairs: Vec<(usize, usize)> = (0..plans.len())
-        .flat_map(|l| (0..members.len()).map(move |j| (l, j)))
-        .collect();
-    let mut runs: Vec<SuiteRun> = pairs
-        .par_iter()
-        .map(|&(l, j)| {
+    over_levels(
+        plans.len(),
+        members.len(),
+        || (),
+        |_, l, j| {
             let run = run_member(case, &members[j], &plans[l][j]);
             done(&run);
             run
+        },
+    )
+}
+
+/// `run(state, l, j)` for every level l < `levels` and record j <
+/// `records`, in parallel as one pool of work (so that the cores stay busy
+/// to the end), returned level by level, in suite order. Each worker
+/// thread has its own `state`, made by `init` and kept from run to run (a
+/// cache of what the runs share).
+pub fn over_levels<R: Send, S: Send>(
+    levels: usize,
+    records: usize,
+    init: impl Fn() -> S,
+    run: impl Fn(&mut S, usize, usize) -> R + Sync + Send,
+) -> Vec<Vec<R>> {
+    let pairs: Vec<(usize, usize)> = (0..levels)
+        .flat_map(|l| (0..records).map(move |j| (l, j)))
+        .collect();
+    let states: Vec<Mutex<S>> = (0..rayon::current_num_threads().max(1))
+        .map(|_| Mutex::new(init()))
+        .collect();
+    let mut runs: Vec<R> = pairs
+        .par_iter()
+        .map(|&(l, j)| {
+            // Only this worker takes its own state: the lock is never contended.
+            let worker = rayon::current_thread_index().unwrap_or(0) % states.len();
+            let mut state = states[worker].lock().unwrap_or_else(|e| e.into_inner());
+            run(&mut state, l, j)
         })
         .collect();
-    let mut levels = Vec::with_capacity(plans.len());
-    for _ in 0..plans.len() {
-        let rest = runs.split_off(members.len().min(runs.len()));
-        levels.push(std::mem::replace(&mut runs, rest));
+    let mut out = Vec::with_capacity(levels);
+    for _ in 0..levels {
+        let rest = runs.split_off(records.min(runs.len()));
+        out.push(std::mem::replace(&mut runs, rest));
     }
-    levels
+    out
 }
 
 /// What a limit state reads of one run (SPEC §12): whether it pounded, each
@@ -124,12 +153,9 @@ pub struct LimitStateFragility {
     pub no_pounding_fragility: Option<Fragility>,
 }
 
-/// The counts of `state` at each level: runs, and runs that exceed it.
-fn counts(
-    levels: &[f64],
-    runs: &[Vec<SuiteRun>],
-    exceeds: impl Fn(&SuiteRun) -> bool,
-) -> Vec<LevelCount> {
+/// The counts of a limit state at each level: n_l runs, and the k_l of
+/// them that exceed it (SPEC §12), for the runs of a pair or of a row.
+pub fn counts<R>(levels: &[f64], runs: &[Vec<R>], exceeds: impl Fn(&R) -> bool) -> Vec<LevelCount> {
     levels
         .iter()
         .zip(runs)
@@ -159,23 +185,39 @@ pub fn fragilities(
     );
     all.iter()
         .map(|state| {
-            let with = counts(levels, runs, |r| {
-                state.exceeded(&observed(&r.result, &r.si, yields(r)))
-            });
-            let without = (*state != LimitState::Pounding).then(|| {
-                counts(levels, runs, |r| {
+            fragility_of(
+                state.label(),
+                levels,
+                runs,
+                |r| state.exceeded(&observed(&r.result, &r.si, yields(r))),
+                (*state != LimitState::Pounding).then_some(|r: &SuiteRun| {
                     state.exceeded(&observed(&r.free, &r.free_si, yields(r)))
-                })
-            });
-            LimitStateFragility {
-                limit_state: state.label(),
-                fragility: fragility::fit(&with),
-                counts: with,
-                no_pounding_fragility: without.as_deref().map(fragility::fit),
-                no_pounding_counts: without,
-            }
+                }),
+            )
         })
         .collect()
+}
+
+/// One limit state's counts and fragility over an IDA's runs (`runs[l]` at
+/// `levels[l]`, of a pair or a row): `with` says whether a run exceeds it,
+/// `without` whether the same run without contact does (none for the
+/// pounding limit state, which that run never reaches).
+pub fn fragility_of<R>(
+    label: String,
+    levels: &[f64],
+    runs: &[Vec<R>],
+    with: impl Fn(&R) -> bool,
+    without: Option<impl Fn(&R) -> bool>,
+) -> LimitStateFragility {
+    let with = counts(levels, runs, with);
+    let without = without.map(|exceeds| counts(levels, runs, exceeds));
+    LimitStateFragility {
+        limit_state: label,
+        fragility: fragility::fit(&with),
+        counts: with,
+        no_pounding_fragility: without.as_deref().map(fragility::fit),
+        no_pounding_counts: without,
+    }
 }
 
 #[cfg(test)]
@@ -185,7 +227,7 @@ mod tests {
     #[test]
     fn counts_are_per_level() {
         // Two levels of no runs: the counts still name their levels.
-        let c = counts(&[0.1, 0.2], &[vec![], vec![]], |_| true);
+        let c = counts::<SuiteRun>(&[0.1, 0.2], &[vec![], vec![]], |_| true);
         assert_eq!(c.len(), 2);
         assert_eq!((c[1].level, c[1].runs, c[1].exceeded), (0.2, 0, 0));
     }

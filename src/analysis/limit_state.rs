@@ -184,12 +184,13 @@ pub fn parse_force(text: &str) -> Result<Vec<LimitState>, LimitStateError> {
 }
 
 /// Each comma-separated item of `text` read by `read`, or the first
-/// failure as `FLAG `item`: must be ALLOWED`.
-fn items(
+/// failure as `FLAG `item`: must be ALLOWED` (a pair's limit states or a
+/// row's, [`super::row_limit_state`]).
+pub(crate) fn items<T, E: fmt::Display>(
     flag: &str,
     text: &str,
-    read: impl Fn(&str) -> Result<LimitState, &'static str>,
-) -> Result<Vec<LimitState>, LimitStateError> {
+    read: impl Fn(&str) -> Result<T, E>,
+) -> Result<Vec<T>, LimitStateError> {
     text.split(',')
         .map(|item| {
             read(item.trim()).map_err(|allowed| {
@@ -232,7 +233,7 @@ fn parse_sided(
 
 /// An acceleration in g: `0.5g` as written (0.3g stays 0.3, not 0.3·g/g),
 /// a bare number in m/s² as [`physical::parse_acceleration`] reads it, over g.
-fn acceleration_g(text: &str) -> Option<f64> {
+pub(crate) fn acceleration_g(text: &str) -> Option<f64> {
     match text.strip_suffix(['g', 'G']) {
         Some(number) => number.trim().parse().ok(),
         None => physical::parse_acceleration(text).map(|a| a / G),
@@ -240,7 +241,7 @@ fn acceleration_g(text: &str) -> Option<f64> {
 }
 
 /// `v` if it is a finite number > 0.
-fn positive(v: Option<f64>) -> Option<f64> {
+pub(crate) fn positive(v: Option<f64>) -> Option<f64> {
     v.filter(|v| v.is_finite() && *v > 0.0)
 }
 

@@ -27,6 +27,11 @@
 //!   median, percentiles and dispersion of a demand over a suite;
 //! - [`risk`]: the risk picture of one pair over a suite: P(pounding)
 //!   against the gap, the IDA of the left drift and the pounding fragility;
+//! - [`row_suite`], [`row_ida`], [`row_limit_state`], [`row_separation`]:
+//!   the same studies on a row of buildings (SPEC §13): each record's
+//!   demands per building and joint, the IDA and fragility of a building's
+//!   drift, acceleration, impact force or pounding, and the separation at a
+//!   probability per joint;
 //! - [`suite_map`]: P(pounding) and the median amplification over two
 //!   physical quantities of the buildings, under a suite (SPEC §12);
 //! - [`shard`]: a sweep cut into shards balanced by estimated work, and
@@ -44,7 +49,11 @@ pub mod limit_state;
 pub mod map;
 pub mod risk;
 pub mod row_gap;
+pub mod row_ida;
+pub mod row_limit_state;
 pub mod row_report;
+pub mod row_separation;
+pub mod row_suite;
 pub mod separation;
 pub mod shard;
 pub mod similarity;

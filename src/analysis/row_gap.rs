@@ -11,11 +11,11 @@ use serde::Serialize;
 
 use crate::analysis::gap::CodeRules;
 use crate::model::buildings::matrices::circular_frequencies;
-use crate::model::buildings::{Ground, Row};
+use crate::model::buildings::{FloorPair, Ground, Row};
 use crate::output::report::Report;
-use crate::solver::buildings::{RowError, RowOptions, run_row};
+use crate::solver::buildings::{RowError, RowOptions, RowRun, run_row};
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct JointGap {
     pub left: String,
     pub right: String,
@@ -43,17 +43,31 @@ pub fn row_gap(
     duration: f64,
     excitation: &str,
 ) -> Result<RowGapReport, RowError> {
-    let mut free = row.clone();
-    for j in &mut free.joints {
-        j.gap = f64::INFINITY;
-    }
-    let run = run_row(&free, ground, &RowOptions::lasting(duration))?;
-    let facing = free.facing_floors();
-    let joints = (0..row.joints.len())
+    let run = run_row(&row.apart(), ground, &RowOptions::lasting(duration))?;
+    Ok(RowGapReport {
+        row: row.name.clone(),
+        excitation: excitation.to_string(),
+        duration,
+        joints: joint_gaps(row, &run),
+    })
+}
+
+/// Every joint's gap that prevents pounding and code rules from `free`, a
+/// run of `row` in which no floors touched (its run without contact, or a
+/// run with contact that had no impact: the same motion). Per joint,
+///
+/// ```text
+/// d_min = max(0, max over paired floors (i, j) and over t of u_A,i(t) − u_B,j(t))   (SPEC §13, §11)
+/// ```
+///
+/// and each code rule the largest over the paired floors of the rule on
+/// their separate peaks.
+pub fn joint_gaps(row: &Row, free: &RowRun) -> Vec<JointGap> {
+    let facing = row.facing_floors();
+    (0..row.joints.len())
         .map(|j| {
             let (a, b) = (&row.buildings[j], &row.buildings[j + 1]);
-            let (wa, wb) = (circular_frequencies(a)[0], circular_frequencies(b)[0]);
-            let xi = 0.5 * (a.damping + b.damping);
+            let (wa, wb, xi) = joint_modes(row, j);
             let mut out = JointGap {
                 left: a.name.clone(),
                 right: b.name.clone(),
@@ -65,9 +79,8 @@ pub fn row_gap(
             };
             for (k, p) in facing.iter().enumerate().filter(|(_, p)| p.joint == j) {
                 out.floors.push((p.left_floor, p.right_floor));
-                out.min_gap = out.min_gap.max(run.max_relative[k]);
-                let ua = run.floors[j][p.left_floor - 1].displacement;
-                let ub = run.floors[j + 1][p.right_floor - 1].displacement;
+                out.min_gap = out.min_gap.max(free.max_relative[k]);
+                let (ua, ub) = floor_peaks(free, p);
                 let rules = CodeRules::of(ua, ub, wa, wb, xi);
                 out.abs = out.abs.max(rules.absolute_sum);
                 out.srss = out.srss.max(rules.srss);
@@ -75,13 +88,27 @@ pub fn row_gap(
             }
             out
         })
-        .collect();
-    Ok(RowGapReport {
-        row: row.name.clone(),
-        excitation: excitation.to_string(),
-        duration,
-        joints,
-    })
+        .collect()
+}
+
+/// What the double-difference rule takes at joint `j` (SPEC §11): the
+/// first-mode circular frequencies (rad/s) of its left and right buildings
+/// and their mean damping ratio ξ.
+pub fn joint_modes(row: &Row, j: usize) -> (f64, f64, f64) {
+    let (a, b) = (&row.buildings[j], &row.buildings[j + 1]);
+    (
+        circular_frequencies(a)[0],
+        circular_frequencies(b)[0],
+        0.5 * (a.damping + b.damping),
+    )
+}
+
+/// The peaks max|u_A,i| and max|u_B,j| (m) of a paired floor's two floors in `run`.
+pub fn floor_peaks(run: &RowRun, pair: &FloorPair) -> (f64, f64) {
+    (
+        run.floors[pair.left][pair.left_floor - 1].displacement,
+        run.floors[pair.right][pair.right_floor - 1].displacement,
+    )
 }
 
 impl Report for RowGapReport {

@@ -281,7 +281,7 @@ pub struct SeparationStudy {
 
 /// The median of `values`, linear between the two middle order statistics
 /// (numpy's default, SPEC §12). NaN when there are none.
-fn median(values: impl Iterator<Item = f64>) -> f64 {
+pub fn median(values: impl Iterator<Item = f64>) -> f64 {
     super::statistics::quantile(&sorted(values), 0.5)
 }
 
@@ -293,16 +293,6 @@ fn median(values: impl Iterator<Item = f64>) -> f64 {
 pub fn study(records: &[RecordGap], probabilities: &[f64]) -> SeparationStudy {
     assert!(!records.is_empty(), "no records");
     let gaps: Vec<f64> = records.iter().map(|r| r.min_gap).collect();
-    check(&gaps);
-    let lognormal = lognormal_fit(&gaps);
-    let at_probability: Vec<GapAtProbability> = probabilities
-        .iter()
-        .map(|&p| GapAtProbability {
-            probability: p,
-            empirical: gap_at_probability(&gaps, p),
-            lognormal: lognormal.map(|fit| fit.gap_at_probability(p)),
-        })
-        .collect();
     let record_rules: Vec<CodeRules> = records
         .iter()
         .map(|r| CodeRules::of(r.peak_left, r.peak_right, r.omega1, r.omega2, r.damping))
@@ -313,21 +303,55 @@ pub fn study(records: &[RecordGap], probabilities: &[f64]) -> SeparationStudy {
     ];
     let correlation = median(record_rules.iter().map(|r| r.correlation));
     let at_median = CodeRules::with_correlation(median_peaks[0], median_peaks[1], correlation);
+    study_of(&gaps, &record_rules, at_median, median_peaks, probabilities)
+}
+
+/// The separation study from each record's minimum gap `gaps[j]` and code
+/// rules `record_rules[j]`, with the rules `at_median` on the median peaks
+/// `median_peaks` (module docs): [`study`] for a pair, and for each joint of
+/// a row ([`super::row_separation`]), whose rules are the largest over its
+/// paired floors.
+///
+/// # Panics
+/// As [`study`]; and if the two lists differ in length.
+pub fn study_of(
+    gaps: &[f64],
+    record_rules: &[CodeRules],
+    at_median: CodeRules,
+    median_peaks: [f64; 2],
+    probabilities: &[f64],
+) -> SeparationStudy {
+    assert!(!gaps.is_empty(), "no records");
+    assert_eq!(
+        gaps.len(),
+        record_rules.len(),
+        "one set of rules per record"
+    );
+    check(gaps);
+    let lognormal = lognormal_fit(gaps);
+    let at_probability: Vec<GapAtProbability> = probabilities
+        .iter()
+        .map(|&p| GapAtProbability {
+            probability: p,
+            empirical: gap_at_probability(gaps, p),
+            lognormal: lognormal.map(|fit| fit.gap_at_probability(p)),
+        })
+        .collect();
     let rules = at_median
         .named()
         .into_iter()
         .enumerate()
         .map(|(i, (rule, value))| {
-            let holds = records
+            let holds = gaps
                 .iter()
-                .zip(&record_rules)
-                .filter(|(r, rules)| rules.named()[i].1 >= r.min_gap)
+                .zip(record_rules)
+                .filter(|(d, rules)| rules.named()[i].1 >= **d)
                 .count();
             RuleOnSuite {
                 rule,
-                holds: holds as f64 / records.len() as f64,
+                holds: holds as f64 / gaps.len() as f64,
                 at_median_peaks: value,
-                pounding_probability: probability_of_pounding(&gaps, value),
+                pounding_probability: probability_of_pounding(gaps, value),
                 sufficient_at: at_probability
                     .iter()
                     .filter(|g| value >= g.empirical)
@@ -337,13 +361,13 @@ pub fn study(records: &[RecordGap], probabilities: &[f64]) -> SeparationStudy {
         })
         .collect();
     SeparationStudy {
-        records: records.len(),
+        records: gaps.len(),
         zero_gaps: gaps.iter().filter(|&&d| d == 0.0).count(),
         median_min_gap: median(gaps.iter().copied()),
         at_probability,
         lognormal,
         median_peaks,
-        correlation,
+        correlation: at_median.correlation,
         rules,
     }
 }

@@ -287,10 +287,7 @@ pub fn figure(
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let seconds = 2.0 * work::row_seconds(row.dofs(), duration, None);
     bounded("figure buildings", seconds, allow_long)?;
-    let mut apart = row.clone();
-    for j in &mut apart.joints {
-        j.gap = f64::INFINITY;
-    }
+    let apart = row.apart();
     let failed = |e: crate::solver::buildings::RowError| CliError::Failed(e.to_string());
     let with = run_row(&row, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
     let without = run_row(&apart, &ground, &RowOptions::lasting(duration)).map_err(failed)?;

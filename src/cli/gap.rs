@@ -59,10 +59,34 @@ pub fn report_with(
     args: &GapArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    if args.row.buildings.is_some() {
-        return super::buildings::gap(&args.row, &args.params, args.long.allow_long, emit);
-    }
     let others = [("--probability", args.probability.is_some())];
+    if args.row.buildings.is_some() {
+        let Some(mut suite_args) =
+            args.records
+                .request(&args.params, args.output, args.long, &others)?
+        else {
+            return super::buildings::gap(&args.row, &args.params, args.long.allow_long, emit);
+        };
+        if let Some((flag, _)) = [
+            ("--x", args.x.is_some()),
+            ("--mu", args.mu.is_some()),
+            ("--scale", args.row.scale.is_some()),
+            ("--tail", args.row.tail.is_some()),
+            ("--amplitude", args.row.amplitude.is_some()),
+            ("--period", args.row.period.is_some()),
+        ]
+        .into_iter()
+        .find(|(_, given)| *given)
+        {
+            return Err(CliError::Usage(format!(
+                "{flag}: not with --buildings and --suite (each record is scaled by --level \
+                 or its list, and runs four fundamental periods past its end); drop {flag}"
+            )));
+        }
+        suite_args.buildings = args.row.buildings.clone();
+        suite_args.shard = args.shard.clone();
+        return super::row_gap_suite::report_with(&suite_args, args.probability.as_deref(), emit);
+    }
     if let Some(suite_args) = args
         .records
         .request(&args.params, args.output, args.long, &others)?

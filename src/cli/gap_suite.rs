@@ -25,6 +25,16 @@ fn usage(message: String) -> CliError {
     CliError::Usage(message)
 }
 
+/// The probabilities of `--probability` ([`DEFAULT_PROBABILITIES`] when
+/// `None`), each in (0, 1).
+pub fn probabilities(probability: Option<&str>) -> Result<Vec<f64>, CliError> {
+    parse_probabilities(
+        "--probability",
+        probability.unwrap_or(DEFAULT_PROBABILITIES),
+    )
+    .map_err(|e| usage(e.to_string()))
+}
+
 /// Runs the suite of `suite_args` and reports the separation at each of
 /// `probability` (a list, [`DEFAULT_PROBABILITIES`] when `None`), its typed
 /// report handed to `emit`.
@@ -33,11 +43,7 @@ pub fn report_with(
     probability: Option<&str>,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let probabilities = parse_probabilities(
-        "--probability",
-        probability.unwrap_or(DEFAULT_PROBABILITIES),
-    )
-    .map_err(|e| usage(e.to_string()))?;
+    let probabilities = probabilities(probability)?;
     let suite = suite_args.suite.as_str();
     let Ran {
         preset,
@@ -164,76 +170,88 @@ impl Report for SeparationReport<'_> {
             "separation over suite {} ({} records), preset {}; {scaling}",
             self.suite, st.records, self.provenance.preset
         );
-        let _ = writeln!(
-            s,
-            "Π_d,min of each record from its run without contact (SPEC §11): median {} mm{}",
-            g4(st.median_min_gap * 1e3),
-            st.lognormal.map_or(String::new(), |f| format!(
-                ", lognormal median {} mm, β = {:.3}",
-                g4(f.median * 1e3),
-                f.dispersion
-            ))
-        );
-        let _ = writeln!(s);
+        study_table(&mut s, st, self.gap_m, self.pounding_probability_at_gap);
+        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
+        s
+    }
+}
+
+/// A separation study (SPEC §12) as a table: the minimum gaps' median and
+/// fit, the gap at each probability, P(pounding) at the preset's gap
+/// `gap_m` (m) and the code rules; for a pair, or for one joint of a row.
+pub fn study_table(
+    s: &mut String,
+    st: &SeparationStudy,
+    gap_m: f64,
+    pounding_probability_at_gap: f64,
+) {
+    let _ = writeln!(
+        s,
+        "Π_d,min of each record from its run without contact (SPEC §11): median {} mm{}",
+        g4(st.median_min_gap * 1e3),
+        st.lognormal.map_or(String::new(), |f| format!(
+            ", lognormal median {} mm, β = {:.3}",
+            g4(f.median * 1e3),
+            f.dispersion
+        ))
+    );
+    let _ = writeln!(s);
+    let _ = writeln!(
+        s,
+        "{:>11}  {:>22}  {:>14}",
+        "probability", "gap d_(⌈pN⌉) mm", "lognormal mm"
+    );
+    for a in &st.at_probability {
         let _ = writeln!(
             s,
             "{:>11}  {:>22}  {:>14}",
-            "probability", "gap d_(⌈pN⌉) mm", "lognormal mm"
+            num(a.probability),
+            g4(a.empirical * 1e3),
+            a.lognormal.map_or("-".to_string(), |v| g4(v * 1e3))
         );
-        for a in &st.at_probability {
-            let _ = writeln!(
-                s,
-                "{:>11}  {:>22}  {:>14}",
-                num(a.probability),
-                g4(a.empirical * 1e3),
-                a.lognormal.map_or("-".to_string(), |v| g4(v * 1e3))
-            );
-        }
-        let _ = writeln!(s);
-        let pounded = (self.pounding_probability_at_gap * st.records as f64).round() as usize;
-        let _ = writeln!(
-            s,
-            "at the preset's gap of {} mm: P(pounding) = {} ({} of {} records)",
-            g4(self.gap_m * 1e3),
-            g4(self.pounding_probability_at_gap),
-            pounded,
-            st.records
-        );
-        let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "code rules (SPEC §11) on each record's separate peaks, and on the median peaks \
-             ({} mm, {} mm; ρ = {:.3}):",
-            g4(st.median_peaks[0] * 1e3),
-            g4(st.median_peaks[1] * 1e3),
-            st.correlation
-        );
+    }
+    let _ = writeln!(s);
+    let pounded = (pounding_probability_at_gap * st.records as f64).round() as usize;
+    let _ = writeln!(
+        s,
+        "at the preset's gap of {} mm: P(pounding) = {} ({} of {} records)",
+        g4(gap_m * 1e3),
+        g4(pounding_probability_at_gap),
+        pounded,
+        st.records
+    );
+    let _ = writeln!(s);
+    let _ = writeln!(
+        s,
+        "code rules (SPEC §11) on each record's separate peaks, and on the median peaks \
+         ({} mm, {} mm; ρ = {:.3}):",
+        g4(st.median_peaks[0] * 1e3),
+        g4(st.median_peaks[1] * 1e3),
+        st.correlation
+    );
+    let _ = writeln!(
+        s,
+        "{:<5} {:>16} {:>18} {:>12}  {}",
+        "rule", "holds (records)", "on medians mm", "P(pounding)", "enough at probability"
+    );
+    for r in &st.rules {
+        let enough = if r.sufficient_at.is_empty() {
+            "none of those asked".to_string()
+        } else {
+            r.sufficient_at
+                .iter()
+                .map(|p| num(*p))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
         let _ = writeln!(
             s,
             "{:<5} {:>16} {:>18} {:>12}  {}",
-            "rule", "holds (records)", "on medians mm", "P(pounding)", "enough at probability"
+            r.rule,
+            format!("{:.0} %", 100.0 * r.holds),
+            g4(r.at_median_peaks * 1e3),
+            g4(r.pounding_probability),
+            enough
         );
-        for r in &st.rules {
-            let enough = if r.sufficient_at.is_empty() {
-                "none of those asked".to_string()
-            } else {
-                r.sufficient_at
-                    .iter()
-                    .map(|p| num(*p))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            };
-            let _ = writeln!(
-                s,
-                "{:<5} {:>16} {:>18} {:>12}  {}",
-                r.rule,
-                format!("{:.0} %", 100.0 * r.holds),
-                g4(r.at_median_peaks * 1e3),
-                g4(r.pounding_probability),
-                enough
-            );
-        }
-        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
-        s
     }
 }

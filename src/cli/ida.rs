@@ -37,6 +37,24 @@ pub struct IdaArgs {
     pub levels: String,
     #[command(flatten)]
     pub limits: LimitStateArgs,
+    #[command(flatten)]
+    pub row_limits: RowLimitArgs,
+}
+
+/// The limit states of a row of buildings beside `--acceleration`,
+/// `--force` and pounding (SPEC §12, §13; [`crate::analysis::row_limit_state`]).
+#[derive(Debug, Clone, Default, Args)]
+pub struct RowLimitArgs {
+    /// With --buildings: storey drift ratio limit states, each in (0, 1),
+    /// e.g. 0.005,0.01,0.02 (FEMA's IO, LS, CP for frames) or frame:0.01.
+    #[arg(long, value_name = "[NAME:]RATIO,…")]
+    pub drift: Option<String>,
+    /// With --buildings: the building the limit states read when an item
+    /// names none, and the pounding limit state's: a building of the row
+    /// or `any` [default: any]. `--acceleration`, `--force` and `--drift`
+    /// items may name their own (`frame:0.5g`).
+    #[arg(long, value_name = "NAME|any")]
+    pub building: Option<String>,
 }
 
 /// The limit states beside pounding (SPEC §12), as `ida` and `figure
@@ -88,6 +106,20 @@ pub fn report_with(
         return Err(usage(
             "--level: an IDA runs every level of --levels; use `pounding suite` for one".into(),
         ));
+    }
+    if args.suite.buildings.is_some() {
+        return super::row_ida::report_with(args, emit);
+    }
+    for (flag, given) in [
+        ("--drift", args.row_limits.drift.is_some()),
+        ("--building", args.row_limits.building.is_some()),
+    ] {
+        if given {
+            return Err(usage(format!(
+                "{flag}: applies to a row of buildings; give --buildings PRESET \
+                 (a pair's limit states are --ductility, --acceleration, --force)"
+            )));
+        }
     }
     let levels = parse_levels(&args.levels).map_err(usage)?;
     let states = args.limits.parse()?;
@@ -271,66 +303,89 @@ impl Report for IdaReport<'_> {
                 median("min_gap_m", 1e3)
             );
         }
+        let levels: Vec<(f64, &SuiteStatistics)> = self
+            .levels
+            .iter()
+            .map(|l| (l.level_g, &l.statistics))
+            .collect();
+        closing_tables(&mut s, &self.fragility, &levels, self.elapsed_ms);
+        s
+    }
+}
+
+/// The closing tables of `ida`, for a pair or a row: the fragility of each
+/// limit state, the statistics at the highest of `levels` (g, with each
+/// level's statistics) and the wall time.
+pub fn closing_tables(
+    s: &mut String,
+    fragility: &[LimitStateFragility],
+    levels: &[(f64, &SuiteStatistics)],
+    elapsed_ms: f64,
+) {
+    let level_values: Vec<f64> = levels.iter().map(|l| l.0).collect();
+    fragility_table(s, fragility, &level_values);
+    if let Some((level, statistics)) = levels.last() {
         let _ = writeln!(s);
         let _ = writeln!(
             s,
-            "fragility P(exceed | IM = x) = Φ(ln(x/θ)/β), maximum likelihood over all levels (SPEC §12)"
+            "statistics at the highest level, {} g ({} pounded):",
+            g4(*level),
+            statistics.pounded
         );
-        let width = self
-            .fragility
-            .iter()
-            .map(|f| f.limit_state.chars().count())
-            .max()
-            .unwrap_or(11)
-            .max(11);
+        statistics_table(s, statistics);
+    }
+    let _ = writeln!(s, "elapsed {elapsed_ms:.0} ms");
+}
+
+/// The fragility of each limit state (SPEC §12), with pounding and
+/// without, and the records exceeding it at each of `levels` (g).
+fn fragility_table(s: &mut String, fragility: &[LimitStateFragility], levels: &[f64]) {
+    let _ = writeln!(s);
+    let _ = writeln!(
+        s,
+        "fragility P(exceed | IM = x) = Φ(ln(x/θ)/β), maximum likelihood over all levels (SPEC §12)"
+    );
+    let width = fragility
+        .iter()
+        .map(|f| f.limit_state.chars().count())
+        .max()
+        .unwrap_or(11)
+        .max(11);
+    let _ = writeln!(
+        s,
+        "{:<width$}  {:<36}  {}",
+        "limit state", "with pounding", "without pounding (gap = ∞)"
+    );
+    for f in fragility {
         let _ = writeln!(
             s,
             "{:<width$}  {:<36}  {}",
-            "limit state", "with pounding", "without pounding (gap = ∞)"
+            f.limit_state,
+            describe(&f.fragility),
+            f.no_pounding_fragility
+                .as_ref()
+                .map_or("-".to_string(), describe)
         );
-        for f in &self.fragility {
-            let _ = writeln!(
-                s,
-                "{:<width$}  {:<36}  {}",
-                f.limit_state,
-                describe(&f.fragility),
-                f.no_pounding_fragility
-                    .as_ref()
-                    .map_or("-".to_string(), describe)
-            );
+    }
+    let _ = writeln!(s);
+    let _ = writeln!(s, "records exceeding each limit state, per level:");
+    let _ = write!(s, "{:<width$}", "level g");
+    for l in levels {
+        let _ = write!(s, " {:>6}", g4(*l));
+    }
+    let _ = writeln!(s);
+    for f in fragility {
+        let _ = write!(s, "{:<width$}", f.limit_state);
+        for c in &f.counts {
+            let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
         }
         let _ = writeln!(s);
-        let _ = writeln!(s, "records exceeding each limit state, per level:");
-        let _ = write!(s, "{:<width$}", "level g");
-        for l in &self.levels {
-            let _ = write!(s, " {:>6}", g4(l.level_g));
-        }
-        let _ = writeln!(s);
-        for f in &self.fragility {
-            let _ = write!(s, "{:<width$}", f.limit_state);
-            for c in &f.counts {
+        if let Some(free) = &f.no_pounding_counts {
+            let _ = write!(s, "{:<width$}", "  without pounding");
+            for c in free {
                 let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
             }
             let _ = writeln!(s);
-            if let Some(free) = &f.no_pounding_counts {
-                let _ = write!(s, "{:<width$}", "  without pounding");
-                for c in free {
-                    let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
-                }
-                let _ = writeln!(s);
-            }
         }
-        if let Some(last) = self.levels.last() {
-            let _ = writeln!(s);
-            let _ = writeln!(
-                s,
-                "statistics at the highest level, {} g ({} pounded):",
-                g4(last.level_g),
-                last.statistics.pounded
-            );
-            statistics_table(&mut s, &last.statistics);
-        }
-        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
-        s
     }
 }

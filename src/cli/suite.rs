@@ -52,6 +52,11 @@ pub struct SuiteArgs {
     pub allow_unreliable: bool,
     #[command(flatten)]
     pub shard: super::shard::ShardArgs,
+    /// A row of shear buildings (SPEC §13) instead of the preset's pair: a
+    /// built-in row (two-buildings, block-and-frame, three-in-series) or a
+    /// path to a row preset; `--im sa` is then Sa at the leftmost building's T₁.
+    #[arg(long, value_name = "NAME|PATH")]
+    pub buildings: Option<String>,
 }
 
 /// `--suite`, `--im` and `--level` for a command that runs one set or,
@@ -101,6 +106,7 @@ impl SuiteOptions {
             long,
             allow_unreliable: true,
             shard: Default::default(),
+            buildings: None,
         }))
     }
 }
@@ -110,7 +116,7 @@ fn usage(message: String) -> CliError {
 }
 
 /// `--level X`: a positive, finite level in g (`0.3` or `0.3g`).
-fn parse_level(text: &str) -> Result<f64, CliError> {
+pub(crate) fn parse_level(text: &str) -> Result<f64, CliError> {
     let t = text.trim();
     let v = t.strip_suffix('g').unwrap_or(t).trim().parse::<f64>();
     match v {
@@ -244,6 +250,9 @@ pub fn report_with(
     args: &SuiteArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
+    if args.buildings.is_some() {
+        return super::row_suite::report_with(args, emit);
+    }
     let Some(Ran {
         preset,
         case,
@@ -412,11 +421,21 @@ impl SuiteRow {
 
 /// The suite's scaling, said in words and numbers.
 #[derive(Debug, Serialize)]
-struct ScalingReport {
-    measure: String,
+pub struct ScalingReport {
+    pub measure: String,
     /// The level (g) every record is scaled to; absent: the list's scales.
     #[serde(skip_serializing_if = "Option::is_none")]
-    level_g: Option<f64>,
+    pub level_g: Option<f64>,
+}
+
+impl ScalingReport {
+    /// The scaling in words, for a table's opening lines.
+    pub fn words(&self) -> String {
+        match self.level_g {
+            Some(x) => format!("each record scaled to {} = {} g", self.measure, num(x)),
+            None => format!("records at their list's scale; {} reported", self.measure),
+        }
+    }
 }
 
 /// `pounding suite` in every format.
@@ -505,17 +524,7 @@ impl Report for SuiteReport<'_> {
 
     fn table(&self) -> String {
         let mut s = String::new();
-        let level = match self.scaling.level_g {
-            Some(x) => format!(
-                "each record scaled to {} = {} g",
-                self.scaling.measure,
-                num(x)
-            ),
-            None => format!(
-                "records at their list's scale; {} reported",
-                self.scaling.measure
-            ),
-        };
+        let level = self.scaling.words();
         let _ = writeln!(
             s,
             "suite {} ({} records), preset {}: {}, {} method",
@@ -593,18 +602,22 @@ impl Report for SuiteReport<'_> {
                 );
             }
         }
-        let st = &self.statistics;
-        let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "statistics over {} records ({} pounded): median, 16th and 84th percentiles, \
-             lognormal dispersion β",
-            st.records, st.pounded
-        );
-        statistics_table(&mut s, st);
+        over_suite_table(&mut s, &self.statistics);
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
         s
     }
+}
+
+/// The statistics over a suite's records (SPEC §12), with their heading.
+pub fn over_suite_table(s: &mut String, st: &SuiteStatistics) {
+    let _ = writeln!(s);
+    let _ = writeln!(
+        s,
+        "statistics over {} records ({} pounded): median, 16th and 84th percentiles, \
+         lognormal dispersion β",
+        st.records, st.pounded
+    );
+    statistics_table(s, st);
 }
 
 /// The statistics of a suite (SPEC §12), one line per demand.
@@ -674,7 +687,7 @@ const SIDE_COLUMNS: [[&str; 11]; 2] = [
 ];
 
 /// `text` cut to `width` characters, ending in "…" where cut.
-fn clip(text: &str, width: usize) -> String {
+pub(crate) fn clip(text: &str, width: usize) -> String {
     if text.chars().count() <= width {
         text.to_string()
     } else {

@@ -63,14 +63,16 @@ pub fn periods(b: &Building) -> Vec<f64> {
         .collect()
 }
 
-/// The free vibration a row's run keeps after its ground motion ends when
-/// none is asked for: four times the longest fundamental period (s).
+/// Free vibration after a row's ground motion, unless asked otherwise:
+/// four times the longest fundamental period of its buildings (s), so that
+/// the slowest building's response after the motion is in the peaks.
 pub fn default_tail(row: &Row) -> f64 {
-    4.0 * row
+    let longest = row
         .buildings
         .iter()
         .map(|b| periods(b)[0])
-        .fold(0.0, f64::max)
+        .fold(0.0, f64::max);
+    4.0 * longest
 }
 
 /// Rayleigh coefficients (a₀, a₁) of one building.

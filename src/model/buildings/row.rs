@@ -134,6 +134,17 @@ impl Row {
         out
     }
 
+    /// The same buildings with every joint's gap infinite: the run without
+    /// contact from which the gap that prevents pounding is measured
+    /// (SPEC §11, §13), and the no-pounding baseline of every comparison.
+    pub fn apart(&self) -> Row {
+        let mut r = self.clone();
+        for j in &mut r.joints {
+            j.gap = f64::INFINITY;
+        }
+        r
+    }
+
     /// The row in mirror image: buildings right to left, joints reversed
     /// (with a ground motion negated, the response is the mirror image).
     pub fn mirrored(&self) -> Row {

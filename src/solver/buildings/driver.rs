@@ -143,7 +143,9 @@ struct Run<'a> {
     t: f64,
     envelope: Envelope,
     pairs: Vec<PairResult>,
-    propagator: Propagator,
+    propagator: &'a mut Propagator,
+    /// Maps made and used before this run (a cache kept across runs).
+    counts_before: (usize, usize),
     series_steps: usize,
     configurations: HashSet<Vec<u8>>,
     buf: Vec<f64>,
@@ -160,6 +162,41 @@ struct Run<'a> {
 
 /// Runs the exact method on `row` under `ground`.
 pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRun, RowError> {
+    run_row_cached(row, ground, options, &mut MapCache::default())
+}
+
+/// The linear maps of one row's configurations, kept from run to run: a
+/// study runs the same row under many records, whose configurations and
+/// sub-step lengths recur. A map is a function of its key (configuration,
+/// h, σ) and of the row alone, so a run takes bit for bit the steps it
+/// takes with a fresh cache; only the count of maps it made is smaller.
+/// Given another row, the cache starts afresh.
+#[derive(Debug, Default)]
+pub struct MapCache {
+    row: Option<Row>,
+    propagator: Propagator,
+}
+
+impl MapCache {
+    /// The maps of `row`, emptied first if they were another row's.
+    fn of(&mut self, row: &Row) -> &mut Propagator {
+        if self.row.as_ref() != Some(row) {
+            self.row = Some(row.clone());
+            self.propagator = Propagator::default();
+        }
+        &mut self.propagator
+    }
+}
+
+/// [`run_row`] with the maps of earlier runs of the same row ([`MapCache`]).
+pub fn run_row_cached(
+    row: &Row,
+    ground: &Ground,
+    options: &RowOptions,
+    cache: &mut MapCache,
+) -> Result<RowRun, RowError> {
+    let propagator = cache.of(row);
+    let counts_before = (propagator.made, propagator.used);
     let layout = Layout::of(row);
     let n = layout.dofs;
     let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
@@ -176,7 +213,8 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
         u: vec![0.0; n],
         v: vec![0.0; n],
         t: 0.0,
-        propagator: Propagator::default(),
+        propagator,
+        counts_before,
         series_steps: 0,
         configurations: HashSet::new(),
         buf: Vec::new(),
@@ -685,8 +723,8 @@ impl Run<'_> {
             duration,
             final_displacement: self.u,
             final_velocity: self.v,
-            maps_made: self.propagator.made,
-            map_steps: self.propagator.used,
+            maps_made: self.propagator.made - self.counts_before.0,
+            map_steps: self.propagator.used - self.counts_before.1,
             series_steps: self.series_steps,
             configurations: self.configurations.len(),
             trace: None,

@@ -42,7 +42,7 @@ pub mod result;
 pub mod system;
 pub mod taylor;
 
-pub use driver::{RowError, RowOptions, run_row};
+pub use driver::{MapCache, RowError, RowOptions, run_row, run_row_cached};
 pub use energy::RowEnergy;
 pub use newmark::run_newmark;
 pub use result::{FloorPeaks, PairImpact, PairResult, RowRun, RowTrace};

@@ -1,0 +1,350 @@
+//! A row of buildings under a suite of records (SPEC §12 with §13).
+//!
+//! **The same buildings under every record.** A row is physical already
+//! (SI, SPEC §13), so record j, scaled by s_j, is the ground motion
+//! ü_g(t) = s_j a_j(t) (m/s², linear between samples) under the row as
+//! the preset gives it. The run lasts the record and a free tail of four
+//! times the longest fundamental period ([`default_tail`]), the length
+//! `pounding run --buildings` gives it, by the exact method. So each record's
+//! run is bit for bit `pounding run --buildings PRESET --excitation
+//! record:PATH --scale s_j`: both build the ground by
+//! [`Ground::from_record`] and run [`run_row`] with the same options.
+//!
+//! **Intensity.** As for the pair (SPEC §12, [`super::suite::Scaling`]):
+//! at a level X (g) of an intensity measure IM, s_j = X / IM(record j);
+//! without a level, each record runs at its suite list's scale.
+//! [`row_intensity`] gives Sa its period when the command line asks for
+//! `sa` alone: T₁ of the leftmost building.
+//!
+//! **The run without contact.** Each record also runs with every joint's
+//! gap infinite ([`Row::apart`]): its per-joint gap that prevents pounding
+//! ([`joint_gaps`]) and its demands without pounding. When the run with
+//! contact had no impact it is that motion already, and stands for it.
+//!
+//! **Demands per record** ([`RowDemands`]): per building the largest storey
+//! drift ratio max_i |Δ_i|/h_i, the largest floor absolute acceleration
+//! max_i |ü_i + ü_g| (g) and the largest residual drift max_i
+//! |(1 − α)(Δ_i − z_i)| (m) at the end (SPEC §13); per joint the impacts,
+//! the largest impact force (kN) over its floor pairs and the gap that
+//! prevents pounding (m). Their statistics over the suite are SPEC §12's
+//! ([`statistics`]).
+
+use serde::Serialize;
+
+use super::ida::over_levels;
+use super::row_gap::{JointGap, joint_gaps};
+use super::statistics::Summary;
+use super::suite::{DemandSummary, Scaling, SuiteRunError, SuiteStatistics, scales};
+use crate::model::buildings::matrices::{default_tail, periods};
+use crate::model::buildings::{Ground, Row};
+use crate::model::intensity::IntensityMeasure;
+use crate::model::record::STANDARD_GRAVITY;
+use crate::model::suite::SuiteMember;
+use crate::solver::buildings::{MapCache, RowError, RowOptions, RowRun, run_row_cached};
+
+/// A row suite study: the buildings and how the records are scaled.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowSuiteCase {
+    pub row: Row,
+    pub scaling: Scaling,
+}
+
+/// Sa at the leftmost building's fundamental period T₁ (s): the measure
+/// `--im sa` names for a row, whose buildings have no one period.
+pub fn row_intensity(row: &Row) -> IntensityMeasure {
+    IntensityMeasure::Sa {
+        period: periods(&row.buildings[0])[0],
+    }
+}
+
+/// Why a row suite cannot be run.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RowSuiteError {
+    /// A record cannot be scaled (its intensity is 0).
+    #[error(transparent)]
+    Scaling(#[from] SuiteRunError),
+    /// A record's run failed (a Hertz-type law, a runaway run).
+    #[error("record `{record}`: {error}")]
+    Run { record: String, error: RowError },
+}
+
+/// One building's demands in one run (SPEC §13), the largest over its
+/// storeys and floors.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BuildingDemands {
+    pub name: String,
+    /// max_i |Δ_i|/h_i.
+    pub max_drift_ratio: f64,
+    /// max_i |ü_i + ü_g|, g.
+    pub max_absolute_acceleration_g: f64,
+    /// max_i |(1 − α)(Δ_i − z_i)| at the end, m.
+    pub max_residual_drift_m: f64,
+    /// Impacts at the joints on either side of it.
+    pub impacts: usize,
+    /// The largest impact force on it, kN (0 without impacts).
+    pub max_force_kn: f64,
+}
+
+/// One joint's demands in one record.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct JointDemands {
+    /// Impacts over its floor pairs.
+    pub impacts: usize,
+    /// The largest impact force over its floor pairs, kN (0 without impacts).
+    pub max_force_kn: f64,
+    /// The joint's buildings, its gap that prevents pounding (m) and the
+    /// code rules, from the run without contact ([`joint_gaps`]).
+    #[serde(flatten)]
+    pub gap: JointGap,
+}
+
+/// The demands of one record: with pounding, and without (the same
+/// buildings apart).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RowDemands {
+    pub pounded: bool,
+    pub impacts: usize,
+    pub joints: Vec<JointDemands>,
+    pub buildings: Vec<BuildingDemands>,
+    pub no_pounding: Vec<BuildingDemands>,
+}
+
+/// One record of a row suite, run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowSuiteRun {
+    pub name: String,
+    pub samples: usize,
+    /// Sample interval (s).
+    pub dt: f64,
+    /// The factor s on the record's accelerations, and IM of the scaled record (g).
+    pub scale: f64,
+    pub intensity: f64,
+    /// Length of the runs (s): the record and the free tail.
+    pub duration: f64,
+    /// The run with contact, as `run --buildings` makes it.
+    pub run: RowRun,
+    /// The run without contact (the run itself when it had no impact).
+    pub free: RowRun,
+    pub demands: RowDemands,
+}
+
+/// The ground motion of a member at scale `s`: s·a(t) in m/s², linear
+/// between samples, as `--excitation record:PATH --scale s` builds it.
+pub fn ground_of(member: &SuiteMember, scale: f64) -> Ground {
+    Ground::from_record(member.record, scale)
+}
+
+/// The length of a row's run under `ground` (s): the motion and four times
+/// the longest fundamental period ([`default_tail`]).
+pub fn run_length(row: &Row, ground: &Ground) -> f64 {
+    ground.end() + default_tail(row)
+}
+
+/// Each member's (scale, intensity) under the case's scaling, before any
+/// run: a record that cannot be scaled fails at once, naming it.
+pub fn plan(
+    case: &RowSuiteCase,
+    members: &[SuiteMember],
+) -> Result<Vec<(f64, f64)>, RowSuiteError> {
+    Ok(scales(members, &case.scaling)?)
+}
+
+/// The linear maps of the row and of its buildings apart, kept from record
+/// to record by one worker ([`MapCache`]: the runs are bit for bit those of
+/// fresh caches, and faster).
+#[derive(Debug, Default)]
+pub struct RowCaches {
+    with_contact: MapCache,
+    apart: MapCache,
+}
+
+/// Runs one member at (scale, intensity): with contact, and apart unless
+/// the run with contact had no impact.
+pub fn run_member(
+    row: &Row,
+    member: &SuiteMember,
+    (scale, intensity): (f64, f64),
+    caches: &mut RowCaches,
+) -> Result<RowSuiteRun, RowSuiteError> {
+    let failed = |error| RowSuiteError::Run {
+        record: member.name.clone(),
+        error,
+    };
+    let ground = ground_of(member, scale);
+    let duration = run_length(row, &ground);
+    let options = RowOptions::lasting(duration);
+    let run = run_row_cached(row, &ground, &options, &mut caches.with_contact).map_err(failed)?;
+    let free = if run.impacts() == 0 {
+        run.clone()
+    } else {
+        run_row_cached(&row.apart(), &ground, &options, &mut caches.apart).map_err(failed)?
+    };
+    let demands = RowDemands::of(row, &run, &free);
+    Ok(RowSuiteRun {
+        name: member.name.clone(),
+        samples: member.record.acceleration.len(),
+        dt: member.record.dt,
+        scale,
+        intensity,
+        duration,
+        run,
+        free,
+        demands,
+    })
+}
+
+/// Runs every member in parallel, in suite order; `done` is told of each
+/// finished record (progress). The first failure, in suite order, is returned.
+pub fn run_suite(
+    row: &Row,
+    members: &[SuiteMember],
+    scales: &[(f64, f64)],
+    done: &(dyn Fn(&RowSuiteRun) + Sync),
+) -> Result<Vec<RowSuiteRun>, RowSuiteError> {
+    over_levels(1, members.len(), RowCaches::default, |caches, _, j| {
+        let run = run_member(row, &members[j], scales[j], caches);
+        if let Ok(r) = &run {
+            done(r);
+        }
+        run
+    })
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
+impl BuildingDemands {
+    /// Every building's demands in `run` of `row`.
+    pub fn of(row: &Row, run: &RowRun) -> Vec<BuildingDemands> {
+        let pairs = row.pairs();
+        row.buildings
+            .iter()
+            .zip(&run.floors)
+            .enumerate()
+            .map(|(i, (b, floors))| {
+                let largest = |f: fn(&crate::solver::buildings::FloorPeaks) -> f64| {
+                    floors.iter().map(f).fold(0.0, f64::max)
+                };
+                let touching = pairs
+                    .iter()
+                    .zip(&run.pairs)
+                    .filter(|(p, _)| p.left == i || p.right == i);
+                let (impacts, force) = touching.fold((0, 0.0_f64), |(n, f), (_, r)| {
+                    (n + r.impacts.len(), f.max(r.max_force()))
+                });
+                BuildingDemands {
+                    name: b.name.clone(),
+                    max_drift_ratio: largest(|f| f.drift_ratio),
+                    max_absolute_acceleration_g: largest(|f| f.absolute_acceleration)
+                        / STANDARD_GRAVITY,
+                    max_residual_drift_m: largest(|f| f.residual_drift.abs()),
+                    impacts,
+                    max_force_kn: force / 1e3,
+                }
+            })
+            .collect()
+    }
+}
+
+impl RowDemands {
+    /// The demands of `row` from its run with contact and its run apart.
+    pub fn of(row: &Row, run: &RowRun, free: &RowRun) -> RowDemands {
+        let pairs = row.pairs();
+        let joints = joint_gaps(row, free)
+            .into_iter()
+            .enumerate()
+            .map(|(j, gap)| {
+                let at_joint = pairs.iter().zip(&run.pairs).filter(|(p, _)| p.joint == j);
+                let (impacts, force) = at_joint.fold((0, 0.0_f64), |(n, f), (_, r)| {
+                    (n + r.impacts.len(), f.max(r.max_force()))
+                });
+                JointDemands {
+                    impacts,
+                    max_force_kn: force / 1e3,
+                    gap,
+                }
+            })
+            .collect();
+        RowDemands {
+            pounded: run.impacts() > 0,
+            impacts: run.impacts(),
+            joints,
+            buildings: BuildingDemands::of(row, run),
+            no_pounding: BuildingDemands::of(row, free),
+        }
+    }
+}
+
+/// A demand of a building: its key and unit, and how it is read.
+type BuildingDemand = (&'static str, &'static str, fn(&BuildingDemands) -> f64);
+
+const BUILDING_DEMANDS: [BuildingDemand; 4] = [
+    ("max_drift_ratio", "", |d| d.max_drift_ratio),
+    ("max_absolute_acceleration_g", "g", |d| {
+        d.max_absolute_acceleration_g
+    }),
+    ("max_residual_drift_m", "m, absolute", |d| {
+        d.max_residual_drift_m
+    }),
+    ("max_force_kn", "kN", |d| d.max_force_kn),
+];
+
+/// A demand of a joint: its key and unit, and how it is read.
+type JointDemand = (&'static str, &'static str, fn(&JointDemands) -> f64);
+
+const JOINT_DEMANDS: [JointDemand; 3] = [
+    ("impacts", "", |d| d.impacts as f64),
+    ("max_force_kn", "kN", |d| d.max_force_kn),
+    ("min_gap_m", "m", |d| d.gap.min_gap),
+];
+
+/// The statistics of a row suite (SPEC §12): per building (`block.max_drift_ratio`,
+/// …, and the same without pounding under `no_pounding.block.…`) and per joint
+/// (`joint1.max_force_kn`, …), the median, 16th and 84th percentiles and the
+/// lognormal dispersion over the records.
+pub fn statistics(runs: &[RowSuiteRun]) -> SuiteStatistics {
+    let mut demands = Vec::new();
+    let mut push = |demand: String, unit: &'static str, values: Vec<f64>| {
+        demands.push(DemandSummary {
+            demand,
+            unit,
+            summary: Summary::of(&values),
+        })
+    };
+    let first = runs.first().map(|r| &r.demands);
+    let buildings = first.map_or(0, |d| d.buildings.len());
+    for (prefix, free) in [("", false), ("no_pounding.", true)] {
+        for i in 0..buildings {
+            let name = &first.expect("a run").buildings[i].name;
+            for (key, unit, get) in BUILDING_DEMANDS {
+                if free && key == "max_force_kn" {
+                    continue;
+                }
+                let values = runs
+                    .iter()
+                    .map(|r| {
+                        let d = if free {
+                            &r.demands.no_pounding
+                        } else {
+                            &r.demands.buildings
+                        };
+                        get(&d[i])
+                    })
+                    .collect();
+                push(format!("{prefix}{name}.{key}"), unit, values);
+            }
+        }
+    }
+    let joints = first.map_or(0, |d| d.joints.len());
+    for j in 0..joints {
+        for (key, unit, get) in JOINT_DEMANDS {
+            let values = runs.iter().map(|r| get(&r.demands.joints[j])).collect();
+            push(format!("joint{}.{key}", j + 1), unit, values);
+        }
+    }
+    SuiteStatistics {
+        records: runs.len(),
+        pounded: runs.iter().filter(|r| r.demands.pounded).count(),
+        demands,
+    }
+}

@@ -1,0 +1,210 @@
+//! `pounding ida --buildings PRESET`: a row of buildings under every record
+//! at every intensity level, the statistics per level, and the lognormal
+//! fragility of each limit state with and without pounding (SPEC §12,
+//! §13). The study is [`crate::analysis::row_ida`]; this module parses,
+//! runs and prints.
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use serde::Serialize;
+
+use super::CliError;
+use super::ida::{IdaArgs, closing_tables};
+use super::output::{Emit, num};
+use super::progress::Progress;
+use super::row_suite::{RowHeader, RowSuiteRow, UNITS, case_of, failed, record_steps, work_of};
+use crate::analysis::ida::{LimitStateFragility, parse_levels};
+use crate::analysis::row_ida::{fragilities, plan_levels, run_levels};
+use crate::analysis::row_limit_state::{RowLimitParser, RowLimitState};
+use crate::analysis::row_suite::{RowSuiteRun, statistics};
+use crate::analysis::suite::SuiteStatistics;
+use crate::model::buildings::Row;
+use crate::model::params::echo::g4;
+use crate::output::report::Report;
+
+fn usage(message: String) -> CliError {
+    CliError::Usage(message)
+}
+
+/// The limit states of `args` for `row`: pounding first, then `--drift`,
+/// `--acceleration` and `--force`, each item's building named or
+/// `--building`'s.
+pub fn limit_states(args: &IdaArgs, row: &Row) -> Result<Vec<RowLimitState>, CliError> {
+    if let Some(d) = &args.limits.ductility {
+        return Err(usage(format!(
+            "--ductility {}: a row's storeys take --drift (storey drift ratio, e.g. 0.01); drop --ductility",
+            crate::model::params::echo::text(d)
+        )));
+    }
+    let parser = RowLimitParser::new(row, args.row_limits.building.as_deref())
+        .map_err(|e| usage(e.to_string()))?;
+    let mut states = vec![parser.pounding()];
+    let flags: [(&Option<String>, fn(&RowLimitParser, &str) -> _); 3] = [
+        (&args.row_limits.drift, RowLimitParser::drift),
+        (&args.limits.acceleration, RowLimitParser::acceleration),
+        (&args.limits.force, RowLimitParser::force),
+    ];
+    for (text, parse) in flags {
+        if let Some(t) = text {
+            states.extend(parse(&parser, t).map_err(|e| usage(e.to_string()))?);
+        }
+    }
+    Ok(states)
+}
+
+/// `pounding ida --buildings`: its typed report handed to `emit`.
+pub fn report_with(
+    args: &IdaArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
+    let levels = parse_levels(&args.levels).map_err(usage)?;
+    let (case, members) = case_of(&args.suite)?;
+    let states = limit_states(args, &case.row)?;
+    let plans = plan_levels(&case, &members, &levels).map_err(failed)?;
+    let work = work_of(&case.row, &members, levels.len());
+    work.check("ida --buildings", args.suite.long.allow_long, true)?;
+    let progress = Progress::start(&work);
+    let start = Instant::now();
+    let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
+    let runs = run_levels(&case, &members, &plans, &done).map_err(failed)?;
+    let fragility = fragilities(&levels, &runs, &states);
+    drop(progress);
+    let report = RowIdaReport {
+        row: RowHeader::new(&case, &args.suite.suite),
+        records_per_level: members.len(),
+        levels: levels
+            .iter()
+            .zip(&runs)
+            .map(|(&level, at)| LevelReport {
+                level_g: level,
+                statistics: statistics(at),
+                records: at.iter().map(RowSuiteRow::of).collect(),
+            })
+            .collect(),
+        limit_states: states,
+        fragility,
+        elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
+    };
+    emit(&report)
+}
+
+/// One intensity level: its statistics and its records (those of `pounding
+/// suite --buildings --level` at that level).
+#[derive(Debug, Serialize)]
+struct LevelReport {
+    level_g: f64,
+    statistics: SuiteStatistics,
+    records: Vec<RowSuiteRow>,
+}
+
+/// `pounding ida --buildings` in every format.
+#[derive(Debug, Serialize)]
+struct RowIdaReport<'a> {
+    #[serde(flatten)]
+    row: RowHeader<'a>,
+    records_per_level: usize,
+    levels: Vec<LevelReport>,
+    /// The limit states, in the order of `fragility`.
+    limit_states: Vec<RowLimitState>,
+    /// Per limit state: counts at each level and the maximum-likelihood
+    /// lognormal fragility (SPEC §12), with pounding and without.
+    fragility: Vec<LimitStateFragility>,
+    elapsed_ms: f64,
+}
+
+impl Report for RowIdaReport<'_> {
+    fn csv_header(&self) -> Vec<&'static str> {
+        let mut h = vec!["version", "units", "level_g"];
+        h.extend(RowSuiteRow::CSV_COLUMNS);
+        h
+    }
+
+    fn csv_rows(&self) -> Vec<Vec<String>> {
+        let mut rows = Vec::new();
+        for l in &self.levels {
+            for r in &l.records {
+                for line in r.csv_lines(&self.row.scaling.measure) {
+                    let mut row = vec![
+                        env!("CARGO_PKG_VERSION").to_string(),
+                        UNITS.to_string(),
+                        num(l.level_g),
+                    ];
+                    row.extend(line);
+                    rows.push(row);
+                }
+            }
+        }
+        rows
+    }
+
+    fn table(&self) -> String {
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "IDA at {} levels of {}, {} records a level",
+            self.levels.len(),
+            self.row.scaling.measure,
+            self.records_per_level
+        );
+        self.row.table(self.records_per_level, &mut s);
+        let _ = writeln!(s);
+        // One line per level: who pounded, each building's median drift
+        // (16–84 %) and acceleration, each joint's median gap needed.
+        let _ = write!(s, "{:>8} {:>8}", "level g", "pounded");
+        for b in &self.row.buildings {
+            let _ = write!(
+                s,
+                " {:>24} {:>8}",
+                format!("{} drift % (16–84)", b.name()),
+                "A g"
+            );
+        }
+        for (j, _) in self.row.joints.iter().enumerate() {
+            let _ = write!(s, " {:>12}", format!("j{} d_min mm", j + 1));
+        }
+        let _ = writeln!(s);
+        for l in &self.levels {
+            let st = &l.statistics;
+            let get = |key: &str| {
+                st.demands
+                    .iter()
+                    .find(|d| d.demand == key)
+                    .map(|d| d.summary)
+            };
+            let _ = write!(
+                s,
+                "{:>8} {:>8}",
+                g4(l.level_g),
+                format!("{}/{}", st.pounded, st.records)
+            );
+            for b in &self.row.buildings {
+                let drift =
+                    get(&format!("{}.max_drift_ratio", b.name())).map_or(String::new(), |d| {
+                        format!(
+                            "{} ({}–{})",
+                            g4(d.median * 100.0),
+                            g4(d.p16 * 100.0),
+                            g4(d.p84 * 100.0)
+                        )
+                    });
+                let acc = get(&format!("{}.max_absolute_acceleration_g", b.name()))
+                    .map_or(String::new(), |d| g4(d.median));
+                let _ = write!(s, " {drift:>24} {acc:>8}");
+            }
+            for (j, _) in self.row.joints.iter().enumerate() {
+                let gap = get(&format!("joint{}.min_gap_m", j + 1))
+                    .map_or(String::new(), |d| g4(d.median * 1e3));
+                let _ = write!(s, " {gap:>12}");
+            }
+            let _ = writeln!(s);
+        }
+        let levels: Vec<(f64, &SuiteStatistics)> = self
+            .levels
+            .iter()
+            .map(|l| (l.level_g, &l.statistics))
+            .collect();
+        closing_tables(&mut s, &self.fragility, &levels, self.elapsed_ms);
+        s
+    }
+}
