@@ -247,3 +247,30 @@ fn a_terminal_too_small_for_the_drawing_says_how_large() {
     assert!(s.contains("the row needs a terminal of"), "{s}");
     assert!(s.contains("at least 75x20"), "{s}");
 }
+
+/// The risk scene studies a joint of the row: `y` turns from the pair to
+/// the row's joint, and the picture follows the joint's taller building.
+#[test]
+fn the_risk_scene_studies_the_rows_joint() {
+    let mut a = app((100, 30));
+    let ground = a.row.as_ref().unwrap().ground.clone();
+    a.row = Some(RowPane::open("two-buildings", ground, "synthetic:2000", None).unwrap());
+    key(&mut a, KeyCode::Char('x'));
+    assert!(a.risk_spec().row.is_none());
+    key(&mut a, KeyCode::Char('y'));
+    let spec = a.risk_spec();
+    let case = spec.row.as_ref().expect("the row's joint");
+    assert_eq!((case.joint, case.building), (0, 0));
+    a.compute_blocking();
+    let state = a.jobs.risk.as_ref().unwrap();
+    assert!(state.full && state.error.is_none(), "{:?}", state.error);
+    let p = state.picture.as_ref().unwrap();
+    assert_eq!(p.records, 20);
+    assert_eq!(p.gap_m, a.row.as_ref().unwrap().row.joints[0].gap);
+    let s = screen(&a);
+    assert!(s.contains("joint 1 frame|block (y)"), "{s}");
+    assert!(s.contains("frame drift [mm]"), "{s}");
+    // Back to the pair.
+    key(&mut a, KeyCode::Char('y'));
+    assert!(a.risk_spec().row.is_none());
+}

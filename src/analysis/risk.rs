@@ -58,6 +58,8 @@ pub struct RiskPicture {
     pub pounding: Vec<LevelCount>,
     /// P(pounding | IM = x) fitted on [`RiskPicture::pounding`], or why not.
     pub fragility: Fragility,
+    /// What the drift IDA follows, and its unit (`left drift [mm]`).
+    pub drift_title: String,
 }
 
 impl RiskPicture {
@@ -167,6 +169,7 @@ pub fn risk(
         drift,
         pounding: pounding.counts,
         fragility: pounding.fragility,
+        drift_title: "left drift [mm]".into(),
     }))
 }
 
@@ -183,6 +186,7 @@ mod tests {
             drift: Vec::new(),
             pounding: Vec::new(),
             fragility: Fragility::TooFewRecords,
+            drift_title: String::new(),
         }
     }
 

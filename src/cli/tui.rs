@@ -77,6 +77,8 @@ pub fn app(args: &TuiArgs) -> Result<App, CliError> {
     if let Some(source) = &args.buildings {
         app.row = Some(row_pane(args, source)?);
         app.view.scene = Scene::Buildings;
+        // The risk scene studies the row's first joint.
+        app.view.risk_joint = 1;
     } else if args.excitation.is_some() || args.scale.is_some() {
         return Err(CliError::Usage(
             "--excitation and --scale of the explorer apply to a row: give --buildings".into(),

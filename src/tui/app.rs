@@ -312,6 +312,12 @@ impl App {
     /// The risk picture the risk scene asks for: the active set's
     /// buildings (its preset's base, or the reference one) at the design level.
     pub fn risk_spec(&self) -> RiskSpec {
+        if let Some(pane) = self.row.as_ref()
+            && self.view.risk_joint > 0
+        {
+            let joint = (self.view.risk_joint - 1).min(pane.row.joints.len() - 1);
+            return risk_job::row_spec(&pane.row, joint, self.view.risk_level, self.view.risk_pga);
+        }
         let s = &self.sets[self.active];
         risk_job::spec_of(&s.params, s.base, self.view.risk_level, self.view.risk_pga)
     }
@@ -575,6 +581,18 @@ impl App {
             }
             KeyCode::Char('o') if self.view.scene == Scene::Risk => {
                 self.view.risk_pga = !self.view.risk_pga;
+            }
+            // The pair, then each joint of the row, in turn.
+            KeyCode::Char('y') if self.view.scene == Scene::Risk => {
+                let joints = self.row.as_ref().map_or(0, |p| p.row.joints.len());
+                self.view.risk_joint = (self.view.risk_joint + 1) % (joints + 1);
+                self.status = Some(if joints == 0 {
+                    "risk of the pair: open a row of buildings (d, p) to study its joints".into()
+                } else if self.view.risk_joint == 0 {
+                    "risk of the active set's pair".into()
+                } else {
+                    format!("risk at joint {} of the row", self.view.risk_joint)
+                });
             }
             KeyCode::Char('o') if self.view.scene == Scene::Spectrum => {
                 self.view.velocity = !self.view.velocity;

@@ -28,7 +28,10 @@ pub const KEYS: [(&str, &str); 34] = [
     ("w", "scene: spectrum against Π_ω1"),
     ("i", "scene: impact table and energy terms"),
     ("a", "scene: map (y axis, o ratio, [ ]{ })"),
-    ("x", "scene: risk over a suite ([ ] level, o PGA/Sa)"),
+    (
+        "x",
+        "scene: risk over a suite ([ ] level, o PGA/Sa, y joint)",
+    ),
     ("d", "scene: a row of buildings (o panel, | both laws)"),
     ("space, ( / )", "row: play / pause, slower / faster"),
     ("< / >", "row: displacements drawn ÷2 / ×2"),

@@ -11,7 +11,10 @@ use std::cell::RefCell;
 use super::physical::Base;
 use crate::analysis::fragility::bridging_levels;
 use crate::analysis::risk::{RiskPicture, risk};
+use crate::analysis::row_risk::{self, RowRiskCase};
 use crate::analysis::suite::{Scaling, SuiteCase};
+use crate::model::buildings::Row;
+use crate::model::buildings::matrices::periods;
 use crate::model::intensity::IntensityMeasure;
 use crate::model::physical::{G, Physical};
 use crate::model::suite::{SuiteMember, SuiteSpec};
@@ -80,7 +83,33 @@ pub fn spec_of(params: &Params, base: Option<Base>, design_level: f64, pga: bool
         measure,
         design_level,
         levels: levels(design_level),
+        row: None,
     }
+}
+
+/// The risk picture of joint `joint` (0-based) of `row`: pounding counted
+/// at that joint, the drift of its taller building followed, records
+/// scaled to Sa at that building's T1 (rounded to 0.01 s) or to their PGA.
+pub fn row_spec(row: &Row, joint: usize, design_level: f64, pga: bool) -> RiskSpec {
+    let building = RowRiskCase::taller_of(row, joint);
+    let t1 = periods(&row.buildings[building])[0];
+    let measure = if pga {
+        IntensityMeasure::Pga
+    } else {
+        IntensityMeasure::Sa {
+            period: ((t1 * 100.0).round() / 100.0).clamp(0.01, 10.0),
+        }
+    };
+    let mut spec = spec_of(&Params::default(), None, design_level, pga);
+    spec.reference = false;
+    spec.measure = measure;
+    spec.row = Some(RowRiskCase {
+        row: row.clone(),
+        joint,
+        building,
+        measure,
+    });
+    spec
 }
 
 /// Records of the coarse pass.
@@ -105,6 +134,8 @@ pub struct RiskSpec {
     pub design_level: f64,
     /// The IDA's levels (g), ascending.
     pub levels: Vec<f64>,
+    /// A joint of a row of buildings instead of the pair (SPEC §13).
+    pub row: Option<RowRiskCase>,
 }
 
 impl RiskSpec {
@@ -185,7 +216,12 @@ pub fn run_risk(spec: &RiskSpec, current: &dyn Fn() -> bool, send: &dyn Fn(RiskO
         }
         let pass = |levels: &[f64]| {
             let design = spec.design_level;
-            risk(&case, members, design, levels, current).map_err(|e| e.to_string())
+            match &spec.row {
+                Some(row) => {
+                    row_risk::risk(row, members, design, levels, current).map_err(|e| e.to_string())
+                }
+                None => risk(&case, members, design, levels, current).map_err(|e| e.to_string()),
+            }
         };
         let fit = match pass(&levels) {
             Ok(Some(picture)) => {

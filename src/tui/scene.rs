@@ -182,6 +182,9 @@ pub struct View {
     pub risk_level: f64,
     /// The risk scene scales records to their PGA instead of Sa(T1).
     pub risk_pga: bool,
+    /// What the risk scene is of: 0 the active set's pair, j ≥ 1 joint j
+    /// of the buildings scene's row.
+    pub risk_joint: usize,
 }
 
 /// Zoom factor of one `z`.
@@ -202,6 +205,7 @@ impl Default for View {
             map_cursor: None,
             risk_level: super::risk_job::DESIGN_LEVEL,
             risk_pga: false,
+            risk_joint: 0,
         }
     }
 }

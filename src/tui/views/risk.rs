@@ -146,9 +146,19 @@ fn info(state: &RiskState, width: usize) -> String {
         format!("design {} g ([ ])", short(spec.design_level)),
         format!("IM {}", measure_name(&spec.measure)),
     ];
+    // A row's joint first (what the picture is of), then the rest.
+    if let Some(r) = &spec.row {
+        let b = &r.row.buildings;
+        parts.push(format!(
+            "joint {} {}|{} (y)",
+            r.joint + 1,
+            b[r.joint].name,
+            b[r.joint + 1].name
+        ));
+    }
     parts.extend(progress);
     parts.push(spec.suite.clone());
-    if !spec.reference {
+    if spec.row.is_none() && !spec.reference {
         parts.push("buildings: preset's [physical]".into());
     }
     items(&parts, width)
@@ -283,7 +293,7 @@ impl LevelCharts<'_> {
             Series::line("free", palette::FREE, median(true)).marked('+'),
         ];
         let spec = ChartSpec {
-            title: "left drift [mm] (16–84 %)".into(),
+            title: format!("{} (16–84 %)", p.drift_title),
             x_title: self.x_title.clone(),
             x_bounds: Some([0.0, x_end]),
             y_range: None,

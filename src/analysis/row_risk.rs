@@ -1,0 +1,159 @@
+//! The risk of pounding at one joint of a row over a suite (SPEC §12 with
+//! §13), in the shape of the pair's picture ([`super::risk::RiskPicture`]),
+//! so that the explorer's risk scene draws either.
+//!
+//! Every record runs at every level x_1 < … < x_L and at the design level X
+//! as a row suite does ([`super::row_suite::run_member`]: the row with
+//! contact, and apart when it pounded). From those runs:
+//!
+//! - at X, each record's gap that prevents pounding at the joint, d_min =
+//!   max over its paired floors and over time of u_A − u_B in the run
+//!   apart ([`super::row_gap::joint_gaps`]), whence P(pounding at a gap d)
+//!   = the fraction of records with d_min > d;
+//! - at each level, the median and 16th/84th percentiles of one building's
+//!   largest storey drift max_i |Δ_i| (m), with pounding and apart;
+//! - the fragility P(the joint pounds | IM = x), fitted by maximum
+//!   likelihood on the counts of records whose joint had an impact
+//!   ([`fragility::fit`]).
+
+use super::fragility::{self, LevelCount};
+use super::ida::over_levels;
+use super::risk::{LevelDrift, RiskPicture};
+use super::row_suite::{RowCaches, RowSuiteError, RowSuiteRun, run_member};
+use super::statistics::Summary;
+use super::suite::{raw_intensity, scaled};
+use crate::model::buildings::Row;
+use crate::model::intensity::IntensityMeasure;
+use crate::model::suite::SuiteMember;
+use crate::solver::buildings::RowRun;
+
+/// What the picture is of: a row, the joint whose pounding it counts, the
+/// building whose drift it follows, and the measure records are scaled by.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowRiskCase {
+    pub row: Row,
+    /// Index of the joint (0: between the first two buildings).
+    pub joint: usize,
+    /// Index of the building whose drift the IDA follows.
+    pub building: usize,
+    pub measure: IntensityMeasure,
+}
+
+impl RowRiskCase {
+    /// The joint's taller building: where pounding concentrates drift
+    /// (above the contact), the one the IDA follows by default.
+    pub fn taller_of(row: &Row, joint: usize) -> usize {
+        let top = |b: usize| {
+            let b = &row.buildings[b];
+            b.elevation(b.storeys())
+        };
+        if top(joint + 1) > top(joint) {
+            joint + 1
+        } else {
+            joint
+        }
+    }
+}
+
+/// The largest storey drift max_i |Δ_i| of building `b` in `run` (m).
+fn max_drift(run: &RowRun, b: usize) -> f64 {
+    run.floors[b].iter().map(|f| f.drift).fold(0.0, f64::max)
+}
+
+/// Whether the joint had an impact in `run`, at any of its floor pairs.
+fn joint_pounded(row: &Row, run: &RowRun, joint: usize) -> bool {
+    row.pairs()
+        .iter()
+        .zip(&run.pairs)
+        .any(|(p, r)| p.joint == joint && !r.impacts.is_empty())
+}
+
+/// Runs every record at every level and at the design level, while
+/// `keep_going()` holds (asked between levels); the picture, or `None`
+/// when stopped. `levels` ascending and > 0, `design_level` > 0.
+pub fn risk(
+    case: &RowRiskCase,
+    members: &[SuiteMember],
+    design_level: f64,
+    levels: &[f64],
+    keep_going: &dyn Fn() -> bool,
+) -> Result<Option<RiskPicture>, RowSuiteError> {
+    let design = levels.iter().position(|&x| x == design_level);
+    let mut all = levels.to_vec();
+    if design.is_none() {
+        all.push(design_level);
+    }
+    // Each record measured once; its scale at each level follows.
+    let raw = members
+        .iter()
+        .map(|m| raw_intensity(m, &case.measure))
+        .collect::<Result<Vec<f64>, _>>()?;
+    let plans: Vec<Vec<(f64, f64)>> = all
+        .iter()
+        .map(|&x| {
+            members
+                .iter()
+                .zip(&raw)
+                .map(|(m, &r)| scaled(m, r, Some(x)))
+                .collect()
+        })
+        .collect();
+    let mut by_level: Vec<Vec<RowSuiteRun>> = Vec::with_capacity(all.len());
+    for plan in &plans {
+        if !keep_going() {
+            return Ok(None);
+        }
+        let runs = over_levels(1, members.len(), RowCaches::default, |caches, _, j| {
+            run_member(&case.row, &members[j], plan[j], caches)
+        });
+        let runs: Result<Vec<RowSuiteRun>, RowSuiteError> = runs.into_iter().flatten().collect();
+        by_level.push(runs?);
+    }
+    let at_design = &by_level[design.unwrap_or(levels.len())];
+    let ida_runs = &by_level[..levels.len()];
+    let drift = levels
+        .iter()
+        .zip(ida_runs)
+        .map(|(&level, at)| {
+            let of = |free: bool| {
+                let values: Vec<f64> = at
+                    .iter()
+                    .map(|r| max_drift(if free { &r.free } else { &r.run }, case.building))
+                    .collect();
+                Summary::of(&values)
+            };
+            LevelDrift {
+                level,
+                pounding: of(false),
+                free: of(true),
+            }
+        })
+        .collect();
+    let counts: Vec<LevelCount> = levels
+        .iter()
+        .zip(ida_runs)
+        .map(|(&level, at)| LevelCount {
+            level,
+            runs: at.len(),
+            exceeded: at
+                .iter()
+                .filter(|r| joint_pounded(&case.row, &r.run, case.joint))
+                .count(),
+        })
+        .collect();
+    let fragility = fragility::fit(&counts);
+    let min_gaps_m = at_design
+        .iter()
+        .map(|r| r.demands.joints[case.joint].gap.min_gap)
+        .collect();
+    Ok(Some(RiskPicture {
+        records: members.len(),
+        design_level,
+        min_gaps_m,
+        gap_m: case.row.joints[case.joint].gap,
+        drift,
+        pounding: counts,
+        fragility,
+        drift_title: format!("{} drift [mm]", case.row.buildings[case.building].name),
+    }))
+}
