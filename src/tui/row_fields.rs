@@ -173,14 +173,7 @@ pub fn storeys_edits(row: &Row, i: usize, n: usize) -> Vec<(String, String)> {
 }
 
 /// The contact laws in the order the law row steps through them.
-pub const LAWS: [ContactModel; 6] = [
-    ContactModel::Kelvin,
-    ContactModel::ImprovedKelvin,
-    ContactModel::Hertz,
-    ContactModel::HertzDamp,
-    ContactModel::Jankowski,
-    ContactModel::HuntCrossley,
-];
+const LAWS: [ContactModel; 6] = ContactModel::ALL;
 
 /// The `--set` edits of one nudge of `field` in `direction` (±1): a step
 /// of ±1 storey, ±0.01 in α, ±0.005 in ξ, ±0.05 in e, the next law, or a

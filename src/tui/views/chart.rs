@@ -175,7 +175,9 @@ pub fn plot_area(area: Rect, x_labels: bool) -> Rect {
     }
 }
 
-fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style, right: u16) -> u16 {
+/// Writes `text` from column `x` of row `y`, stopping before `right`;
+/// the column after it.
+pub fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style, right: u16) -> u16 {
     let mut col = x;
     for c in text.chars() {
         if col >= right {

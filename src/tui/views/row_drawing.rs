@@ -12,6 +12,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
 
+use super::chart;
 use super::raster::Raster;
 use crate::model::buildings::Row;
 use crate::solver::buildings::{RowRun, RowTrace};
@@ -203,18 +204,9 @@ pub fn render(buf: &mut Buffer, area: Rect, look: Look, drawing: &Drawing, title
     if area.height < 4 || area.width < 8 {
         return;
     }
+    let right = area.right();
     let put = |buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style| {
-        let mut col = x;
-        for c in look.text(text).chars() {
-            if col >= area.right() {
-                break;
-            }
-            let mut tmp = [0u8; 4];
-            buf[(col, y)]
-                .set_symbol(c.encode_utf8(&mut tmp))
-                .set_style(style);
-            col += 1;
-        }
+        chart::put(buf, x, y, &look.text(text), style, right);
     };
     put(buf, area.x, area.y, title, Style::new());
     let plot = plot_area(area);
