@@ -247,7 +247,10 @@ fn tables_print_and_csv_has_a_line_per_building_and_joint() {
         "0.5",
     ];
     let table = String::from_utf8_lossy(&succeeds(&args).stdout).into_owned();
-    assert!(table.contains("each record scaled to sa:0.28"), "{table}");
+    assert!(
+        table.contains("each record scaled to sa:0.2874 = 0.5 g"),
+        "{table}"
+    );
     assert!(table.contains("joint1.min_gap_m"), "{table}");
     let csv = succeeds(&[&args[..], &["--format", "csv"]].concat());
     // Two records, each two buildings and one joint.

@@ -136,7 +136,8 @@ impl Report for RowSeparationReport<'_> {
 
     fn table(&self) -> String {
         let mut s = String::new();
-        self.row.table(self.records.len(), &mut s);
+        self.row
+            .table(self.records.len(), &self.row.scaling.words(), &mut s);
         for (j, joint) in self.joints.iter().enumerate() {
             let _ = writeln!(s);
             let _ = writeln!(

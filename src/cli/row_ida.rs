@@ -147,7 +147,11 @@ impl Report for RowIdaReport<'_> {
             self.row.scaling.measure,
             self.records_per_level
         );
-        self.row.table(self.records_per_level, &mut s);
+        let scaling = format!(
+            "each record scaled to every level of {}",
+            self.row.scaling.measure
+        );
+        self.row.table(self.records_per_level, &scaling, &mut s);
         let _ = writeln!(s);
         // One line per level: who pounded, each building's median drift
         // (16–84 %) and acceleration, each joint's median gap needed.

@@ -254,9 +254,10 @@ impl<'a> RowHeader<'a> {
         }
     }
 
-    /// The opening lines of a table: the suite, the row and the scaling.
-    pub fn table(&self, records: usize, s: &mut String) {
-        let level = self.scaling.words();
+    /// The opening lines of a table: the suite, the row and `scaling`, the
+    /// scaling in words.
+    pub fn table(&self, records: usize, scaling: &str, s: &mut String) {
+        let level = scaling;
         let _ = writeln!(
             s,
             "suite {} ({records} records), row {}: {}, {} method; {level}",
@@ -490,7 +491,8 @@ impl Report for RowSuiteReport<'_> {
 
     fn table(&self) -> String {
         let mut s = String::new();
-        self.row.table(self.records.len(), &mut s);
+        self.row
+            .table(self.records.len(), &self.row.scaling.words(), &mut s);
         records_table(&mut s, &self.records);
         over_suite_table(&mut s, &self.statistics);
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
