@@ -166,6 +166,8 @@ fn ida_fits_each_limit_state_on_the_counts_of_its_records() {
     }
     assert!(v["fragility"][0].get("no_pounding_counts").is_none());
     assert_eq!(v["limit_states"][2]["kind"], "drift");
+    assert_eq!(v["limit_states"][2]["building"], "frame");
+    assert_eq!(v["limit_states"][2]["ratio"], 0.01);
     // A level is the suite at that level, record for record.
     let suite = json(&[
         "suite",
@@ -336,6 +338,11 @@ fn bad_input_is_one_line_naming_the_flag_and_what_is_allowed() {
         &suite(&["--method", "newmark"]),
         2,
         &["--method newmark", "exact"],
+    );
+    fails(
+        &suite(&["--model", "hertz"]),
+        2,
+        &["--model hertz", "improved-kelvin"],
     );
     fails(
         &suite(&["--preset", "set1"]),

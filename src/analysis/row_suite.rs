@@ -66,7 +66,13 @@ pub enum RowSuiteError {
     /// A record cannot be scaled (its intensity is 0).
     #[error(transparent)]
     Scaling(#[from] SuiteRunError),
-    /// A record's run failed (a Hertz-type law, a runaway run).
+    /// The row's contact law is Hertz-type, which the exact method does not carry.
+    #[error(
+        "--model {0}: a row under a suite runs the exact method, which carries the Kelvin \
+         family at floor pairs; give --model kelvin or improved-kelvin"
+    )]
+    HertzianLaw(&'static str),
+    /// A record's run failed (a runaway run).
     #[error("record `{record}`: {error}")]
     Run { record: String, error: RowError },
 }
@@ -150,11 +156,7 @@ pub fn plan(
     members: &[SuiteMember],
 ) -> Result<Vec<(f64, f64)>, RowSuiteError> {
     if case.row.model.is_hertzian() {
-        // Fail before any record, as one run would.
-        return Err(RowSuiteError::Run {
-            record: members.first().map_or(String::new(), |m| m.name.clone()),
-            error: RowError::HertzianLaw(case.row.model.name()),
-        });
+        return Err(RowSuiteError::HertzianLaw(case.row.model.name()));
     }
     Ok(scales(members, &case.scaling)?)
 }
@@ -224,7 +226,8 @@ pub fn run_suite(
 }
 
 impl BuildingDemands {
-    /// Every building's demands in `run` of `row`.
+    /// Every building's demands in `run` of `row` (a run of the row itself,
+    /// or of [`Row::apart`], whose floor pairs are none: no impacts).
     pub fn of(row: &Row, run: &RowRun) -> Vec<BuildingDemands> {
         let pairs = row.pairs();
         row.buildings

@@ -35,6 +35,7 @@ pub mod shard;
 pub mod similarity;
 pub mod spectrum;
 pub mod stress;
+pub mod study_tables;
 pub mod suite;
 #[cfg(feature = "app")]
 pub mod tui;
