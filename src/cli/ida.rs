@@ -48,10 +48,12 @@ pub struct LimitStateArgs {
     /// Ductility limit states, e.g. 2,4 or left:2,right:4 (either structure by default).
     #[arg(long, value_name = "[SIDE:]MU,…")]
     pub ductility: Option<String>,
-    /// Peak absolute acceleration limit states, e.g. 0.5g,1g (a bare number is m/s²).
+    /// Peak absolute acceleration limit states, e.g. 0.5g,1g (a bare number is m/s²);
+    /// with `ida --buildings` an item may name its building, frame:1g.
     #[arg(long, value_name = "[SIDE:]A,…")]
     pub acceleration: Option<String>,
-    /// Peak impact force limit states in kN, e.g. 500.
+    /// Peak impact force limit states in kN, e.g. 500; with `ida --buildings`
+    /// an item may name its building, frame:500.
     #[arg(long, value_name = "KN,…")]
     pub force: Option<String>,
 }

@@ -38,7 +38,8 @@ pub struct SuiteArgs {
     #[arg(long, value_name = "SUITE")]
     pub suite: String,
     /// Intensity measure: `pga`, or `sa:T`, the 5 %-damped pseudo-spectral
-    /// acceleration at period T seconds, 0 < T ≤ 10 (SPEC §12) [default: pga].
+    /// acceleration at period T seconds, 0 < T ≤ 10 (SPEC §12) [default: pga];
+    /// with --buildings, `sa` alone is Sa at the leftmost building's T₁.
     #[arg(long, value_name = "pga|sa:T")]
     pub im: Option<String>,
     /// Scale each record so that its intensity measure equals X, in g
