@@ -149,6 +149,17 @@ impl Report for RowSeparationReport<'_> {
                 joint.left,
                 joint.right
             );
+            let paired = self
+                .records
+                .first()
+                .is_some_and(|r| !r.joints[j].gap.floors.is_empty());
+            if !paired {
+                let _ = writeln!(
+                    s,
+                    "no floors pair up at this joint (none at the same elevation within 1 mm): \
+                     it cannot pound, and needs no gap"
+                );
+            }
             study_table(
                 &mut s,
                 &joint.study,
