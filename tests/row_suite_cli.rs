@@ -166,6 +166,8 @@ fn ida_fits_each_limit_state_on_the_counts_of_its_records() {
     }
     assert!(v["fragility"][0].get("no_pounding_counts").is_none());
     assert_eq!(v["limit_states"][2]["kind"], "drift");
+    assert_eq!(v["limit_states"][2]["building"], "frame");
+    assert_eq!(v["limit_states"][2]["ratio"], 0.01);
     // A level is the suite at that level, record for record.
     let suite = json(&[
         "suite",
@@ -247,7 +249,10 @@ fn tables_print_and_csv_has_a_line_per_building_and_joint() {
         "0.5",
     ];
     let table = String::from_utf8_lossy(&succeeds(&args).stdout).into_owned();
-    assert!(table.contains("each record scaled to sa:0.28"), "{table}");
+    assert!(
+        table.contains("each record scaled to sa:0.2874 = 0.5 g"),
+        "{table}"
+    );
     assert!(table.contains("joint1.min_gap_m"), "{table}");
     let csv = succeeds(&[&args[..], &["--format", "csv"]].concat());
     // Two records, each two buildings and one joint.

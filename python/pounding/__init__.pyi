@@ -323,6 +323,7 @@ def gap(
     probability: Optional[str] = ...,
     im: Optional[str] = ...,
     level: Union[float, str, None] = ...,
+    buildings: Optional[str] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -345,6 +346,8 @@ def gap(
 
     x: sweep one parameter, ``KEY=START:STOP:STEP``; mu: frequency ratio.
     suite, im, level, probability: the separation over a suite of records.
+    buildings: a row of buildings (a built-in row or a path): per joint its
+        gap, or with suite its separation at each probability.
     The points (or records) are numpy arrays.
     preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
     model: contact law, kelvin, improved-kelvin, hertz, hertzdamp, jankowski or hunt-crossley.
@@ -394,6 +397,7 @@ def suite(
     im: Optional[str] = ...,
     level: Union[float, str, None] = ...,
     allow_unreliable: bool = False,
+    buildings: Optional[str] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -416,6 +420,9 @@ def suite(
 
     suite: a directory, a list file, or ``synthetic:N[@SEED]``.
     im: pga or sa:T; level: scale every record to this intensity (g).
+    buildings: a row of buildings instead (``"block-and-frame"`` or a path):
+        per record each building's and joint's demands; im ``sa`` is Sa(T1)
+        of its leftmost building.
     allow_unreliable: return unreliable results (flagged) instead of raising.
     The records are numpy arrays.
     preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
@@ -470,6 +477,9 @@ def ida(
     ductility: Optional[str] = ...,
     acceleration: Optional[str] = ...,
     force: Optional[str] = ...,
+    buildings: Optional[str] = ...,
+    drift: Optional[str] = ...,
+    building: Optional[str] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -492,6 +502,8 @@ def ida(
 
     suite: the records; levels: intensities in g, START:STOP:STEP or X1,X2,…
     im: pga or sa:T; ductility, acceleration, force: limit states beside pounding.
+    buildings: a row of buildings; drift (storey drift ratios), acceleration
+        and force items ``[NAME:]VALUE``, building: the one they read by default.
     Each level's records, the levels, and each limit state's counts are numpy arrays.
     preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
     model: contact law, kelvin, improved-kelvin, hertz, hertzdamp, jankowski or hunt-crossley.
@@ -545,6 +557,9 @@ def fragility(
     ductility: Optional[str] = ...,
     acceleration: Optional[str] = ...,
     force: Optional[str] = ...,
+    buildings: Optional[str] = ...,
+    drift: Optional[str] = ...,
+    building: Optional[str] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,

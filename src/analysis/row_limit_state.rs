@@ -35,9 +35,9 @@ use super::row_suite::BuildingDemands;
 use crate::model::buildings::Row;
 use crate::model::params::echo;
 
-/// Which building of the row a limit state reads.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
+/// Which building of the row a limit state reads; written as its name
+/// (`"frame"`, `"any"`).
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Target {
     /// Any building: exceeded when one of them is.
     Any,
@@ -60,6 +60,12 @@ impl Target {
             Target::Any => demands.iter().any(exceeds),
             Target::Building { index, .. } => demands.get(*index).is_some_and(exceeds),
         }
+    }
+}
+
+impl Serialize for Target {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.name())
     }
 }
 

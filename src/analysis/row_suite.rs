@@ -14,7 +14,7 @@
 //! at a level X (g) of an intensity measure IM, s_j = X / IM(record j);
 //! without a level, each record runs at its suite list's scale.
 //! [`row_intensity`] gives Sa its period when the command line asks for
-//! `sa` alone: T₁ of the leftmost building.
+//! `sa` alone: T₁ of the leftmost building, to four significant digits.
 //!
 //! **The run without contact.** Each record also runs with every joint's
 //! gap infinite ([`Row::apart`]): its per-joint gap that prevents pounding
@@ -49,11 +49,14 @@ pub struct RowSuiteCase {
     pub scaling: Scaling,
 }
 
-/// Sa at the leftmost building's fundamental period T₁ (s): the measure
-/// `--im sa` names for a row, whose buildings have no one period.
+/// Sa at the leftmost building's fundamental period T₁, rounded to four
+/// significant digits (0.2874 s for block-and-frame): the measure `--im sa`
+/// names for a row, whose buildings have no one period. Rounded, it is
+/// written in full in every report, and `--im sa:0.2874` is the same measure.
 pub fn row_intensity(row: &Row) -> IntensityMeasure {
+    let t1 = periods(&row.buildings[0])[0];
     IntensityMeasure::Sa {
-        period: periods(&row.buildings[0])[0],
+        period: format!("{t1:.3e}").parse().unwrap_or(t1),
     }
 }
 
@@ -63,7 +66,7 @@ pub enum RowSuiteError {
     /// A record cannot be scaled (its intensity is 0).
     #[error(transparent)]
     Scaling(#[from] SuiteRunError),
-    /// A record's run failed (a Hertz-type law, a runaway run).
+    /// A record's run failed (a runaway run).
     #[error("record `{record}`: {error}")]
     Run { record: String, error: RowError },
 }
@@ -214,7 +217,8 @@ pub fn run_suite(
 }
 
 impl BuildingDemands {
-    /// Every building's demands in `run` of `row`.
+    /// Every building's demands in `run` of `row` (a run of the row itself,
+    /// or of [`Row::apart`], whose floor pairs are none: no impacts).
     pub fn of(row: &Row, run: &RowRun) -> Vec<BuildingDemands> {
         let pairs = row.pairs();
         row.buildings

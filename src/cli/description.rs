@@ -6,10 +6,12 @@
 //! - [`Case`]: `params`, `mu`, `model`, `excitation`, `excitation_note`,
 //!   `method` (map, spectrum, run);
 //! - [`Description`]: both, then the `region_threshold` of SPEC §7, for the
-//!   reports that classify regions (map, spectrum).
+//!   reports that classify regions (map, spectrum);
+//! - [`ScalingReport`]: how a suite's records are scaled (suite, ida, gap).
 
 use serde::Serialize;
 
+use super::output::num;
 use crate::analysis::spectrum::REGION_THRESHOLD;
 use crate::model::{Method, Params};
 
@@ -178,5 +180,25 @@ mod tests {
         // A single run has no μ.
         let v = serde_json::to_value(Case::of(&p, None)).unwrap();
         assert!(v.get("mu").is_none() && v.get("excitation_note").is_none());
+    }
+}
+
+/// A suite's scaling, said in words and numbers (`suite`, `ida` and `gap`
+/// on a pair or a row).
+#[derive(Debug, Serialize)]
+pub struct ScalingReport {
+    pub measure: String,
+    /// The level (g) every record is scaled to; absent: the list's scales.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub level_g: Option<f64>,
+}
+
+impl ScalingReport {
+    /// The scaling in words, for a table's opening lines.
+    pub fn words(&self) -> String {
+        match self.level_g {
+            Some(x) => format!("each record scaled to {} = {} g", self.measure, num(x)),
+            None => format!("records at their list's scale; {} reported", self.measure),
+        }
     }
 }

@@ -85,7 +85,9 @@ pub fn report_with(
         }
         suite_args.buildings = args.row.buildings.clone();
         suite_args.shard = args.shard.clone();
-        return super::row_gap_suite::report_with(&suite_args, args.probability.as_deref(), emit);
+        if let Some(study) = suite_args.row_study()? {
+            return super::row_gap_suite::report_with(&study, args.probability.as_deref(), emit);
+        }
     }
     if let Some(suite_args) = args
         .records

@@ -13,10 +13,10 @@ use super::CliError;
 use super::description::Provenance;
 use super::output::{Emit, printer};
 use super::progress::Progress;
-use super::suite::{
-    SuiteArgs, SuiteRow, case_of, members, record_steps, statistics_table, work_of,
-};
-use crate::analysis::fragility::describe;
+use super::records::members;
+use super::row_ida::{RowIdaArgs, RowLimitArgs};
+use super::study_tables::closing_tables;
+use super::suite::{SuiteArgs, SuiteRow, case_of, record_steps, work_of};
 use crate::analysis::ida::{
     LimitStateFragility, fragilities, parse_levels, plan_levels, run_levels,
 };
@@ -41,22 +41,6 @@ pub struct IdaArgs {
     pub row_limits: RowLimitArgs,
 }
 
-/// The limit states of a row of buildings beside `--acceleration`,
-/// `--force` and pounding (SPEC §12, §13; [`crate::analysis::row_limit_state`]).
-#[derive(Debug, Clone, Default, Args)]
-pub struct RowLimitArgs {
-    /// With --buildings: storey drift ratio limit states, each in (0, 1),
-    /// e.g. 0.005,0.01,0.02 (FEMA's IO, LS, CP for frames) or frame:0.01.
-    #[arg(long, value_name = "[NAME:]RATIO,…")]
-    pub drift: Option<String>,
-    /// With --buildings: the building the limit states read when an item
-    /// names none, and the pounding limit state's: a building of the row
-    /// or `any` [default: any]. `--acceleration`, `--force` and `--drift`
-    /// items may name their own (`frame:0.5g`).
-    #[arg(long, value_name = "NAME|any")]
-    pub building: Option<String>,
-}
-
 /// The limit states beside pounding (SPEC §12), as `ida` and `figure
 /// fragility` take them.
 #[derive(Debug, Clone, Default, Args)]
@@ -64,10 +48,12 @@ pub struct LimitStateArgs {
     /// Ductility limit states, e.g. 2,4 or left:2,right:4 (either structure by default).
     #[arg(long, value_name = "[SIDE:]MU,…")]
     pub ductility: Option<String>,
-    /// Peak absolute acceleration limit states, e.g. 0.5g,1g (a bare number is m/s²).
+    /// Peak absolute acceleration limit states, e.g. 0.5g,1g (a bare number is m/s²);
+    /// with `ida --buildings` an item may name its building, frame:1g.
     #[arg(long, value_name = "[SIDE:]A,…")]
     pub acceleration: Option<String>,
-    /// Peak impact force limit states in kN, e.g. 500.
+    /// Peak impact force limit states in kN, e.g. 500; with `ida --buildings`
+    /// an item may name its building, frame:500.
     #[arg(long, value_name = "KN,…")]
     pub force: Option<String>,
 }
@@ -107,8 +93,16 @@ pub fn report_with(
             "--level: an IDA runs every level of --levels; use `pounding suite` for one".into(),
         ));
     }
-    if args.suite.buildings.is_some() {
-        return super::row_ida::report_with(args, emit);
+    if let Some(study) = args.suite.row_study()? {
+        let row = RowIdaArgs {
+            study,
+            levels: &args.levels,
+            limits: &args.row_limits,
+            ductility: args.limits.ductility.as_deref(),
+            acceleration: args.limits.acceleration.as_deref(),
+            force: args.limits.force.as_deref(),
+        };
+        return super::row_ida::report_with(&row, emit);
     }
     for (flag, given) in [
         ("--drift", args.row_limits.drift.is_some()),
@@ -310,82 +304,5 @@ impl Report for IdaReport<'_> {
             .collect();
         closing_tables(&mut s, &self.fragility, &levels, self.elapsed_ms);
         s
-    }
-}
-
-/// The closing tables of `ida`, for a pair or a row: the fragility of each
-/// limit state, the statistics at the highest of `levels` (g, with each
-/// level's statistics) and the wall time.
-pub fn closing_tables(
-    s: &mut String,
-    fragility: &[LimitStateFragility],
-    levels: &[(f64, &SuiteStatistics)],
-    elapsed_ms: f64,
-) {
-    let level_values: Vec<f64> = levels.iter().map(|l| l.0).collect();
-    fragility_table(s, fragility, &level_values);
-    if let Some((level, statistics)) = levels.last() {
-        let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "statistics at the highest level, {} g ({} pounded):",
-            g4(*level),
-            statistics.pounded
-        );
-        statistics_table(s, statistics);
-    }
-    let _ = writeln!(s, "elapsed {elapsed_ms:.0} ms");
-}
-
-/// The fragility of each limit state (SPEC §12), with pounding and
-/// without, and the records exceeding it at each of `levels` (g).
-fn fragility_table(s: &mut String, fragility: &[LimitStateFragility], levels: &[f64]) {
-    let _ = writeln!(s);
-    let _ = writeln!(
-        s,
-        "fragility P(exceed | IM = x) = Φ(ln(x/θ)/β), maximum likelihood over all levels (SPEC §12)"
-    );
-    let width = fragility
-        .iter()
-        .map(|f| f.limit_state.chars().count())
-        .max()
-        .unwrap_or(11)
-        .max(11);
-    let _ = writeln!(
-        s,
-        "{:<width$}  {:<36}  {}",
-        "limit state", "with pounding", "without pounding (gap = ∞)"
-    );
-    for f in fragility {
-        let _ = writeln!(
-            s,
-            "{:<width$}  {:<36}  {}",
-            f.limit_state,
-            describe(&f.fragility),
-            f.no_pounding_fragility
-                .as_ref()
-                .map_or("-".to_string(), describe)
-        );
-    }
-    let _ = writeln!(s);
-    let _ = writeln!(s, "records exceeding each limit state, per level:");
-    let _ = write!(s, "{:<width$}", "level g");
-    for l in levels {
-        let _ = write!(s, " {:>6}", g4(*l));
-    }
-    let _ = writeln!(s);
-    for f in fragility {
-        let _ = write!(s, "{:<width$}", f.limit_state);
-        for c in &f.counts {
-            let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
-        }
-        let _ = writeln!(s);
-        if let Some(free) = &f.no_pounding_counts {
-            let _ = write!(s, "{:<width$}", "  without pounding");
-            for c in free {
-                let _ = write!(s, " {:>6}", format!("{}/{}", c.exceeded, c.runs));
-            }
-            let _ = writeln!(s);
-        }
     }
 }

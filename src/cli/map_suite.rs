@@ -13,8 +13,9 @@ use super::CliError;
 use super::description::Provenance;
 use super::output::{Emit, Format, num, print};
 use super::progress::Progress;
+use super::records::members;
 use super::shard::Sweep;
-use super::suite::{SuiteArgs, case_of, members, record_steps, work_of};
+use super::suite::{SuiteArgs, case_of, record_steps, work_of};
 use crate::analysis::suite::SuiteRun;
 use crate::analysis::suite_map::{
     MAX_RUNS, PhysicalAxis, SuiteMapCell, cell_cases, compute_cells, plan_cells,

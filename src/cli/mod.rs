@@ -35,6 +35,7 @@ pub mod shard;
 pub mod similarity;
 pub mod spectrum;
 pub mod stress;
+pub mod study_tables;
 pub mod suite;
 #[cfg(feature = "app")]
 pub mod tui;
@@ -121,11 +122,13 @@ pub enum Command {
     Gap(gap::GapArgs),
     /// Physical units in and out, and the self-similarity of SPEC §8.
     Similarity(similarity::SimilarityArgs),
-    /// One physical pair of buildings under a suite of records scaled to an
-    /// intensity: the demands of every record and their statistics (SPEC §12).
+    /// One physical pair of buildings, or a row of them (--buildings), under a
+    /// suite of records scaled to an intensity: the demands of every record and
+    /// their statistics (SPEC §12, §13).
     Suite(suite::SuiteArgs),
     /// Incremental dynamic analysis: a suite at every intensity level, and the
-    /// lognormal fragility of each limit state with and without pounding (SPEC §12).
+    /// lognormal fragility of each limit state with and without pounding, for a
+    /// pair or a row of buildings (SPEC §12, §13).
     Ida(ida::IdaArgs),
     /// Open the terminal explorer (the default without a command).
     Tui(tui::TuiArgs),

@@ -10,7 +10,7 @@ use clap::{Args, Subcommand, ValueEnum};
 use super::CliError;
 use super::output::print;
 use crate::model::simulated::{self, Filter, MAX_COUNT, Simulation, SimulationError};
-use crate::model::suite::LIST_FILE;
+use crate::model::suite::{LIST_FILE, SuiteMember, SuiteSpec};
 use crate::output::{shown, write_file};
 
 #[derive(Debug, Clone, Args)]
@@ -221,4 +221,12 @@ fn list_text(args: &SynthArgs, simulation: &Simulation, names: &[String]) -> Str
         text.push('\n');
     }
     text
+}
+
+/// The records of `SUITE` (a directory, a list file or `synthetic:N@S`),
+/// or the one-line error naming the file and line.
+pub fn members(suite: &str) -> Result<Vec<SuiteMember>, CliError> {
+    SuiteSpec::parse(suite)
+        .and_then(|s| s.load())
+        .map_err(|e| CliError::Usage(e.to_string()))
 }

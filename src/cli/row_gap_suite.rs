@@ -12,18 +12,17 @@ use serde::Serialize;
 use super::CliError;
 use super::gap_suite::{probabilities, study_table};
 use super::output::{Emit, num};
-use super::row_suite::{RowHeader, RowRan, run};
-use super::suite::SuiteArgs;
+use super::row_suite::{RowHeader, RowRan, RowStudyArgs, run};
 use crate::analysis::row_gap::JointGap;
 use crate::analysis::row_separation::{JointSeparation, joint_separations};
 use crate::model::params::echo::g4;
 use crate::output::report::Report;
 
-/// Runs the row suite of `suite_args` and reports, per joint, the
+/// Runs the row suite of `study` and reports, per joint, the
 /// separation at each of `probability` ([`super::gap_suite::DEFAULT_PROBABILITIES`] when
 /// `None`), its typed report handed to `emit`.
 pub fn report_with(
-    suite_args: &SuiteArgs,
+    study: &RowStudyArgs,
     probability: Option<&str>,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
@@ -33,9 +32,9 @@ pub fn report_with(
         runs,
         elapsed_ms,
         ..
-    } = run(suite_args, "gap --buildings --suite")?;
+    } = run(study, "gap --buildings --suite")?;
     let report = RowSeparationReport {
-        row: RowHeader::new(&case, &suite_args.suite),
+        row: RowHeader::new(&case, study.suite),
         records: runs
             .iter()
             .map(|r| RecordRow {
@@ -136,7 +135,8 @@ impl Report for RowSeparationReport<'_> {
 
     fn table(&self) -> String {
         let mut s = String::new();
-        self.row.table(self.records.len(), &mut s);
+        self.row
+            .table(self.records.len(), &self.row.scaling.words(), &mut s);
         for (j, joint) in self.joints.iter().enumerate() {
             let _ = writeln!(s);
             let _ = writeln!(
@@ -149,6 +149,17 @@ impl Report for RowSeparationReport<'_> {
                 joint.left,
                 joint.right
             );
+            let paired = self
+                .records
+                .first()
+                .is_some_and(|r| !r.joints[j].gap.floors.is_empty());
+            if !paired {
+                let _ = writeln!(
+                    s,
+                    "no floors pair up at this joint (none at the same elevation within 1 mm): \
+                     it cannot pound, and needs no gap"
+                );
+            }
             study_table(
                 &mut s,
                 &joint.study,

@@ -7,13 +7,16 @@
 use std::fmt::Write as _;
 use std::time::Instant;
 
+use clap::Args;
 use serde::Serialize;
 
 use super::CliError;
-use super::ida::{IdaArgs, closing_tables};
 use super::output::{Emit, num};
 use super::progress::Progress;
-use super::row_suite::{RowHeader, RowSuiteRow, UNITS, case_of, failed, record_steps, work_of};
+use super::row_suite::{
+    RowHeader, RowStudyArgs, RowSuiteRow, UNITS, case_of, failed, record_steps, work_of,
+};
+use super::study_tables::closing_tables;
 use crate::analysis::ida::{LimitStateFragility, parse_levels};
 use crate::analysis::row_ida::{fragilities, plan_levels, run_levels};
 use crate::analysis::row_limit_state::{RowLimitParser, RowLimitState};
@@ -27,23 +30,53 @@ fn usage(message: String) -> CliError {
     CliError::Usage(message)
 }
 
+/// The limit states of a row of buildings beside `--acceleration`,
+/// `--force` and pounding (SPEC §12, §13; [`crate::analysis::row_limit_state`]).
+#[derive(Debug, Clone, Default, Args)]
+pub struct RowLimitArgs {
+    /// With --buildings: storey drift ratio limit states, each in (0, 1),
+    /// e.g. 0.005,0.01,0.02 (FEMA's IO, LS, CP for frames) or frame:0.01.
+    #[arg(long, value_name = "[NAME:]RATIO,…")]
+    pub drift: Option<String>,
+    /// With --buildings: the building the limit states read when an item
+    /// names none, and the pounding limit state's: a building of the row
+    /// or `any` [default: any]. `--acceleration`, `--force` and `--drift`
+    /// items may name their own (`frame:0.5g`).
+    #[arg(long, value_name = "NAME|any")]
+    pub building: Option<String>,
+}
+
+/// `ida --buildings` as the command line asks for it.
+#[derive(Debug, Clone, Copy)]
+pub struct RowIdaArgs<'a> {
+    pub study: RowStudyArgs<'a>,
+    /// `--levels`.
+    pub levels: &'a str,
+    pub limits: &'a RowLimitArgs,
+    /// The pair's limit-state flags: `--ductility` (refused on a row),
+    /// `--acceleration` and `--force`.
+    pub ductility: Option<&'a str>,
+    pub acceleration: Option<&'a str>,
+    pub force: Option<&'a str>,
+}
+
 /// The limit states of `args` for `row`: pounding first, then `--drift`,
 /// `--acceleration` and `--force`, each item's building named or
 /// `--building`'s.
-pub fn limit_states(args: &IdaArgs, row: &Row) -> Result<Vec<RowLimitState>, CliError> {
-    if let Some(d) = &args.limits.ductility {
+pub fn limit_states(args: &RowIdaArgs, row: &Row) -> Result<Vec<RowLimitState>, CliError> {
+    if let Some(d) = args.ductility {
         return Err(usage(format!(
             "--ductility {}: a row's storeys take --drift (storey drift ratio, e.g. 0.01); drop --ductility",
             crate::model::params::echo::text(d)
         )));
     }
-    let parser = RowLimitParser::new(row, args.row_limits.building.as_deref())
+    let parser = RowLimitParser::new(row, args.limits.building.as_deref())
         .map_err(|e| usage(e.to_string()))?;
     let mut states = vec![parser.pounding()];
-    let flags: [(&Option<String>, fn(&RowLimitParser, &str) -> _); 3] = [
-        (&args.row_limits.drift, RowLimitParser::drift),
-        (&args.limits.acceleration, RowLimitParser::acceleration),
-        (&args.limits.force, RowLimitParser::force),
+    let flags: [(Option<&str>, fn(&RowLimitParser, &str) -> _); 3] = [
+        (args.limits.drift.as_deref(), RowLimitParser::drift),
+        (args.acceleration, RowLimitParser::acceleration),
+        (args.force, RowLimitParser::force),
     ];
     for (text, parse) in flags {
         if let Some(t) = text {
@@ -55,15 +88,15 @@ pub fn limit_states(args: &IdaArgs, row: &Row) -> Result<Vec<RowLimitState>, Cli
 
 /// `pounding ida --buildings`: its typed report handed to `emit`.
 pub fn report_with(
-    args: &IdaArgs,
+    args: &RowIdaArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let levels = parse_levels(&args.levels).map_err(usage)?;
-    let (case, members) = case_of(&args.suite)?;
+    let (case, members) = case_of(&args.study)?;
     let states = limit_states(args, &case.row)?;
     let plans = plan_levels(&case, &members, &levels).map_err(failed)?;
     let work = work_of(&case.row, &members, levels.len());
-    work.check("ida --buildings", args.suite.long.allow_long, true)?;
+    work.check("ida --buildings", args.study.allow_long, true)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
     let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
@@ -71,7 +104,7 @@ pub fn report_with(
     let fragility = fragilities(&levels, &runs, &states);
     drop(progress);
     let report = RowIdaReport {
-        row: RowHeader::new(&case, &args.suite.suite),
+        row: RowHeader::new(&case, args.study.suite),
         records_per_level: members.len(),
         levels: levels
             .iter()
@@ -147,7 +180,11 @@ impl Report for RowIdaReport<'_> {
             self.row.scaling.measure,
             self.records_per_level
         );
-        self.row.table(self.records_per_level, &mut s);
+        let scaling = format!(
+            "each record scaled to every level of {}",
+            self.row.scaling.measure
+        );
+        self.row.table(self.records_per_level, &scaling, &mut s);
         let _ = writeln!(s);
         // One line per level: who pounded, each building's median drift
         // (16–84 %) and acceleration, each joint's median gap needed.

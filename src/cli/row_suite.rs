@@ -13,9 +13,12 @@ use super::CliError;
 use super::budget::{SECONDS_PER_STEP, Work};
 use super::buildings::BuildingsArgs;
 use super::description::Provenance;
+use super::description::ScalingReport;
 use super::output::{Emit, num};
+use super::params::ParamArgs;
 use super::progress::Progress;
-use super::suite::{ScalingReport, SuiteArgs, clip, members, over_suite_table, parse_level};
+use super::records::members;
+use super::study_tables::{clip, over_suite_table};
 use crate::analysis::row_suite::{
     RowDemands, RowSuiteCase, RowSuiteError, RowSuiteRun, plan, row_intensity, run_suite,
     statistics,
@@ -33,10 +36,27 @@ fn usage(message: String) -> CliError {
     CliError::Usage(message)
 }
 
-/// The row study of `args` (`--buildings` given), checked: the row with
-/// `--set` and `--model` applied, its scaling and its records.
-pub fn case_of(args: &SuiteArgs) -> Result<(RowSuiteCase, Vec<SuiteMember>), CliError> {
-    let p = &args.params;
+/// A study on a row as the command line asks for it (`--buildings`):
+/// what `suite`, `ida` and `gap` on a row share.
+#[derive(Debug, Clone, Copy)]
+pub struct RowStudyArgs<'a> {
+    /// `--buildings`: a built-in row or a path.
+    pub buildings: &'a str,
+    /// `--set`, `--model`, and the pair's flags a row refuses.
+    pub params: &'a ParamArgs,
+    pub suite: &'a str,
+    pub im: Option<&'a str>,
+    /// `--level` (g).
+    pub level: Option<f64>,
+    pub allow_long: bool,
+    /// `--shard` was given (rows do not shard).
+    pub sharded: bool,
+}
+
+/// The row study of `args`, checked: the row with `--set` and `--model`
+/// applied, its scaling and its records.
+pub fn case_of(args: &RowStudyArgs) -> Result<(RowSuiteCase, Vec<SuiteMember>), CliError> {
+    let p = args.params;
     let refused = [
         ("--preset", p.preset.is_some(), "a row is its own preset"),
         (
@@ -60,7 +80,7 @@ pub fn case_of(args: &SuiteArgs) -> Result<(RowSuiteCase, Vec<SuiteMember>), Cli
             p.presets.is_some(),
             "rows are read by --buildings",
         ),
-        ("--shard", args.shard.shard.is_some(), "rows do not shard"),
+        ("--shard", args.sharded, "rows do not shard"),
     ];
     if let Some((flag, _, why)) = refused.iter().find(|(_, given, _)| *given) {
         return Err(usage(format!(
@@ -74,11 +94,11 @@ pub fn case_of(args: &SuiteArgs) -> Result<(RowSuiteCase, Vec<SuiteMember>), Cli
         )));
     }
     let row = BuildingsArgs {
-        buildings: args.buildings.clone(),
+        buildings: Some(args.buildings.to_string()),
         ..BuildingsArgs::default()
     }
     .row(&p.overrides, p.model.as_deref())?;
-    let measure = match args.im.as_deref().map(str::trim) {
+    let measure = match args.im.map(str::trim) {
         None => IntensityMeasure::Pga,
         Some(text) if text.eq_ignore_ascii_case("sa") => row_intensity(&row),
         Some(text) => IntensityMeasure::parse(text).map_err(|e| {
@@ -87,8 +107,8 @@ pub fn case_of(args: &SuiteArgs) -> Result<(RowSuiteCase, Vec<SuiteMember>), Cli
             ))
         })?,
     };
-    let level = args.level.as_deref().map(parse_level).transpose()?;
-    let members = members(&args.suite)?;
+    let level = args.level;
+    let members = members(args.suite)?;
     Ok((
         RowSuiteCase {
             row,
@@ -119,7 +139,7 @@ pub fn work_of(row: &Row, members: &[SuiteMember], times: usize) -> Work {
 }
 
 /// A failed row study as the command line reports it: a record that cannot
-/// be scaled or a Hertz-type law is bad input, a runaway run a failure.
+/// be scaled is bad input, a runaway run a failure.
 pub fn failed(e: RowSuiteError) -> CliError {
     match &e {
         RowSuiteError::Run {
@@ -140,11 +160,11 @@ pub struct RowRan {
 
 /// Runs the row suite of `args` within the work bound, with progress;
 /// `what` names the request in the bound's message.
-pub fn run(args: &SuiteArgs, what: &str) -> Result<RowRan, CliError> {
+pub fn run(args: &RowStudyArgs, what: &str) -> Result<RowRan, CliError> {
     let (case, members) = case_of(args)?;
     let scales = plan(&case, &members).map_err(failed)?;
     let work = work_of(&case.row, &members, 1);
-    work.check(what, args.long.allow_long, true)?;
+    work.check(what, args.allow_long, true)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
     let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
@@ -160,7 +180,7 @@ pub fn run(args: &SuiteArgs, what: &str) -> Result<RowRan, CliError> {
 
 /// `pounding suite --buildings`: its typed report handed to `emit`.
 pub fn report_with(
-    args: &SuiteArgs,
+    args: &RowStudyArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let RowRan {
@@ -170,7 +190,7 @@ pub fn report_with(
         ..
     } = run(args, "suite --buildings")?;
     let report = RowSuiteReport {
-        row: RowHeader::new(&case, &args.suite),
+        row: RowHeader::new(&case, args.suite),
         records: runs.iter().map(RowSuiteRow::of).collect(),
         statistics: statistics(&runs),
         elapsed_ms,
@@ -254,9 +274,10 @@ impl<'a> RowHeader<'a> {
         }
     }
 
-    /// The opening lines of a table: the suite, the row and the scaling.
-    pub fn table(&self, records: usize, s: &mut String) {
-        let level = self.scaling.words();
+    /// The opening lines of a table: the suite, the row and `scaling`, the
+    /// scaling in words.
+    pub fn table(&self, records: usize, scaling: &str, s: &mut String) {
+        let level = scaling;
         let _ = writeln!(
             s,
             "suite {} ({records} records), row {}: {}, {} method; {level}",
@@ -490,7 +511,8 @@ impl Report for RowSuiteReport<'_> {
 
     fn table(&self) -> String {
         let mut s = String::new();
-        self.row.table(self.records.len(), &mut s);
+        self.row
+            .table(self.records.len(), &self.row.scaling.words(), &mut s);
         records_table(&mut s, &self.records);
         over_suite_table(&mut s, &self.statistics);
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);

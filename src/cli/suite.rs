@@ -11,17 +11,19 @@ use serde::Serialize;
 
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
-use super::description::Provenance;
+use super::description::{Provenance, ScalingReport};
 use super::output::{Emit, FormatArg, num, printer};
 use super::params::ParamArgs;
 use super::progress::Progress;
+use super::records::members;
+use super::row_suite::RowStudyArgs;
+use super::study_tables::{clip, over_suite_table};
 use crate::analysis::demands::{DemandsSi, Scales};
 use crate::analysis::suite::{
     MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteStatistics, plan, run_suite,
 };
 use crate::model::intensity::IntensityMeasure;
 use crate::model::physical::G;
-use crate::model::suite::{SuiteMember, SuiteSpec};
 use crate::model::{Method, Params};
 use crate::output::report::Report;
 use crate::solver::StructurePeaks;
@@ -36,7 +38,8 @@ pub struct SuiteArgs {
     #[arg(long, value_name = "SUITE")]
     pub suite: String,
     /// Intensity measure: `pga`, or `sa:T`, the 5 %-damped pseudo-spectral
-    /// acceleration at period T seconds, 0 < T ≤ 10 (SPEC §12) [default: pga].
+    /// acceleration at period T seconds, 0 < T ≤ 10 (SPEC §12) [default: pga];
+    /// with --buildings, `sa` alone is Sa at the leftmost building's T₁.
     #[arg(long, value_name = "pga|sa:T")]
     pub im: Option<String>,
     /// Scale each record so that its intensity measure equals X, in g
@@ -54,7 +57,8 @@ pub struct SuiteArgs {
     pub shard: super::shard::ShardArgs,
     /// A row of shear buildings (SPEC §13) instead of the preset's pair: a
     /// built-in row (two-buildings, block-and-frame, three-in-series) or a
-    /// path to a row preset; `--im sa` is then Sa at the leftmost building's T₁.
+    /// path to a row preset; `--im sa` is then Sa at the leftmost building's
+    /// T₁ (to four significant digits).
     #[arg(long, value_name = "NAME|PATH")]
     pub buildings: Option<String>,
 }
@@ -115,8 +119,27 @@ fn usage(message: String) -> CliError {
     CliError::Usage(message)
 }
 
+impl SuiteArgs {
+    /// The study on a row that `--buildings` asks for (`--level` read), or
+    /// `None` without it.
+    pub fn row_study(&self) -> Result<Option<RowStudyArgs<'_>>, CliError> {
+        let Some(buildings) = &self.buildings else {
+            return Ok(None);
+        };
+        Ok(Some(RowStudyArgs {
+            buildings,
+            params: &self.params,
+            suite: &self.suite,
+            im: self.im.as_deref(),
+            level: self.level.as_deref().map(parse_level).transpose()?,
+            allow_long: self.long.allow_long,
+            sharded: self.shard.shard.is_some(),
+        }))
+    }
+}
+
 /// `--level X`: a positive, finite level in g (`0.3` or `0.3g`).
-pub(crate) fn parse_level(text: &str) -> Result<f64, CliError> {
+fn parse_level(text: &str) -> Result<f64, CliError> {
     let t = text.trim();
     let v = t.strip_suffix('g').unwrap_or(t).trim().parse::<f64>();
     match v {
@@ -165,14 +188,6 @@ pub struct Ran {
     pub case: SuiteCase,
     pub runs: Vec<SuiteRun>,
     pub elapsed_ms: f64,
-}
-
-/// The records of `SUITE` (a directory, a list file or `synthetic:N@S`),
-/// or the one-line error naming the file and line.
-pub fn members(suite: &str) -> Result<Vec<SuiteMember>, CliError> {
-    SuiteSpec::parse(suite)
-        .and_then(|s| s.load())
-        .map_err(|e| usage(e.to_string()))
 }
 
 /// The work of one planned record: a pounding run and at most one run
@@ -250,8 +265,8 @@ pub fn report_with(
     args: &SuiteArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    if args.buildings.is_some() {
-        return super::row_suite::report_with(args, emit);
+    if let Some(study) = args.row_study()? {
+        return super::row_suite::report_with(&study, emit);
     }
     let Some(Ran {
         preset,
@@ -416,25 +431,6 @@ impl SuiteRow {
             r.reliable.to_string(),
         ]);
         row
-    }
-}
-
-/// The suite's scaling, said in words and numbers.
-#[derive(Debug, Serialize)]
-pub struct ScalingReport {
-    pub measure: String,
-    /// The level (g) every record is scaled to; absent: the list's scales.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub level_g: Option<f64>,
-}
-
-impl ScalingReport {
-    /// The scaling in words, for a table's opening lines.
-    pub fn words(&self) -> String {
-        match self.level_g {
-            Some(x) => format!("each record scaled to {} = {} g", self.measure, num(x)),
-            None => format!("records at their list's scale; {} reported", self.measure),
-        }
     }
 }
 
@@ -608,54 +604,6 @@ impl Report for SuiteReport<'_> {
     }
 }
 
-/// The statistics over a suite's records (SPEC §12), with their heading.
-pub fn over_suite_table(s: &mut String, st: &SuiteStatistics) {
-    let _ = writeln!(s);
-    let _ = writeln!(
-        s,
-        "statistics over {} records ({} pounded): median, 16th and 84th percentiles, \
-         lognormal dispersion β",
-        st.records, st.pounded
-    );
-    statistics_table(s, st);
-}
-
-/// The statistics of a suite (SPEC §12), one line per demand.
-pub fn statistics_table(s: &mut String, st: &SuiteStatistics) {
-    let width = st
-        .demands
-        .iter()
-        .map(|d| d.demand.len() + d.unit.len() + 3)
-        .max()
-        .unwrap_or(10);
-    let _ = writeln!(
-        s,
-        "{:<width$} {:>10} {:>10} {:>10} {:>7}  excluded from β",
-        "demand", "median", "p16", "p84", "β"
-    );
-    for d in &st.demands {
-        let name = if d.unit.is_empty() {
-            d.demand.clone()
-        } else {
-            format!("{} ({})", d.demand, d.unit)
-        };
-        let _ = writeln!(
-            s,
-            "{:<width$} {:>10} {:>10} {:>10} {:>7}  {}",
-            name,
-            g4(d.summary.median),
-            g4(d.summary.p16),
-            g4(d.summary.p84),
-            if d.summary.dispersion.is_nan() {
-                "-".to_string()
-            } else {
-                format!("{:.3}", d.summary.dispersion)
-            },
-            d.summary.excluded()
-        );
-    }
-}
-
 /// The per-structure CSV columns, left then right: SI, then Π.
 const SIDE_COLUMNS: [[&str; 11]; 2] = [
     [
@@ -685,14 +633,3 @@ const SIDE_COLUMNS: [[&str; 11]; 2] = [
         "right_hysteretic_energy",
     ],
 ];
-
-/// `text` cut to `width` characters, ending in "…" where cut.
-pub(crate) fn clip(text: &str, width: usize) -> String {
-    if text.chars().count() <= width {
-        text.to_string()
-    } else {
-        let mut t: String = text.chars().take(width.saturating_sub(1)).collect();
-        t.push('…');
-        t
-    }
-}
