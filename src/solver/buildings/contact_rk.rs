@@ -216,11 +216,12 @@ pub fn series(
             [y1[i], y1[n + i], f1[n + i]],
             step.h,
         );
+        let at = i * (ORDER + 1);
         for k in 0..=5 {
-            u[k * n + i] = q.c[k];
+            u[at + k] = q.c[k];
         }
         for k in 0..5 {
-            v[k * n + i] = (k + 1) as f64 * q.c[k + 1];
+            v[at + k] = (k + 1) as f64 * q.c[k + 1];
         }
     }
     Series {
@@ -229,6 +230,7 @@ pub fn series(
         v,
         ground: ground_coefficients(ground),
         radius: step.h,
+        degree: 5,
     }
 }
 

@@ -489,16 +489,16 @@ impl Run<'_> {
         let c = &mut self.buf;
         let env = &mut self.envelope;
         for i in 0..self.layout.dofs {
-            series.combine(&[(i, 1.0)], &[], c);
-            if poly::bound(c, end) > env.displacement[i] {
-                raise(&mut env.displacement[i], poly::max_abs(c, end));
+            let u = series.displacement(i);
+            if poly::magnitude_bound(u, end) > env.displacement[i] {
+                raise(&mut env.displacement[i], poly::max_abs(u, end));
             }
-            series.combine(&[], &[(i, 1.0)], c);
-            if poly::bound(c, end) > env.velocity[i] {
-                raise(&mut env.velocity[i], poly::max_abs(c, end));
+            let v = series.velocity(i);
+            if poly::magnitude_bound(v, end) > env.velocity[i] {
+                raise(&mut env.velocity[i], poly::max_abs(v, end));
             }
             series.absolute_acceleration(i, c);
-            if poly::bound(c, end) > env.acceleration[i] {
+            if poly::magnitude_bound(c, end) > env.acceleration[i] {
                 raise(&mut env.acceleration[i], poly::max_abs(c, end));
             }
         }
@@ -508,13 +508,13 @@ impl Run<'_> {
                 du.push((l, -1.0));
             }
             series.combine(&du, &[], c);
-            if poly::bound(c, end) > env.drift[k] {
+            if poly::magnitude_bound(c, end) > env.drift[k] {
                 raise(&mut env.drift[k], poly::max_abs(c, end));
             }
         }
         for (k, p) in self.layout.facing.iter().enumerate() {
             series.combine(&[(p.left_dof, 1.0), (p.right_dof, -1.0)], &[], c);
-            if poly::bound(c, end) > env.relative[k] {
+            if poly::upper_bound(c, end) > env.relative[k] {
                 env.relative[k] = env.relative[k].max(poly::max(c, end));
             }
         }
