@@ -128,6 +128,35 @@ fn bisect(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, mut lo: f64, mut hi: 
     hi
 }
 
+/// p'(s_i) at the scan points s_i = end·i/[`SCAN`], i = 0 … SCAN: Horner's
+/// rule as [`eval_derivative`], the points in lockstep so that their
+/// independent chains run side by side.
+#[inline]
+fn scan_derivative(c: &[f64], end: f64) -> [f64; SCAN + 1] {
+    let points: [f64; SCAN + 1] = std::array::from_fn(|i| end * i as f64 / SCAN as f64);
+    let mut acc = [0.0; SCAN + 1];
+    for k in (1..c.len()).rev() {
+        let ck = k as f64 * c[k];
+        for (a, &s) in acc.iter_mut().zip(&points) {
+            *a = *a * s + ck;
+        }
+    }
+    acc
+}
+
+/// p(s_i) at the scan points, as [`scan_derivative`] does p'.
+#[inline]
+fn scan_values(c: &[f64], end: f64) -> [f64; SCAN + 1] {
+    let points: [f64; SCAN + 1] = std::array::from_fn(|i| end * i as f64 / SCAN as f64);
+    let mut acc = [0.0; SCAN + 1];
+    for &ck in c.iter().rev() {
+        for (a, &s) in acc.iter_mut().zip(&points) {
+            *a = *a * s + ck;
+        }
+    }
+    acc
+}
+
 /// The first s in [0, end] where p turns positive, if any: scanned on
 /// [`SCAN`] points, with a positive hump between two non-positive points
 /// caught by the sign change of p' between them. A p already positive at 0
@@ -149,10 +178,10 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
         return Some(0.0);
     }
     let mut armed = f_lo <= 0.0;
+    let (values, rates) = (scan_values(c, end), scan_derivative(c, end));
     for i in 1..=SCAN {
         let s = end * i as f64 / SCAN as f64;
-        let fs = f(s);
-        let ds = df(s);
+        let (fs, ds) = (values[i], rates[i]);
         if armed {
             if fs > 0.0 {
                 return Some(bisect(f, df, lo, s));
@@ -182,11 +211,11 @@ pub fn max_abs(c: &[f64], end: f64) -> f64 {
     let df = |s: f64| eval_derivative(c, s);
     let ddf = |s: f64| eval_second_derivative(c, s);
     let mut best = f(0.0).abs().max(f(end).abs());
+    let scan = scan_derivative(c, end);
     let mut lo = 0.0;
-    let mut d_lo = df(0.0);
-    for i in 1..=SCAN {
+    let mut d_lo = scan[0];
+    for (i, &ds) in scan.iter().enumerate().skip(1) {
         let s = end * i as f64 / SCAN as f64;
-        let ds = df(s);
         if (d_lo > 0.0) != (ds > 0.0) && d_lo != 0.0 {
             let root = if d_lo > 0.0 {
                 bisect(|x| -df(x), |x| -ddf(x), lo, s)
@@ -207,11 +236,11 @@ pub fn max(c: &[f64], end: f64) -> f64 {
     let df = |s: f64| eval_derivative(c, s);
     let ddf = |s: f64| eval_second_derivative(c, s);
     let mut best = f(0.0).max(f(end));
+    let scan = scan_derivative(c, end);
     let mut lo = 0.0;
-    let mut d_lo = df(0.0);
-    for i in 1..=SCAN {
+    let mut d_lo = scan[0];
+    for (i, &ds) in scan.iter().enumerate().skip(1) {
         let s = end * i as f64 / SCAN as f64;
-        let ds = df(s);
         if d_lo > 0.0 && ds <= 0.0 {
             best = best.max(f(bisect(|x| -df(x), |x| -ddf(x), lo, s)));
         }
