@@ -30,7 +30,7 @@ use super::config::Config;
 use super::event_function::EventFunction;
 use super::layout::Layout;
 use super::system::System;
-use super::taylor::{ORDER, Series, ground_coefficients};
+use super::taylor::{Series, ground_coefficients};
 
 /// Local error asked of each step, relative to the motion's scales: the
 /// pair's error per step then sits a decade below the 1e-9 to which the
@@ -207,8 +207,8 @@ pub fn series(
     ground: (f64, f64, f64),
 ) -> Series {
     let n = y0.len() / 2;
-    let mut u = vec![0.0; (ORDER + 1) * n];
-    let mut v = vec![0.0; (ORDER + 1) * n];
+    let mut u = vec![0.0; 6 * n];
+    let mut v = vec![0.0; 6 * n];
     let (y1, f1) = (&step.y1, &step.f1);
     for i in 0..n {
         let q = hermite_quintic(
@@ -216,7 +216,7 @@ pub fn series(
             [y1[i], y1[n + i], f1[n + i]],
             step.h,
         );
-        let at = i * (ORDER + 1);
+        let at = i * 6;
         for k in 0..=5 {
             u[at + k] = q.c[k];
         }

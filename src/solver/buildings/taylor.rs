@@ -31,8 +31,9 @@ pub fn ground_coefficients((a, rate, sigma): (f64, f64, f64)) -> [f64; ORDER + 1
     g
 }
 
-/// Coefficients of u and u̇, floor by floor (each a block of [`ORDER`] + 1,
-/// lowest order first), so that one floor's polynomial is one slice.
+/// Coefficients of u and u̇, floor by floor (each a block of
+/// [`Series::degree`] + 1, lowest order first), so that one floor's
+/// polynomial is one slice.
 #[derive(Debug, Clone)]
 pub struct Series {
     pub n: usize,
@@ -125,13 +126,13 @@ impl Series {
     /// The coefficients of u_i, orders 0 to [`Series::degree`].
     #[inline]
     pub fn displacement(&self, i: usize) -> &[f64] {
-        &self.u[i * (ORDER + 1)..=i * (ORDER + 1) + self.degree]
+        &self.u[i * (self.degree + 1)..(i + 1) * (self.degree + 1)]
     }
 
     /// The coefficients of u̇_i, orders 0 to [`Series::degree`].
     #[inline]
     pub fn velocity(&self, i: usize) -> &[f64] {
-        &self.v[i * (ORDER + 1)..=i * (ORDER + 1) + self.degree]
+        &self.v[i * (self.degree + 1)..(i + 1) * (self.degree + 1)]
     }
 
     /// (u, u̇) at s.
@@ -168,9 +169,14 @@ impl Series {
     /// Coefficients of the absolute acceleration ü_i + ü_g (one order fewer).
     pub fn absolute_acceleration(&self, i: usize, out: &mut Vec<f64>) {
         out.clear();
-        let v = &self.v[i * (ORDER + 1)..(i + 1) * (ORDER + 1)];
+        let v = self.velocity(i);
         for k in 0..ORDER {
-            out.push((k + 1) as f64 * v[k + 1] + self.ground[k]);
+            let rate = if k < self.degree {
+                (k + 1) as f64 * v[k + 1]
+            } else {
+                0.0
+            };
+            out.push(rate + self.ground[k]);
         }
     }
 }
