@@ -60,6 +60,9 @@ pub struct Contact<'a, G: Fn(f64) -> f64> {
     ground: G,
 }
 
+/// One accepted step with where it started: y₀ = (u, u̇), ẏ₀, the step.
+pub type Taken = (Vec<f64>, Vec<f64>, Step<Vec<f64>>);
+
 /// Whether any closed pair of `config` is under a Hertz-type law.
 pub fn any_hertzian(config: &Config) -> bool {
     config
@@ -95,7 +98,9 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         }
     }
 
-    /// ẏ at offset s, y = (u, u̇) (the equation above).
+    /// ẏ at offset s, y = (u, u̇) (the equation above). It takes the
+    /// pair's own state type, a vector.
+    #[allow(clippy::ptr_arg)]
     pub fn rate(&self, s: f64, y: &Vec<f64>) -> Vec<f64> {
         let n = y.len() / 2;
         let (u, v) = y.split_at(n);
@@ -217,9 +222,7 @@ pub fn series(
             step.h,
         );
         let at = i * 6;
-        for k in 0..=5 {
-            u[at + k] = q.c[k];
-        }
+        u[at..at + 6].copy_from_slice(&q.c[..6]);
         for k in 0..5 {
             v[at + k] = (k + 1) as f64 * q.c[k + 1];
         }

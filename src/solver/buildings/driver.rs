@@ -29,7 +29,7 @@ use crate::model::buildings::{Ground, Row};
 
 use super::bound::{Stack, Watch};
 use super::config::{Branch, Closed, Config};
-use super::contact_rk::{self, Contact, any_hertzian};
+use super::contact_rk::{self, Contact, Taken, any_hertzian};
 use super::energy::{NODES, RowEnergy, gauss_legendre};
 use super::event_function::EventFunction;
 use super::hermite::range;
@@ -40,7 +40,6 @@ use super::propagator::{Propagator, apply};
 use super::result::{FloorPeaks, PairImpact, PairResult, RowRun};
 use super::system::System;
 use super::taylor::{ORDER, Series};
-use crate::numerics::dopri5::Step;
 
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -151,7 +150,7 @@ struct Run<'a> {
     stack: Option<((f64, f64, f64), Stack)>,
     energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
     /// Suggested length of the next Runge–Kutta step in contact (0: none yet).
-    contact_step: f64,
+    next_contact_step: f64,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -183,7 +182,7 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
             let (x, w) = gauss_legendre(NODES);
             (RowEnergy::default(), x, w)
         }),
-        contact_step: 0.0,
+        next_contact_step: 0.0,
     };
     for piece in ground.pieces(options.duration) {
         let length = piece.length;
@@ -402,7 +401,7 @@ impl Run<'_> {
         rem: f64,
         ground: (f64, f64, f64),
         scale: (f64, f64),
-    ) -> (Series, (Vec<f64>, Vec<f64>, Step<Vec<f64>>)) {
+    ) -> (Series, Taken) {
         let t = self.t;
         let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
             ground_at(piece, t + s).0
@@ -410,12 +409,12 @@ impl Run<'_> {
         let y0: Vec<f64> = self.u.iter().chain(&self.v).copied().collect();
         let f0 = contact.rate(0.0, &y0);
         let fastest = 1.0 / self.layout.rate;
-        let guess = match self.contact_step {
+        let guess = match self.next_contact_step {
             h if h > 0.0 => h,
             _ => 1e-3 * fastest,
         };
         let (step, next) = contact.step((&y0, &f0), (guess, rem, 1e-12 * fastest), scale);
-        self.contact_step = next;
+        self.next_contact_step = next;
         let series = contact_rk::series((&y0, &f0), &step, ground);
         (series, (y0, f0, step))
     }
