@@ -59,6 +59,27 @@ fn json_lists_buildings_floors_and_pairs() {
 }
 
 #[test]
+fn the_exact_method_runs_every_hertz_type_law() {
+    for model in ["hertz", "hertzdamp", "jankowski", "hunt-crossley"] {
+        let v = json(&[
+            "run",
+            "--buildings",
+            "block-and-frame",
+            "--model",
+            model,
+            "--excitation",
+            "record:presets/synthetic.at2",
+            "--format",
+            "json",
+        ]);
+        assert_eq!(v["method"], "exact", "{model}");
+        assert_eq!(v["model"], model);
+        assert!(v["impacts"].as_u64().unwrap() > 0, "{model}");
+        assert!(v["energy"]["residual"].as_f64().unwrap() < 1e-9, "{model}");
+    }
+}
+
+#[test]
 fn a_row_whose_floors_do_not_pair_runs_and_says_so() {
     let dir = tempfile::tempdir().unwrap();
     let path = write(&dir, "apart.toml", &ROW.replace("height = 3\n\n[[building]]\nname = \"high\"\nstoreys = 3\nmass = 1e5\nstiffness = 1e8\nheight = 3", "height = 3\n\n[[building]]\nname = \"high\"\nstoreys = 3\nmass = 1e5\nstiffness = 1e8\nheight = 3.5").replace("stiffness = 1e8\nheight = 3\n", "stiffness = 1e8\nheight = 3.5\n"));

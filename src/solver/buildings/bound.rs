@@ -32,7 +32,7 @@
 //! cannot see. B is widened by a relative 1e-6 for the round-off of the
 //! exponential and the norms, far above it.
 
-use nalgebra::{DMatrix, DVector, DVectorView};
+use nalgebra::DMatrix;
 
 use super::system::System;
 
@@ -81,15 +81,17 @@ impl Stack {
     ) -> Stack {
         let n = u.len();
         let ground = [a, rate, sigma * a];
+        // On the nonzeros of M⁻¹K and M⁻¹C ([`System::row`]).
         let next = |x: &[f64], y: &[f64], g: f64, load: bool| -> Vec<f64> {
-            let mut out = if load {
-                DVector::from_iterator(n, system.load.iter().map(|q| q - g))
-            } else {
-                DVector::from_element(n, -g)
-            };
-            out.gemv(-1.0, &system.stiffness, &DVectorView::from_slice(x, n), 1.0);
-            out.gemv(-1.0, &system.damping, &DVectorView::from_slice(y, n), 1.0);
-            out.data.into()
+            (0..n)
+                .map(|i| {
+                    let mut s = if load { system.load[i] - g } else { -g };
+                    for &(j, kij, cij) in system.row(i) {
+                        s -= kij * x[j] + cij * y[j];
+                    }
+                    s
+                })
+                .collect()
         };
         let acc = next(u, v, a, true);
         let jerk = next(v, &acc, rate, false);

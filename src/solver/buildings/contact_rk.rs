@@ -30,7 +30,7 @@ use super::config::Config;
 use super::event_function::EventFunction;
 use super::layout::Layout;
 use super::system::System;
-use super::taylor::{ORDER, Series, ground_coefficients};
+use super::taylor::{Series, ground_coefficients};
 
 /// Local error asked of each step, relative to the motion's scales: the
 /// pair's error per step then sits a decade below the 1e-9 to which the
@@ -59,6 +59,9 @@ pub struct Contact<'a, G: Fn(f64) -> f64> {
     /// ü_g at offset s from the step's start.
     ground: G,
 }
+
+/// One accepted step with where it started: y₀ = (u, u̇), ẏ₀, the step.
+pub type Taken = (Vec<f64>, Vec<f64>, Step<Vec<f64>>);
 
 /// Whether any closed pair of `config` is under a Hertz-type law.
 pub fn any_hertzian(config: &Config) -> bool {
@@ -95,7 +98,9 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         }
     }
 
-    /// ẏ at offset s, y = (u, u̇) (the equation above).
+    /// ẏ at offset s, y = (u, u̇) (the equation above). It takes the
+    /// pair's own state type, a vector.
+    #[allow(clippy::ptr_arg)]
     pub fn rate(&self, s: f64, y: &Vec<f64>) -> Vec<f64> {
         let n = y.len() / 2;
         let (u, v) = y.split_at(n);
@@ -207,8 +212,8 @@ pub fn series(
     ground: (f64, f64, f64),
 ) -> Series {
     let n = y0.len() / 2;
-    let mut u = vec![0.0; (ORDER + 1) * n];
-    let mut v = vec![0.0; (ORDER + 1) * n];
+    let mut u = vec![0.0; 6 * n];
+    let mut v = vec![0.0; 6 * n];
     let (y1, f1) = (&step.y1, &step.f1);
     for i in 0..n {
         let q = hermite_quintic(
@@ -216,11 +221,10 @@ pub fn series(
             [y1[i], y1[n + i], f1[n + i]],
             step.h,
         );
-        for k in 0..=5 {
-            u[k * n + i] = q.c[k];
-        }
+        let at = i * 6;
+        u[at..at + 6].copy_from_slice(&q.c[..6]);
         for k in 0..5 {
-            v[k * n + i] = (k + 1) as f64 * q.c[k + 1];
+            v[at + k] = (k + 1) as f64 * q.c[k + 1];
         }
     }
     Series {
@@ -229,6 +233,7 @@ pub fn series(
         v,
         ground: ground_coefficients(ground),
         radius: step.h,
+        degree: 5,
     }
 }
 

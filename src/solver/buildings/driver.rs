@@ -29,7 +29,7 @@ use crate::model::buildings::{Ground, Row};
 
 use super::bound::{Stack, Watch};
 use super::config::{Branch, Closed, Config};
-use super::contact_rk::{self, Contact, any_hertzian};
+use super::contact_rk::{self, Contact, Taken, any_hertzian};
 use super::energy::{NODES, RowEnergy, gauss_legendre};
 use super::event_function::EventFunction;
 use super::hermite::range;
@@ -40,7 +40,6 @@ use super::propagator::{Propagator, apply};
 use super::result::{FloorPeaks, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
 use super::taylor::{ORDER, Series};
-use crate::numerics::dopri5::Step;
 
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -157,7 +156,7 @@ struct Run<'a> {
     stack: Option<((f64, f64, f64), Stack)>,
     energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
     /// Suggested length of the next Runge–Kutta step in contact (0: none yet).
-    contact_step: f64,
+    next_contact_step: f64,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -225,7 +224,7 @@ pub fn run_row_cached(
             let (x, w) = gauss_legendre(NODES);
             (RowEnergy::default(), x, w)
         }),
-        contact_step: 0.0,
+        next_contact_step: 0.0,
     };
     let mut trace = options.trace.then(|| RowTrace::new(n));
     for piece in ground.pieces(options.duration) {
@@ -450,7 +449,7 @@ impl Run<'_> {
         rem: f64,
         ground: (f64, f64, f64),
         scale: (f64, f64),
-    ) -> (Series, (Vec<f64>, Vec<f64>, Step<Vec<f64>>)) {
+    ) -> (Series, Taken) {
         let t = self.t;
         let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
             ground_at(piece, t + s).0
@@ -458,12 +457,12 @@ impl Run<'_> {
         let y0: Vec<f64> = self.u.iter().chain(&self.v).copied().collect();
         let f0 = contact.rate(0.0, &y0);
         let fastest = 1.0 / self.layout.rate;
-        let guess = match self.contact_step {
+        let guess = match self.next_contact_step {
             h if h > 0.0 => h,
             _ => 1e-3 * fastest,
         };
         let (step, next) = contact.step((&y0, &f0), (guess, rem, 1e-12 * fastest), scale);
-        self.contact_step = next;
+        self.next_contact_step = next;
         let series = contact_rk::series((&y0, &f0), &step, ground);
         (series, (y0, f0, step))
     }
@@ -537,16 +536,16 @@ impl Run<'_> {
         let c = &mut self.buf;
         let env = &mut self.envelope;
         for i in 0..self.layout.dofs {
-            series.combine(&[(i, 1.0)], &[], c);
-            if poly::bound(c, end) > env.displacement[i] {
-                raise(&mut env.displacement[i], poly::max_abs(c, end));
+            let u = series.displacement(i);
+            if poly::magnitude_bound(u, end) > env.displacement[i] {
+                raise(&mut env.displacement[i], poly::max_abs(u, end));
             }
-            series.combine(&[], &[(i, 1.0)], c);
-            if poly::bound(c, end) > env.velocity[i] {
-                raise(&mut env.velocity[i], poly::max_abs(c, end));
+            let v = series.velocity(i);
+            if poly::magnitude_bound(v, end) > env.velocity[i] {
+                raise(&mut env.velocity[i], poly::max_abs(v, end));
             }
             series.absolute_acceleration(i, c);
-            if poly::bound(c, end) > env.acceleration[i] {
+            if poly::magnitude_bound(c, end) > env.acceleration[i] {
                 raise(&mut env.acceleration[i], poly::max_abs(c, end));
             }
         }
@@ -556,13 +555,13 @@ impl Run<'_> {
                 du.push((l, -1.0));
             }
             series.combine(&du, &[], c);
-            if poly::bound(c, end) > env.drift[k] {
+            if poly::magnitude_bound(c, end) > env.drift[k] {
                 raise(&mut env.drift[k], poly::max_abs(c, end));
             }
         }
         for (k, p) in self.layout.facing.iter().enumerate() {
             series.combine(&[(p.left_dof, 1.0), (p.right_dof, -1.0)], &[], c);
-            if poly::bound(c, end) > env.relative[k] {
+            if poly::upper_bound(c, end) > env.relative[k] {
                 env.relative[k] = env.relative[k].max(poly::max(c, end));
             }
         }

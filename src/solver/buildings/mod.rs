@@ -11,14 +11,19 @@
 //!   (configuration, h, σ) and cached;
 //! - wherever something may happen inside the sub-step (a storey may yield
 //!   or unload, a floor pair may touch, a floor's peak may be passed), and
-//!   through every contact phase, by the Taylor series of the same motion
+//!   through every contact phase of the Kelvin family, by the Taylor series of the same motion
 //!   ([`taylor`]), which carries the improved Kelvin law's δδ̇ term exactly;
-//!   events and peaks are roots of polynomials on it ([`poly`]).
+//!   events and peaks are roots of polynomials on it ([`poly`]);
+//! - through a contact phase of a Hertz-type law (SPEC §10), whose force is
+//!   not analytic at δ = 0, by steps of an embedded Runge–Kutta pair
+//!   ([`contact_rk`]), each written as polynomials so that the same
+//!   machinery finds events and peaks on it.
 //!
 //! One storey each gives the SDOF pair of SPEC §2.
 //!
 //! - [`layout`]: the row's constant matrices and storeys, once per run;
 //! - [`config`]: the configuration (branches, contacts) and its cache key;
+//! - [`event_function`]: each event's function, linear in the state;
 //! - [`system`]: the linear system of one configuration;
 //! - [`peaks`]: the envelopes a run reports;
 //! - [`energy`]: the energy balance, by quadrature on the Taylor steps;

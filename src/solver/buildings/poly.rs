@@ -28,6 +28,50 @@ pub fn bound(c: &[f64], s: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &x| acc * s + x.abs())
 }
 
+/// An upper bound of p over [0, s]: the quadratic part c₀ + c₁t + c₂t²
+/// exactly (its ends and its vertex, if inside), the rest by Σ_{k≥3} |c_k| s^k,
+/// which no t ∈ [0, s] exceeds. On a step of a radian or less the quadratic
+/// part holds most of p, so this is far tighter than [`bound`].
+#[inline]
+pub fn upper_bound(c: &[f64], s: f64) -> f64 {
+    let (top, _) = quadratic_range(c, s);
+    top + tail(c, s)
+}
+
+/// A bound on |p| over [0, s], as [`upper_bound`].
+#[inline]
+pub fn magnitude_bound(c: &[f64], s: f64) -> f64 {
+    let (top, bottom) = quadratic_range(c, s);
+    top.abs().max(bottom.abs()) + tail(c, s)
+}
+
+/// (max, min) of c₀ + c₁t + c₂t² over t ∈ [0, s].
+#[inline]
+fn quadratic_range(c: &[f64], s: f64) -> (f64, f64) {
+    let at = |k: usize| c.get(k).copied().unwrap_or(0.0);
+    let (c0, c1, c2) = (at(0), at(1), at(2));
+    let end = c0 + s * (c1 + s * c2);
+    let (mut top, mut bottom) = (c0.max(end), c0.min(end));
+    if c2 != 0.0 {
+        let vertex = -c1 / (2.0 * c2);
+        if vertex > 0.0 && vertex < s {
+            let v = c0 + vertex * (c1 + vertex * c2);
+            top = top.max(v);
+            bottom = bottom.min(v);
+        }
+    }
+    (top, bottom)
+}
+
+/// Σ_{k≥3} |c_k| s^k.
+#[inline]
+fn tail(c: &[f64], s: f64) -> f64 {
+    if c.len() <= 3 {
+        return 0.0;
+    }
+    bound(&c[3..], s) * s * s * s
+}
+
 /// p''(s).
 #[inline]
 pub fn eval_second_derivative(c: &[f64], s: f64) -> f64 {
@@ -84,6 +128,35 @@ fn bisect(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, mut lo: f64, mut hi: 
     hi
 }
 
+/// p'(s_i) at the scan points s_i = end·i/[`SCAN`], i = 0 … SCAN: Horner's
+/// rule as [`eval_derivative`], the points in lockstep so that their
+/// independent chains run side by side.
+#[inline]
+fn scan_derivative(c: &[f64], end: f64) -> [f64; SCAN + 1] {
+    let points: [f64; SCAN + 1] = std::array::from_fn(|i| end * i as f64 / SCAN as f64);
+    let mut acc = [0.0; SCAN + 1];
+    for k in (1..c.len()).rev() {
+        let ck = k as f64 * c[k];
+        for (a, &s) in acc.iter_mut().zip(&points) {
+            *a = *a * s + ck;
+        }
+    }
+    acc
+}
+
+/// p(s_i) at the scan points, as [`scan_derivative`] does p'.
+#[inline]
+fn scan_values(c: &[f64], end: f64) -> [f64; SCAN + 1] {
+    let points: [f64; SCAN + 1] = std::array::from_fn(|i| end * i as f64 / SCAN as f64);
+    let mut acc = [0.0; SCAN + 1];
+    for &ck in c.iter().rev() {
+        for (a, &s) in acc.iter_mut().zip(&points) {
+            *a = *a * s + ck;
+        }
+    }
+    acc
+}
+
 /// The first s in [0, end] where p turns positive, if any: scanned on
 /// [`SCAN`] points, with a positive hump between two non-positive points
 /// caught by the sign change of p' between them. A p already positive at 0
@@ -91,8 +164,8 @@ fn bisect(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, mut lo: f64, mut hi: 
 /// own root, and rounding put it a hair above zero) only after it has been
 /// non-positive again.
 pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
-    // p(s) ≤ c₀ + Σ_{k≥1} |c_k| s^k: when that stays ≤ 0, nothing to scan.
-    if c[0] <= 0.0 && c[0] + bound(&c[1..], end) * end <= 0.0 {
+    // When p's upper bound on [0, end] stays ≤ 0, nothing to scan.
+    if c[0] <= 0.0 && upper_bound(c, end) <= 0.0 {
         return None;
     }
     let f = |s: f64| eval(c, s);
@@ -105,10 +178,10 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
         return Some(0.0);
     }
     let mut armed = f_lo <= 0.0;
+    let (values, rates) = (scan_values(c, end), scan_derivative(c, end));
     for i in 1..=SCAN {
         let s = end * i as f64 / SCAN as f64;
-        let fs = f(s);
-        let ds = df(s);
+        let (fs, ds) = (values[i], rates[i]);
         if armed {
             if fs > 0.0 {
                 return Some(bisect(f, df, lo, s));
@@ -138,11 +211,11 @@ pub fn max_abs(c: &[f64], end: f64) -> f64 {
     let df = |s: f64| eval_derivative(c, s);
     let ddf = |s: f64| eval_second_derivative(c, s);
     let mut best = f(0.0).abs().max(f(end).abs());
+    let scan = scan_derivative(c, end);
     let mut lo = 0.0;
-    let mut d_lo = df(0.0);
-    for i in 1..=SCAN {
+    let mut d_lo = scan[0];
+    for (i, &ds) in scan.iter().enumerate().skip(1) {
         let s = end * i as f64 / SCAN as f64;
-        let ds = df(s);
         if (d_lo > 0.0) != (ds > 0.0) && d_lo != 0.0 {
             let root = if d_lo > 0.0 {
                 bisect(|x| -df(x), |x| -ddf(x), lo, s)
@@ -163,11 +236,11 @@ pub fn max(c: &[f64], end: f64) -> f64 {
     let df = |s: f64| eval_derivative(c, s);
     let ddf = |s: f64| eval_second_derivative(c, s);
     let mut best = f(0.0).max(f(end));
+    let scan = scan_derivative(c, end);
     let mut lo = 0.0;
-    let mut d_lo = df(0.0);
-    for i in 1..=SCAN {
+    let mut d_lo = scan[0];
+    for (i, &ds) in scan.iter().enumerate().skip(1) {
         let s = end * i as f64 / SCAN as f64;
-        let ds = df(s);
         if d_lo > 0.0 && ds <= 0.0 {
             best = best.max(f(bisect(|x| -df(x), |x| -ddf(x), lo, s)));
         }
@@ -190,5 +263,35 @@ mod tests {
         assert!((max_abs(&c, 1.0) - 0.21).abs() < 1e-15);
         assert!((max(&neg, 1.0) - 0.04).abs() < 1e-15);
         assert!(first_rise(&c[..1].iter().map(|x| -x).collect::<Vec<_>>(), 1.0).is_none());
+    }
+
+    #[test]
+    fn bounds_hold_and_are_tight_on_a_quadratic() {
+        // Exact on a quadratic: 0.21 − s + s² on [0, 1] spans [−0.04, 0.21].
+        let c = [0.21, -1.0, 1.0];
+        assert_eq!(upper_bound(&c, 1.0), 0.21);
+        assert_eq!(magnitude_bound(&c, 1.0), 0.21);
+        assert!((upper_bound(&[-0.21, 1.0, -1.0], 1.0) - 0.04).abs() < 1e-16);
+        // Never below the true extremes: sin and cos to 25 terms on [0, 1.5].
+        let mut sin = vec![0.0; 25];
+        let mut cos = vec![0.0; 25];
+        let mut f = 1.0;
+        for k in 0..25 {
+            if k > 0 {
+                f *= k as f64;
+            }
+            match k % 4 {
+                0 => cos[k] = 1.0 / f,
+                1 => sin[k] = 1.0 / f,
+                2 => cos[k] = -1.0 / f,
+                _ => sin[k] = -1.0 / f,
+            }
+        }
+        for s in [0.3, 1.0, 1.5] {
+            assert!(upper_bound(&sin, s) >= max(&sin, s));
+            assert!(magnitude_bound(&cos, s) >= max_abs(&cos, s));
+            assert!(magnitude_bound(&cos, s) <= bound(&cos, s));
+        }
+        assert!((max(&sin, 1.5) - 1.5f64.sin()).abs() < 1e-15);
     }
 }

@@ -35,6 +35,12 @@ pub struct System {
     pub damping: DMatrix<f64>,
     pub load: Vec<f64>,
     pub products: Vec<Product>,
+    /// The nonzero entries of M⁻¹K and M⁻¹C together, row by row: (j,
+    /// (M⁻¹K)_ij, (M⁻¹C)_ij) for row i in `entries[row_start[i]..row_start[i + 1]]`,
+    /// in the order of j. A floor couples only to its storeys' other floors
+    /// and its contacts, so a row holds a few of the n entries.
+    entries: Vec<(usize, f64, f64)>,
+    row_start: Vec<usize>,
 }
 
 impl System {
@@ -104,20 +110,39 @@ impl System {
             }
             q[i] /= m;
         }
+        let mut entries = Vec::new();
+        let mut row_start = vec![0];
+        for i in 0..n {
+            for j in 0..n {
+                let (kij, cij) = (k[(i, j)], c[(i, j)]);
+                if kij != 0.0 || cij != 0.0 {
+                    entries.push((j, kij, cij));
+                }
+            }
+            row_start.push(entries.len());
+        }
         System {
             stiffness: k,
             damping: c,
             load: q,
             products,
+            entries,
+            row_start,
         }
+    }
+
+    /// Row i of (M⁻¹K, M⁻¹C): its nonzero (j, (M⁻¹K)_ij, (M⁻¹C)_ij).
+    #[inline]
+    pub fn row(&self, i: usize) -> &[(usize, f64, f64)] {
+        &self.entries[self.row_start[i]..self.row_start[i + 1]]
     }
 
     /// ü at (u, u̇) under ground acceleration a (the equation above).
     pub fn acceleration(&self, u: &[f64], v: &[f64], a: f64, out: &mut [f64]) {
         for (i, out) in out.iter_mut().enumerate() {
             let mut s = self.load[i] - a;
-            for (j, (&uj, &vj)) in u.iter().zip(v).enumerate() {
-                s -= self.stiffness[(i, j)] * uj + self.damping[(i, j)] * vj;
+            for &(j, kij, cij) in self.row(i) {
+                s -= kij * u[j] + cij * v[j];
             }
             *out = s;
         }

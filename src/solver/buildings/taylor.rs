@@ -31,7 +31,9 @@ pub fn ground_coefficients((a, rate, sigma): (f64, f64, f64)) -> [f64; ORDER + 1
     g
 }
 
-/// Coefficients of u and u̇, order by order (each a block of `n`).
+/// Coefficients of u and u̇, floor by floor (each a block of
+/// [`Series::degree`] + 1, lowest order first), so that one floor's
+/// polynomial is one slice.
 #[derive(Debug, Clone)]
 pub struct Series {
     pub n: usize,
@@ -41,6 +43,9 @@ pub struct Series {
     pub ground: [f64; ORDER + 1],
     /// Where the series stays within [`TOLERANCE`].
     pub radius: f64,
+    /// Highest order of u held (coefficients above it are zero):
+    /// [`ORDER`] for the series, less for a polynomial written as one.
+    pub degree: usize,
 }
 
 impl Series {
@@ -53,46 +58,48 @@ impl Series {
         ground: (f64, f64, f64),
         scale: (f64, f64),
     ) -> Series {
+        const W: usize = ORDER + 1;
         let n = u0.len();
-        let mut u = vec![0.0; (ORDER + 1) * n];
-        let mut v = vec![0.0; (ORDER + 1) * n];
-        u[..n].copy_from_slice(u0);
-        v[..n].copy_from_slice(v0);
+        let mut u = vec![0.0; W * n];
+        let mut v = vec![0.0; W * n];
+        for i in 0..n {
+            u[i * W] = u0[i];
+            v[i * W] = v0[i];
+        }
         let g = ground_coefficients(ground);
         let np = system.products.len();
-        let mut delta = vec![0.0; np * (ORDER + 1)];
-        let mut rate_d = vec![0.0; np * (ORDER + 1)];
+        let mut delta = vec![0.0; np * W];
+        let mut rate_d = vec![0.0; np * W];
         let mut acc = vec![0.0; n];
         for k in 0..ORDER {
-            let (uk, vk) = (&u[k * n..(k + 1) * n], &v[k * n..(k + 1) * n]);
             for (i, acc) in acc.iter_mut().enumerate() {
                 let mut s = -g[k];
                 if k == 0 {
                     s += system.load[i];
                 }
-                for (j, (&uj, &vj)) in uk.iter().zip(vk).enumerate() {
-                    s -= system.stiffness[(i, j)] * uj + system.damping[(i, j)] * vj;
+                for &(j, kij, cij) in system.row(i) {
+                    s -= kij * u[j * W + k] + cij * v[j * W + k];
                 }
                 *acc = s;
             }
             for (pi, p) in system.products.iter().enumerate() {
-                let row = pi * (ORDER + 1);
-                delta[row + k] = uk[p.left] - uk[p.right] - if k == 0 { p.gap } else { 0.0 };
-                rate_d[row + k] = vk[p.left] - vk[p.right];
+                let row = pi * W;
+                let (l, r) = (p.left * W + k, p.right * W + k);
+                delta[row + k] = u[l] - u[r] - if k == 0 { p.gap } else { 0.0 };
+                rate_d[row + k] = v[l] - v[r];
                 let conv: f64 = (0..=k).map(|j| delta[row + j] * rate_d[row + k - j]).sum();
                 acc[p.left] -= p.left_rate * conv;
                 acc[p.right] += p.right_rate * conv;
             }
             let inv = 1.0 / (k + 1) as f64;
             for i in 0..n {
-                u[(k + 1) * n + i] = v[k * n + i] * inv;
-                v[(k + 1) * n + i] = acc[i] * inv;
+                u[i * W + k + 1] = v[i * W + k] * inv;
+                v[i * W + k + 1] = acc[i] * inv;
             }
         }
         let norm = |k: usize| {
-            let b = k * n..(k + 1) * n;
-            let nu = u[b.clone()].iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale.0;
-            let nv = v[b].iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale.1;
+            let nu = (0..n).fold(0.0f64, |m, i| m.max(u[i * W + k].abs())) / scale.0;
+            let nv = (0..n).fold(0.0f64, |m, i| m.max(v[i * W + k].abs())) / scale.1;
             nu.max(nv)
         };
         let radius = [ORDER - 1, ORDER]
@@ -112,18 +119,31 @@ impl Series {
             v,
             ground: g,
             radius,
+            degree: ORDER,
         }
+    }
+
+    /// The coefficients of u_i, orders 0 to [`Series::degree`].
+    #[inline]
+    pub fn displacement(&self, i: usize) -> &[f64] {
+        &self.u[i * (self.degree + 1)..(i + 1) * (self.degree + 1)]
+    }
+
+    /// The coefficients of u̇_i, orders 0 to [`Series::degree`].
+    #[inline]
+    pub fn velocity(&self, i: usize) -> &[f64] {
+        &self.v[i * (self.degree + 1)..(i + 1) * (self.degree + 1)]
     }
 
     /// (u, u̇) at s.
     pub fn state(&self, s: f64, u: &mut [f64], v: &mut [f64]) {
-        let n = self.n;
-        for i in 0..n {
+        for i in 0..self.n {
+            let (cu, cv) = (self.displacement(i), self.velocity(i));
             let mut a = 0.0;
             let mut b = 0.0;
-            for k in (0..=ORDER).rev() {
-                a = a * s + self.u[k * n + i];
-                b = b * s + self.v[k * n + i];
+            for k in (0..=self.degree).rev() {
+                a = a * s + cu[k];
+                b = b * s + cv[k];
             }
             u[i] = a;
             v[i] = b;
@@ -133,25 +153,30 @@ impl Series {
     /// Coefficients of Σ_i (wu_i u_i + wv_i u̇_i) over the given (dof, weight) terms.
     pub fn combine(&self, du: &[(usize, f64)], dv: &[(usize, f64)], out: &mut Vec<f64>) {
         out.clear();
-        let n = self.n;
-        for k in 0..=ORDER {
-            let mut s = 0.0;
-            for &(i, w) in du {
-                s += w * self.u[k * n + i];
+        out.resize(self.degree + 1, 0.0);
+        for &(i, w) in du {
+            for (o, &x) in out.iter_mut().zip(self.displacement(i)) {
+                *o += w * x;
             }
-            for &(i, w) in dv {
-                s += w * self.v[k * n + i];
+        }
+        for &(i, w) in dv {
+            for (o, &x) in out.iter_mut().zip(self.velocity(i)) {
+                *o += w * x;
             }
-            out.push(s);
         }
     }
 
     /// Coefficients of the absolute acceleration ü_i + ü_g (one order fewer).
     pub fn absolute_acceleration(&self, i: usize, out: &mut Vec<f64>) {
         out.clear();
-        let n = self.n;
+        let v = self.velocity(i);
         for k in 0..ORDER {
-            out.push((k + 1) as f64 * self.v[(k + 1) * n + i] + self.ground[k]);
+            let rate = if k < self.degree {
+                (k + 1) as f64 * v[k + 1]
+            } else {
+                0.0
+            };
+            out.push(rate + self.ground[k]);
         }
     }
 }
