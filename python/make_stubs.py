@@ -34,7 +34,7 @@ TEXT = "Optional[str]"
 NUMBER = "Union[float, str, None]"
 SUITE = [("im", TEXT), ("level", NUMBER), ("allow_unreliable", "bool")]
 LIMITS = [("ductility", TEXT), ("acceleration", TEXT), ("force", TEXT)]
-ROW = [("buildings", TEXT)]
+ROW = [("buildings", "Union[str, Mapping[str, Any], None]")]
 ROW_LIMITS = [("drift", TEXT), ("building", TEXT)]
 
 # Each function: its leading arguments, then its own flags (keyword-only).
@@ -57,7 +57,7 @@ def render() -> str:
     out = [
         '"""Type stubs of pounding (written by python/make_stubs.py)."""',
         "",
-        "from typing import Any, NamedTuple, Optional, Sequence, Tuple, Union",
+        "from typing import Any, Mapping, NamedTuple, Optional, Sequence, Tuple, Union",
         "",
         "__version__: str",
         "",

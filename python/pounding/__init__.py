@@ -17,7 +17,12 @@ message; a failed run raises ``RuntimeError``.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple, Optional, Tuple
+import contextlib
+import json
+import math
+import os
+import tempfile
+from typing import Any, Iterator, NamedTuple, Optional, Tuple
 
 from . import _native
 
@@ -135,6 +140,59 @@ _COMMON = """preset: a built-in preset (``pounding.presets()``) or a preset file
 """
 
 
+def _toml_value(key: str, v: Any) -> str:
+    """One value of a row preset as TOML: a number, a string or a list of them."""
+    if isinstance(v, bool):
+        raise ValueError(f"buildings: `{key}` = {v!r}: must be a number, a string or a list")
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        return ("inf" if v > 0 else "-inf") if math.isinf(v) else repr(v)
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml_value(key, x) for x in v) + "]"
+    raise ValueError(f"buildings: `{key}` = {v!r}: must be a number, a string or a list")
+
+
+def _row_toml(row: dict) -> str:
+    """A row of buildings given as a dict of the preset's shape (its top-level
+    keys, ``building``: a list of dicts, ``joint``: a list of dicts) as the
+    TOML text of a row preset (SPEC §13)."""
+    lines = []
+    tables = []
+    for key, value in row.items():
+        if key in ("building", "joint"):
+            if not isinstance(value, (list, tuple)) or not all(isinstance(t, dict) for t in value):
+                raise ValueError(f"buildings: `{key}` must be a list of dicts, one per {key}")
+            tables += [(key, t) for t in value]
+        else:
+            lines.append(f"{key} = {_toml_value(key, value)}")
+    for name, table in tables:
+        lines += ["", f"[[{name}]]"]
+        lines += [f"{k} = {_toml_value(k, v)}" for k, v in table.items()]
+    return "\n".join(lines) + "\n"
+
+
+@contextlib.contextmanager
+def _row_file(keys: dict) -> Iterator[dict]:
+    """``keys`` with a ``buildings`` dict written to a temporary row preset
+    file and named by its path for the command line's parser, which checks
+    it as it checks a file; the file is removed afterwards."""
+    row = keys.get("buildings")
+    if not isinstance(row, dict):
+        yield keys
+        return
+    fd, path = tempfile.mkstemp(prefix="pounding-row-", suffix=".toml")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as f:
+            f.write(_row_toml(row))
+        yield {**keys, "buildings": path}
+    finally:
+        with contextlib.suppress(OSError):
+            os.remove(path)
+
+
 def _doc(f):
     f.__doc__ = f.__doc__.replace("{common}", _COMMON.rstrip() + "\n" + _KEYS)
     return f
@@ -154,11 +212,15 @@ def run(
         (tau, x1, v1, a1, x2, v2, a2, fs1, fs2, fp, in_contact, ag, vg, ug).
     repeat: run N times and report the median time.
     allow_unreliable: return an unreliable result (flagged) instead of raising.
+    buildings: a row of buildings instead (a built-in row, a path, or a dict
+        of a row preset's shape), with excitation, scale and tail as for
+        ``pounding run --buildings``.
     {common}
 
     Raises ValueError for bad input, RuntimeError for an unreliable result.
     """
-    return _native.run(preset=preset, method=method, history=history, **keys)
+    with _row_file(keys) as keys:
+        return _native.run(preset=preset, method=method, history=history, **keys)
 
 
 @_doc
@@ -198,12 +260,14 @@ def gap(*, preset: Optional[str] = None, **keys: Any) -> dict:
 
     x: sweep one parameter, ``KEY=START:STOP:STEP``; mu: frequency ratio.
     suite, im, level, probability: the separation over a suite of records.
-    buildings: a row of buildings (a built-in row or a path): per joint its
+    buildings: a row of buildings (a built-in row, a path, or a dict of a
+        row preset's shape: its keys, ``building`` and ``joint`` lists): per joint its
         gap, or with suite its separation at each probability.
     The points (or records) are numpy arrays.
     {common}
     """
-    return _native.gap(preset=preset, **keys)
+    with _row_file(keys) as keys:
+        return _native.gap(preset=preset, **keys)
 
 
 @_doc
@@ -212,14 +276,15 @@ def suite(suite: str, *, preset: Optional[str] = None, **keys: Any) -> dict:
 
     suite: a directory, a list file, or ``synthetic:N[@SEED]``.
     im: pga or sa:T; level: scale every record to this intensity (g).
-    buildings: a row of buildings instead (``"block-and-frame"`` or a path):
+    buildings: a row of buildings instead (``"block-and-frame"``, a path or a dict):
         per record each building's and joint's demands; im ``sa`` is Sa(T1)
         of its leftmost building.
     allow_unreliable: return unreliable results (flagged) instead of raising.
     The records are numpy arrays.
     {common}
     """
-    return _native.suite(suite=suite, preset=preset, **keys)
+    with _row_file(keys) as keys:
+        return _native.suite(suite=suite, preset=preset, **keys)
 
 
 @_doc
@@ -233,7 +298,8 @@ def ida(suite: str, levels: str, *, preset: Optional[str] = None, **keys: Any) -
     Each level's records, the levels, and each limit state's counts are numpy arrays.
     {common}
     """
-    return _native.ida(suite=suite, levels=levels, preset=preset, **keys)
+    with _row_file(keys) as keys:
+        return _native.ida(suite=suite, levels=levels, preset=preset, **keys)
 
 
 @_doc
@@ -246,7 +312,8 @@ def fragility(suite: str, levels: str, *, preset: Optional[str] = None, **keys: 
     lognormal fit when fitted), and the same for the pair without contact.
     {common}
     """
-    r = _native.ida(suite=suite, levels=levels, preset=preset, **keys)
+    with _row_file(keys) as keys:
+        r = _native.ida(suite=suite, levels=levels, preset=preset, **keys)
     r["levels"] = r["levels"]["level_g"]
     return r
 

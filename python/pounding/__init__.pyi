@@ -1,6 +1,6 @@
 """Type stubs of pounding (written by python/make_stubs.py)."""
 
-from typing import Any, NamedTuple, Optional, Sequence, Tuple, Union
+from typing import Any, Mapping, NamedTuple, Optional, Sequence, Tuple, Union
 
 __version__: str
 
@@ -122,6 +122,9 @@ def run(
         (tau, x1, v1, a1, x2, v2, a2, fs1, fs2, fp, in_contact, ag, vg, ug).
     repeat: run N times and report the median time.
     allow_unreliable: return an unreliable result (flagged) instead of raising.
+    buildings: a row of buildings instead (a built-in row, a path, or a dict
+        of a row preset's shape), with excitation, scale and tail as for
+        ``pounding run --buildings``.
     preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
     model: contact law, kelvin, improved-kelvin, hertz, hertzdamp, jankowski or hunt-crossley.
     excitation: sine, pulse-a, pulse-b, pulse-c1, pulse-c2 or ``record:PATH[@UNIT]``.
@@ -323,7 +326,7 @@ def gap(
     probability: Optional[str] = ...,
     im: Optional[str] = ...,
     level: Union[float, str, None] = ...,
-    buildings: Optional[str] = ...,
+    buildings: Union[str, Mapping[str, Any], None] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -346,7 +349,8 @@ def gap(
 
     x: sweep one parameter, ``KEY=START:STOP:STEP``; mu: frequency ratio.
     suite, im, level, probability: the separation over a suite of records.
-    buildings: a row of buildings (a built-in row or a path): per joint its
+    buildings: a row of buildings (a built-in row, a path, or a dict of a
+        row preset's shape: its keys, ``building`` and ``joint`` lists): per joint its
         gap, or with suite its separation at each probability.
     The points (or records) are numpy arrays.
     preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
@@ -397,7 +401,7 @@ def suite(
     im: Optional[str] = ...,
     level: Union[float, str, None] = ...,
     allow_unreliable: bool = False,
-    buildings: Optional[str] = ...,
+    buildings: Union[str, Mapping[str, Any], None] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -420,7 +424,7 @@ def suite(
 
     suite: a directory, a list file, or ``synthetic:N[@SEED]``.
     im: pga or sa:T; level: scale every record to this intensity (g).
-    buildings: a row of buildings instead (``"block-and-frame"`` or a path):
+    buildings: a row of buildings instead (``"block-and-frame"``, a path or a dict):
         per record each building's and joint's demands; im ``sa`` is Sa(T1)
         of its leftmost building.
     allow_unreliable: return unreliable results (flagged) instead of raising.
@@ -477,7 +481,7 @@ def ida(
     ductility: Optional[str] = ...,
     acceleration: Optional[str] = ...,
     force: Optional[str] = ...,
-    buildings: Optional[str] = ...,
+    buildings: Union[str, Mapping[str, Any], None] = ...,
     drift: Optional[str] = ...,
     building: Optional[str] = ...,
     mass_ratio: Union[float, str, None] = ...,
@@ -557,7 +561,7 @@ def fragility(
     ductility: Optional[str] = ...,
     acceleration: Optional[str] = ...,
     force: Optional[str] = ...,
-    buildings: Optional[str] = ...,
+    buildings: Union[str, Mapping[str, Any], None] = ...,
     drift: Optional[str] = ...,
     building: Optional[str] = ...,
     mass_ratio: Union[float, str, None] = ...,
