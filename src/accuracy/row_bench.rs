@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use crate::model::buildings::{Ground, Row};
 use crate::reference::row::{RowReference, reference_row};
-use crate::solver::buildings::{RowError, RowOptions, RowRun, run_newmark, run_row};
+use crate::solver::buildings::{RowError, RowOptions, RowRun, default_step, run_newmark, run_row};
 
 /// Tolerance of the reference the rows are measured against.
 pub const REFERENCE_TOLERANCE: f64 = 1e-13;
@@ -66,7 +66,8 @@ fn best<T>(repeat: usize, mut f: impl FnMut() -> T) -> (f64, T) {
     (best, out)
 }
 
-/// The reference, the exact method, and Newmark at [`NEWMARK_STEPS`].
+/// The reference, the exact method, and Newmark at [`NEWMARK_STEPS`] and
+/// at its default step ([`default_step`]).
 pub fn row_bench(row: &Row, ground: &Ground, duration: f64) -> Result<Vec<RowBenchRow>, RowError> {
     let t = Instant::now();
     let reference = reference_row(row, ground, duration, REFERENCE_TOLERANCE);
@@ -91,7 +92,12 @@ pub fn row_bench(row: &Row, ground: &Ground, duration: f64) -> Result<Vec<RowBen
         impacts: exact.impacts(),
         impacts_match: counts(&exact) == reference.impacts,
     });
-    for dt in NEWMARK_STEPS {
+    // The fixed steps, and the default step of this run's length.
+    let default = default_step(duration, ground);
+    let steps = NEWMARK_STEPS
+        .into_iter()
+        .chain((!NEWMARK_STEPS.contains(&default)).then_some(default));
+    for dt in steps {
         let (ms, nm) = best(2, || run_newmark(row, ground, duration, dt));
         let nm = nm?;
         rows.push(RowBenchRow {

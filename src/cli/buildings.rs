@@ -15,7 +15,7 @@ use crate::analysis::work;
 use crate::model::buildings::matrices::default_tail;
 use crate::model::buildings::{Ground, Row, load_with};
 use crate::model::physical::parse_acceleration;
-use crate::solver::buildings::{RowError, RowOptions, run_newmark, run_row};
+use crate::solver::buildings::{RowError, RowOptions, default_step, run_newmark, run_row};
 
 /// The options of a row of buildings.
 #[derive(Debug, Clone, Default, Args)]
@@ -145,7 +145,7 @@ pub fn bench(
     // The reference costs about twenty exact runs; Newmark runs at the
     // default step and at two, four and eight times it.
     let exact = work::row_seconds(row.dofs(), duration, None);
-    let newmark = work::row_seconds(row.dofs(), duration, Some(NEWMARK_STEP));
+    let newmark = work::row_seconds(row.dofs(), duration, Some(default_step(duration, &ground)));
     bounded(
         "bench --buildings",
         21.0 * exact + 1.875 * newmark,
@@ -162,14 +162,10 @@ pub fn bench(
     print(&render(&report, output.format)?)
 }
 
-/// Default Newmark step for rows (s): within 1e-5 of the exact peaks on the
-/// shipped rows (tests/buildings_newmark.rs).
-pub const NEWMARK_STEP: f64 = 5e-5;
-
-/// `--dt` in seconds for rows.
-fn newmark_step(params: &ParamArgs) -> Result<f64, CliError> {
+/// `--dt` in seconds for rows, by default [`default_step`] of the run's length.
+fn newmark_step(params: &ParamArgs, duration: f64, ground: &Ground) -> Result<f64, CliError> {
     match &params.dt {
-        None => Ok(NEWMARK_STEP),
+        None => Ok(default_step(duration, ground)),
         Some(text) => text
             .parse::<f64>()
             .ok()
@@ -206,7 +202,7 @@ pub fn run(
     let (ground, name, duration) =
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let method = params.method.as_deref().unwrap_or("exact");
-    let dt = newmark_step(params)?;
+    let dt = newmark_step(params, duration, &ground)?;
     // The runs asked for, and the exact method's one more for its energy.
     let step = (method == "newmark").then_some(dt);
     let runs = f64::from(repeat.max(1)) + f64::from(u8::from(step.is_none()));
