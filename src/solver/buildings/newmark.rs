@@ -191,7 +191,9 @@ impl Newmark<'_> {
 /// as Δt²·t: over a long record it is this drift, not the local error, that
 /// sets the accuracy. The default keeps the drift of 5e-5 s over 10 s,
 ///
-///     Δt = 5e-5 s · √(10 s / duration),  at most 5e-5 s,
+/// ```text
+/// Δt = 5e-5 s · √(10 s / duration),  at most 5e-5 s,
+/// ```
 ///
 /// shortened under a record so that a whole number of steps fills each
 /// sample interval: a step that straddles a sample misses the kink of the
