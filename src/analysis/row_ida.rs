@@ -23,7 +23,6 @@ pub fn plan_levels(
     members: &[SuiteMember],
     levels: &[f64],
 ) -> Result<Vec<Vec<(f64, f64)>>, RowSuiteError> {
-    super::row_suite::plan(case, members)?;
     let raws: Vec<f64> = members
         .iter()
         .map(|m| raw_intensity(m, &case.scaling.measure))

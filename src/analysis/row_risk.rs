@@ -3,8 +3,9 @@
 //! so that the explorer's risk scene draws either.
 //!
 //! Every record runs at every level x_1 < … < x_L and at the design level X
-//! as a row suite does ([`super::row_suite::run_member`]: the row with
-//! contact, and apart when it pounded). From those runs:
+//! as the row's IDA runs it ([`super::row_ida::plan_levels`],
+//! [`super::row_ida::run_levels`]: the row with contact, and apart when it
+//! pounded). From those runs:
 //!
 //! - at X, each record's gap that prevents pounding at the joint, d_min =
 //!   max over its paired floors and over time of u_A − u_B in the run
@@ -13,15 +14,15 @@
 //! - at each level, the median and 16th/84th percentiles of one building's
 //!   largest storey drift max_i |Δ_i| (m), with pounding and apart;
 //! - the fragility P(the joint pounds | IM = x), fitted by maximum
-//!   likelihood on the counts of records whose joint had an impact
-//!   ([`fragility::fit`]).
+//!   likelihood on the counts of records whose joint had an impact (its
+//!   demands' impacts, [`super::row_suite::JointDemands`]) ([`fragility::fit`]).
 
 use super::fragility::{self, LevelCount};
-use super::ida::over_levels;
 use super::risk::{LevelDrift, RiskPicture};
-use super::row_suite::{RowCaches, RowSuiteError, RowSuiteRun, run_member};
+use super::row_ida::{plan_levels, run_levels};
+use super::row_suite::{RowSuiteCase, RowSuiteError, RowSuiteRun};
 use super::statistics::Summary;
-use super::suite::{raw_intensity, scaled};
+use super::suite::Scaling;
 use crate::model::buildings::Row;
 use crate::model::intensity::IntensityMeasure;
 use crate::model::suite::SuiteMember;
@@ -60,14 +61,6 @@ fn max_drift(run: &RowRun, b: usize) -> f64 {
     run.floors[b].iter().map(|f| f.drift).fold(0.0, f64::max)
 }
 
-/// Whether the joint had an impact in `run`, at any of its floor pairs.
-fn joint_pounded(row: &Row, run: &RowRun, joint: usize) -> bool {
-    row.pairs()
-        .iter()
-        .zip(&run.pairs)
-        .any(|(p, r)| p.joint == joint && !r.impacts.is_empty())
-}
-
 /// Runs every record at every level and at the design level, while
 /// `keep_going()` holds (asked between levels); the picture, or `None`
 /// when stopped. `levels` ascending and > 0, `design_level` > 0.
@@ -83,31 +76,22 @@ pub fn risk(
     if design.is_none() {
         all.push(design_level);
     }
-    // Each record measured once; its scale at each level follows.
-    let raw = members
-        .iter()
-        .map(|m| raw_intensity(m, &case.measure))
-        .collect::<Result<Vec<f64>, _>>()?;
-    let plans: Vec<Vec<(f64, f64)>> = all
-        .iter()
-        .map(|&x| {
-            members
-                .iter()
-                .zip(&raw)
-                .map(|(m, &r)| scaled(m, r, Some(x)))
-                .collect()
-        })
-        .collect();
+    let suite = RowSuiteCase {
+        row: case.row.clone(),
+        scaling: Scaling {
+            measure: case.measure,
+            level: None,
+        },
+    };
+    let plans = plan_levels(&suite, members, &all)?;
+    // A level at a time, so that `keep_going` is asked between levels.
     let mut by_level: Vec<Vec<RowSuiteRun>> = Vec::with_capacity(all.len());
     for plan in &plans {
         if !keep_going() {
             return Ok(None);
         }
-        let runs = over_levels(1, members.len(), RowCaches::default, |caches, _, j| {
-            run_member(&case.row, &members[j], plan[j], caches)
-        });
-        let runs: Result<Vec<RowSuiteRun>, RowSuiteError> = runs.into_iter().flatten().collect();
-        by_level.push(runs?);
+        let mut level = run_levels(&suite, members, std::slice::from_ref(plan), &|_| {})?;
+        by_level.push(level.pop().unwrap_or_default());
     }
     let at_design = &by_level[design.unwrap_or(levels.len())];
     let ida_runs = &by_level[..levels.len()];
@@ -137,7 +121,7 @@ pub fn risk(
             runs: at.len(),
             exceeded: at
                 .iter()
-                .filter(|r| joint_pounded(&case.row, &r.run, case.joint))
+                .filter(|r| r.demands.joints[case.joint].impacts > 0)
                 .count(),
         })
         .collect();
