@@ -142,16 +142,7 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
 pub fn render_info(app: &App, frame: &mut Frame, area: Rect) {
     let p = app.active_params();
     let mut lines = Vec::new();
-    if let Mode::Editing(field) = &app.mode
-        && let Some(e) = &field.error
-    {
-        let style = if app.look.color {
-            Style::new().fg(Color::Red)
-        } else {
-            Style::new().add_modifier(Modifier::BOLD)
-        };
-        lines.push(Line::styled(format!("rejected: {e}"), style));
-    }
+    lines.extend(rejected(app));
     let mut presets = Vec::new();
     for (i, s) in app.sets.iter().enumerate() {
         let modified = s.modified();
@@ -201,6 +192,26 @@ pub fn render_info(app: &App, frame: &mut Frame, area: Rect) {
         let style = Style::new().add_modifier(Modifier::BOLD);
         lines.push(Line::styled(w.replace("warning: ", "⚠ "), style));
     }
+    draw_info(app, lines, frame, area);
+}
+
+/// The typed value's refusal, while the field is open with one.
+pub fn rejected(app: &App) -> Option<Line<'static>> {
+    let Mode::Editing(field) = &app.mode else {
+        return None;
+    };
+    let e = field.error.as_ref()?;
+    let style = if app.look.color {
+        Style::new().fg(Color::Red)
+    } else {
+        Style::new().add_modifier(Modifier::BOLD)
+    };
+    Some(Line::styled(format!("rejected: {e}"), style))
+}
+
+/// Draws the info box's lines, spelled as the terminal can show them and
+/// wrapped at word boundaries.
+pub fn draw_info(app: &App, lines: Vec<Line>, frame: &mut Frame, area: Rect) {
     let lines: Vec<Line> = lines
         .into_iter()
         .map(|l| {

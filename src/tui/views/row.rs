@@ -171,15 +171,7 @@ pub fn summary(app: &App, width: usize) -> Vec<String> {
         .iter()
         .zip(&pairs)
         .filter(|(on, _)| **on)
-        .map(|(_, p)| {
-            format!(
-                "{} {}|{} {}",
-                row.buildings[p.left].name,
-                p.left_floor,
-                row.buildings[p.right].name,
-                p.right_floor
-            )
-        })
+        .map(|(_, p)| row_panel::floors(row, p))
         .collect();
     let mut second = vec![format!(
         "t {:.3} s: {}",

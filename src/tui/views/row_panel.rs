@@ -12,7 +12,7 @@ use ratatui::widgets::{Paragraph, Widget};
 
 use super::chart::{self, ChartSpec, Series};
 use super::row_drawing::COLORS;
-use crate::model::buildings::Row;
+use crate::model::buildings::{FloorPair, Row};
 use crate::model::record::STANDARD_GRAVITY;
 use crate::solver::buildings::{FloorPeaks, RowRun};
 use crate::tui::look::{Look, palette};
@@ -92,6 +92,14 @@ pub struct ImpactLine {
     pub force: f64,
 }
 
+/// A floor pair as the scene names it: `block 3|frame 3`.
+pub fn floors(row: &Row, p: &FloorPair) -> String {
+    format!(
+        "{} {}|{} {}",
+        row.buildings[p.left].name, p.left_floor, row.buildings[p.right].name, p.right_floor
+    )
+}
+
 /// Every impact of the run, by time.
 pub fn impacts(row: &Row, run: &RowRun) -> Vec<ImpactLine> {
     let pairs = row.pairs();
@@ -101,13 +109,7 @@ pub fn impacts(row: &Row, run: &RowRun) -> Vec<ImpactLine> {
         .zip(&pairs)
         .enumerate()
         .flat_map(|(k, (result, p))| {
-            let floors = format!(
-                "{} {}|{} {}",
-                row.buildings[p.left].name,
-                p.left_floor,
-                row.buildings[p.right].name,
-                p.right_floor
-            );
+            let floors = floors(row, p);
             result.impacts.iter().map(move |i| ImpactLine {
                 pair: k,
                 floors: floors.clone(),

@@ -8,7 +8,7 @@ use ratatui::Frame;
 use ratatui::layout::{Constraint, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Cell, Paragraph, Row, Table, Wrap};
+use ratatui::widgets::{Block, Cell, Row, Table};
 
 use crate::tui::app::{App, Mode};
 use crate::tui::fit::{fit, fit_value};
@@ -83,16 +83,7 @@ fn steps(f: &RowField) -> &'static str {
 
 pub fn render_info(app: &App, pane: &RowPane, frame: &mut Frame, area: Rect) {
     let mut lines = Vec::new();
-    if let Mode::Editing(field) = &app.mode
-        && let Some(e) = &field.error
-    {
-        let style = if app.look.color {
-            Style::new().fg(Color::Red)
-        } else {
-            Style::new().add_modifier(Modifier::BOLD)
-        };
-        lines.push(Line::styled(format!("rejected: {e}"), style));
-    }
+    lines.extend(super::params::rejected(app));
     let fields = pane.fields();
     let f = &fields[pane.selected.min(fields.len() - 1)];
     let edited = if pane.modified() {
@@ -107,17 +98,5 @@ pub fn render_info(app: &App, pane: &RowPane, frame: &mut Frame, area: Rect) {
         "{} floors, {pairs} floor pairs",
         pane.row.dofs()
     )));
-    let lines: Vec<Line> = lines
-        .into_iter()
-        .map(|l| {
-            let style = l.style;
-            let text: String = l.spans.iter().map(|s| s.content.as_ref()).collect();
-            Line::styled(app.look.text(&text), style)
-        })
-        .collect();
-    let area = Rect {
-        width: area.width.saturating_sub(1),
-        ..area
-    };
-    frame.render_widget(Paragraph::new(lines).wrap(Wrap { trim: true }), area);
+    super::params::draw_info(app, lines, frame, area);
 }
