@@ -38,6 +38,7 @@ use super::quiet::{Bands, Majorants, QuietStep, stays_below};
 use super::roots::{fires_at_start, first_crossing};
 use super::sample::{self, Limits, SampleMajorants, SampleMap};
 use super::sample_peaks::{IntervalSeries, raise_relative};
+use super::sample_run::{Pair, Peaks, Watch};
 use super::segment::{Event, Segment};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
@@ -97,6 +98,10 @@ const CONTACT_DEGREE: usize = 20;
 /// run, beyond a fixed allowance: a physical run has a few per cycle.
 const EVENTS_PER_CYCLE: usize = 1_000;
 const EVENT_ALLOWANCE: usize = 10_000;
+/// Samples of a record cleared together by one test where nothing comes
+/// near a peak or an event ([`super::sample_run::Pair::block`]).
+const BLOCK: usize = 16;
+
 /// How often (in segments) the observer is asked whether to go on.
 const POLL_EVERY: usize = 256;
 
@@ -695,12 +700,16 @@ impl<'a> Run<'a> {
         true
     }
 
-    /// After a quiet sample, the samples that follow it while the swing
-    /// bounds alone clear them, in one tight loop: nothing rose in the
-    /// quiet sample, so the running peaks, the branches and the ceiling of
-    /// x1 − x2 stand still, and their bands are made once. The first sample
-    /// these bounds do not clear is left to [`Run::quiet_sample`] (with its
-    /// majorants) or the series. Stops before the next poll of the observer.
+    /// After a quiet sample, the samples that follow it while the bounds of
+    /// [`super::sample_run`] clear them, in one tight loop: each of x, ẋ,
+    /// |ẍ + g| and x1 − x2 either stays inside its band by its swing or is
+    /// monotone over the interval with its end inside the event band, and
+    /// then raises its running peak at that end. The branches stand still,
+    /// so the event bands are made once. The first sample these bounds do
+    /// not clear (an extremum near its running peak, an event) is taken by
+    /// [`Run::sample_interval`] (majorants, peaks located inside); if that
+    /// fails too, it is left to the series. Stops before the next poll of
+    /// the observer.
     fn quiet_run(&mut self, to_end: f64) {
         match (self.options.absolute_acceleration, self.options.energy) {
             (false, false) => self.quiet_run_with::<false, false>(to_end),
@@ -715,6 +724,11 @@ impl<'a> Run<'a> {
     /// are taken from the record by products with its factor and the
     /// factor over h (a unit in the last place from
     /// [`crate::model::RecordMotion::at_sample`]'s quotients).
+    ///
+    /// x1 − x2 must stay below the gap (no onset) and, until a first
+    /// impact, its running maximum (the minimum gap of SPEC §11) is raised
+    /// where it is monotone; after one, that maximum no longer moves (it is
+    /// carried as ∞ in the loop and not written back).
     fn quiet_run_with<const ACCEL: bool, const ENERGY: bool>(&mut self, to_end: f64) {
         let (Some(maps), Excitation::Record(motion)) = (&self.samples, self.options.excitation)
         else {
@@ -725,18 +739,64 @@ impl<'a> Run<'a> {
         let [m0, m1] = [0, 1].map(|i| maps[i][self.branch[i].kind()]);
         let loads = self.loads;
         let lanes = [m0.lane(loads[0]), m1.lane(loads[1])];
-        let (mut bands, mut ceiling) = self.quiet_bands::<ACCEL>();
+        let watch =
+            [0, 1].map(|i| Watch::new(self.branch[i], self.structures[i].yield_displacement));
+        let pair = Pair::new(lanes, watch, h, self.p.gap);
+        let track_relative = self.result.impacts.is_empty();
         let masses = [self.structures[0].mass, self.structures[1].mass];
         let record = &motion.record.acceleration;
         let factor = motion.scale / motion.amplitude;
         let per_step = factor / h;
         let (mut x, mut v, mut tau) = (self.x, self.v, self.tau);
+        let mut peaks = self.running_peaks::<ACCEL>(track_relative);
         // The work integrals in a local copy, the same sums in the same
         // order, so that they do not wait on memory from one sample to the next.
         let mut work = self.work;
         let (mut k, mut taken) = (self.sample_cursor.1, 0);
         let budget = POLL_EVERY - 1 - self.segments % POLL_EVERY;
+        // Samples to take one by one before the next block is tried.
+        let mut single = 0;
+        let mut ends = [[[0.0; 2]; 2]; BLOCK];
+        let mut grounds = [[0.0; 2]; BLOCK];
         while taken < budget {
+            // A block of samples by one test, wholly inside the record or
+            // wholly in its free tail.
+            if single == 0 && taken + BLOCK <= budget {
+                let block = if let Some(a) = record.get(k..k + BLOCK + 1) {
+                    for (j, ground) in grounds.iter_mut().enumerate() {
+                        *ground = [a[j] * factor, (a[j + 1] - a[j]) * per_step];
+                    }
+                    Some(((k + BLOCK) as f64 * h, k + BLOCK))
+                } else if k + 2 > record.len() {
+                    grounds = [[0.0; 2]; BLOCK];
+                    Some(((0..BLOCK).fold(tau, |t, _| t + h), k))
+                } else {
+                    None
+                };
+                if let Some((end, next_k)) = block
+                    && end < tau_end
+                {
+                    if pair.block::<ACCEL, BLOCK>(x, v, &grounds, &peaks, &mut ends) {
+                        if ENERGY {
+                            let mut start = [x, v];
+                            for (ground, end) in grounds.iter().zip(&ends) {
+                                let [x, v] = start;
+                                work.add_quiet([(0, &m0), (1, &m1)].map(|(i, m)| {
+                                    let inputs = lanes[i].inputs(x[i], v[i], *ground);
+                                    sample::work(m, masses[i], &inputs, loads[i], [x[i], end[0][i]])
+                                }));
+                                start = *end;
+                            }
+                        }
+                        [x, v] = ends[BLOCK - 1];
+                        (tau, k) = (end, next_k);
+                        taken += BLOCK;
+                        continue;
+                    }
+                    single = BLOCK;
+                }
+            }
+            single = single.saturating_sub(1);
             // Inside the record τ = k h and the interval ends at (k + 1) h:
             // the cursor stands on a sample (quiet_sample checked it).
             let (end, ground, next_k) = match record.get(k..k + 2) {
@@ -751,18 +811,17 @@ impl<'a> Run<'a> {
             if !(end < tau_end) {
                 break;
             }
-            let s0 = lanes[0].step::<ACCEL>(x[0], v[0], ground, &bands[0]);
-            let s1 = lanes[1].step::<ACCEL>(x[1], v[1], ground, &bands[1]);
-            if !(s0.clear & s1.clear & (x[0] - x[1] + s0.swing_x + s1.swing_x < ceiling)) {
-                // Not cleared by the swings: the full tests of one sample
-                // (monotone ends, majorants, peaks located inside), on the
-                // same branches; if they clear it, the peaks they raised
-                // give new bands and the run goes on.
+            let step = pair.step::<ACCEL>(x, v, ground, &peaks);
+            if !step.clear {
+                // Not cleared: the full tests of one sample (majorants, peaks
+                // located inside), on the same branches; if they clear it,
+                // the run goes on from the peaks they raised.
                 (self.x, self.v, self.tau, self.work) = (x, v, tau, work);
                 self.sample_cursor = (tau, k);
+                self.set_running_peaks::<ACCEL>(&peaks, track_relative);
                 if self.sample_interval(end, ground, next_k) {
                     (x, v, tau, k, work) = (self.x, self.v, self.tau, next_k, self.work);
-                    (bands, ceiling) = self.quiet_bands::<ACCEL>();
+                    peaks = self.running_peaks::<ACCEL>(track_relative);
                     taken += 1;
                     continue;
                 }
@@ -770,13 +829,12 @@ impl<'a> Run<'a> {
                 return;
             }
             if ENERGY {
-                work.add_quiet([
-                    sample::work(&m0, masses[0], &s0.inputs, loads[0], [x[0], s0.end[0]]),
-                    sample::work(&m1, masses[1], &s1.inputs, loads[1], [x[1], s1.end[0]]),
-                ]);
+                work.add_quiet([(0, &m0), (1, &m1)].map(|(i, m)| {
+                    let inputs = lanes[i].inputs(x[i], v[i], ground);
+                    sample::work(m, masses[i], &inputs, loads[i], [x[i], step.x[i]])
+                }));
             }
-            x = [s0.end[0], s1.end[0]];
-            v = [s0.end[1], s1.end[1]];
+            (x, v, peaks) = (step.x, step.v, step.peaks);
             tau = end;
             k = next_k;
             taken += 1;
@@ -785,35 +843,45 @@ impl<'a> Run<'a> {
         self.v = v;
         self.tau = tau;
         self.work = work;
+        self.set_running_peaks::<ACCEL>(&peaks, track_relative);
         self.sample_cursor = (tau, k);
         self.segments += taken;
     }
 
-    /// The bands of both structures' quiet samples (x, ẋ, and |ẍ + g|
-    /// where `ACCEL`) from their branches and running peaks, and the
-    /// ceiling of x1 − x2: the gap and, until a first impact, its running
-    /// maximum (the minimum gap of SPEC §11).
-    fn quiet_bands<const ACCEL: bool>(&self) -> ([Bands; 2], f64) {
-        let bands = [0, 1].map(|i| {
-            let peaks = self.result.structure(i);
-            Bands::new(
-                self.branch[i],
-                self.structures[i].yield_displacement,
-                peaks.peak_displacement,
-                peaks.peak_velocity,
-                if ACCEL {
-                    peaks.peak_absolute_acceleration
-                } else {
-                    f64::INFINITY
-                },
-            )
-        });
-        let ceiling = if self.result.impacts.is_empty() {
-            self.p.gap.min(self.max_relative_displacement)
-        } else {
-            self.p.gap
-        };
-        (bands, ceiling)
+    /// Both structures' running peaks of |x|, |ẋ| and, where `ACCEL`,
+    /// |ẍ + g| (∞ where it is not located, so that it never binds), and,
+    /// where `track_relative`, the running maximum of x1 − x2 (else ∞).
+    fn running_peaks<const ACCEL: bool>(&self, track_relative: bool) -> Peaks {
+        let [l, r] = [0, 1].map(|i| self.result.structure(i));
+        Peaks {
+            x: [l.peak_displacement, r.peak_displacement],
+            v: [l.peak_velocity, r.peak_velocity],
+            a: if ACCEL {
+                [l.peak_absolute_acceleration, r.peak_absolute_acceleration]
+            } else {
+                [f64::INFINITY; 2]
+            },
+            relative: if track_relative {
+                self.max_relative_displacement
+            } else {
+                f64::INFINITY
+            },
+        }
+    }
+
+    /// The inverse of [`Run::running_peaks`].
+    fn set_running_peaks<const ACCEL: bool>(&mut self, peaks: &Peaks, track_relative: bool) {
+        for i in 0..2 {
+            let p = self.result.structure_mut(i);
+            p.peak_displacement = peaks.x[i];
+            p.peak_velocity = peaks.v[i];
+            if ACCEL {
+                p.peak_absolute_acceleration = peaks.a[i];
+            }
+        }
+        if track_relative {
+            self.max_relative_displacement = peaks.relative;
+        }
     }
 
     /// The excitation's phasor at τ for a quiet segment: rotated on from the
