@@ -39,6 +39,7 @@ use super::roots::{fires_at_start, first_crossing};
 use super::sample::{self, Limits, SampleMajorants, SampleMap};
 use super::sample_peaks::{IntervalSeries, raise_relative};
 use super::sample_run::{Pair, Peaks, Watch};
+use super::sample_work::PairWork;
 use super::segment::{Event, Segment};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
@@ -742,8 +743,9 @@ impl<'a> Run<'a> {
         let watch =
             [0, 1].map(|i| Watch::new(self.branch[i], self.structures[i].yield_displacement));
         let pair = Pair::new(lanes, watch, h, self.p.gap);
-        let track_relative = self.result.impacts.is_empty();
         let masses = [self.structures[0].mass, self.structures[1].mass];
+        let pair_work = PairWork::new([&m0, &m1], [&lanes[0], &lanes[1]], masses);
+        let track_relative = self.result.impacts.is_empty();
         let record = &motion.record.acceleration;
         let factor = motion.scale / motion.amplitude;
         let per_step = factor / h;
@@ -779,12 +781,9 @@ impl<'a> Run<'a> {
                     if pair.block::<ACCEL, BLOCK>(x, v, &grounds, &peaks, &mut ends) {
                         if ENERGY {
                             let mut start = [x, v];
-                            for (ground, end) in grounds.iter().zip(&ends) {
+                            for (&ground, end) in grounds.iter().zip(&ends) {
                                 let [x, v] = start;
-                                work.add_quiet([(0, &m0), (1, &m1)].map(|(i, m)| {
-                                    let inputs = lanes[i].inputs(x[i], v[i], *ground);
-                                    sample::work(m, masses[i], &inputs, loads[i], [x[i], end[0][i]])
-                                }));
+                                work.add_quiet(pair_work.terms(x, v, ground, end[0]));
                                 start = *end;
                             }
                         }
@@ -829,10 +828,7 @@ impl<'a> Run<'a> {
                 return;
             }
             if ENERGY {
-                work.add_quiet([(0, &m0), (1, &m1)].map(|(i, m)| {
-                    let inputs = lanes[i].inputs(x[i], v[i], ground);
-                    sample::work(m, masses[i], &inputs, loads[i], [x[i], step.x[i]])
-                }));
+                work.add_quiet(pair_work.terms(x, v, ground, step.x));
             }
             (x, v, peaks) = (step.x, step.v, step.peaks);
             tau = end;

@@ -164,6 +164,12 @@ impl SampleMap {
         linear_map::advance(&self.end, inputs, equilibrium)
     }
 
+    /// The moments ∫₀ʰ t u_j' dt and the Gram matrix ∫₀ʰ u_j' u_l' dt of the
+    /// unit responses (zero unless made with the work integrals).
+    pub fn work_integrals(&self) -> ([f64; INPUTS], [[f64; INPUTS]; INPUTS]) {
+        (self.moment, self.gram)
+    }
+
     /// This map with load Q/m, laid out for the tight loop of quiet samples.
     pub fn lane(&self, load: f64) -> Lane {
         Lane::new(
@@ -443,7 +449,10 @@ pub fn clear(
             between(&acceleration::majorant(&m.x, &m.v, k, c, load), [-pa, pa])
         };
     if !a_clear {
-        return None;
+        // Located on the interval's series, as x and ẋ are.
+        series
+            .get_or_insert_with(interval_series)
+            .raise_absolute_acceleration([k, c, load], h, c * sv + k * sx, &mut peaks[2]);
     }
     Some(Cleared {
         end,

@@ -66,6 +66,29 @@ impl IntervalSeries {
     pub fn raise_velocity(&self, h: f64, swing: f64, peak: &mut f64) {
         raise_abs_max(&self.v, None, h, swing, peak);
     }
+
+    /// Raises `peak` to max |ẍ + g| = max |Q/m − (c/m) ẋ − (K/m) x| over
+    /// (0, h] (SPEC §6), on that combination of the two series; `swing` ≥
+    /// its swing there.
+    #[inline]
+    pub fn raise_absolute_acceleration(
+        &self,
+        [stiffness, damping, load]: [f64; 3],
+        h: f64,
+        swing: f64,
+        peak: &mut f64,
+    ) {
+        let mut a = Series {
+            degree: self.x.degree,
+            ..Series::default()
+        };
+        for (j, c) in a.c[..=a.degree].iter_mut().enumerate() {
+            let v = if j <= self.v.degree { self.v.c[j] } else { 0.0 };
+            *c = -damping * v - stiffness * self.x.c[j];
+        }
+        a.c[0] += load;
+        raise_abs_max(&a, None, h, swing, peak);
+    }
 }
 
 /// Raises `peak` to max (x1 − x2) over (0, h], on the difference of the two

@@ -61,10 +61,10 @@ pub struct Lane {
     /// (x*, 0) − x* e₀ (+ (Q/m) e₄): the part of the end state fixed by the branch.
     offset: [f64; 2],
     /// x*, Q/m, c/m, K/m, and L = |Q/m| where K = 0 (else 0).
-    equilibrium: f64,
-    load: f64,
+    pub(super) equilibrium: f64,
+    pub(super) load: f64,
     damping: f64,
-    stiffness: f64,
+    pub(super) stiffness: f64,
     free_load: f64,
 }
 
