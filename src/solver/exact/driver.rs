@@ -585,12 +585,29 @@ impl<'a> Run<'a> {
     /// clears both structures (peaks inside located) and x1 − x2 stays
     /// below the gap; returns whether it did.
     fn sample_interval(&mut self, end: f64, ground: [f64; 2], next_k: usize) -> bool {
+        self.sample_interval_from(end, ground, next_k, [None; 2], None)
+    }
+
+    /// [`Run::sample_interval`] with what the tight loop's bounds already
+    /// cleared: a structure's part (`known`) and the running maximum of
+    /// x1 − x2 where x1 − x2 cleared (`relative`), taken as they are.
+    fn sample_interval_from(
+        &mut self,
+        end: f64,
+        ground: [f64; 2],
+        next_k: usize,
+        known: [Option<sample::Cleared>; 2],
+        relative: Option<f64>,
+    ) -> bool {
         let Some(maps) = &self.samples else {
             return false;
         };
         let h = maps[0][0].length;
-        let mut cleared = [None; 2];
+        let mut cleared = known;
         for i in 0..2 {
+            if cleared[i].is_some() {
+                continue;
+            }
             let peaks = self.result.structure(i);
             let limits = Limits {
                 displacement: peaks.peak_displacement,
@@ -619,15 +636,19 @@ impl<'a> Run<'a> {
         } else {
             self.p.gap
         };
-        let relative = self.x[0] - self.x[1];
+        let relative_now = self.x[0] - self.x[1];
         let mut max_relative = self.max_relative_displacement;
         let rate = self.v[0] - self.v[1];
-        if relative + a.swing[0] + b.swing[0] < ceiling {
+        if let Some(top) = relative {
+            if self.result.impacts.is_empty() {
+                max_relative = top;
+            }
+        } else if relative_now + a.swing[0] + b.swing[0] < ceiling {
             // Clear by the swings.
         } else if rate.abs() > a.swing[1] + b.swing[1] {
             // x1 − x2 monotone: its largest value is at an end, below the gap,
             // and it raises Π_d,min there.
-            let top = relative.max(a.end[0] - b.end[0]);
+            let top = relative_now.max(a.end[0] - b.end[0]);
             if !sample::below(top, self.p.gap) {
                 return false;
             }
@@ -818,7 +839,21 @@ impl<'a> Run<'a> {
                 (self.x, self.v, self.tau, self.work) = (x, v, tau, work);
                 self.sample_cursor = (tau, k);
                 self.set_running_peaks::<ACCEL>(&peaks, track_relative);
-                if self.sample_interval(end, ground, next_k) {
+                let known = [0, 1].map(|i| {
+                    step.cleared[i].then(|| {
+                        let map = if i == 0 { &m0 } else { &m1 };
+                        let inputs = lanes[i].inputs(x[i], v[i], ground);
+                        sample::Cleared {
+                            end: [step.x[i], step.v[i]],
+                            inputs,
+                            swing: map.swing(&inputs),
+                            majorant_x: None,
+                            peaks: [step.peaks.x[i], step.peaks.v[i], step.peaks.a[i]],
+                        }
+                    })
+                });
+                let relative = step.cleared[2].then_some(step.peaks.relative);
+                if self.sample_interval_from(end, ground, next_k, known, relative) {
                     (x, v, tau, k, work) = (self.x, self.v, self.tau, next_k, self.work);
                     peaks = self.running_peaks::<ACCEL>(track_relative);
                     taken += 1;

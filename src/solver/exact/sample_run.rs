@@ -178,6 +178,12 @@ fn all(f: impl Fn(usize) -> bool) -> bool {
     f(0) & f(1)
 }
 
+/// [f(0), f(1)] of tests.
+#[inline(always)]
+fn each_test(f: impl Fn(usize) -> bool) -> [bool; 2] {
+    [f(0), f(1)]
+}
+
 /// Both structures' lanes, structure by structure in each array so that
 /// each line of [`Pair::step`] is one operation on both, with their event
 /// bands, the interval h and the ceiling of x1 − x2.
@@ -226,11 +232,13 @@ struct Margins {
     jerk: [f64; 2],
 }
 
-/// What one quiet sample gave: whether the bounds cleared it, both end
-/// states, and the peaks at its end (meaningful only where it cleared).
+/// What one quiet sample gave: whether the bounds cleared it (and which of
+/// its parts: each structure, and x1 − x2), both end states, and the peaks
+/// at its end (meaningful only for the parts that cleared).
 #[derive(Debug, Clone, Copy)]
 pub struct Step {
     pub clear: bool,
+    pub cleared: [bool; 3],
     pub x: [f64; 2],
     pub v: [f64; 2],
     pub peaks: Peaks,
@@ -346,7 +354,7 @@ impl Pair {
         let rate_end = each(|i| accel_end[i] - g_end);
         let (w_lo, w_hi) = (self.watch_x[0], self.watch_x[1]);
         // x: in its band, or monotone (ẋ keeps its sign) ending inside the event band.
-        let x_clear = all(|i| {
+        let x_clear = each_test(|i| {
             ((x_lo[i] - margin_x[i] > max(w_lo[i], -peaks.x[i]))
                 & (x_hi[i] + margin_x[i] < min(w_hi[i], peaks.x[i])))
                 | (((v_lo[i] > margin_v[i]) | (v_hi[i] < -margin_v[i]))
@@ -354,7 +362,7 @@ impl Pair {
         });
         let (u_lo, u_hi) = (self.watch_v[0], self.watch_v[1]);
         // ẋ: in its band, or monotone (ẍ keeps its sign) with both ends inside the event band.
-        let v_clear = all(|i| {
+        let v_clear = each_test(|i| {
             ((v_lo[i] - margin_v[i] > max(u_lo[i], -peaks.v[i]))
                 & (v_hi[i] + margin_v[i] < min(u_hi[i], peaks.v[i])))
                 | (((min(rate[i], rate_end[i]) > margin_a[i])
@@ -373,11 +381,11 @@ impl Pair {
                 | (max(rel_rate, rel_rate_end) < -margin_rate))
                 & (self.gap - max(relative, relative_end)
                     > 4.0 * f64::EPSILON * max(relative.abs(), relative_end.abs())));
-        let mut clear = x_clear & v_clear & relative_clear;
+        let mut structure_clear = each_test(|i| x_clear[i] & v_clear[i]);
         let mut peak_a = peaks.a;
         if ACCEL {
             // ẍ + g: below its peak, or monotone (its rate −(c/m) ẍ − (K/m) ẋ keeping its sign).
-            clear &= all(|i| {
+            let a_clear = each_test(|i| {
                 let (jerk, jerk_end) = (
                     -c[i] * rate[i] - k[i] * v[i],
                     -c[i] * rate_end[i] - k[i] * ve[i],
@@ -386,10 +394,12 @@ impl Pair {
                     | (min(jerk, jerk_end) > margin_jerk[i])
                     | (max(jerk, jerk_end) < -margin_jerk[i])
             });
+            structure_clear = each_test(|i| structure_clear[i] & a_clear[i]);
             peak_a = each(|i| max(peaks.a[i], accel_end[i].abs()));
         }
         Step {
-            clear,
+            clear: structure_clear[0] & structure_clear[1] & relative_clear,
+            cleared: [structure_clear[0], structure_clear[1], relative_clear],
             x: xe,
             v: ve,
             peaks: Peaks {
