@@ -97,11 +97,7 @@ fn an_isolated_impact_achieves_the_free_masses_restitution() {
             model.name()
         );
         let row = parse("impact.toml", &text).unwrap();
-        let ground = Ground::Sine {
-            amplitude: 2.0,
-            omega: 2.0 * std::f64::consts::PI,
-            end: 1.0,
-        };
+        let ground = Ground::sine(2.0, 2.0 * std::f64::consts::PI, 1.0);
         let r = run_row(&row, &ground, &RowOptions::lasting(1.5)).unwrap();
         let first = r.pairs[0].impacts[0];
         assert!(first.approach_velocity > 0.01, "{first:?}");

@@ -14,6 +14,7 @@ use crate::analysis::row_report::RowReport;
 use crate::analysis::work;
 use crate::model::buildings::matrices::default_tail;
 use crate::model::buildings::{Ground, Row, load_with};
+use crate::model::excitation::Excitation;
 use crate::model::physical::parse_acceleration;
 use crate::solver::buildings::{RowError, RowOptions, default_step, run_newmark, run_row};
 
@@ -91,28 +92,28 @@ impl BuildingsArgs {
                             CliError::Usage(format!("--cycles `{c}`: must be a finite number > 0"))
                         })?,
                 };
-                Ground::Sine {
-                    amplitude,
-                    omega,
-                    end: cycles * period,
-                }
+                Ground::sine(amplitude, omega, cycles * period)
             }
-            "pulse-a" => Ground::Sine {
-                amplitude,
-                omega,
-                end: period,
-            },
+            _ if cycles.is_some() => {
+                return Err(CliError::Usage(format!(
+                    "--cycles `{}`: only a sine on a row takes cycles; a row under {name} runs for the motion and then --tail seconds",
+                    cycles.unwrap_or_default()
+                )));
+            }
             spec if spec.starts_with("synthetic:") => Ground::from_record(&synthetic(spec)?, scale),
             spec if spec.starts_with("record:") => {
                 let record = crate::model::record::read(&spec["record:".len()..])
                     .map_err(|e| CliError::Usage(e.to_string()))?;
                 Ground::from_record(&record, scale)
             }
-            other => {
-                return Err(CliError::Usage(format!(
-                    "--excitation `{other}`: rows take sine, pulse-a or record:PATH"
-                )));
-            }
+            other => match Excitation::parse(other) {
+                Ok(Excitation::Pulse(pulse)) => Ground::from_pulse(pulse, amplitude, omega),
+                _ => {
+                    return Err(CliError::Usage(format!(
+                        "--excitation `{other}`: rows take sine, pulse-a, pulse-b, pulse-c1, pulse-c2, synthetic:N or record:PATH"
+                    )));
+                }
+            },
         };
         let tail = self.tail.unwrap_or_else(|| default_tail(row));
         if !(tail >= 0.0 && tail.is_finite()) {
@@ -235,7 +236,7 @@ pub fn run(
             .map_err(|e| CliError::Failed(e.to_string()))?
             .energy;
     }
-    let report = RowReport::new(&row, &result, &name, method, median(times));
+    let report = RowReport::new(&row, &result, (&ground, &name), method, median(times));
     emit(&report)
 }
 

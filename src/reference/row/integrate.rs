@@ -39,9 +39,14 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
         plastic: vec![0.0; motion.storeys.len()],
         laws: vec![None; motion.pairs.len()],
     };
+    // u = 0, and u̇ = −u̇_g(0): the floors stand still while the ground,
+    // under a type B pulse, starts moving (SPEC §9).
     let mut y = vec![0.0; 2 * n];
+    for v in &mut y[n..] {
+        *v = -ground.initial_velocity();
+    }
     let mut peak_u = vec![0.0f64; n];
-    let mut peak_v = vec![0.0f64; n];
+    let mut peak_v: Vec<f64> = y[n..].iter().map(|v| v.abs()).collect();
     let mut peak_d = vec![0.0f64; motion.storeys.len()];
     let mut impacts = vec![0; motion.pairs.len()];
     let mut steps = 0;

@@ -202,6 +202,16 @@ pub fn run_row_cached(
     let system = System::of(&layout, &config);
     let h_max = options.max_substep.unwrap_or(1.0 / layout.rate);
     let watch = watched(&layout);
+    // Every floor starts at rest on the ground, or against it when the
+    // ground starts moving (SPEC §9, type B pulse): u̇_i(0) = −u̇_g(0).
+    let v0 = vec![-ground.initial_velocity(); n];
+    let initial_kinetic = 0.5
+        * layout
+            .mass
+            .iter()
+            .zip(&v0)
+            .map(|(m, v)| m * v * v)
+            .sum::<f64>();
     let mut run = Run {
         row,
         envelope: Envelope::new(n, layout.storeys.len(), layout.facing.len()),
@@ -210,7 +220,7 @@ pub fn run_row_cached(
         config,
         system,
         u: vec![0.0; n],
-        v: vec![0.0; n],
+        v: v0,
         t: 0.0,
         propagator,
         counts_before,
@@ -222,10 +232,15 @@ pub fn run_row_cached(
         stack: None,
         energy: options.energy.then(|| {
             let (x, w) = gauss_legendre(NODES);
-            (RowEnergy::default(), x, w)
+            let start = RowEnergy {
+                initial_kinetic,
+                ..RowEnergy::default()
+            };
+            (start, x, w)
         }),
         next_contact_step: 0.0,
     };
+    run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
     for piece in ground.pieces(options.duration) {
         let length = piece.length;
@@ -359,6 +374,15 @@ impl Run<'_> {
         self.record_point(&end.rates[2], a1);
         self.stack = Some(((a1, r1, sigma), end));
         true
+    }
+
+    /// Peaks at the start: the floors' initial velocity, and the
+    /// acceleration its damping force gives (0 from rest).
+    fn record_start(&mut self, ground: &Ground) {
+        let a = ground.at(0.0);
+        let mut acc = vec![0.0; self.layout.dofs];
+        self.system.acceleration(&self.u, &self.v, a, &mut acc);
+        self.record_point(&acc, a);
     }
 
     /// Peaks at the current point, with ü already known.
