@@ -286,7 +286,11 @@ pub fn figure(
     bounded("figure buildings", seconds, allow_long)?;
     let apart = row.apart();
     let failed = |e: crate::solver::buildings::RowError| CliError::Failed(e.to_string());
-    let with = run_row(&row, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
+    let traced = RowOptions {
+        forces: true,
+        ..RowOptions::lasting(duration)
+    };
+    let with = run_row(&row, &ground, &traced).map_err(failed)?;
     let without = run_row(&apart, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
     let caption = format!(
         "{} excitation, {} contact, exact method, {:.3} s; dashed: without pounding",

@@ -37,7 +37,7 @@ use super::layout::Layout;
 use super::peaks::{Envelope, raise};
 use super::poly;
 use super::propagator::{Propagator, apply};
-use super::result::{FloorPeaks, PairImpact, PairResult, RowRun, RowTrace};
+use super::result::{FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
 use super::taylor::{ORDER, Series};
 
@@ -54,6 +54,9 @@ pub struct RowOptions {
     /// Keep every floor's displacement at the end of every sub-step
     /// ([`super::result::RowTrace`]), for drawing the row in time.
     pub trace: bool,
+    /// Keep every floor pair's contact force over time
+    /// ([`super::result::ForceHistory`]), for drawing the impacts.
+    pub forces: bool,
 }
 
 impl RowOptions {
@@ -64,6 +67,7 @@ impl RowOptions {
             max_substep: None,
             energy: false,
             trace: false,
+            forces: false,
         }
     }
 }
@@ -157,6 +161,8 @@ struct Run<'a> {
     energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
     /// Suggested length of the next Runge–Kutta step in contact (0: none yet).
     next_contact_step: f64,
+    /// The pairs' forces over time, when asked for.
+    forces: Option<ForceHistory>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -205,6 +211,7 @@ pub fn run_row_cached(
     // Every floor starts at rest on the ground, or against it when the
     // ground starts moving (SPEC §9, type B pulse): u̇_i(0) = −u̇_g(0).
     let v0 = vec![-ground.initial_velocity(); n];
+    let n_pairs = layout.pairs.len();
     let initial_kinetic = 0.5
         * layout
             .mass
@@ -239,6 +246,9 @@ pub fn run_row_cached(
             (start, x, w)
         }),
         next_contact_step: 0.0,
+        forces: options.forces.then(|| ForceHistory {
+            pairs: vec![Vec::new(); n_pairs],
+        }),
     };
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
@@ -609,7 +619,15 @@ impl Run<'_> {
                     })
                     .collect(),
             };
-            let f = poly::max(&force, end);
+            let (at, f) = poly::argmax(&force, end);
+            if let Some(history) = self.forces.as_mut() {
+                // The step's start, its largest force, its end.
+                history.push(pi, self.t, force[0]);
+                if at > 0.0 && at < end {
+                    history.push(pi, self.t + at, f);
+                }
+                history.push(pi, self.t + end, poly::eval(&force, end));
+            }
             if let Some(last) = self.pairs[pi].impacts.last_mut() {
                 last.max_penetration = last.max_penetration.max(penetration);
                 last.max_force = last.max_force.max(f);
@@ -682,6 +700,9 @@ impl Run<'_> {
                     law: pair_law(self.row, &p, v0),
                     approach_velocity: v0,
                 });
+                if let Some(history) = self.forces.as_mut() {
+                    history.push(pi, self.t, 0.0);
+                }
                 self.pairs[pi].impacts.push(PairImpact {
                     start: self.t,
                     end: f64::NAN,
@@ -695,6 +716,9 @@ impl Run<'_> {
             Event::Separation(pi) => {
                 let p = self.layout.pairs[pi];
                 self.config.contact[pi] = None;
+                if let Some(history) = self.forces.as_mut() {
+                    history.push(pi, self.t, 0.0);
+                }
                 if let Some(last) = self.pairs[pi].impacts.last_mut() {
                     last.end = self.t;
                     last.separation_velocity = -(self.v[p.left_dof] - self.v[p.right_dof]);
@@ -751,6 +775,7 @@ impl Run<'_> {
             series_steps: self.series_steps,
             configurations: self.configurations.len(),
             trace: None,
+            forces: self.forces,
         }
     }
 }

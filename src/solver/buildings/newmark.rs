@@ -367,5 +367,6 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         series_steps: 0,
         configurations: 0,
         trace: None,
+        forces: None,
     })
 }

@@ -232,17 +232,28 @@ pub fn max_abs(c: &[f64], end: f64) -> f64 {
 
 /// max p over [0, end] (signed), by the same scan.
 pub fn max(c: &[f64], end: f64) -> f64 {
+    argmax(c, end).1
+}
+
+/// Where on [0, end] p is largest, and that largest value (signed), by the
+/// same scan: the ends and every maximum inside.
+pub fn argmax(c: &[f64], end: f64) -> (f64, f64) {
     let f = |s: f64| eval(c, s);
     let df = |s: f64| eval_derivative(c, s);
     let ddf = |s: f64| eval_second_derivative(c, s);
-    let mut best = f(0.0).max(f(end));
+    let (f0, f1) = (f(0.0), f(end));
+    let mut best = if f1 > f0 { (end, f1) } else { (0.0, f0) };
     let scan = scan_derivative(c, end);
     let mut lo = 0.0;
     let mut d_lo = scan[0];
     for (i, &ds) in scan.iter().enumerate().skip(1) {
         let s = end * i as f64 / SCAN as f64;
         if d_lo > 0.0 && ds <= 0.0 {
-            best = best.max(f(bisect(|x| -df(x), |x| -ddf(x), lo, s)));
+            let root = bisect(|x| -df(x), |x| -ddf(x), lo, s);
+            let value = f(root);
+            if value > best.1 {
+                best = (root, value);
+            }
         }
         lo = s;
         d_lo = ds;
@@ -262,6 +273,8 @@ mod tests {
         assert!((first_rise(&neg, 1.0).unwrap() - 0.3).abs() < 1e-15);
         assert!((max_abs(&c, 1.0) - 0.21).abs() < 1e-15);
         assert!((max(&neg, 1.0) - 0.04).abs() < 1e-15);
+        let (at, top) = argmax(&neg, 1.0);
+        assert!((at - 0.5).abs() < 1e-12 && top == max(&neg, 1.0));
         assert!(first_rise(&c[..1].iter().map(|x| -x).collect::<Vec<_>>(), 1.0).is_none());
     }
 
