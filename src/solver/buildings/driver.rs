@@ -448,7 +448,7 @@ impl Run<'_> {
                 *step = contact.settle((y0, f0), g, end);
                 end = step.h;
             }
-            self.peaks_on(&series, end);
+            self.peaks_on(&series, end, rk.is_some().then_some(piece));
             if self.energy.is_some() {
                 self.work_on(&series, end);
             }
@@ -467,11 +467,29 @@ impl Run<'_> {
             }
             // The point itself, with ü of the configuration now in force.
             let (a1, _) = ground_at(piece, self.t);
-            let mut acc = vec![0.0; n];
-            self.system.acceleration(&self.u, &self.v, a1, &mut acc);
+            let acc = self.acceleration(piece, self.t, 0.0, (&self.u, &self.v));
             self.record_point(&acc, a1);
         }
         Ok(())
+    }
+
+    /// ü at (u, u̇) at time t + s on `piece` in the configuration in force:
+    /// the linear system's, and the force of every pair closed under a
+    /// Hertz-type law ([`Contact::rate`]), which the system leaves out.
+    fn acceleration(&self, piece: &Piece, t: f64, s: f64, (u, v): (&[f64], &[f64])) -> Vec<f64> {
+        let n = self.layout.dofs;
+        if any_hertzian(&self.config) {
+            let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
+                ground_at(piece, t + s).0
+            });
+            let y: Vec<f64> = u.iter().chain(v).copied().collect();
+            contact.rate(s, &y).split_off(n)
+        } else {
+            let mut acc = vec![0.0; n];
+            self.system
+                .acceleration(u, v, ground_at(piece, t + s).0, &mut acc);
+            acc
+        }
     }
 
     /// One Runge–Kutta step of a Hertz-type contact phase
@@ -566,10 +584,19 @@ impl Run<'_> {
 
     /// Turning points on [0, end] that may raise a peak (Σ|c_k|s^k above it),
     /// and the force and penetration of closed pairs.
-    fn peaks_on(&mut self, series: &Series, end: f64) {
-        let c = &mut self.buf;
-        let env = &mut self.envelope;
-        for i in 0..self.layout.dofs {
+    ///
+    /// On a Runge–Kutta step (`rk`: its ground piece) the quintic through
+    /// both ends carries u and u̇ to the step's order, but its second
+    /// derivative holds the rounding of u magnified by 1/h², which on the
+    /// shortest steps (near an event) swamps ü: there the acceleration's
+    /// largest point is located on the polynomial and its value taken from
+    /// the equation of motion at the interpolated state; the ends are the
+    /// recorded points.
+    fn peaks_on(&mut self, series: &Series, end: f64, rk: Option<&Piece>) {
+        let mut c = std::mem::take(&mut self.buf);
+        let n = self.layout.dofs;
+        for i in 0..n {
+            let env = &mut self.envelope;
             let u = series.displacement(i);
             if poly::magnitude_bound(u, end) > env.displacement[i] {
                 raise(&mut env.displacement[i], poly::max_abs(u, end));
@@ -578,11 +605,24 @@ impl Run<'_> {
             if poly::magnitude_bound(v, end) > env.velocity[i] {
                 raise(&mut env.velocity[i], poly::max_abs(v, end));
             }
-            series.absolute_acceleration(i, c);
-            if poly::magnitude_bound(c, end) > env.acceleration[i] {
-                raise(&mut env.acceleration[i], poly::max_abs(c, end));
+            series.absolute_acceleration(i, &mut c);
+            if poly::magnitude_bound(&c, end) > env.acceleration[i] {
+                let Some(piece) = rk else {
+                    raise(&mut env.acceleration[i], poly::max_abs(&c, end));
+                    continue;
+                };
+                let (at, _) = poly::argmax_abs(&c, end);
+                if at > 0.0 && at < end {
+                    let (mut us, mut vs) = (vec![0.0; n], vec![0.0; n]);
+                    series.state(at, &mut us, &mut vs);
+                    let acc = self.acceleration(piece, self.t, at, (&us, &vs));
+                    let a = acc[i] + ground_at(piece, self.t + at).0;
+                    raise(&mut self.envelope.acceleration[i], a);
+                }
             }
         }
+        let c = &mut c;
+        let env = &mut self.envelope;
         for (k, s) in self.layout.storeys.iter().enumerate() {
             let mut du = vec![(s.upper, 1.0)];
             if let Some(l) = s.lower {
@@ -633,6 +673,7 @@ impl Run<'_> {
                 last.max_force = last.max_force.max(f);
             }
         }
+        self.buf = std::mem::take(c);
     }
 
     /// The work terms of SPEC §6 on [0, end] of a Taylor step, by the

@@ -207,10 +207,17 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
 /// max |p| over [0, end]: the ends and every turning point, found where p'
 /// changes sign on [`SCAN`] points.
 pub fn max_abs(c: &[f64], end: f64) -> f64 {
+    argmax_abs(c, end).1
+}
+
+/// Where on [0, end] |p| is largest, and that largest |p|, by the scan of
+/// [`max_abs`].
+pub fn argmax_abs(c: &[f64], end: f64) -> (f64, f64) {
     let f = |s: f64| eval(c, s);
     let df = |s: f64| eval_derivative(c, s);
     let ddf = |s: f64| eval_second_derivative(c, s);
-    let mut best = f(0.0).abs().max(f(end).abs());
+    let (f0, f1) = (f(0.0).abs(), f(end).abs());
+    let mut best = if f1 > f0 { (end, f1) } else { (0.0, f0) };
     let scan = scan_derivative(c, end);
     let mut lo = 0.0;
     let mut d_lo = scan[0];
@@ -222,7 +229,10 @@ pub fn max_abs(c: &[f64], end: f64) -> f64 {
             } else {
                 bisect(df, ddf, lo, s)
             };
-            best = best.max(f(root).abs());
+            let value = f(root).abs();
+            if value > best.1 {
+                best = (root, value);
+            }
         }
         lo = s;
         d_lo = ds;
