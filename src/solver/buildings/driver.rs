@@ -624,11 +624,9 @@ impl Run<'_> {
         let c = &mut c;
         let env = &mut self.envelope;
         for (k, s) in self.layout.storeys.iter().enumerate() {
-            let mut du = vec![(s.upper, 1.0)];
-            if let Some(l) = s.lower {
-                du.push((l, -1.0));
-            }
-            series.combine(&du, &[], c);
+            let du = [(s.upper, 1.0), (s.lower.unwrap_or(s.upper), -1.0)];
+            let terms = if s.lower.is_some() { &du[..] } else { &du[..1] };
+            series.combine(terms, &[], c);
             if poly::magnitude_bound(c, end) > env.drift[k] {
                 raise(&mut env.drift[k], poly::max_abs(c, end));
             }
