@@ -205,8 +205,9 @@ fn bad_input_exits_2_with_one_line() {
 }
 
 /// Every cycloidal pulse of SPEC §9 runs on a row; the type B pulse says
-/// that the floors start moving against the ground; a pulse option that
-/// makes no sense for a row is one line and exit 2.
+/// that the floors start moving against the ground; an option that makes no
+/// sense for the row's motion (cycles of a pulse, the amplitude or period
+/// of a record, a pulse the pair does not have) is one line and exit 2.
 #[test]
 fn rows_take_every_pulse() {
     for pulse in ["pulse-a", "pulse-b", "pulse-c1", "pulse-c2"] {
@@ -254,6 +255,14 @@ fn rows_take_every_pulse() {
         (
             vec!["--excitation", "pulse-c1", "--amplitude=-1g"],
             vec!["--amplitude `-1g`", "> 0"],
+        ),
+        (
+            vec!["--excitation", "synthetic:200", "--amplitude", "0.3g"],
+            vec!["--amplitude `0.3g`", "own units", "--scale"],
+        ),
+        (
+            vec!["--excitation", "record:presets/synthetic.at2", "--period", "2"],
+            vec!["--period `2`", "sine or a pulse"],
         ),
     ] {
         let mut args = row.to_vec();

@@ -51,6 +51,27 @@ impl BuildingsArgs {
         load_with(name, &sets).map_err(|e| CliError::Usage(e.to_string()))
     }
 
+    /// The first of `--amplitude` and `--period` given, as (key, value):
+    /// the shape of a sine or a pulse.
+    fn shape(&self) -> Option<(&'static str, String)> {
+        match (&self.amplitude, self.period) {
+            (Some(a), _) => Some(("--amplitude", a.clone())),
+            (None, Some(p)) => Some(("--period", p.to_string())),
+            (None, None) => None,
+        }
+    }
+
+    /// `synthetic:N` or `record:PATH`, scaled by `scale`.
+    fn record(&self, spec: &str, scale: f64) -> Result<Ground, CliError> {
+        let record = match spec.strip_prefix("record:") {
+            Some(path) => {
+                crate::model::record::read(path).map_err(|e| CliError::Usage(e.to_string()))?
+            }
+            None => synthetic(spec)?,
+        };
+        Ok(Ground::from_record(&record, scale))
+    }
+
     /// The ground motion and its name, and the run's length.
     pub fn ground(
         &self,
@@ -100,11 +121,13 @@ impl BuildingsArgs {
                     cycles.unwrap_or_default()
                 )));
             }
-            spec if spec.starts_with("synthetic:") => Ground::from_record(&synthetic(spec)?, scale),
-            spec if spec.starts_with("record:") => {
-                let record = crate::model::record::read(&spec["record:".len()..])
-                    .map_err(|e| CliError::Usage(e.to_string()))?;
-                Ground::from_record(&record, scale)
+            spec if spec.starts_with("synthetic:") || spec.starts_with("record:") => {
+                if let Some((key, value)) = self.shape() {
+                    return Err(CliError::Usage(format!(
+                        "{key} `{value}`: a record on a row is used in its own units; only a sine or a pulse takes --amplitude and --period (scale a record with --scale)"
+                    )));
+                }
+                self.record(spec, scale)?
             }
             other => match Excitation::parse(other) {
                 Ok(Excitation::Pulse(pulse)) => Ground::from_pulse(pulse, amplitude, omega),
