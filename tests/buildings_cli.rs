@@ -261,7 +261,12 @@ fn rows_take_every_pulse() {
             vec!["--amplitude `0.3g`", "own units", "--scale"],
         ),
         (
-            vec!["--excitation", "record:presets/synthetic.at2", "--period", "2"],
+            vec![
+                "--excitation",
+                "record:presets/synthetic.at2",
+                "--period",
+                "2",
+            ],
             vec!["--period `2`", "sine or a pulse"],
         ),
     ] {

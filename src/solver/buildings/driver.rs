@@ -151,6 +151,10 @@ struct Run<'a> {
     counts_before: (usize, usize),
     series_steps: usize,
     configurations: HashSet<Vec<u8>>,
+    /// The branches of the current sub-step ([`Config::key_into`]), and the
+    /// last ones put into `configurations`.
+    key: Vec<u8>,
+    seen: Option<Vec<u8>>,
     buf: Vec<f64>,
     buf2: Vec<f64>,
     /// The quantities of the quiet test ([`watched`]).
@@ -233,6 +237,8 @@ pub fn run_row_cached(
         counts_before,
         series_steps: 0,
         configurations: HashSet::new(),
+        key: Vec::new(),
+        seen: None,
         buf: Vec::new(),
         buf2: Vec::new(),
         watch,
@@ -290,10 +296,13 @@ impl Run<'_> {
         let n = self.layout.dofs;
         let (a0, r0) = ground_at(piece, self.t);
         let (a1, r1) = ground_at(piece, self.t + h);
-        let key = self.config.key();
-        self.configurations.insert(key.clone());
+        self.config.key_into(&mut self.key);
+        if self.seen.as_deref() != Some(&self.key[..]) {
+            self.configurations.insert(self.key.clone());
+            self.seen = Some(self.key.clone());
+        }
         let (map, bounds) = self.propagator.map(
-            key,
+            &self.key,
             &self.system,
             (h, piece.sigma),
             self.layout.rate,
