@@ -204,6 +204,78 @@ fn bad_input_exits_2_with_one_line() {
     }
 }
 
+/// Every cycloidal pulse of SPEC §9 runs on a row; the type B pulse says
+/// that the floors start moving against the ground; an option that makes no
+/// sense for the row's motion (cycles of a pulse, the amplitude or period
+/// of a record, a pulse the pair does not have) is one line and exit 2.
+#[test]
+fn rows_take_every_pulse() {
+    for pulse in ["pulse-a", "pulse-b", "pulse-c1", "pulse-c2"] {
+        let v = json(&[
+            "run",
+            "--buildings",
+            "block-and-frame",
+            "--excitation",
+            pulse,
+            "--amplitude",
+            "0.5g",
+            "--format",
+            "json",
+        ]);
+        assert_eq!(v["excitation"], pulse);
+        assert!(v["impacts"].as_u64().unwrap() > 0, "{pulse}");
+        assert!(v["energy"]["residual"].as_f64().unwrap() < 1e-9, "{pulse}");
+        let note = v.get("excitation_note").and_then(|n| n.as_str());
+        if pulse == "pulse-b" {
+            // V_p = a_p/ω_p = 0.5 g/(2π/1 s).
+            let vp = 0.5 * 9.80665 / (2.0 * std::f64::consts::PI);
+            assert!(note.unwrap().contains(&format!("{vp:.6}")), "{note:?}");
+            let top = v["buildings"][1]["floors"][7]["peak_velocity"]
+                .as_f64()
+                .unwrap();
+            assert!(top >= vp * (1.0 - 1e-12), "{top} < {vp}");
+        } else {
+            assert!(note.is_none(), "{pulse}: {note:?}");
+        }
+    }
+    let row = ["run", "--buildings", "block-and-frame"];
+    for (extra, fragments) in [
+        (
+            vec!["--excitation", "pulse-b", "--cycles", "3"],
+            vec!["--cycles `3`", "only a sine", "pulse-b", "--tail"],
+        ),
+        (
+            vec!["--excitation", "pulse-c3"],
+            vec!["`pulse-c3`", "pulse-c1, pulse-c2"],
+        ),
+        (
+            vec!["--excitation", "pulse-b", "--period", "0"],
+            vec!["--period 0", "> 0"],
+        ),
+        (
+            vec!["--excitation", "pulse-c1", "--amplitude=-1g"],
+            vec!["--amplitude `-1g`", "> 0"],
+        ),
+        (
+            vec!["--excitation", "synthetic:200", "--amplitude", "0.3g"],
+            vec!["--amplitude `0.3g`", "own units", "--scale"],
+        ),
+        (
+            vec![
+                "--excitation",
+                "record:presets/synthetic.at2",
+                "--period",
+                "2",
+            ],
+            vec!["--period `2`", "sine or a pulse"],
+        ),
+    ] {
+        let mut args = row.to_vec();
+        args.extend(extra);
+        fails(&args, 2, &fragments);
+    }
+}
+
 #[test]
 fn gap_lists_each_joint_beside_the_code_rules() {
     let v = json(&[

@@ -18,11 +18,7 @@ fn one_storey_rows_give_the_pairs_minimum_gap() {
     let le = ap / (omega_p * omega_p);
     let want = minimum_gap(&p).exact * le;
     let row = buildings::load("two-buildings").unwrap();
-    let ground = Ground::Sine {
-        amplitude: ap,
-        omega: omega_p,
-        end: 8.0,
-    };
+    let ground = Ground::sine(ap, omega_p, 8.0);
     let got = row_gap(&row, &ground, 8.0, "sine").unwrap().joints[0].min_gap;
     assert!((got - want).abs() < 1e-10, "{got} {want}");
 }

@@ -59,10 +59,6 @@ fn a_graze_under_a_record_is_found() {
 
 #[test]
 fn a_graze_under_a_sine_is_found() {
-    let ground = Ground::Sine {
-        amplitude: 3.0,
-        omega: 2.0 * std::f64::consts::PI / 0.8,
-        end: 4.0,
-    };
+    let ground = Ground::sine(3.0, 2.0 * std::f64::consts::PI / 0.8, 4.0);
     graze_is_found("three-in-series", &ground, 6.0);
 }

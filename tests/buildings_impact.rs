@@ -19,11 +19,7 @@ fn row(e: f64, storeys_right: usize) -> String {
 fn an_isolated_impact_returns_e() {
     for e in [0.3, 0.5, 0.8] {
         let row = parse("impact.toml", &row(e, 3)).unwrap();
-        let ground = Ground::Sine {
-            amplitude: 2.0,
-            omega: 2.0 * std::f64::consts::PI,
-            end: 1.0,
-        };
+        let ground = Ground::sine(2.0, 2.0 * std::f64::consts::PI, 1.0);
         let r = run_row(&row, &ground, &RowOptions::lasting(1.5)).unwrap();
         let first = r.pairs[0].impacts[0];
         let achieved = first.separation_velocity / first.approach_velocity;

@@ -6,8 +6,8 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use crate::model::buildings::Row;
 use crate::model::buildings::matrices::periods;
+use crate::model::buildings::{Ground, Row};
 use crate::model::record::STANDARD_GRAVITY;
 use crate::output::Num;
 use crate::output::report::{Report, float_or_inf};
@@ -103,10 +103,20 @@ pub struct RowReport {
     /// Set when no floors pair up: the row runs, but nothing can pound.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// What the motion imposes beyond its name ([`Ground::note`]): the type
+    /// B pulse's initial velocity of every floor.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub excitation_note: Option<String>,
 }
 
 impl RowReport {
-    pub fn new(row: &Row, run: &RowRun, excitation: &str, method: &str, elapsed_ms: f64) -> Self {
+    pub fn new(
+        row: &Row,
+        run: &RowRun,
+        (ground, excitation): (&Ground, &str),
+        method: &str,
+        elapsed_ms: f64,
+    ) -> Self {
         let buildings = row
             .buildings
             .iter()
@@ -165,6 +175,7 @@ impl RowReport {
             },
             energy: run.energy.as_ref().map(EnergyReport::of),
             note,
+            excitation_note: ground.note(),
         }
     }
 }
@@ -177,6 +188,9 @@ impl Report for RowReport {
             "{}: {} excitation, {} contact, {} method, {:.3} s",
             self.row, self.excitation, self.model, self.method, self.duration
         );
+        if let Some(note) = &self.excitation_note {
+            let _ = writeln!(s, "{}: {note}", self.excitation);
+        }
         for b in &self.buildings {
             let t: Vec<String> = b
                 .periods

@@ -14,6 +14,7 @@ use crate::analysis::row_report::RowReport;
 use crate::analysis::work;
 use crate::model::buildings::matrices::default_tail;
 use crate::model::buildings::{Ground, Row, load_with};
+use crate::model::excitation::Excitation;
 use crate::model::physical::parse_acceleration;
 use crate::solver::buildings::{RowError, RowOptions, default_step, run_newmark, run_row};
 
@@ -48,6 +49,27 @@ impl BuildingsArgs {
             sets.push(format!("model=\"{m}\""));
         }
         load_with(name, &sets).map_err(|e| CliError::Usage(e.to_string()))
+    }
+
+    /// The first of `--amplitude` and `--period` given, as (key, value):
+    /// the shape of a sine or a pulse.
+    fn shape(&self) -> Option<(&'static str, String)> {
+        match (&self.amplitude, self.period) {
+            (Some(a), _) => Some(("--amplitude", a.clone())),
+            (None, Some(p)) => Some(("--period", p.to_string())),
+            (None, None) => None,
+        }
+    }
+
+    /// `synthetic:N` or `record:PATH`, scaled by `scale`.
+    fn record(&self, spec: &str, scale: f64) -> Result<Ground, CliError> {
+        let record = match spec.strip_prefix("record:") {
+            Some(path) => {
+                crate::model::record::read(path).map_err(|e| CliError::Usage(e.to_string()))?
+            }
+            None => synthetic(spec)?,
+        };
+        Ok(Ground::from_record(&record, scale))
     }
 
     /// The ground motion and its name, and the run's length.
@@ -91,28 +113,30 @@ impl BuildingsArgs {
                             CliError::Usage(format!("--cycles `{c}`: must be a finite number > 0"))
                         })?,
                 };
-                Ground::Sine {
-                    amplitude,
-                    omega,
-                    end: cycles * period,
-                }
+                Ground::sine(amplitude, omega, cycles * period)
             }
-            "pulse-a" => Ground::Sine {
-                amplitude,
-                omega,
-                end: period,
-            },
-            spec if spec.starts_with("synthetic:") => Ground::from_record(&synthetic(spec)?, scale),
-            spec if spec.starts_with("record:") => {
-                let record = crate::model::record::read(&spec["record:".len()..])
-                    .map_err(|e| CliError::Usage(e.to_string()))?;
-                Ground::from_record(&record, scale)
-            }
-            other => {
+            _ if cycles.is_some() => {
                 return Err(CliError::Usage(format!(
-                    "--excitation `{other}`: rows take sine, pulse-a or record:PATH"
+                    "--cycles `{}`: only a sine on a row takes cycles; a row under {name} runs for the motion and then --tail seconds",
+                    cycles.unwrap_or_default()
                 )));
             }
+            spec if spec.starts_with("synthetic:") || spec.starts_with("record:") => {
+                if let Some((key, value)) = self.shape() {
+                    return Err(CliError::Usage(format!(
+                        "{key} `{value}`: a record on a row is used in its own units; only a sine or a pulse takes --amplitude and --period (scale a record with --scale)"
+                    )));
+                }
+                self.record(spec, scale)?
+            }
+            other => match Excitation::parse(other) {
+                Ok(Excitation::Pulse(pulse)) => Ground::from_pulse(pulse, amplitude, omega),
+                _ => {
+                    return Err(CliError::Usage(format!(
+                        "--excitation `{other}`: rows take sine, pulse-a, pulse-b, pulse-c1, pulse-c2, synthetic:N or record:PATH"
+                    )));
+                }
+            },
         };
         let tail = self.tail.unwrap_or_else(|| default_tail(row));
         if !(tail >= 0.0 && tail.is_finite()) {
@@ -235,7 +259,7 @@ pub fn run(
             .map_err(|e| CliError::Failed(e.to_string()))?
             .energy;
     }
-    let report = RowReport::new(&row, &result, &name, method, median(times));
+    let report = RowReport::new(&row, &result, (&ground, &name), method, median(times));
     emit(&report)
 }
 
@@ -285,7 +309,11 @@ pub fn figure(
     bounded("figure buildings", seconds, allow_long)?;
     let apart = row.apart();
     let failed = |e: crate::solver::buildings::RowError| CliError::Failed(e.to_string());
-    let with = run_row(&row, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
+    let traced = RowOptions {
+        forces: true,
+        ..RowOptions::lasting(duration)
+    };
+    let with = run_row(&row, &ground, &traced).map_err(failed)?;
     let without = run_row(&apart, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
     let caption = format!(
         "{} excitation, {} contact, exact method, {:.3} s; dashed: without pounding",

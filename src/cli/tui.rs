@@ -35,7 +35,7 @@ pub struct TuiArgs {
     /// a path to a row preset.
     #[arg(long, value_name = "NAME|PATH")]
     pub buildings: Option<String>,
-    /// The row's ground: synthetic:N, record:PATH, sine or pulse-a [default: synthetic:2000].
+    /// The row's ground: synthetic:N, record:PATH, sine, pulse-a, pulse-b, pulse-c1 or pulse-c2 [default: synthetic:2000].
     #[arg(long, value_name = "GROUND")]
     pub excitation: Option<String>,
     /// Scale factor on the row's ground.

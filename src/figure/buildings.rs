@@ -1,16 +1,18 @@
 //! The figure of a row of buildings (SPEC §13): envelopes over height of
 //! peak floor displacement, storey drift ratio and floor acceleration, with
 //! pounding (solid) and without it (dashed), one colour per building; and
-//! the peak force of every impact at its onset time, one colour per floor
-//! pair.
+//! the contact force of each floor pair that pounds over time, one colour
+//! per pair, from the exact method's force history
+//! ([`crate::solver::buildings::ForceHistory`]).
 
 use crate::model::buildings::Row;
 use crate::model::record::STANDARD_GRAVITY;
 use crate::solver::buildings::RowRun;
 
-use super::spec::{Figure, Panel, Pen, Series, Stroke};
+use super::spec::{Figure, Panel, Series, Stroke};
 
-/// The figure from a run with contact and one without.
+/// The figure from a run with contact (its force history asked for:
+/// [`crate::solver::buildings::RowOptions::forces`]) and one without.
 pub fn row_figure(row: &Row, with: &RowRun, without: &RowRun, caption: &str) -> Figure {
     let titles = [
         ("peak floor displacement", "u (mm)"),
@@ -47,31 +49,33 @@ pub fn row_figure(row: &Row, with: &RowRun, without: &RowRun, caption: &str) -> 
             }
         }
     }
-    let mut forces = Panel::new(3, "impact forces", "t (s)", "peak force (kN)");
+    let mut forces = Panel::new(3, "impact forces", "t (s)", "force (kN)");
+    let history = with.forces.as_ref();
     for (k, (p, r)) in row.pairs().iter().zip(&with.pairs).enumerate() {
+        let Some(points) = history.map(|h| &h.pairs[k]) else {
+            continue;
+        };
         if r.impacts.is_empty() {
             continue;
         }
-        let points = r
-            .impacts
-            .iter()
-            .map(|i| (i.start, i.max_force / 1e3))
-            .collect();
-        forces.series.push(
-            Series::new(
-                format!(
-                    "{} {} – {} {}",
-                    row.buildings[p.left].name,
-                    p.left_floor,
-                    row.buildings[p.right].name,
-                    p.right_floor
-                ),
-                row.buildings.len() + k,
-                Stroke::Solid,
-                points,
-            )
-            .with_pen(Pen::Markers),
-        );
+        // At rest before the first impact and after the last.
+        let mut line = vec![(0.0, 0.0)];
+        line.extend(points.iter().map(|&(t, f)| (t, f / 1e3)));
+        if r.impacts.last().is_some_and(|i| !i.end.is_nan()) {
+            line.push((with.duration, 0.0));
+        }
+        forces.series.push(Series::new(
+            format!(
+                "{} {} – {} {}",
+                row.buildings[p.left].name,
+                p.left_floor,
+                row.buildings[p.right].name,
+                p.right_floor
+            ),
+            row.buildings.len() + k,
+            Stroke::Solid,
+            line,
+        ));
     }
     panels.push(forces);
     Figure {

@@ -51,9 +51,18 @@ impl Pulse {
         }
     }
 
+    /// The ground's velocity u̇_g ω_p/a_p at τ = 0: 1 for type B (u̇_g =
+    /// V_p cos ω_p t, a_p = ω_p V_p), 0 for A and Cn, which start from rest.
+    pub fn ground_velocity(self) -> f64 {
+        match self {
+            Pulse::B => 1.0,
+            Pulse::A | Pulse::C { .. } => 0.0,
+        }
+    }
+
     /// The pulse's sinusoid g = A sin(τ + θ) written as (amplitude, phase θ):
     /// A: (1, 0); B: (−1, 0); Cn: cos(τ + φ) = sin(τ + φ + π/2).
-    fn sinusoid(self) -> (f64, f64) {
+    pub fn sinusoid(self) -> (f64, f64) {
         match self {
             Pulse::A => (1.0, 0.0),
             Pulse::B => (-1.0, 0.0),
@@ -264,7 +273,7 @@ impl Excitation {
     /// type B pulse, whose ground starts with velocity V_p (SPEC §9); else 0.
     pub fn initial_velocity(&self) -> [f64; 2] {
         match self {
-            Excitation::Pulse(Pulse::B) => [-1.0; 2],
+            Excitation::Pulse(p) if p.ground_velocity() != 0.0 => [-p.ground_velocity(); 2],
             _ => [0.0; 2],
         }
     }

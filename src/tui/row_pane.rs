@@ -257,11 +257,7 @@ mod tests {
     use super::*;
 
     fn pane() -> RowPane {
-        let ground = Ground::Sine {
-            amplitude: 3.0,
-            omega: 6.0,
-            end: 5.0,
-        };
+        let ground = Ground::sine(3.0, 6.0, 5.0);
         RowPane::open("block-and-frame", Arc::new(ground), "sine", None).unwrap()
     }
 

@@ -2,20 +2,38 @@
 //!
 //! Each piece of the motion is the solution of ä = σ a on its interval: a
 //! record's sample interval is a straight line (σ = 0, a and ȧ from its two
-//! samples), a sine is one piece with σ = −ω². After the motion's end ü_g = 0.
-//! The methods carry (a, ȧ) beside the state, so that they stay exact on
-//! each piece.
+//! samples), a sine or a cycloidal pulse is one piece with σ = −ω². After the
+//! motion's end ü_g = 0. The methods carry (a, ȧ) beside the state, so that
+//! they stay exact on each piece.
+//!
+//! The cycloidal pulses of SPEC §9 are sines with a phase and an end, and the
+//! type B pulse's ground starts moving:
+//!
+//! ```text
+//! A:  ü_g =  a_p sin(ω_p t)       on [0, T_p],                 u̇_g(0) = 0,
+//! B:  ü_g = −a_p sin(ω_p t)       on [0, T_p],                 u̇_g(0) = V_p = a_p/ω_p,
+//! Cn: ü_g =  a_p cos(ω_p t + φ)   on [0, (n + ½ − φ/π) T_p],   u̇_g(0) = 0,
+//! ```
+//!
+//! so that in relative coordinates every floor starts with u̇_i(0) = −u̇_g(0).
 
+use crate::model::excitation::Pulse;
 use crate::model::record::Record;
 
 /// A ground motion in physical units.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Ground {
-    /// ü_g = A sin(ωt) on [0, end], 0 after.
+    /// ü_g = A sin(ωt + θ) on [0, end], 0 after; the ground starts with
+    /// velocity u̇_g(0) = `velocity` (m/s), the floors with −`velocity`
+    /// relative to it.
     Sine {
         amplitude: f64,
         omega: f64,
+        /// θ (rad).
+        phase: f64,
         end: f64,
+        /// u̇_g(0) (m/s).
+        velocity: f64,
     },
     /// A record: ü_g linear between samples a_k at t = k·dt, 0 after the last.
     Samples { dt: f64, acceleration: Vec<f64> },
@@ -36,6 +54,51 @@ pub struct Piece {
 }
 
 impl Ground {
+    /// ü_g = A sin(ωt) on [0, end], from rest.
+    pub fn sine(amplitude: f64, omega: f64, end: f64) -> Ground {
+        Ground::Sine {
+            amplitude,
+            omega,
+            phase: 0.0,
+            end,
+            velocity: 0.0,
+        }
+    }
+
+    /// The cycloidal pulse of SPEC §9 with a_p = `amplitude` (m/s²) and
+    /// ω_p = `omega` (rad/s): its sinusoid, its end and its ground's
+    /// initial velocity, each as [`Pulse`] gives it in Π form.
+    pub fn from_pulse(pulse: Pulse, amplitude: f64, omega: f64) -> Ground {
+        let (scale, phase) = pulse.sinusoid();
+        Ground::Sine {
+            amplitude: scale * amplitude,
+            omega,
+            phase,
+            end: pulse.end() / omega,
+            velocity: pulse.ground_velocity() * amplitude / omega,
+        }
+    }
+
+    /// u̇_g(0) (m/s): every floor starts with u̇_i(0) = −u̇_g(0).
+    pub fn initial_velocity(&self) -> f64 {
+        match self {
+            Ground::Sine { velocity, .. } => *velocity,
+            Ground::Samples { .. } => 0.0,
+        }
+    }
+
+    /// What a run's output says about the motion beyond its name: that the
+    /// floors start moving relative to the ground (SPEC §9, type B pulse).
+    pub fn note(&self) -> Option<String> {
+        let v = self.initial_velocity();
+        (v != 0.0).then(|| {
+            format!(
+                "the ground starts with velocity V_p = {v:.6} m/s: every floor starts with u̇(0) = {:.6} m/s",
+                -v
+            )
+        })
+    }
+
     pub fn from_record(record: &Record, scale: f64) -> Ground {
         Ground::Samples {
             dt: record.dt,
@@ -57,10 +120,12 @@ impl Ground {
             Ground::Sine {
                 amplitude,
                 omega,
+                phase,
                 end,
+                ..
             } => {
                 if t <= *end {
-                    amplitude * (omega * t).sin()
+                    amplitude * (omega * t + phase).sin()
                 } else {
                     0.0
                 }
@@ -87,11 +152,15 @@ impl Ground {
             Ground::Sine {
                 amplitude,
                 omega,
+                phase,
                 end,
+                velocity,
             } => Ground::Sine {
                 amplitude: -amplitude,
                 omega: *omega,
+                phase: *phase,
                 end: *end,
+                velocity: -velocity,
             },
             Ground::Samples { dt, acceleration } => Ground::Samples {
                 dt: *dt,
@@ -106,15 +175,19 @@ impl Ground {
         let end = self.end().min(until);
         match self {
             Ground::Sine {
-                amplitude, omega, ..
+                amplitude,
+                omega,
+                phase,
+                ..
             } => {
                 if end > 0.0 {
+                    let (sin, cos) = phase.sin_cos();
                     out.push(Piece {
                         t0: 0.0,
                         t1: end,
                         length: end,
-                        a: 0.0,
-                        rate: amplitude * omega,
+                        a: amplitude * sin,
+                        rate: amplitude * omega * cos,
                         sigma: -omega * omega,
                     });
                 }

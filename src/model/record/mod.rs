@@ -332,13 +332,25 @@ fn amplitudes(a: &[f64], group: &[usize], n: usize) -> [f64; LANES] {
 static REGISTRY: Mutex<Vec<&'static Record>> = Mutex::new(Vec::new());
 
 /// The record at `path`, read on first use and shared afterwards.
+///
+/// The file is read with the registry unlocked: reading runs on rayon's
+/// pool (the dominant frequency's transform), whose workers may be waiting
+/// for this lock in [`intern`] on another thread's behalf, so a read under
+/// the lock could wait for them for ever. Two threads reading the same path
+/// at once both read it, and the first to register it is kept.
 pub fn load(path: &str) -> Result<&'static Record, RecordError> {
-    let mut registry = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
     let spec = format!("record:{path}");
-    if let Some(r) = registry.iter().find(|r| r.spec == spec) {
+    let registered =
+        |registry: &Vec<&'static Record>| registry.iter().find(|r| r.spec == spec).copied();
+    if let Some(r) = registered(&REGISTRY.lock().unwrap_or_else(|e| e.into_inner())) {
         return Ok(r);
     }
-    let record: &'static Record = Box::leak(Box::new(read(path)?));
+    let record = read(path)?;
+    let mut registry = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(r) = registered(&registry) {
+        return Ok(r);
+    }
+    let record: &'static Record = Box::leak(Box::new(record));
     registry.push(record);
     Ok(record)
 }

@@ -4,8 +4,12 @@
 //! (yield, unloading, contact onset, separation) is checked at its end; if
 //! one turned positive, its first instant is found by bisection, each trial
 //! a step retaken from the step's start, and the step is retaken to it.
-//! Peaks of |u|, |u̇| and |Δ| inside a step are found the same way, where
-//! the quantity's rate changes sign.
+//! Peaks of |u|, |u̇|, |Δ| and of the floors' absolute accelerations
+//! |ü + ü_g| = |F/m| inside a step are found the same way, where the
+//! quantity's rate changes sign (for the acceleration, its rate
+//! [`Motion::jerk`]); the acceleration is also taken at both ends of every
+//! step in the mode of the step, so that a force that jumps where a mode
+//! switches (Kelvin's damping term at contact onset) counts on both sides.
 
 use crate::model::buildings::contact::pair_law;
 use crate::model::buildings::{Ground, Row};
@@ -20,6 +24,8 @@ pub struct RowReference {
     pub displacement: Vec<Vec<f64>>,
     pub velocity: Vec<Vec<f64>>,
     pub drift: Vec<Vec<f64>>,
+    /// Per building, per floor: max |ü + ü_g| (m/s²).
+    pub absolute_acceleration: Vec<Vec<f64>>,
     /// Impacts per floor pair (the row's pairs in order).
     pub impacts: Vec<usize>,
     /// Accepted steps.
@@ -39,10 +45,16 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
         plastic: vec![0.0; motion.storeys.len()],
         laws: vec![None; motion.pairs.len()],
     };
+    // u = 0, and u̇ = −u̇_g(0): the floors stand still while the ground,
+    // under a type B pulse, starts moving (SPEC §9).
     let mut y = vec![0.0; 2 * n];
+    for v in &mut y[n..] {
+        *v = -ground.initial_velocity();
+    }
     let mut peak_u = vec![0.0f64; n];
-    let mut peak_v = vec![0.0f64; n];
+    let mut peak_v: Vec<f64> = y[n..].iter().map(|v| v.abs()).collect();
     let mut peak_d = vec![0.0f64; motion.storeys.len()];
+    let mut peak_a = vec![0.0f64; n];
     let mut impacts = vec![0; motion.pairs.len()];
     let mut steps = 0;
     let mut h: f64 = 1e-4;
@@ -127,6 +139,16 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
                 let a_i = |_: &[f64], ff: &[f64]| ff[n + i];
                 peak_v[i] = peak_v[i].max(y_end[n + i].abs()).max(locate(&a_i, &w_i));
             }
+            let (start, stop) = (motion.forces(&mode, &y), motion.forces(&mode, &y_end));
+            for i in 0..n {
+                let m = motion.mass[i];
+                let a_i = |yy: &[f64]| motion.forces(&mode, yy)[i] / m;
+                let j_i = |yy: &[f64], ff: &[f64]| motion.jerk(&mode, i, yy, ff);
+                peak_a[i] = peak_a[i]
+                    .max((start[i] / m).abs())
+                    .max((stop[i] / m).abs())
+                    .max(locate(&j_i, &a_i));
+            }
             for (k, s) in motion.storeys.iter().enumerate() {
                 let d = |yy: &[f64]| motion.drift(s, &yy[..n]);
                 let r = |yy: &[f64], _: &[f64]| motion.drift(s, &yy[n..]);
@@ -185,6 +207,7 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
         displacement: split(&peak_u),
         velocity: split(&peak_v),
         drift: split(&peak_d),
+        absolute_acceleration: split(&peak_a),
         impacts,
         steps,
     }

@@ -83,8 +83,10 @@ impl<'a> Motion<'a> {
         }
     }
 
-    /// ẏ = f(t, y) in `mode`.
-    pub fn rhs(&self, mode: &Mode, t: f64, y: &[f64], out: &mut [f64]) {
+    /// The floors' forces F = −C u̇ − (V_i − V_{i+1}) ∓ Σ f_p in `mode`, so
+    /// that m_i ü_i = F_i − m_i ü_g and F_i/m_i = ü_i + ü_g is floor i's
+    /// absolute acceleration (SPEC §13).
+    pub fn forces(&self, mode: &Mode, y: &[f64]) -> Vec<f64> {
         let n = self.n;
         let (u, v) = y.split_at(n);
         let mut force: Vec<f64> = (0..n)
@@ -111,10 +113,62 @@ impl<'a> Motion<'a> {
                 force[b] += f;
             }
         }
+        force
+    }
+
+    /// ẏ = f(t, y) in `mode`.
+    pub fn rhs(&self, mode: &Mode, t: f64, y: &[f64], out: &mut [f64]) {
+        let n = self.n;
+        let force = self.forces(mode, y);
         let ag = self.ground.at(t);
-        out[..n].copy_from_slice(v);
+        out[..n].copy_from_slice(&y[n..]);
         for i in 0..n {
             out[n + i] = force[i] / self.mass[i] - ag;
         }
+    }
+
+    /// d/dt (F_i/m_i), the rate of floor i's absolute acceleration, at y with
+    /// ẏ = f(t, y): each term of [`Motion::forces`] differentiated along the
+    /// motion,
+    ///
+    /// ```text
+    /// dF/dt = −C ü − Σ k_t,j Δ̇_j (storeys) ∓ Σ (∂f/∂δ δ̇ + ∂f/∂δ̇ δ̈) (pairs),
+    /// ```
+    ///
+    /// with k_t = k on the elastic branch and αk while yielding (SPEC §3).
+    pub fn jerk(&self, mode: &Mode, i: usize, y: &[f64], rate: &[f64]) -> f64 {
+        let n = self.n;
+        let (u, v) = y.split_at(n);
+        let acc = &rate[n..];
+        let mut d = -(0..n).map(|j| self.damping[(i, j)] * acc[j]).sum::<f64>();
+        for (k, s) in self.storeys.iter().enumerate() {
+            let sign = if s.upper == i {
+                -1.0
+            } else if s.lower == Some(i) {
+                1.0
+            } else {
+                continue;
+            };
+            let tangent = if mode.branch[k] == 0 {
+                s.k
+            } else {
+                s.alpha * s.k
+            };
+            d += sign * tangent * self.drift(s, v);
+        }
+        for ((p, law), &gap) in self.pairs.iter().zip(&mode.laws).zip(&self.gaps) {
+            let Some(law) = law else { continue };
+            let (a, b) = (p.left_dof, p.right_dof);
+            let sign = if a == i {
+                -1.0
+            } else if b == i {
+                1.0
+            } else {
+                continue;
+            };
+            let c = law.force(u[a] - u[b] - gap, v[a] - v[b]);
+            d += sign * (c.d_penetration * (v[a] - v[b]) + c.d_rate * (acc[a] - acc[b]));
+        }
+        d / self.mass[i]
     }
 }

@@ -43,9 +43,11 @@ impl Config {
         self.contact.iter().any(Option::is_some)
     }
 
-    /// The branches as bytes: the cache key out of contact.
-    pub fn key(&self) -> Vec<u8> {
-        self.branch.iter().map(|b| *b as u8).collect()
+    /// The branches as bytes, the cache key out of contact, written into
+    /// `key` (its allocation reused from sub-step to sub-step).
+    pub fn key_into(&self, key: &mut Vec<u8>) {
+        key.clear();
+        key.extend(self.branch.iter().map(|b| *b as u8));
     }
 
     /// z of storey `i` at drift Δ (SPEC §3).

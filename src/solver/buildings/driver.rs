@@ -37,7 +37,7 @@ use super::layout::Layout;
 use super::peaks::{Envelope, raise};
 use super::poly;
 use super::propagator::{Propagator, apply};
-use super::result::{FloorPeaks, PairImpact, PairResult, RowRun, RowTrace};
+use super::result::{FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
 use super::taylor::{ORDER, Series};
 
@@ -54,6 +54,9 @@ pub struct RowOptions {
     /// Keep every floor's displacement at the end of every sub-step
     /// ([`super::result::RowTrace`]), for drawing the row in time.
     pub trace: bool,
+    /// Keep every floor pair's contact force over time
+    /// ([`super::result::ForceHistory`]), for drawing the impacts.
+    pub forces: bool,
 }
 
 impl RowOptions {
@@ -64,6 +67,7 @@ impl RowOptions {
             max_substep: None,
             energy: false,
             trace: false,
+            forces: false,
         }
     }
 }
@@ -147,6 +151,10 @@ struct Run<'a> {
     counts_before: (usize, usize),
     series_steps: usize,
     configurations: HashSet<Vec<u8>>,
+    /// The branches of the current sub-step ([`Config::key_into`]), and the
+    /// last ones put into `configurations`.
+    key: Vec<u8>,
+    seen: Option<Vec<u8>>,
     buf: Vec<f64>,
     buf2: Vec<f64>,
     /// The quantities of the quiet test ([`watched`]).
@@ -157,6 +165,8 @@ struct Run<'a> {
     energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
     /// Suggested length of the next Runge–Kutta step in contact (0: none yet).
     next_contact_step: f64,
+    /// The pairs' forces over time, when asked for.
+    forces: Option<ForceHistory>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -202,6 +212,17 @@ pub fn run_row_cached(
     let system = System::of(&layout, &config);
     let h_max = options.max_substep.unwrap_or(1.0 / layout.rate);
     let watch = watched(&layout);
+    // Every floor starts at rest on the ground, or against it when the
+    // ground starts moving (SPEC §9, type B pulse): u̇_i(0) = −u̇_g(0).
+    let v0 = vec![-ground.initial_velocity(); n];
+    let n_pairs = layout.pairs.len();
+    let initial_kinetic = 0.5
+        * layout
+            .mass
+            .iter()
+            .zip(&v0)
+            .map(|(m, v)| m * v * v)
+            .sum::<f64>();
     let mut run = Run {
         row,
         envelope: Envelope::new(n, layout.storeys.len(), layout.facing.len()),
@@ -210,22 +231,32 @@ pub fn run_row_cached(
         config,
         system,
         u: vec![0.0; n],
-        v: vec![0.0; n],
+        v: v0,
         t: 0.0,
         propagator,
         counts_before,
         series_steps: 0,
         configurations: HashSet::new(),
+        key: Vec::new(),
+        seen: None,
         buf: Vec::new(),
         buf2: Vec::new(),
         watch,
         stack: None,
         energy: options.energy.then(|| {
             let (x, w) = gauss_legendre(NODES);
-            (RowEnergy::default(), x, w)
+            let start = RowEnergy {
+                initial_kinetic,
+                ..RowEnergy::default()
+            };
+            (start, x, w)
         }),
         next_contact_step: 0.0,
+        forces: options.forces.then(|| ForceHistory {
+            pairs: vec![Vec::new(); n_pairs],
+        }),
     };
+    run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
     for piece in ground.pieces(options.duration) {
         let length = piece.length;
@@ -265,10 +296,13 @@ impl Run<'_> {
         let n = self.layout.dofs;
         let (a0, r0) = ground_at(piece, self.t);
         let (a1, r1) = ground_at(piece, self.t + h);
-        let key = self.config.key();
-        self.configurations.insert(key.clone());
+        self.config.key_into(&mut self.key);
+        if self.seen.as_deref() != Some(&self.key[..]) {
+            self.configurations.insert(self.key.clone());
+            self.seen = Some(self.key.clone());
+        }
         let (map, bounds) = self.propagator.map(
-            key,
+            &self.key,
             &self.system,
             (h, piece.sigma),
             self.layout.rate,
@@ -361,6 +395,15 @@ impl Run<'_> {
         true
     }
 
+    /// Peaks at the start: the floors' initial velocity, and the
+    /// acceleration its damping force gives (0 from rest).
+    fn record_start(&mut self, ground: &Ground) {
+        let a = ground.at(0.0);
+        let mut acc = vec![0.0; self.layout.dofs];
+        self.system.acceleration(&self.u, &self.v, a, &mut acc);
+        self.record_point(&acc, a);
+    }
+
     /// Peaks at the current point, with ü already known.
     fn record_point(&mut self, acc: &[f64], a: f64) {
         let env = &mut self.envelope;
@@ -414,7 +457,7 @@ impl Run<'_> {
                 *step = contact.settle((y0, f0), g, end);
                 end = step.h;
             }
-            self.peaks_on(&series, end);
+            self.peaks_on(&series, end, rk.is_some().then_some(piece));
             if self.energy.is_some() {
                 self.work_on(&series, end);
             }
@@ -433,11 +476,29 @@ impl Run<'_> {
             }
             // The point itself, with ü of the configuration now in force.
             let (a1, _) = ground_at(piece, self.t);
-            let mut acc = vec![0.0; n];
-            self.system.acceleration(&self.u, &self.v, a1, &mut acc);
+            let acc = self.acceleration(piece, self.t, 0.0, (&self.u, &self.v));
             self.record_point(&acc, a1);
         }
         Ok(())
+    }
+
+    /// ü at (u, u̇) at time t + s on `piece` in the configuration in force:
+    /// the linear system's, and the force of every pair closed under a
+    /// Hertz-type law ([`Contact::rate`]), which the system leaves out.
+    fn acceleration(&self, piece: &Piece, t: f64, s: f64, (u, v): (&[f64], &[f64])) -> Vec<f64> {
+        let n = self.layout.dofs;
+        if any_hertzian(&self.config) {
+            let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
+                ground_at(piece, t + s).0
+            });
+            let y: Vec<f64> = u.iter().chain(v).copied().collect();
+            contact.rate(s, &y).split_off(n)
+        } else {
+            let mut acc = vec![0.0; n];
+            self.system
+                .acceleration(u, v, ground_at(piece, t + s).0, &mut acc);
+            acc
+        }
     }
 
     /// One Runge–Kutta step of a Hertz-type contact phase
@@ -532,10 +593,19 @@ impl Run<'_> {
 
     /// Turning points on [0, end] that may raise a peak (Σ|c_k|s^k above it),
     /// and the force and penetration of closed pairs.
-    fn peaks_on(&mut self, series: &Series, end: f64) {
-        let c = &mut self.buf;
-        let env = &mut self.envelope;
-        for i in 0..self.layout.dofs {
+    ///
+    /// On a Runge–Kutta step (`rk`: its ground piece) the quintic through
+    /// both ends carries u and u̇ to the step's order, but its second
+    /// derivative holds the rounding of u magnified by 1/h², which on the
+    /// shortest steps (near an event) swamps ü: there the acceleration's
+    /// largest point is located on the polynomial and its value taken from
+    /// the equation of motion at the interpolated state; the ends are the
+    /// recorded points.
+    fn peaks_on(&mut self, series: &Series, end: f64, rk: Option<&Piece>) {
+        let mut c = std::mem::take(&mut self.buf);
+        let n = self.layout.dofs;
+        for i in 0..n {
+            let env = &mut self.envelope;
             let u = series.displacement(i);
             if poly::magnitude_bound(u, end) > env.displacement[i] {
                 raise(&mut env.displacement[i], poly::max_abs(u, end));
@@ -544,17 +614,28 @@ impl Run<'_> {
             if poly::magnitude_bound(v, end) > env.velocity[i] {
                 raise(&mut env.velocity[i], poly::max_abs(v, end));
             }
-            series.absolute_acceleration(i, c);
-            if poly::magnitude_bound(c, end) > env.acceleration[i] {
-                raise(&mut env.acceleration[i], poly::max_abs(c, end));
+            series.absolute_acceleration(i, &mut c);
+            if poly::magnitude_bound(&c, end) > env.acceleration[i] {
+                let Some(piece) = rk else {
+                    raise(&mut env.acceleration[i], poly::max_abs(&c, end));
+                    continue;
+                };
+                let (at, _) = poly::argmax_abs(&c, end);
+                if at > 0.0 && at < end {
+                    let (mut us, mut vs) = (vec![0.0; n], vec![0.0; n]);
+                    series.state(at, &mut us, &mut vs);
+                    let acc = self.acceleration(piece, self.t, at, (&us, &vs));
+                    let a = acc[i] + ground_at(piece, self.t + at).0;
+                    raise(&mut self.envelope.acceleration[i], a);
+                }
             }
         }
+        let c = &mut c;
+        let env = &mut self.envelope;
         for (k, s) in self.layout.storeys.iter().enumerate() {
-            let mut du = vec![(s.upper, 1.0)];
-            if let Some(l) = s.lower {
-                du.push((l, -1.0));
-            }
-            series.combine(&du, &[], c);
+            let du = [(s.upper, 1.0), (s.lower.unwrap_or(s.upper), -1.0)];
+            let terms = if s.lower.is_some() { &du[..] } else { &du[..1] };
+            series.combine(terms, &[], c);
             if poly::magnitude_bound(c, end) > env.drift[k] {
                 raise(&mut env.drift[k], poly::max_abs(c, end));
             }
@@ -585,12 +666,21 @@ impl Run<'_> {
                     })
                     .collect(),
             };
-            let f = poly::max(&force, end);
+            let (at, f) = poly::argmax(&force, end);
+            if let Some(history) = self.forces.as_mut() {
+                // The step's start, its largest force, its end.
+                history.push(pi, self.t, force[0]);
+                if at > 0.0 && at < end {
+                    history.push(pi, self.t + at, f);
+                }
+                history.push(pi, self.t + end, poly::eval(&force, end));
+            }
             if let Some(last) = self.pairs[pi].impacts.last_mut() {
                 last.max_penetration = last.max_penetration.max(penetration);
                 last.max_force = last.max_force.max(f);
             }
         }
+        self.buf = std::mem::take(c);
     }
 
     /// The work terms of SPEC §6 on [0, end] of a Taylor step, by the
@@ -658,6 +748,9 @@ impl Run<'_> {
                     law: pair_law(self.row, &p, v0),
                     approach_velocity: v0,
                 });
+                if let Some(history) = self.forces.as_mut() {
+                    history.push(pi, self.t, 0.0);
+                }
                 self.pairs[pi].impacts.push(PairImpact {
                     start: self.t,
                     end: f64::NAN,
@@ -671,6 +764,9 @@ impl Run<'_> {
             Event::Separation(pi) => {
                 let p = self.layout.pairs[pi];
                 self.config.contact[pi] = None;
+                if let Some(history) = self.forces.as_mut() {
+                    history.push(pi, self.t, 0.0);
+                }
                 if let Some(last) = self.pairs[pi].impacts.last_mut() {
                     last.end = self.t;
                     last.separation_velocity = -(self.v[p.left_dof] - self.v[p.right_dof]);
@@ -727,6 +823,7 @@ impl Run<'_> {
             series_steps: self.series_steps,
             configurations: self.configurations.len(),
             trace: None,
+            forces: self.forces,
         }
     }
 }

@@ -235,11 +235,16 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         laws: vec![None; layout.pairs.len()],
         layout,
     };
+    // At rest on the ground, or against it when the ground starts moving
+    // (SPEC §9, type B pulse): u̇(0) = −u̇_g(0), ü(0) = −M⁻¹C u̇(0) − ü_g(0).
+    let v0 = DVector::from_element(n, -ground.initial_velocity());
+    let a0 =
+        -(&nm.damping * &v0).component_div(&nm.mass) - DVector::from_element(n, ground.at(0.0));
     let mut p = Point {
         t: 0.0,
         u: DVector::zeros(n),
-        v: DVector::zeros(n),
-        a: DVector::from_element(n, -ground.at(0.0)),
+        v: v0,
+        a: a0,
         springs: vec![SpringState::default(); nm.layout.storeys.len()],
     };
     let mut env = Envelope::new(n, nm.layout.storeys.len(), nm.layout.facing.len());
@@ -267,14 +272,29 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
             }
         }
     };
+    record(&p, &nm, &mut pairs);
+    // The motion's end, where ü_g drops to 0 (a pulse's end jumps), is a
+    // step's end too, so that no step straddles the jump.
+    let motion_end = ground.end();
+    let mut ended = !(motion_end > 0.0 && motion_end < duration);
     for k in 0..steps {
-        let t_end = if k + 1 == steps {
+        let step_end = if k + 1 == steps {
             duration
         } else {
             (k + 1) as f64 * h
         };
+        let mut t_end = step_end;
+        if !ended && motion_end <= step_end {
+            t_end = motion_end;
+        }
         // Split the step at each contact change inside it.
         for _ in 0..1000 {
+            if !ended && p.t >= motion_end {
+                // ü = M⁻¹F − ü_g: the same forces, without the ground.
+                p.a.add_scalar_mut(ground.at(motion_end));
+                ended = true;
+                t_end = step_end;
+            }
             let dt = t_end - p.t;
             if dt <= 1e-15 * t_end.max(1.0) {
                 break;
@@ -284,7 +304,9 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
                 None => {
                     p = q;
                     record(&p, &nm, &mut pairs);
-                    break;
+                    if t_end == step_end {
+                        break;
+                    }
                 }
                 Some((i, theta)) => {
                     p = nm.step(&p, theta * dt)?;
@@ -345,5 +367,6 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         series_steps: 0,
         configurations: 0,
         trace: None,
+        forces: None,
     })
 }

@@ -29,7 +29,13 @@ pub type Key = (Vec<u8>, u64, u64);
 /// The cache of linear maps with their quiet-test bounds, and how it was used.
 #[derive(Debug, Default)]
 pub struct Propagator {
-    maps: HashMap<Key, (DMatrix<f64>, Bounds)>,
+    /// Where each key's map is in `entries`.
+    index: HashMap<Key, usize>,
+    entries: Vec<(DMatrix<f64>, Bounds)>,
+    /// The key asked for last and its entry: a run asks for the same map
+    /// sub-step after sub-step, which then costs a comparison of a few
+    /// bytes instead of hashing the key.
+    last: Option<(Key, usize)>,
     /// Maps made (matrix exponentials computed).
     pub made: usize,
     /// Sub-steps taken with a cached map.
@@ -61,7 +67,7 @@ impl Propagator {
     /// row's fastest rate `rate`).
     pub fn map(
         &mut self,
-        key: Vec<u8>,
+        branches: &[u8],
         system: &System,
         (h, sigma): (f64, f64),
         rate: f64,
@@ -69,26 +75,38 @@ impl Propagator {
     ) -> (&DMatrix<f64>, &Bounds) {
         let n = system.load.len();
         self.used += 1;
-        let made = &mut self.made;
-        let (map, bounds) = self
-            .maps
-            .entry((key, h.to_bits(), sigma.to_bits()))
-            .or_insert_with(|| {
-                *made += 1;
-                let a = augmented(system, sigma);
-                let bounds = Bounds::new(&a, n, h, rate, watch);
-                ((a * h).exp().rows(0, 2 * n).into_owned(), bounds)
-            });
+        let bits = (h.to_bits(), sigma.to_bits());
+        let at = match &self.last {
+            Some(((b, hb, sb), at)) if b == branches && (*hb, *sb) == bits => *at,
+            _ => {
+                let key = (branches.to_vec(), bits.0, bits.1);
+                let at = match self.index.get(&key) {
+                    Some(&at) => at,
+                    None => {
+                        self.made += 1;
+                        let a = augmented(system, sigma);
+                        let bounds = Bounds::new(&a, n, h, rate, watch);
+                        let map = (a * h).exp().rows(0, 2 * n).into_owned();
+                        self.entries.push((map, bounds));
+                        self.index.insert(key.clone(), self.entries.len() - 1);
+                        self.entries.len() - 1
+                    }
+                };
+                self.last = Some((key, at));
+                at
+            }
+        };
+        let (map, bounds) = &self.entries[at];
         (map, bounds)
     }
 
     /// Distinct maps held.
     pub fn len(&self) -> usize {
-        self.maps.len()
+        self.entries.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.maps.is_empty()
+        self.entries.is_empty()
     }
 }
 

@@ -77,6 +77,31 @@ pub struct RowRun {
     /// The floors' displacements over time, when asked for
     /// ([`super::RowOptions::trace`]).
     pub trace: Option<RowTrace>,
+    /// The contact force of every floor pair over time, when asked for
+    /// ([`super::RowOptions::forces`]).
+    pub forces: Option<ForceHistory>,
+}
+
+/// The contact force f_p(t) of every floor pair (SPEC §13), N: 0 at every
+/// onset and separation, and inside each impact the force at the start and
+/// end of every step the exact method takes through it and at the largest
+/// value located on each step, so that its largest point is the impact's
+/// [`PairImpact::max_force`]. Between two impacts the pair is open and the
+/// force 0, a straight line between their points.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ForceHistory {
+    /// Per pair in the layout's order, (t in s, f_p in N), t increasing.
+    pub pairs: Vec<Vec<(f64, f64)>>,
+}
+
+impl ForceHistory {
+    /// Appends (t, f) to pair `pair`'s history, unless it repeats the last point.
+    pub fn push(&mut self, pair: usize, t: f64, f: f64) {
+        let history = &mut self.pairs[pair];
+        if history.last() != Some(&(t, f)) {
+            history.push((t, f));
+        }
+    }
 }
 
 /// The displacement u_i(t) of every floor at the end of every sub-step:

@@ -170,13 +170,13 @@ impl Series {
     pub fn absolute_acceleration(&self, i: usize, out: &mut Vec<f64>) {
         out.clear();
         let v = self.velocity(i);
-        for k in 0..ORDER {
+        out.extend((0..ORDER).map(|k| {
             let rate = if k < self.degree {
                 (k + 1) as f64 * v[k + 1]
             } else {
                 0.0
             };
-            out.push(rate + self.ground[k]);
-        }
+            rate + self.ground[k]
+        }));
     }
 }
