@@ -337,3 +337,50 @@ fn figure_buildings_writes_envelopes_and_impact_forces() {
         &["--out x.gif", ".svg or .png"],
     );
 }
+
+/// `run --buildings … --no-pounding` is the row with every joint open: no
+/// impact, and the same peaks as `--set jointN.gap=inf` on each joint; `gap`
+/// and `figure`, which make that run themselves, refuse it in one line.
+#[test]
+fn no_pounding_opens_every_joint() {
+    let base = [
+        "run",
+        "--buildings",
+        "three-in-series",
+        "--excitation",
+        "record:presets/synthetic.at2",
+        "--format",
+        "json",
+    ];
+    let pounding = json(&base);
+    assert!(pounding["impacts"].as_u64().unwrap() > 0);
+    let free = json(&[&base[..], &["--no-pounding"]].concat());
+    let open = json(
+        &[
+            &base[..],
+            &["--set", "joint1.gap=inf", "--set", "joint2.gap=inf"],
+        ]
+        .concat(),
+    );
+    assert_eq!(free["impacts"].as_u64(), Some(0));
+    assert_eq!(free["buildings"], open["buildings"]);
+    assert_ne!(free["buildings"], pounding["buildings"]);
+    for command in [
+        vec!["gap", "--buildings", "block-and-frame", "--no-pounding"],
+        vec![
+            "figure",
+            "buildings",
+            "--buildings",
+            "block-and-frame",
+            "--no-pounding",
+            "--out",
+            "f.svg",
+        ],
+    ] {
+        fails(
+            &command,
+            2,
+            &["--no-pounding: not with", "drop --no-pounding"],
+        );
+    }
+}

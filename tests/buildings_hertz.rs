@@ -4,7 +4,7 @@
 //! isolated impact achieves, which for these laws depends on e alone (the
 //! pair's values, pinned in `tests/contact_laws.rs`).
 
-use pounding::accuracy::row_bench::peak_error;
+use pounding::accuracy::row_bench::{acceleration_error, peak_error};
 use pounding::model::ContactModel;
 use pounding::model::buildings::{self, Ground, parse};
 use pounding::model::record::read;
@@ -53,6 +53,13 @@ fn every_hertz_type_law_matches_the_reference() {
                 assert!(e < 1e-9, "{model}: building {b} floor {}: {e:e}", i + 1);
             }
         }
+        // The bench's column: relative to each building's largest, so no
+        // more than the largest per-floor difference above.
+        let bench = acceleration_error(&exact, &reference);
+        assert!(
+            bench < 1e-9 && bench > 0.0,
+            "{model}: bench's acceleration error {bench:e}"
+        );
         for p in &exact.pairs {
             for i in &p.impacts {
                 assert!(i.end > i.start && i.max_force > 0.0, "{model}: {i:?}");

@@ -222,7 +222,13 @@ pub fn run(
     allow_long: bool,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let row = args.row(&params.overrides, params.model.as_deref())?;
+    let mut row = args.row(&params.overrides, params.model.as_deref())?;
+    if params.no_pounding {
+        // The no-pounding baseline: every joint open for good.
+        for joint in &mut row.joints {
+            joint.gap = f64::INFINITY;
+        }
+    }
     let (ground, name, duration) =
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let method = params.method.as_deref().unwrap_or("exact");
@@ -271,6 +277,11 @@ pub fn gap(
     allow_long: bool,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
+    refuse_no_pounding(
+        "gap",
+        params,
+        "the gap is found from the runs without contact",
+    )?;
     let row = args.row(&params.overrides, params.model.as_deref())?;
     let (ground, name, duration) =
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
@@ -279,6 +290,17 @@ pub fn gap(
     let report = crate::analysis::row_gap::row_gap(&row, &ground, duration, &name)
         .map_err(|e| CliError::Failed(e.to_string()))?;
     emit(&report)
+}
+
+/// `--no-pounding` where a row command draws or finds the run without
+/// contact itself: one line saying why.
+fn refuse_no_pounding(command: &str, params: &ParamArgs, why: &str) -> Result<(), CliError> {
+    if params.no_pounding {
+        return Err(CliError::Usage(format!(
+            "--no-pounding: not with {command} --buildings ({why}); drop --no-pounding"
+        )));
+    }
+    Ok(())
 }
 
 /// `pounding figure buildings --out F.svg|png`: envelopes with and without
@@ -290,6 +312,11 @@ pub fn figure(
     allow_long: bool,
 ) -> Result<(), CliError> {
     use crate::figure::{Format, encode};
+    refuse_no_pounding(
+        "figure",
+        params,
+        "it draws the row with and without pounding",
+    )?;
     let out =
         out.ok_or_else(|| CliError::Usage("figure buildings needs --out F.svg or F.png".into()))?;
     let format = match out.extension().and_then(|e| e.to_str()) {
