@@ -94,6 +94,20 @@ impl RiskPicture {
     }
 }
 
+/// The levels to run: `levels`, and the design level after them where it
+/// is not one of them; and the design level's index among them.
+pub fn with_design_level(levels: &[f64], design_level: f64) -> (Vec<f64>, usize) {
+    let mut all = levels.to_vec();
+    let design = levels
+        .iter()
+        .position(|&x| x == design_level)
+        .unwrap_or_else(|| {
+            all.push(design_level);
+            levels.len()
+        });
+    (all, design)
+}
+
 /// Runs every record at every level and at the design level, in parallel
 /// chunks, while `keep_going()` holds (asked between chunks); the picture, or `None` when stopped. A
 /// record that cannot be planned (zero intensity, Π-groups out of range)
@@ -107,11 +121,7 @@ pub fn risk(
     levels: &[f64],
     keep_going: &dyn Fn() -> bool,
 ) -> Result<Option<RiskPicture>, SuiteRunError> {
-    let design = levels.iter().position(|&x| x == design_level);
-    let mut all = levels.to_vec();
-    if design.is_none() {
-        all.push(design_level);
-    }
+    let (all, design) = with_design_level(levels, design_level);
     let plans = plan_levels(case, members, &all)?;
     let pairs: Vec<(usize, usize)> = (0..all.len())
         .flat_map(|l| (0..members.len()).map(move |j| (l, j)))
@@ -134,7 +144,7 @@ pub fn risk(
         let rest = runs.split_off(members.len().min(runs.len()));
         by_level.push(std::mem::replace(&mut runs, rest));
     }
-    let at_design = &by_level[design.unwrap_or(levels.len())];
+    let at_design = &by_level[design];
     let ida_runs = &by_level[..levels.len()];
     let drift = levels
         .iter()

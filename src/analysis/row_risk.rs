@@ -18,7 +18,7 @@
 //!   demands' impacts, [`super::row_suite::JointDemands`]) ([`fragility::fit`]).
 
 use super::fragility::{self, LevelCount};
-use super::risk::{LevelDrift, RiskPicture};
+use super::risk::{LevelDrift, RiskPicture, with_design_level};
 use super::row_ida::{plan_levels, run_levels};
 use super::row_suite::{RowSuiteCase, RowSuiteError, RowSuiteRun};
 use super::statistics::Summary;
@@ -71,11 +71,7 @@ pub fn risk(
     levels: &[f64],
     keep_going: &dyn Fn() -> bool,
 ) -> Result<Option<RiskPicture>, RowSuiteError> {
-    let design = levels.iter().position(|&x| x == design_level);
-    let mut all = levels.to_vec();
-    if design.is_none() {
-        all.push(design_level);
-    }
+    let (all, design) = with_design_level(levels, design_level);
     let suite = RowSuiteCase {
         row: case.row.clone(),
         scaling: Scaling {
@@ -93,7 +89,7 @@ pub fn risk(
         let mut level = run_levels(&suite, members, std::slice::from_ref(plan), &|_| {})?;
         by_level.push(level.pop().unwrap_or_default());
     }
-    let at_design = &by_level[design.unwrap_or(levels.len())];
+    let at_design = &by_level[design];
     let ida_runs = &by_level[..levels.len()];
     let drift = levels
         .iter()
