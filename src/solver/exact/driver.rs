@@ -724,11 +724,13 @@ impl<'a> Run<'a> {
 
     /// After a quiet sample, the samples that follow it while the bounds of
     /// [`super::sample_run`] clear them, in one tight loop: each of x, ẋ,
-    /// |ẍ + g| and x1 − x2 either stays inside its band by its swing or is
-    /// monotone over the interval with its end inside the event band, and
-    /// then raises its running peak at that end. The branches stand still,
-    /// so the event bands are made once. The first sample these bounds do
-    /// not clear (an extremum near its running peak, an event) is taken by
+    /// |ẍ + g| and x1 − x2 either stays inside its band by its chord margin
+    /// or is monotone over the interval with its end inside the event band,
+    /// and then raises its running peak at that end; where nothing comes
+    /// near a peak or an event, [`BLOCK`] samples at a time. The branches
+    /// stand still, so the event bands are made once. The first sample
+    /// these bounds do not clear (an extremum near its running peak, an
+    /// event) is taken by
     /// [`Run::sample_interval`] (majorants, peaks located inside); if that
     /// fails too, it is left to the series. Stops before the next poll of
     /// the observer.

@@ -465,6 +465,7 @@ pub fn clear(
 
 #[cfg(test)]
 mod tests {
+    use super::super::sample_run::{Pair, Watch};
     use super::*;
     use crate::model::SET1;
 
@@ -606,7 +607,10 @@ mod tests {
             let (x, v, ground) = (0.7, -0.4, [0.6, 2.5]);
             let (inputs, eq) = map.inputs(x, v, ground, load);
             let end = map.advance(&inputs, eq);
-            for (a, b) in lane.advance(x, v, ground).iter().zip(end) {
+            let open = Watch::new(Branch::Elastic { offset: 0.0 }, f64::INFINITY);
+            let pair = Pair::new([lane; 2], [open; 2], h, f64::INFINITY);
+            let [xe, ve] = pair.advance([x; 2], [v; 2], ground);
+            for (a, b) in [xe[0], ve[0]].iter().zip(end) {
                 assert!((a - b).abs() <= 4.0 * f64::EPSILON * b.abs().max(1.0));
             }
             assert_eq!(lane.inputs(x, v, ground), inputs);

@@ -98,15 +98,6 @@ impl Lane {
         }
     }
 
-    /// (x, ẋ) one interval on: the map alone.
-    #[inline(always)]
-    pub fn advance(&self, x: f64, v: f64, [g, s]: [f64; 2]) -> [f64; 2] {
-        [0, 1].map(|j| {
-            let record = madd(s, self.per_s[j], madd(g, self.per_g[j], self.offset[j]));
-            madd(x, self.per_x[j], madd(v, self.per_v[j], record))
-        })
-    }
-
     /// The inputs of the work integrals ([`super::sample::work`]).
     #[inline(always)]
     pub fn inputs(&self, x: f64, v: f64, [g, s]: [f64; 2]) -> [f64; INPUTS] {
@@ -276,8 +267,7 @@ impl Pair {
     }
 
     /// Both structures' (x, ẋ) one interval on under g = g_k + s t: the map
-    /// alone, as [`Lane::advance`] (whose chain from one sample to the next
-    /// is two multiply-adds).
+    /// alone, its chain from one sample to the next two multiply-adds.
     #[inline(always)]
     pub fn advance(&self, x: [f64; 2], v: [f64; 2], [g, s]: [f64; 2]) -> [[f64; 2]; 2] {
         let component = |j: usize| {

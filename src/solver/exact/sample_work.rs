@@ -99,8 +99,10 @@ impl PairWork {
 
 #[cfg(test)]
 mod tests {
+    use super::super::dynamics::Branch;
     use super::super::dynamics::Structure;
     use super::super::sample::{SampleMap, work};
+    use super::super::sample_run::{Pair, Watch};
     use super::*;
     use crate::model::SET1;
 
@@ -123,7 +125,8 @@ mod tests {
             let mass = structures.map(|s| s.mass);
             let pair = PairWork::new([&maps[0], &maps[1]], [&lanes[0], &lanes[1]], mass);
             let (x, v, ground) = ([0.31, -0.12], [-0.7, 0.45], [0.6, -2.5]);
-            let ends = [0, 1].map(|i| lanes[i].advance(x[i], v[i], ground)[0]);
+            let open = Watch::new(Branch::Elastic { offset: 0.0 }, f64::INFINITY);
+            let ends = Pair::new(lanes, [open; 2], h, f64::INFINITY).advance(x, v, ground)[0];
             let terms = pair.terms(x, v, ground, ends);
             for i in 0..2 {
                 let inputs = lanes[i].inputs(x[i], v[i], ground);
