@@ -766,6 +766,7 @@ impl<'a> Run<'a> {
         let watch =
             [0, 1].map(|i| Watch::new(self.branch[i], self.structures[i].yield_displacement));
         let pair = Pair::new(lanes, watch, h, self.p.gap);
+        let degree = m0.series_degree;
         let masses = [self.structures[0].mass, self.structures[1].mass];
         let pair_work = PairWork::new([&m0, &m1], [&lanes[0], &lanes[1]], masses);
         let track_relative = self.result.impacts.is_empty();
@@ -833,7 +834,12 @@ impl<'a> Run<'a> {
             if !(end < tau_end) {
                 break;
             }
-            let step = pair.step::<ACCEL>(x, v, ground, &peaks);
+            let mut step = pair.step::<ACCEL>(x, v, ground, &peaks);
+            if !step.clear
+                && let Some(settled) = pair.settle::<ACCEL>(x, v, ground, &peaks, degree)
+            {
+                step = settled;
+            }
             if !step.clear {
                 // Not cleared: the full tests of one sample (majorants, peaks
                 // located inside), on the same branches; if they clear it,

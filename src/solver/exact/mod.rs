@@ -45,6 +45,7 @@ pub mod roots;
 pub mod sample;
 pub mod sample_peaks;
 pub mod sample_run;
+pub mod sample_settle;
 pub mod sample_work;
 pub mod segment;
 pub mod series;

@@ -235,6 +235,21 @@ pub fn cleared(d0: f64, d1: f64, d2: f64, m: f64, w: f64) -> bool {
     true
 }
 
+/// The one root of a rate known to be monotone on [0, h] and to change
+/// sign there (its end values strictly of opposite signs on the series):
+/// [`solve`] on e or on −e, whichever rises. `None` where the series' own
+/// end values do not show the change (a zero at an end, to round-off).
+pub fn monotone_root(e: &Series, h: f64) -> Option<f64> {
+    let (e0, eh) = (e.c[0], e.value(h));
+    if e0 < 0.0 && eh > 0.0 {
+        Some(solve(e, 0.0, h, e0, eh))
+    } else if e0 > 0.0 && eh < 0.0 {
+        Some(solve(&e.scaled(-1.0), 0.0, h, -e0, -eh))
+    } else {
+        None
+    }
+}
+
 /// The root of e in (lo, hi] with e(lo) ≤ 0 < e(hi), given those two values:
 /// Halley steps, t ← t − e e' / (e'² − e e''/2), kept inside the bracket
 /// (bisection when a step would leave it), to the last bit. Halley's method

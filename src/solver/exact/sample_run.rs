@@ -186,21 +186,21 @@ pub struct Pair {
     per_s: [[f64; 2]; 2],
     offset: [[f64; 2]; 2],
     equilibrium: [f64; 2],
-    load: [f64; 2],
-    damping: [f64; 2],
-    stiffness: [f64; 2],
+    pub(super) load: [f64; 2],
+    pub(super) damping: [f64; 2],
+    pub(super) stiffness: [f64; 2],
     root_stiffness: [f64; 2],
     /// c/m + ω.
     rate_sum: [f64; 2],
     free_load: [f64; 2],
     /// 8 ε |x*|: the round-off of x* cancelled in x − x*.
     equilibrium_room: [f64; 2],
-    watch_x: [[f64; 2]; 2],
-    watch_v: [[f64; 2]; 2],
-    length: f64,
+    pub(super) watch_x: [[f64; 2]; 2],
+    pub(super) watch_v: [[f64; 2]; 2],
+    pub(super) length: f64,
     /// h²/8 with a round-off allowance.
     chord: f64,
-    gap: f64,
+    pub(super) gap: f64,
 }
 
 /// The running peaks the tight loop carries: per structure |x|, |ẋ| and
@@ -216,11 +216,11 @@ pub struct Peaks {
 
 /// The chord margins of [`Pair::margins`], per structure.
 #[derive(Debug, Clone, Copy)]
-struct Margins {
-    x: [f64; 2],
-    v: [f64; 2],
-    a: [f64; 2],
-    jerk: [f64; 2],
+pub(super) struct Margins {
+    pub x: [f64; 2],
+    pub v: [f64; 2],
+    pub a: [f64; 2],
+    pub jerk: [f64; 2],
 }
 
 /// What one quiet sample gave: whether the bounds cleared it (and which of
@@ -289,7 +289,12 @@ impl Pair {
     /// ((c/m) J₄ + (K/m) J) h²/8 (the rate of ẍ + g), with room for the
     /// round-off of the end states in the first two.
     #[inline(always)]
-    fn margins(&self, [x_lo, x_hi, v_lo, v_hi]: [[f64; 2]; 4], big_g: f64, big_s: f64) -> Margins {
+    pub(super) fn margins(
+        &self,
+        [x_lo, x_hi, v_lo, v_hi]: [[f64; 2]; 4],
+        big_g: f64,
+        big_s: f64,
+    ) -> Margins {
         let (c, k, h) = (self.damping, self.stiffness, self.length);
         let free = each(|i| big_g + self.free_load[i]);
         let big_d = each(|i| max(x_hi[i] - self.equilibrium[i], self.equilibrium[i] - x_lo[i]));
@@ -480,6 +485,7 @@ impl Pair {
 mod tests {
     use super::super::dynamics::{Structure, oscillator};
     use super::super::sample::SampleMap;
+    use super::super::sample_peaks::{IntervalSeries, raise_relative};
     use super::super::series::Series;
     use super::*;
     use crate::model::SET1;
@@ -534,6 +540,7 @@ mod tests {
         let h = 0.06;
         let mut rng = ChaCha8Rng::seed_from_u64(7);
         let (mut steps_cleared, mut blocks_cleared, mut raised) = (0, 0, 0);
+        let (mut settled, mut located, mut located_relative) = (0, 0, 0);
         for trial in 0..400 {
             // Elastic (an offset, a yield surface) or yielded (K = α k, σ).
             let yielded = trial % 3 == 2;
@@ -667,6 +674,81 @@ mod tests {
                 }
                 all_steps &= step.clear;
                 if !step.clear {
+                    // Settled with its extrema located: inside the event
+                    // bands, and each peak the dense maximum where it rose.
+                    if let Some(st) = pair.settle::<true>(x, v, *ground, &running, 20) {
+                        settled += 1;
+                        assert_eq!([st.x, st.v], ends[j], "settle and step apart");
+                        for i in 0..2 {
+                            let (lo, hi) = (pair.watch_x[0][i], pair.watch_x[1][i]);
+                            let (ulo, uhi) = (pair.watch_v[0][i], pair.watch_v[1][i]);
+                            let mut top = [0.0f64; 3];
+                            for q in &truth[i] {
+                                assert!(q[0] > lo && q[0] < hi, "settle: yield at x {}", q[0]);
+                                assert!(q[1] > ulo && q[1] < uhi, "settle: unloads at {}", q[1]);
+                                top = [0, 1, 2].map(|n| top[n].max(q[n].abs()));
+                            }
+                            let before = [running.x[i], running.v[i], running.a[i]];
+                            let after = [st.peaks.x[i], st.peaks.v[i], st.peaks.a[i]];
+                            // The segments' peak search on the interval's series.
+                            let (k, load, _, _) = lanes_and_watch[i];
+                            let (c, k, load) = (
+                                structures[i].damping / structures[i].mass,
+                                k / structures[i].mass,
+                                load / structures[i].mass,
+                            );
+                            let series = IntervalSeries::new(k, c, load, [x[i], v[i]], *ground, 20);
+                            let mut reference = before;
+                            series.raise_displacement(h, series.x.swing(h), &mut reference[0]);
+                            series.raise_velocity(h, series.v.swing(h), &mut reference[1]);
+                            series.raise_absolute_acceleration(
+                                [k, c, load],
+                                h,
+                                c * series.v.swing(h) + k * series.x.swing(h),
+                                &mut reference[2],
+                            );
+                            for n in 0..3 {
+                                let tol = 1e-12 * top[n].max(1e-300);
+                                assert!(
+                                    top[n] <= after[n] + tol,
+                                    "settle: peak {n} {after:?} below {top:?}"
+                                );
+                                assert!(
+                                    (after[n] - reference[n]).abs() <= 1e-13 * reference[n],
+                                    "settle: peak {n} {} against the series' {}",
+                                    after[n],
+                                    reference[n]
+                                );
+                                located += usize::from(after[n] > before[n]);
+                            }
+                        }
+                        let relative = (0..=2000).map(|n| truth[0][n][0] - truth[1][n][0]);
+                        let top = relative.fold(f64::NEG_INFINITY, f64::max);
+                        assert!(top < gap, "settle: contact inside");
+                        if running.relative.is_finite() {
+                            assert!(top <= st.peaks.relative + 1e-12 * top.abs());
+                            let pair_series = [0, 1].map(|i| {
+                                let (k, load, _, _) = lanes_and_watch[i];
+                                let m = structures[i].mass;
+                                let c = structures[i].damping / m;
+                                IntervalSeries::new(k / m, c, load / m, [x[i], v[i]], *ground, 20)
+                            });
+                            let mut reference = running.relative;
+                            let swing = pair_series[0].x.swing(h) + pair_series[1].x.swing(h);
+                            raise_relative(
+                                [&pair_series[0], &pair_series[1]],
+                                h,
+                                swing,
+                                &mut reference,
+                            );
+                            assert!(
+                                (st.peaks.relative - reference).abs() <= 1e-13 * reference.abs(),
+                                "settle: x1 − x2 {} against the series' {reference}",
+                                st.peaks.relative
+                            );
+                            located_relative += usize::from(st.peaks.relative > running.relative);
+                        }
+                    }
                     break;
                 }
                 steps_cleared += 1;
@@ -681,6 +763,10 @@ mod tests {
         assert!(
             blocks_cleared > 20 && steps_cleared > 300 && raised > 20,
             "{blocks_cleared} {steps_cleared} {raised}"
+        );
+        assert!(
+            settled > 20 && located > 20 && located_relative > 5,
+            "{settled} settled, {located} located, {located_relative} of x1 − x2"
         );
     }
 }
