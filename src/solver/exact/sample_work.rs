@@ -85,7 +85,8 @@ impl PairWork {
             }
             square = each(|i| square[i] + inputs[j][i] * (row[j][i] * inputs[j][i] + 2.0 * r[i]));
         }
-        [0, 1].map(|i| {
+        // Written out for both: an array's map over [0, 1] is not inlined here.
+        let term = |i: usize| {
             let dx = x_end[i] - x[i];
             let m = self.mass[i];
             [
@@ -93,7 +94,8 @@ impl PairWork {
                 m * self.damping[i] * square[i],
                 m * dx * (self.stiffness[i] * 0.5 * (x[i] + x_end[i]) - self.load[i]),
             ]
-        })
+        };
+        [term(0), term(1)]
     }
 }
 
