@@ -217,6 +217,8 @@ struct Run<'a> {
     events: usize,
     /// Segments taken (the run's `steps`).
     segments: usize,
+    /// The segment count at which the observer is next polled.
+    next_poll: usize,
     max_events: usize,
     max_segments: usize,
     work: Work,
@@ -275,6 +277,7 @@ impl<'a> Run<'a> {
             next_sample: 1,
             events: 0,
             segments: 0,
+            next_poll: POLL_EVERY,
             max_events: options
                 .max_events
                 .unwrap_or(EVENT_ALLOWANCE + EVENTS_PER_CYCLE * p.cycles as usize),
@@ -366,7 +369,8 @@ impl<'a> Run<'a> {
         while self.tau < tau_end {
             self.segments += 1;
             let segments = self.segments;
-            if segments.is_multiple_of(POLL_EVERY) {
+            if segments >= self.next_poll {
+                self.next_poll = segments + POLL_EVERY;
                 observer.reached(self.tau);
                 if !observer.keep_going() {
                     self.stop(StopReason::Cancelled);
@@ -779,7 +783,9 @@ impl<'a> Run<'a> {
         // order, so that they do not wait on memory from one sample to the next.
         let mut work = self.work;
         let (mut k, mut taken) = (self.sample_cursor.1, 0);
-        let budget = POLL_EVERY - 1 - self.segments % POLL_EVERY;
+        // Samples up to the next poll; the last block may pass it by up to
+        // BLOCK − 1, and the poll then comes with the next segment.
+        let budget = self.next_poll.saturating_sub(self.segments + 1);
         // Samples to take one by one before the next block is tried.
         let mut single = 0;
         let mut ends = [[[0.0; 2]; 2]; BLOCK];
@@ -787,7 +793,7 @@ impl<'a> Run<'a> {
         while taken < budget {
             // A block of samples by one test, wholly inside the record or
             // wholly in its free tail.
-            if single == 0 && taken + BLOCK <= budget {
+            if single == 0 {
                 let block = if let Some(a) = record.get(k..k + BLOCK + 1) {
                     for (j, ground) in grounds.iter_mut().enumerate() {
                         *ground = [a[j] * factor, (a[j + 1] - a[j]) * per_step];
