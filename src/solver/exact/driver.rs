@@ -39,7 +39,7 @@ use super::roots::{fires_at_start, first_crossing};
 use super::sample::{self, Limits, SampleMajorants, SampleMap};
 use super::sample_peaks::{IntervalSeries, raise_relative};
 use super::sample_run::{Pair, Peaks, Watch};
-use super::sample_work::PairWork;
+use super::sample_work::{DampingSums, PairWork};
 use super::segment::{Event, Segment};
 use super::series::{MAX_DEGREE, Series};
 use crate::solver::SolverOptions;
@@ -782,6 +782,7 @@ impl<'a> Run<'a> {
         // The work integrals in a local copy, the same sums in the same
         // order, so that they do not wait on memory from one sample to the next.
         let mut work = self.work;
+        let mut sums = DampingSums::default();
         let (mut k, mut taken) = (self.sample_cursor.1, 0);
         // Samples up to the next poll; the last block may pass it by up to
         // BLOCK − 1, and the poll then comes with the next segment.
@@ -813,7 +814,8 @@ impl<'a> Run<'a> {
                             let mut start = [x, v];
                             for (&ground, end) in grounds.iter().zip(&ends) {
                                 let [x, v] = start;
-                                work.add_quiet(pair_work.terms(x, v, ground, end[0]));
+                                let terms = pair_work.terms(&mut sums, x, v, ground, end[0]);
+                                work.add_input_and_spring(terms);
                                 start = *end;
                             }
                         }
@@ -850,6 +852,10 @@ impl<'a> Run<'a> {
                 // Not cleared: the full tests of one sample (majorants, peaks
                 // located inside), on the same branches; if they clear it,
                 // the run goes on from the peaks they raised.
+                if ENERGY {
+                    work.add_damping(pair_work.damping(&sums));
+                    sums = DampingSums::default();
+                }
                 (self.x, self.v, self.tau, self.work) = (x, v, tau, work);
                 self.sample_cursor = (tau, k);
                 self.set_running_peaks::<ACCEL>(&peaks, track_relative);
@@ -877,12 +883,15 @@ impl<'a> Run<'a> {
                 return;
             }
             if ENERGY {
-                work.add_quiet(pair_work.terms(x, v, ground, step.x));
+                work.add_input_and_spring(pair_work.terms(&mut sums, x, v, ground, step.x));
             }
             (x, v, peaks) = (step.x, step.v, step.peaks);
             tau = end;
             k = next_k;
             taken += 1;
+        }
+        if ENERGY {
+            work.add_damping(pair_work.damping(&sums));
         }
         self.x = x;
         self.v = v;

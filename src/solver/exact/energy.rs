@@ -90,6 +90,22 @@ impl Work {
         self.max_input = self.max_input.max(self.input.abs());
     }
 
+    /// Adds the input and spring work of both structures over a quiet
+    /// sample interval in the tight loop ([`super::sample_work::PairWork`]),
+    /// whose damping work comes later by [`Work::add_damping`].
+    #[inline(always)]
+    pub fn add_input_and_spring(&mut self, [a, b]: [[f64; 2]; 2]) {
+        self.input += a[0] + b[0];
+        self.spring[0] += a[1];
+        self.spring[1] += b[1];
+        self.max_input = self.max_input.max(self.input.abs());
+    }
+
+    /// Adds both structures' damping work over a run of quiet samples.
+    pub fn add_damping(&mut self, [a, b]: [f64; 2]) {
+        self.damping += a + b;
+    }
+
     /// Adds the work of both structures over a quiet sample interval, each
     /// [input, damping, spring] from [`super::sample::work`].
     pub fn add_quiet(&mut self, terms: [[f64; 3]; 2]) {
