@@ -64,21 +64,26 @@ impl Work {
         if length <= 0.0 {
             return;
         }
+        // Every series at the eight nodes at once: x and ẋ of both
+        // structures, g and, in contact, f_p.
+        let t = NODES.map(|node| node * length);
+        let g = ground.values_at(&t);
+        let x = [segment.x[0].values_at(&t), segment.x[1].values_at(&t)];
+        let v = [segment.v[0].values_at(&t), segment.v[1].values_at(&t)];
         let (mut input, mut damping, mut spring, mut contact) = (0.0, 0.0, [0.0; 2], 0.0);
-        for (node, weight) in NODES.iter().zip(WEIGHTS) {
-            let t = node * length;
-            let g = ground.value(t);
-            let mut v = [0.0; 2];
-            for i in 0..2 {
-                let (x, vi) = segment.x[i].value_slope(t);
-                let s = &structures[i];
-                v[i] = vi;
-                input -= weight * s.mass * vi * g;
-                damping += weight * s.damping * vi * vi;
-                spring[i] += weight * s.spring_force(branch[i], x) * vi;
+        for i in 0..2 {
+            let s = &structures[i];
+            for n in 0..NODES.len() {
+                let (w, vi) = (WEIGHTS[n], v[i][n]);
+                input -= w * s.mass * vi * g[n];
+                damping += w * s.damping * vi * vi;
+                spring[i] += w * s.spring_force(branch[i], x[i][n]) * vi;
             }
-            if let Some(f) = segment.force() {
-                contact += weight * f.value(t) * (v[0] - v[1]);
+        }
+        if let Some(f) = segment.force() {
+            let f = f.values_at(&t);
+            for n in 0..NODES.len() {
+                contact += WEIGHTS[n] * f[n] * (v[0][n] - v[1][n]);
             }
         }
         self.input += input * length;
