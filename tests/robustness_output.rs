@@ -281,13 +281,24 @@ fn closed_stdout_is_exit_1_with_a_message() {
         assert_eq!(o.status.code(), Some(1), "{args:?}: {}", text(&o.stderr));
         assert_one_line(&o, &["stdout", "Bad file descriptor"]);
     }
-    // An open /dev/null is a reader that wants nothing: success.
+    // An open /dev/null is a reader that wants nothing: success, whether
+    // opened write-only (a shell's `>`, Stdio::null()) or read-write (as
+    // Python's subprocess.DEVNULL and daemon(3) open it).
     let o = Command::new(BIN)
         .args(["run", "--format", "json"])
         .stdout(Stdio::null())
         .output()
         .unwrap();
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let o = Command::new("sh")
+        .arg("-c")
+        .arg(r#"exec "$0" "$@" 1<>/dev/null"#)
+        .arg(BIN)
+        .args(["run", "--format", "json"])
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "read-write: {}", text(&o.stderr));
 }
 
 /// Peak resident memory of a live process, in kB (Linux).

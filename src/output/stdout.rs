@@ -2,6 +2,7 @@
 //! an error with a message and a closed pipe a quiet stop, never a panic.
 
 use std::io::{self, Write};
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::OutputError;
 
@@ -14,35 +15,28 @@ pub fn print(text: &str) -> Result<(), OutputError> {
         .map_err(|e| OutputError::io("stdout", &e))
 }
 
-/// Fails when stdout was closed when the program started (`>&-`).
-///
-/// The standard library reopens a closed fd 0, 1 or 2 on `/dev/null`
-/// before `main` (read-write, so that no later `open` takes the number),
-/// and every write there then succeeds: a command would print nothing and
-/// exit 0. That descriptor is recognised by what it is: `/dev/null` opened
-/// read-write. A shell's `> /dev/null` and `Stdio::null()` open it
-/// write-only, so they stay silent successes, as asked. Linux only (it reads
-/// `/proc`); elsewhere this always passes.
+/// Whether stdout was closed when the program started, as the binary saw
+/// it before the standard library's start-up.
+static CLOSED_AT_START: AtomicBool = AtomicBool::new(false);
+
+/// Records that stdout was closed when the program started (`>&-`). The
+/// standard library reopens a closed fd 0, 1 or 2 on `/dev/null` before
+/// `main`, and every write there then succeeds: a command would print
+/// nothing and exit 0. Only a probe that runs before that start-up can
+/// tell a closed stdout from an open `/dev/null` (which a shell's
+/// `> /dev/null`, Python's `subprocess.DEVNULL` or a daemon's stdio may
+/// open read-write, as the start-up does); the binary's is in `main.rs`.
+pub fn closed_at_start(closed: bool) {
+    CLOSED_AT_START.store(closed, Ordering::Relaxed);
+}
+
+/// Fails when stdout was closed when the program started ([`closed_at_start`]).
 pub fn check_open() -> Result<(), OutputError> {
-    if closed_at_start() {
+    if CLOSED_AT_START.load(Ordering::Relaxed) {
         return Err(OutputError::failed(
             "stdout",
             "Bad file descriptor (stdout is closed)",
         ));
     }
     Ok(())
-}
-
-fn closed_at_start() -> bool {
-    let is_null = std::fs::read_link("/proc/self/fd/1").is_ok_and(|p| p.as_os_str() == "/dev/null");
-    // `flags:` is octal; the access mode is its low two bits (O_RDWR = 2).
-    let read_write = || {
-        std::fs::read_to_string("/proc/self/fdinfo/1").is_ok_and(|info| {
-            info.lines()
-                .find_map(|l| l.strip_prefix("flags:"))
-                .and_then(|f| u32::from_str_radix(f.trim(), 8).ok())
-                .is_some_and(|flags| flags & 0o3 == 0o2)
-        })
-    };
-    is_null && read_write()
 }
