@@ -85,8 +85,8 @@ impl PairWork {
         let d = each(|i| x[i] - self.equilibrium[i]);
         let inputs: [[f64; 2]; INPUTS] = [d, v, [g; 2], [s; 2], self.free_load];
         let mut moment = [0.0; 2];
-        for j in 0..INPUTS {
-            moment = each(|i| moment[i] + inputs[j][i] * self.moment[j][i]);
+        for (u, m) in inputs.iter().zip(&self.moment) {
+            moment = each(|i| moment[i] + u[i] * m[i]);
         }
         sums.add(d, v, g, s);
         // Written out for both: an array's map over [0, 1] is not inlined here.
@@ -104,6 +104,7 @@ impl PairWork {
     /// Each structure's damping work m (c/m) Σ_{j,l} G_jl S_jl over the
     /// samples summed in `sums` (the Gram matrix is symmetric: the terms
     /// off the diagonal count twice).
+    #[allow(clippy::needless_range_loop)]
     pub fn damping(&self, sums: &DampingSums) -> [f64; 2] {
         let each_structure = |i: usize| {
             let products = sums.products(i, self.free_load[i]);
