@@ -736,8 +736,8 @@ impl<'a> Run<'a> {
     /// these bounds do not clear (an extremum near its running peak, an
     /// event) is taken by
     /// [`Run::sample_interval`] (majorants, peaks located inside); if that
-    /// fails too, it is left to the series. Stops before the next poll of
-    /// the observer.
+    /// fails too, it is left to the series. Stops at the next poll of the
+    /// observer (a block may pass it by fewer than [`BLOCK`] samples).
     fn quiet_run(&mut self, to_end: f64) {
         match (self.options.absolute_acceleration, self.options.energy) {
             (false, false) => self.quiet_run_with::<false, false>(to_end),
