@@ -732,11 +732,11 @@ impl<'a> Run<'a> {
     /// or is monotone over the interval with its end inside the event band,
     /// and then raises its running peak at that end; where nothing comes
     /// near a peak or an event, [`BLOCK`] samples at a time. The branches
-    /// stand still, so the event bands are made once. The first sample
-    /// these bounds do not clear (an extremum near its running peak, an
-    /// event) is taken by
-    /// [`Run::sample_interval`] (majorants, peaks located inside); if that
-    /// fails too, it is left to the series. Stops at the next poll of the
+    /// stand still, so the event bands are made once. A sample these bounds
+    /// do not clear is settled in the loop where only an extremum near its
+    /// running peak stood in the way ([`super::sample_settle`]); else it is
+    /// taken by [`Run::sample_interval`] (majorants, peaks located inside);
+    /// if that fails too (an event), it is left to the series. Stops at the next poll of the
     /// observer (a block may pass it by fewer than [`BLOCK`] samples).
     fn quiet_run(&mut self, to_end: f64) {
         match (self.options.absolute_acceleration, self.options.energy) {

@@ -67,17 +67,11 @@ impl IntervalSeries {
         raise_abs_max(&self.v, None, h, swing, peak);
     }
 
-    /// Raises `peak` to max |ẍ + g| = max |Q/m − (c/m) ẋ − (K/m) x| over
-    /// (0, h] (SPEC §6), on that combination of the two series; `swing` ≥
-    /// its swing there.
+    /// The series of ẍ + g = Q/m − (c/m) ẋ − (K/m) x (SPEC §6): that
+    /// combination of the two series, with (K/m, c/m, Q/m) =
+    /// (`stiffness`, `damping`, `load`).
     #[inline]
-    pub fn raise_absolute_acceleration(
-        &self,
-        [stiffness, damping, load]: [f64; 3],
-        h: f64,
-        swing: f64,
-        peak: &mut f64,
-    ) {
+    pub fn absolute_acceleration(&self, [stiffness, damping, load]: [f64; 3]) -> Series {
         let mut a = Series {
             degree: self.x.degree,
             ..Series::default()
@@ -87,6 +81,20 @@ impl IntervalSeries {
             *c = -damping * v - stiffness * self.x.c[j];
         }
         a.c[0] += load;
+        a
+    }
+
+    /// Raises `peak` to max |ẍ + g| over (0, h] on
+    /// [`IntervalSeries::absolute_acceleration`]; `swing` ≥ its swing there.
+    #[inline]
+    pub fn raise_absolute_acceleration(
+        &self,
+        branch: [f64; 3],
+        h: f64,
+        swing: f64,
+        peak: &mut f64,
+    ) {
+        let a = self.absolute_acceleration(branch);
         raise_abs_max(&a, None, h, swing, peak);
     }
 }

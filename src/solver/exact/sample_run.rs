@@ -159,7 +159,7 @@ fn min(a: f64, b: f64) -> f64 {
 
 /// [f(0), f(1)]: one line for both structures.
 #[inline(always)]
-fn each(f: impl Fn(usize) -> f64) -> [f64; 2] {
+pub(super) fn each(f: impl Fn(usize) -> f64) -> [f64; 2] {
     [f(0), f(1)]
 }
 

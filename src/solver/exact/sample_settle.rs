@@ -183,16 +183,7 @@ impl Pair {
                     (rise, mj[i]),
                     (snap[i], c[i] * mj[i] + k[i] * ma[i]),
                     || {
-                        let sr = series_of(i);
-                        let mut a = Series {
-                            degree: sr.x.degree,
-                            ..Series::default()
-                        };
-                        for (j, aj) in a.c[..=a.degree].iter_mut().enumerate() {
-                            let vj = if j <= sr.v.degree { sr.v.c[j] } else { 0.0 };
-                            *aj = -c[i] * vj - k[i] * sr.x.c[j];
-                        }
-                        a.c[0] += self.load[i];
+                        let a = series_of(i).absolute_acceleration([k[i], c[i], self.load[i]]);
                         at_turning_point(&a, &a.derivative(), h)
                     },
                 )?;

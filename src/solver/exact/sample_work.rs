@@ -24,7 +24,7 @@
 
 use super::linear_map::INPUTS;
 use super::sample::SampleMap;
-use super::sample_run::Lane;
+use super::sample_run::{Lane, each};
 
 /// The moments and Gram matrices of both structures' maps, with what the
 /// work needs of their branches.
@@ -38,12 +38,6 @@ pub struct PairWork {
     load: [f64; 2],
     equilibrium: [f64; 2],
     free_load: [f64; 2],
-}
-
-/// [f(0), f(1)].
-#[inline(always)]
-fn each(f: impl Fn(usize) -> f64) -> [f64; 2] {
-    [f(0), f(1)]
 }
 
 impl PairWork {
