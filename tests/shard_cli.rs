@@ -155,6 +155,64 @@ fn suite_map_merges_to_the_unsharded_suite_map() {
     );
 }
 
+/// A row's studies: each unit is one record's two row runs at one level,
+/// and the merge rebuilds every building's and joint's demands from them.
+#[test]
+fn row_studies_merge_to_their_unsharded_outputs() {
+    let row = ["--buildings", "block-and-frame", "--suite", "synthetic:4@2"];
+    merges_equal(
+        &[&["suite"], &row[..], &["--level", "0.3g"]].concat(),
+        &["json", "csv", "table"],
+    );
+    merges_equal(
+        &[
+            &["ida"],
+            &row[..],
+            &["--levels", "0.1:0.3:0.1", "--drift", "0.005,frame:0.01"],
+        ]
+        .concat(),
+        &["json", "table"],
+    );
+    merges_equal(
+        &[
+            "gap",
+            "--buildings",
+            "three-in-series",
+            "--suite",
+            "synthetic:3@2",
+            "--level",
+            "0.2g",
+        ],
+        &["json", "csv"],
+    );
+}
+
+/// A row's part is not a pair's: the same suite on the pair and on a row
+/// are different requests, and a part of one does not merge with the other's.
+#[test]
+fn row_and_pair_parts_do_not_mix() {
+    let dir = tempfile::tempdir().unwrap();
+    let template = dir.path().join("{command}-{k}.part");
+    let suite = ["suite", "--suite", "synthetic:2@2", "--level", "0.3g"];
+    let pair = [&suite[..], &TWO[..]].concat();
+    let row = [&suite[..], &["--buildings", "two-buildings"]].concat();
+    for (args, k) in [(&pair, "1/2"), (&row, "2/2")] {
+        let mut a = args.clone();
+        a.extend(["--shard", k, "--part", template.to_str().unwrap()]);
+        succeeds(&a);
+    }
+    let parts = ["suite-1.part", "suite-2.part"].map(|p| dir.path().join(p));
+    fails(
+        &[
+            "merge",
+            parts[0].to_str().unwrap(),
+            parts[1].to_str().unwrap(),
+        ],
+        2,
+        &["suite-1.part", "suite-2.part", "different requests"],
+    );
+}
+
 /// Writes the shards of `MAP` (with `extra`) into `dir`; their paths.
 fn map_parts(dir: &Path, n: usize, extra: &[&str]) -> Vec<String> {
     (1..=n)

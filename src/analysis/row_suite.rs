@@ -166,34 +166,57 @@ pub struct RowCaches {
 pub fn run_member(
     row: &Row,
     member: &SuiteMember,
-    (scale, intensity): (f64, f64),
+    plan: (f64, f64),
     caches: &mut RowCaches,
 ) -> Result<RowSuiteRun, RowSuiteError> {
+    let (run, free) = member_runs(row, member, plan.0, caches)?;
+    Ok(member_run(row, member, plan, run, free))
+}
+
+/// The two runs of one member at scale `scale`: with contact, and apart
+/// (the run with contact itself when it had no impact).
+pub fn member_runs(
+    row: &Row,
+    member: &SuiteMember,
+    scale: f64,
+    caches: &mut RowCaches,
+) -> Result<(RowRun, RowRun), RowSuiteError> {
     let failed = |error| RowSuiteError::Run {
         record: member.name.clone(),
         error,
     };
     let ground = ground_of(member, scale);
-    let duration = run_length(row, &ground);
-    let options = RowOptions::lasting(duration);
+    let options = RowOptions::lasting(run_length(row, &ground));
     let run = run_row_cached(row, &ground, &options, &mut caches.with_contact).map_err(failed)?;
     let free = if run.impacts() == 0 {
         run.clone()
     } else {
         run_row_cached(&row.apart(), &ground, &options, &mut caches.apart).map_err(failed)?
     };
+    Ok((run, free))
+}
+
+/// One member's record of the suite from its two runs ([`member_runs`]),
+/// as a suite builds it and as a merge of shards rebuilds it.
+pub fn member_run(
+    row: &Row,
+    member: &SuiteMember,
+    (scale, intensity): (f64, f64),
+    run: RowRun,
+    free: RowRun,
+) -> RowSuiteRun {
     let demands = RowDemands::of(row, &run, &free);
-    Ok(RowSuiteRun {
+    RowSuiteRun {
         name: member.name.clone(),
         samples: member.record.acceleration.len(),
         dt: member.record.dt,
         scale,
         intensity,
-        duration,
+        duration: run.duration,
         run,
         free,
         demands,
-    })
+    }
 }
 
 /// Runs every member in parallel, in suite order; `done` is told of each

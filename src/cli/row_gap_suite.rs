@@ -27,12 +27,15 @@ pub fn report_with(
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let probabilities = probabilities(probability)?;
-    let RowRan {
+    let Some(RowRan {
         case,
         runs,
         elapsed_ms,
         ..
-    } = run(study, "gap --buildings --suite")?;
+    }) = run(study, "gap")?
+    else {
+        return Ok(());
+    };
     let report = RowSeparationReport {
         row: RowHeader::new(&case, study.suite),
         records: runs

@@ -21,6 +21,7 @@ use crate::analysis::ida::{LimitStateFragility, parse_levels};
 use crate::analysis::row_ida::{fragilities, plan_levels, run_levels};
 use crate::analysis::row_limit_state::{RowLimitParser, RowLimitState};
 use crate::analysis::row_suite::{RowSuiteRun, statistics};
+use crate::analysis::shard::row_suite::RowUnit;
 use crate::analysis::suite::SuiteStatistics;
 use crate::model::buildings::Row;
 use crate::model::params::echo::g4;
@@ -99,8 +100,34 @@ pub fn report_with(
     work.check("ida --buildings", args.study.allow_long, true)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
-    let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
-    let runs = run_levels(&case, &members, &plans, &done).map_err(failed)?;
+    // The units level by level, each in suite order.
+    let units: Vec<RowUnit> = plans
+        .iter()
+        .flat_map(|level| level.iter().copied().enumerate())
+        .collect();
+    let Some((flat, merged_ms)) = super::shard::row_suite::runs(
+        args.study.shard,
+        "ida",
+        args.study.buildings,
+        &case,
+        &members,
+        &units,
+        &(&levels, &states),
+        failed,
+        || {
+            let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
+            let runs = run_levels(&case, &members, &plans, &done).map_err(failed)?;
+            Ok(runs.into_iter().flatten().collect())
+        },
+    )?
+    else {
+        return Ok(());
+    };
+    let mut flat = flat.into_iter();
+    let runs: Vec<Vec<RowSuiteRun>> = plans
+        .iter()
+        .map(|level| flat.by_ref().take(level.len()).collect())
+        .collect();
     let fragility = fragilities(&levels, &runs, &states);
     drop(progress);
     let report = RowIdaReport {
@@ -117,7 +144,7 @@ pub fn report_with(
             .collect(),
         limit_states: states,
         fragility,
-        elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
+        elapsed_ms: merged_ms.unwrap_or(start.elapsed().as_secs_f64() * 1e3),
     };
     emit(&report)
 }

@@ -18,15 +18,16 @@ use super::output::{Emit, num};
 use super::params::ParamArgs;
 use super::progress::Progress;
 use super::records::members;
+use super::shard::ShardArgs;
 use super::study_tables::{clip, over_suite_table};
 use crate::analysis::row_suite::{
     RowDemands, RowSuiteCase, RowSuiteError, RowSuiteRun, plan, row_intensity, run_suite,
     statistics,
 };
+use crate::analysis::shard::row_suite::{RowUnit, record_seconds};
 use crate::analysis::suite::{Scaling, SuiteStatistics};
-use crate::analysis::work;
 use crate::model::buildings::Row;
-use crate::model::buildings::matrices::{default_tail, periods};
+use crate::model::buildings::matrices::periods;
 use crate::model::intensity::IntensityMeasure;
 use crate::model::params::echo::g4;
 use crate::model::suite::SuiteMember;
@@ -49,8 +50,8 @@ pub struct RowStudyArgs<'a> {
     /// `--level` (g).
     pub level: Option<f64>,
     pub allow_long: bool,
-    /// `--shard` was given (rows do not shard).
-    pub sharded: bool,
+    /// `--shard`, `--part`, `--skip-done` (and a merge's parts).
+    pub shard: &'a ShardArgs,
 }
 
 /// The row study of `args`, checked: the row with `--set` and `--model`
@@ -80,7 +81,6 @@ pub fn case_of(args: &RowStudyArgs) -> Result<(RowSuiteCase, Vec<SuiteMember>), 
             p.presets.is_some(),
             "rows are read by --buildings",
         ),
-        ("--shard", args.sharded, "rows do not shard"),
     ];
     if let Some((flag, _, why)) = refused.iter().find(|(_, given, _)| *given) {
         return Err(usage(format!(
@@ -118,12 +118,10 @@ pub fn case_of(args: &RowStudyArgs) -> Result<(RowSuiteCase, Vec<SuiteMember>), 
     ))
 }
 
-/// The estimated work of one record's runs (with contact and apart, by the
-/// exact method, [`work::row_seconds`]), in the commands' steps.
-/// `samples` at interval `dt` (s).
+/// The estimated work of one record's runs ([`record_seconds`]), in the
+/// commands' steps. `samples` at interval `dt` (s).
 pub fn record_steps(row: &Row, samples: usize, dt: f64) -> f64 {
-    let duration = dt * (samples.max(1) - 1) as f64 + default_tail(row);
-    2.0 * work::row_seconds(row.dofs(), duration, None) / SECONDS_PER_STEP
+    record_seconds(row, samples, dt) / SECONDS_PER_STEP
 }
 
 /// The work of running every member `times` times (levels of an IDA).
@@ -158,24 +156,42 @@ pub struct RowRan {
     pub elapsed_ms: f64,
 }
 
-/// Runs the row suite of `args` within the work bound, with progress;
-/// `what` names the request in the bound's message.
-pub fn run(args: &RowStudyArgs, what: &str) -> Result<RowRan, CliError> {
+/// Runs the row suite of `args` within the work bound, with progress, or
+/// with `--shard` one shard of it (then `None`: its part was written), or
+/// under `pounding merge` its runs from the parts. `command` names the
+/// request in the bound's message and in its parts.
+pub fn run(args: &RowStudyArgs, command: &str) -> Result<Option<RowRan>, CliError> {
     let (case, members) = case_of(args)?;
     let scales = plan(&case, &members).map_err(failed)?;
     let work = work_of(&case.row, &members, 1);
-    work.check(what, args.allow_long, true)?;
+    work.check(&format!("{command} --buildings"), args.allow_long, true)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
-    let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
-    let runs = run_suite(&case.row, &members, &scales, &done).map_err(failed)?;
+    let units: Vec<RowUnit> = scales.iter().copied().enumerate().collect();
+    let Some((runs, merged_ms)) = super::shard::row_suite::runs(
+        args.shard,
+        command,
+        args.buildings,
+        &case,
+        &members,
+        &units,
+        &(),
+        failed,
+        || {
+            let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
+            run_suite(&case.row, &members, &scales, &done).map_err(failed)
+        },
+    )?
+    else {
+        return Ok(None);
+    };
     drop(progress);
-    Ok(RowRan {
+    Ok(Some(RowRan {
         case,
         members,
         runs,
-        elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
-    })
+        elapsed_ms: merged_ms.unwrap_or(start.elapsed().as_secs_f64() * 1e3),
+    }))
 }
 
 /// `pounding suite --buildings`: its typed report handed to `emit`.
@@ -183,12 +199,15 @@ pub fn report_with(
     args: &RowStudyArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let RowRan {
+    let Some(RowRan {
         case,
         runs,
         elapsed_ms,
         ..
-    } = run(args, "suite --buildings")?;
+    }) = run(args, "suite")?
+    else {
+        return Ok(());
+    };
     let report = RowSuiteReport {
         row: RowHeader::new(&case, args.suite),
         records: runs.iter().map(RowSuiteRow::of).collect(),

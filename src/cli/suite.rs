@@ -133,7 +133,7 @@ impl SuiteArgs {
             im: self.im.as_deref(),
             level: self.level.as_deref().map(parse_level).transpose()?,
             allow_long: self.long.allow_long,
-            sharded: self.shard.shard.is_some(),
+            shard: &self.shard,
         }))
     }
 }

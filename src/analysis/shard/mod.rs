@@ -11,7 +11,10 @@
 //! - [`merge`]: a set of parts checked as a whole (one request, no
 //!   duplicate, no missing shard) and their results put back in order;
 //! - [`map`], [`spectrum`]: what a map's and a spectrum's units are, what
-//!   they cost, and the counters a merged sweep reports.
+//!   they cost, and the counters a merged sweep reports;
+//! - [`suite`], [`row_suite`]: the units of suite studies on a pair and on
+//!   a row of buildings (a record at one plan), and how a record's row is
+//!   rebuilt from the runs a part carries.
 //!
 //! The results carried by a part are the typed results of the library (map
 //! cells, spectrum points, …), so a merge builds the same report from the
@@ -24,6 +27,7 @@ pub mod map;
 pub mod merge;
 pub mod part;
 pub mod partition;
+pub mod row_suite;
 pub mod spec;
 pub mod spectrum;
 pub mod suite;

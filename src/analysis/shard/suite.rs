@@ -51,14 +51,20 @@ pub fn fingerprint(
     let mut f = Fingerprint::new(command);
     f.add_str(preset);
     f.add_debug(case);
+    add_records(&mut f, members);
+    f.add_debug(&plans);
+    f.add_debug(extra);
+    f
+}
+
+/// Every record of a suite into `f`: its name, its list's scale, its
+/// sample interval and every sample.
+pub fn add_records(f: &mut Fingerprint, members: &[SuiteMember]) {
     for m in members {
         f.add_str(&m.name);
         f.add_f64s(&[m.scale, m.record.dt]);
         f.add_f64s(&m.record.acceleration);
     }
-    f.add_debug(&plans);
-    f.add_debug(extra);
-    f
 }
 
 /// One record to run: the case (a suite map's cell), the record, its plan.

@@ -8,6 +8,7 @@
 
 pub mod gap;
 pub mod map;
+pub mod row_suite;
 pub mod spectrum;
 pub mod suite;
 
@@ -88,6 +89,18 @@ impl ShardArgs {
         unit_work: &[f64],
         compute: impl FnOnce(&[usize]) -> Vec<T>,
     ) -> Result<Sweep<T>, CliError> {
+        self.try_sweep(command, fingerprint, unit_work, |mine| Ok(compute(mine)))
+    }
+
+    /// [`ShardArgs::sweep`] with a computation that can fail: a shard whose
+    /// units fail writes no part and returns the failure.
+    pub fn try_sweep<T: Serialize + DeserializeOwned>(
+        &self,
+        command: &str,
+        fingerprint: Fingerprint,
+        unit_work: &[f64],
+        compute: impl FnOnce(&[usize]) -> Result<Vec<T>, CliError>,
+    ) -> Result<Sweep<T>, CliError> {
         self.check()?;
         if let Some(parts) = &self.merge {
             return from_parts(parts, command, &fingerprint, unit_work.len());
@@ -108,7 +121,7 @@ impl ShardArgs {
         crate::output::Target::open(&path)?;
         let mine = units_of(&partition(unit_work, shard.n), shard.k - 1);
         let t = Instant::now();
-        let results = compute(&mine);
+        let results = compute(&mine)?;
         let elapsed_ms = t.elapsed().as_secs_f64() * 1e3;
         let header = PartHeader {
             format: String::new(),

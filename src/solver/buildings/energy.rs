@@ -15,7 +15,7 @@
 //! function (fixed configuration), so the rule converges geometrically, to
 //! rounding with [`NODES`] points on the steps the series allows.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Points of the Gauss–Legendre rule.
 pub const NODES: usize = 12;
@@ -50,7 +50,7 @@ pub fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
 }
 
 /// The terms of the balance, J.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct RowEnergy {
     pub input: f64,
     pub kinetic: f64,

@@ -1,8 +1,10 @@
 //! What a row run returns (SPEC §13): per floor the peaks, per storey the
 //! drift demands, per floor pair the impacts.
 
+use serde::{Deserialize, Serialize};
+
 /// Peaks of one floor and of the storey below it.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct FloorPeaks {
     /// max |u_i| (m).
     pub displacement: f64,
@@ -21,7 +23,7 @@ pub struct FloorPeaks {
 }
 
 /// One impact at a floor pair.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct PairImpact {
     pub start: f64,
     /// When it separated (NaN if still in contact at the end).
@@ -36,7 +38,7 @@ pub struct PairImpact {
 }
 
 /// The impacts of one floor pair.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct PairResult {
     pub impacts: Vec<PairImpact>,
 }
@@ -54,7 +56,7 @@ impl PairResult {
 }
 
 /// A row run: floors of each building bottom to top, pairs in the layout's order.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RowRun {
     pub floors: Vec<Vec<FloorPeaks>>,
     pub pairs: Vec<PairResult>,
@@ -88,7 +90,7 @@ pub struct RowRun {
 /// value located on each step, so that its largest point is the impact's
 /// [`PairImpact::max_force`]. Between two impacts the pair is open and the
 /// force 0, a straight line between their points.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct ForceHistory {
     /// Per pair in the layout's order, (t in s, f_p in N), t increasing.
     pub pairs: Vec<Vec<(f64, f64)>>,
@@ -107,7 +109,7 @@ impl ForceHistory {
 /// The displacement u_i(t) of every floor at the end of every sub-step:
 /// exact there (SPEC §13's closed form or its series), and at most one
 /// sub-step apart (one radian of the fastest mode, and the record's samples).
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct RowTrace {
     /// Floors in the row's order.
     pub dofs: usize,
