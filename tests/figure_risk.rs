@@ -107,13 +107,109 @@ impl Svg {
 /// Runs `figure NAME` with the suite and `extra`, writing `file` in a
 /// temporary directory, and reads the SVG back.
 fn draw(name: &str, extra: &[&str]) -> Svg {
+    draw_study(name, &[&SUITE[..], extra].concat())
+}
+
+/// Runs `figure NAME` with `study` (buildings, suite, options), and reads
+/// the SVG back.
+fn draw_study(name: &str, study: &[&str]) -> Svg {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join(format!("{name}.svg"));
     let mut args = vec!["figure", name, "--out", out.to_str().unwrap()];
-    args.extend(SUITE);
-    args.extend(extra);
+    args.extend(study);
     succeeds(&args);
     Svg::read(&out)
+}
+
+/// A row's study: block-and-frame under eight simulated records.
+const ROW: [&str; 4] = ["--buildings", "block-and-frame", "--suite", "synthetic:8@2"];
+
+#[test]
+fn a_row_ida_has_a_panel_per_building_with_every_record_median_and_band() {
+    let levels = ["0.1", "0.3", "0.5"];
+    let svg = draw_study(
+        "ida",
+        &[&ROW[..], &["--levels", &levels.join(",")]].concat(),
+    );
+    // Per building, each record's curve with pounding from the origin
+    // through every level: eight in each of the two panels.
+    assert_eq!(svg.curves(FAINT), vec![1 + levels.len(); 2 * 8]);
+    assert_eq!(svg.curves(BLUE), vec![1 + levels.len(); 2]);
+    assert!(svg.strokes(DARK_ORANGE) > 2 * 2, "dashed medians apart");
+    assert_eq!(svg.polygons, vec![BLUE, ORANGE, BLUE, ORANGE]);
+    for text in [
+        "Largest storey drift ratio of block (%)",
+        "Largest storey drift ratio of frame (%)",
+        "PGA (g)",
+        "median, with pounding",
+        "median, without pounding (gap = ∞)",
+    ] {
+        assert!(svg.has_text(text), "`{text}` in {:?}", svg.texts);
+    }
+}
+
+/// The first number after `key` in `text` (up to a space or comma).
+fn number_after(text: &str, key: &str) -> f64 {
+    let rest = &text[text.find(key).unwrap_or_else(|| panic!("{key} in {text}")) + key.len()..];
+    let end = rest.find([' ', ',']).unwrap_or(rest.len());
+    rest[..end].parse().unwrap()
+}
+
+#[test]
+fn a_row_fragility_draws_the_fits_ida_buildings_reports() {
+    let study = [
+        &ROW[..],
+        &[
+            "--levels",
+            "0.1:1.0:0.1",
+            "--drift",
+            "0.005,frame:0.01,0.02",
+        ],
+    ]
+    .concat();
+    let svg = draw_study("fragility", &study);
+    let report: serde_json::Value = serde_json::from_slice(
+        &succeeds(&[&["ida", "--format", "json"][..], &study].concat()).stdout,
+    )
+    .unwrap();
+    let curves = report["fragility"].as_array().unwrap();
+    let states: Vec<&str> = curves
+        .iter()
+        .map(|c| c["limit_state"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        states,
+        [
+            "pounding (any)",
+            "drift>0.005 (any)",
+            "drift>0.01 (frame)",
+            "drift>0.02 (any)"
+        ]
+    );
+    let mut fitted = 0;
+    for c in curves {
+        let state = c["limit_state"].as_str().unwrap();
+        for (key, style) in [
+            ("fragility", "with pounding"),
+            ("no_pounding_fragility", "without pounding"),
+        ] {
+            let fit = &c[key];
+            if fit["outcome"] != "fitted" {
+                continue;
+            }
+            let legend = svg.texts_starting(&format!("{state}, {style}: "));
+            assert_eq!(legend.len(), 1, "{state}, {style} in {:?}", svg.texts);
+            // The legend's θ (4 digits) and β (3 decimals) are the report's.
+            let theta = fit["theta"].as_f64().unwrap();
+            let beta = fit["beta"].as_f64().unwrap();
+            assert!((number_after(legend[0], "θ = ") - theta).abs() <= 5e-4 * theta);
+            assert!((number_after(legend[0], "β = ") - beta).abs() <= 5e-4);
+            fitted += 1;
+        }
+    }
+    assert!(fitted >= 4, "fits to compare: {fitted}");
+    // Ten levels: a marker at each for pounding (circles), and its legend's.
+    assert_eq!(svg.circles, 10 + 1);
 }
 
 #[test]
@@ -292,6 +388,54 @@ fn bad_input_is_one_line_and_exit_2() {
         (
             vec!["figure", "fig3", "--suite", "synthetic:5"],
             "--suite applies to figure ida, fragility, separation, not fig3",
+        ),
+        (
+            [&["figure", "separation"][..], &ROW].concat(),
+            "figure separation: not with --buildings",
+        ),
+        (
+            [
+                &["figure", "ida", "--levels", "0.1", "--scale", "2"][..],
+                &ROW,
+            ]
+            .concat(),
+            "--scale applies to figure buildings, not ida",
+        ),
+        (
+            [
+                &["figure", "fragility", "--levels", "0.1", "--ductility", "2"][..],
+                &ROW,
+            ]
+            .concat(),
+            "--ductility 2: a row's storeys take --drift",
+        ),
+        (
+            [
+                &["figure", "fragility", "--levels", "0.1", "--drift", "0.01"][..],
+                &suite,
+                &physical,
+            ]
+            .concat(),
+            "--drift: applies to a row of buildings",
+        ),
+        (
+            vec!["figure", "history", "--buildings", "block-and-frame"],
+            "--buildings applies to figure buildings, ida and fragility, not history",
+        ),
+        (
+            [
+                &[
+                    "figure",
+                    "ida",
+                    "--levels",
+                    "0.1",
+                    "--preset",
+                    "two-buildings",
+                ][..],
+                &ROW,
+            ]
+            .concat(),
+            "--preset: not with --buildings",
         ),
     ];
     for (args, expected) in cases {

@@ -41,6 +41,21 @@ pub struct BuildingsArgs {
 }
 
 impl BuildingsArgs {
+    /// The options of a row's ground motion (`--scale`, `--tail`,
+    /// `--amplitude`, `--period`) that were given.
+    pub fn motion_flags(&self) -> Vec<&'static str> {
+        [
+            ("--scale", self.scale.is_some()),
+            ("--tail", self.tail.is_some()),
+            ("--amplitude", self.amplitude.is_some()),
+            ("--period", self.period.is_some()),
+        ]
+        .into_iter()
+        .filter(|(_, given)| *given)
+        .map(|(flag, _)| flag)
+        .collect()
+    }
+
     /// The row, with `--set` and `--model` applied.
     pub fn row(&self, overrides: &[String], model: Option<&str>) -> Result<Row, CliError> {
         let name = self.buildings.as_deref().unwrap_or("block-and-frame");

@@ -155,6 +155,18 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
     }
     if !name.is_some_and(FigureName::is_risk) {
         args.risk.check_applies(name, &args.name)?;
+        if args.row.buildings.is_some() {
+            return Err(usage(format!(
+                "--buildings applies to figure buildings, ida and fragility, not {}",
+                args.name
+            )));
+        }
+        if let Some(flag) = args.row.motion_flags().first() {
+            return Err(usage(format!(
+                "{flag} applies to figure buildings, not {}",
+                args.name
+            )));
+        }
     }
     let grid = match &args.omega1 {
         Some(text) => Some(text.parse().map_err(|e| usage(&e))?),
@@ -167,7 +179,7 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
         suite: None,
     };
     if let Some(n) = name.filter(|n| n.is_risk()) {
-        options.suite = Some(figure_risk::study(&args.risk, &args.params, n)?);
+        options.suite = Some(figure_risk::study(&args.risk, &args.params, &args.row, n)?);
     } else if let Some(n) = name.filter(|n| !n.is_paper()) {
         let plan = SpectrumPlan::resolve(
             &args.params,

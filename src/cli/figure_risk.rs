@@ -1,21 +1,26 @@
 //! The options of `pounding figure ida|fragility|separation`: the suite,
 //! its scaling and what each figure asks, parsed as `pounding suite`,
-//! `ida` and `gap --suite` parse them, into a [`SuiteStudy`] for
-//! [`crate::figure::risk`].
+//! `ida` and `gap --suite` parse them, into a [`RiskStudy`] for
+//! [`crate::figure::risk`] (the pair) or [`crate::figure::risk_row`] (a
+//! row of buildings, `--buildings`: ida and fragility).
 
 use clap::Args;
 
 use super::CliError;
 use super::budget::LongArg;
+use super::buildings::BuildingsArgs;
 use super::gap_suite::DEFAULT_PROBABILITIES;
 use super::ida::LimitStateArgs;
 use super::params::ParamArgs;
 use super::records::members;
+use super::row_ida::{RowIdaArgs, RowLimitArgs, limit_states};
+use super::row_suite::{self, RowStudyArgs};
+use super::shard::ShardArgs;
 use super::suite::{SuiteArgs, case_of, work_of};
 use crate::analysis::ida::{parse_levels, plan_levels};
 use crate::analysis::separation::parse_probabilities;
 use crate::analysis::suite::plan;
-use crate::figure::{FigureName, SuiteStudy};
+use crate::figure::{FigureName, RiskStudy, RowSuiteStudy, SuiteStudy};
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct RiskArgs {
@@ -37,6 +42,9 @@ pub struct RiskArgs {
     /// fragility: the limit states beside pounding.
     #[command(flatten)]
     pub limits: LimitStateArgs,
+    /// fragility with --buildings: storey drift limit states and the building read.
+    #[command(flatten)]
+    pub row_limits: RowLimitArgs,
     #[command(flatten)]
     pub long: LongArg,
 }
@@ -72,6 +80,12 @@ impl RiskArgs {
                 &[Fragility][..],
             ),
             (self.limits.force.is_some(), "--force", &[Fragility][..]),
+            (self.row_limits.drift.is_some(), "--drift", &[Fragility][..]),
+            (
+                self.row_limits.building.is_some(),
+                "--building",
+                &[Fragility][..],
+            ),
         ]
         .into_iter()
         .filter(|(given, ..)| *given)
@@ -101,15 +115,27 @@ impl RiskArgs {
 pub fn study(
     risk: &RiskArgs,
     params: &ParamArgs,
+    row: &BuildingsArgs,
     name: FigureName,
-) -> Result<SuiteStudy, CliError> {
+) -> Result<RiskStudy, CliError> {
     risk.check_applies(Some(name), name.name())?;
+    if let Some(flag) = row.motion_flags().first() {
+        return Err(usage(format!(
+            "{flag} applies to figure buildings, not {name} (a suite scales its records by --level, \
+             --levels or its list)"
+        )));
+    }
     let suite = risk.suite.clone().ok_or_else(|| {
         usage(format!(
             "figure {name}: needs --suite (a directory, a list file or synthetic:N) and a preset \
-             with [physical], e.g. --preset two-buildings --suite synthetic:20"
+             with [physical], e.g. --preset two-buildings --suite synthetic:20, or a row, \
+             --buildings block-and-frame"
         ))
     })?;
+    if let Some(buildings) = &row.buildings {
+        return row_study(risk, params, buildings, suite, name).map(RiskStudy::Row);
+    }
+    risk.row_limits.refuse_on_a_pair()?;
     let suite_args = SuiteArgs {
         params: params.clone(),
         suite: suite.clone(),
@@ -144,7 +170,7 @@ pub fn study(
         risk.long.allow_long,
         false,
     )?;
-    Ok(SuiteStudy {
+    Ok(RiskStudy::Pair(SuiteStudy {
         preset: preset.name.clone(),
         suite,
         case,
@@ -152,5 +178,62 @@ pub fn study(
         levels,
         states,
         probabilities,
+    }))
+}
+
+/// The study of figure `name` on the row `buildings`, as `ida --buildings`
+/// reads it: the row with `--set` and `--model`, the scaling, the limit
+/// states (pounding first), checked and planned before any run.
+fn row_study(
+    risk: &RiskArgs,
+    params: &ParamArgs,
+    buildings: &str,
+    suite: String,
+    name: FigureName,
+) -> Result<RowSuiteStudy, CliError> {
+    if name == FigureName::Separation {
+        return Err(usage(format!(
+            "figure {name}: not with --buildings (it draws the pair's minimum separation); \
+             `pounding gap --buildings {buildings} --suite {suite}` gives each joint's"
+        )));
+    }
+    let text = risk.levels.as_deref().ok_or_else(|| {
+        usage(format!(
+            "figure {name}: needs --levels START:STOP:STEP or X1,X2,… (intensities in g)"
+        ))
+    })?;
+    let levels = parse_levels(text).map_err(usage)?;
+    let shard = ShardArgs::default();
+    let study = RowStudyArgs {
+        buildings,
+        params,
+        suite: &suite,
+        im: risk.im.as_deref(),
+        level: None,
+        allow_long: risk.long.allow_long,
+        shard: &shard,
+    };
+    let ida = RowIdaArgs {
+        study,
+        levels: text,
+        limits: &risk.row_limits,
+        ductility: risk.limits.ductility.as_deref(),
+        acceleration: risk.limits.acceleration.as_deref(),
+        force: risk.limits.force.as_deref(),
+    };
+    let (case, members) = row_suite::case_of(&study)?;
+    let states = limit_states(&ida, &case.row)?;
+    crate::analysis::row_ida::plan_levels(&case, &members, &levels).map_err(row_suite::failed)?;
+    row_suite::work_of(&case.row, &members, levels.len()).check(
+        &format!("figure {name}"),
+        risk.long.allow_long,
+        false,
+    )?;
+    Ok(RowSuiteStudy {
+        suite,
+        case,
+        members,
+        levels,
+        states,
     })
 }

@@ -104,17 +104,7 @@ pub fn report_with(
         };
         return super::row_ida::report_with(&row, emit);
     }
-    for (flag, given) in [
-        ("--drift", args.row_limits.drift.is_some()),
-        ("--building", args.row_limits.building.is_some()),
-    ] {
-        if given {
-            return Err(usage(format!(
-                "{flag}: applies to a row of buildings; give --buildings PRESET \
-                 (a pair's limit states are --ductility, --acceleration, --force)"
-            )));
-        }
-    }
+    args.row_limits.refuse_on_a_pair()?;
     let levels = parse_levels(&args.levels).map_err(usage)?;
     let states = args.limits.parse()?;
     let (preset, case) = case_of(&args.suite)?;

@@ -47,6 +47,24 @@ pub struct RowLimitArgs {
     pub building: Option<String>,
 }
 
+impl RowLimitArgs {
+    /// Refuses `--drift` and `--building` where the study is of the pair.
+    pub fn refuse_on_a_pair(&self) -> Result<(), CliError> {
+        for (flag, given) in [
+            ("--drift", self.drift.is_some()),
+            ("--building", self.building.is_some()),
+        ] {
+            if given {
+                return Err(usage(format!(
+                    "{flag}: applies to a row of buildings; give --buildings PRESET \
+                     (a pair's limit states are --ductility, --acceleration, --force)"
+                )));
+            }
+        }
+        Ok(())
+    }
+}
+
 /// `ida --buildings` as the command line asks for it.
 #[derive(Debug, Clone, Copy)]
 pub struct RowIdaArgs<'a> {

@@ -7,6 +7,7 @@
 //! - [`history`]: Figures 3–6 and the scenes `history`, `loops`, `contact-laws`;
 //! - [`spectra`]: Figures 7–10 and the scene `spectrum`, regions shaded;
 //! - [`risk`]: a suite study's IDA curves, fragility curves and separation;
+//! - [`risk_row`]: the same IDA and fragility figures of a row of buildings;
 //! - [`caption`]: the caption line (every Π, the law, the method);
 //! - [`render`]: plotters, SVG and bitmap back ends;
 //! - [`font`]: the embedded typeface (no system fonts needed);
@@ -24,6 +25,7 @@ pub mod history;
 pub mod map;
 pub mod render;
 pub mod risk;
+pub mod risk_row;
 pub mod runs;
 pub mod spec;
 pub mod spectra;
@@ -35,6 +37,7 @@ use crate::analysis::grid::Grid;
 use crate::model::{Method, Params};
 
 pub use risk::SuiteStudy;
+pub use risk_row::RowSuiteStudy;
 pub use spec::{Band, Figure, LegendEntry, Panel, Pen, Series, Stroke};
 pub use spectra::SpectrumInput;
 
@@ -224,7 +227,17 @@ pub struct Options {
     pub grid: Option<Grid>,
     pub scene: Scene,
     /// The suite study of `ida`, `fragility` and `separation`.
-    pub suite: Option<SuiteStudy>,
+    pub suite: Option<RiskStudy>,
+}
+
+/// A suite study: of the pair of buildings, or of a row (`ida` and
+/// `fragility` only).
+// Made once per figure: the variants' sizes do not matter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone, PartialEq)]
+pub enum RiskStudy {
+    Pair(SuiteStudy),
+    Row(RowSuiteStudy),
 }
 
 /// Computes a figure.
@@ -273,10 +286,16 @@ pub fn build(name: FigureName, options: &Options) -> Result<Figure, FigureError>
                     "figure {name}: draws a suite study; give --preset (with [physical]) and --suite"
                 ))
             })?;
-            match name {
-                FigureName::Ida => risk::ida_figure(study),
-                FigureName::Fragility => risk::fragility_figure(study),
-                _ => risk::separation_figure(study),
+            match (name, study) {
+                (FigureName::Ida, RiskStudy::Pair(s)) => risk::ida_figure(s),
+                (FigureName::Fragility, RiskStudy::Pair(s)) => risk::fragility_figure(s),
+                (_, RiskStudy::Pair(s)) => risk::separation_figure(s),
+                (FigureName::Ida, RiskStudy::Row(s)) => risk_row::row_ida_figure(s),
+                (FigureName::Fragility, RiskStudy::Row(s)) => risk_row::row_fragility_figure(s),
+                (_, RiskStudy::Row(_)) => Err(FigureError::Input(format!(
+                    "figure {name}: draws the pair's separation; on a row, \
+                     `pounding gap --buildings NAME --suite SUITE` gives each joint's"
+                ))),
             }
         }
     }

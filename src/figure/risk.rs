@@ -119,68 +119,68 @@ fn caption(study: &SuiteStudy, scaling: &str) -> String {
 /// of the buildings and suite followed by `note`.
 fn figure(kind: &str, study: &SuiteStudy, panel: Panel, note: &str) -> Figure {
     Figure {
-        title: format!(
-            "{kind}: {} under suite {} ({} records)",
-            study.preset,
-            study.suite,
-            study.members.len()
-        ),
+        title: title(kind, &study.preset, &study.suite, study.members.len()),
         panels: vec![panel],
         caption: caption(study, note),
     }
 }
 
-fn levels_text(study: &SuiteStudy) -> String {
-    let (first, last) = (study.levels[0], study.levels[study.levels.len() - 1]);
+/// A suite figure's title: `kind` of the buildings `name` under the suite.
+pub(super) fn title(kind: &str, name: &str, suite: &str, records: usize) -> String {
+    format!("{kind}: {name} under suite {suite} ({records} records)")
+}
+
+/// The scaling of an IDA at `levels` (g) of `measure`, for a caption.
+pub(super) fn levels_text(measure: IntensityMeasure, levels: &[f64]) -> String {
+    let (first, last) = (levels[0], levels[levels.len() - 1]);
     format!(
-        "each record scaled to {} = {}–{} g ({} levels)",
-        study.case.scaling.measure,
+        "each record scaled to {measure} = {}–{} g ({} levels)",
         g4(first),
         g4(last),
-        study.levels.len()
+        levels.len()
     )
 }
 
-/// IDA curves of the left structure's peak drift (mm) against IM (g).
-pub fn ida_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
-    let runs = ida_runs(study)?;
-    let drift = |r: &SuiteRun, pounding: bool| {
-        let si = if pounding { &r.si } else { &r.free_si };
-        si.left.peak_displacement_m * 1e3
-    };
-    let mut panel = Panel::new(
-        0,
-        "Left structure",
-        "Peak drift of the left structure u1,max (mm)",
-        &intensity_label(study.case.scaling.measure),
-    );
-    let styles = [
-        (true, WITH, Stroke::Solid, "with pounding"),
-        (false, WITHOUT, Stroke::Dashed, "without pounding (gap = ∞)"),
-    ];
+/// The styles of the runs with pounding and without (gap = ∞).
+const STYLES: [(bool, usize, Stroke, &str); 2] = [
+    (true, WITH, Stroke::Solid, "with pounding"),
+    (false, WITHOUT, Stroke::Dashed, "without pounding (gap = ∞)"),
+];
+
+/// IDA curves of one demand against IM (Vamvatsikos and Cornell 2002):
+/// `demand(l, j, pounding)` of record j at level l, one faint curve per
+/// record from (0, 0), the median and the 16–84 % band over the records at
+/// each level, with pounding (solid) and without (dashed). IM is vertical.
+pub(super) fn ida_panel(
+    index: usize,
+    title: &str,
+    x_label: &str,
+    (measure, levels): (IntensityMeasure, &[f64]),
+    records: usize,
+    demand: impl Fn(usize, usize, bool) -> f64,
+) -> Panel {
+    let mut panel = Panel::new(index, title, x_label, &intensity_label(measure));
     let mut medians = Vec::new();
-    for &(pounding, color, stroke, name) in &styles {
-        for j in 0..study.members.len() {
+    for &(pounding, color, stroke, name) in &STYLES {
+        for j in 0..records {
             let mut points = vec![(0.0, 0.0)];
             points.extend(
-                study
-                    .levels
+                levels
                     .iter()
-                    .zip(&runs)
-                    .map(|(&x, at)| (drift(&at[j], pounding), x)),
+                    .enumerate()
+                    .map(|(l, &x)| (demand(l, j, pounding), x)),
             );
             panel.series.push(
                 Series::new(format!("each record, {name}"), color, stroke, points)
                     .with_pen(Pen::Faint),
             );
         }
-        let summaries: Vec<(f64, Summary)> = study
-            .levels
+        let summaries: Vec<(f64, Summary)> = levels
             .iter()
-            .zip(&runs)
-            .map(|(&x, at)| {
-                let drifts: Vec<f64> = at.iter().map(|r| drift(r, pounding)).collect();
-                (x, Summary::of(&drifts))
+            .enumerate()
+            .map(|(l, &x)| {
+                let values: Vec<f64> = (0..records).map(|j| demand(l, j, pounding)).collect();
+                (x, Summary::of(&values))
             })
             .collect();
         let mut outline = vec![(0.0, 0.0)];
@@ -203,6 +203,25 @@ pub fn ida_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
     }
     // The medians go over every record's curve.
     panel.series.extend(medians);
+    panel
+}
+
+/// IDA curves of the left structure's peak drift (mm) against IM (g).
+pub fn ida_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
+    let runs = ida_runs(study)?;
+    let measure = study.case.scaling.measure;
+    let mut panel = ida_panel(
+        0,
+        "Left structure",
+        "Peak drift of the left structure u1,max (mm)",
+        (measure, &study.levels),
+        study.members.len(),
+        |l, j, pounding| {
+            let r = &runs[l][j];
+            let si = if pounding { &r.si } else { &r.free_si };
+            si.left.peak_displacement_m * 1e3
+        },
+    );
     let gap = study.case.physical.gap;
     if gap.is_finite() {
         panel.guides.push(Guide {
@@ -219,7 +238,7 @@ pub fn ida_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
         &format!(
             "{}; curves: peak drift of the left structure at each level, \
              median and 16–84 % over the records",
-            levels_text(study)
+            levels_text(measure, &study.levels)
         ),
     ))
 }
@@ -277,11 +296,28 @@ fn fragility_series(
 pub fn fragility_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
     let runs = ida_runs(study)?;
     let curves: Vec<LimitStateFragility> = fragilities(&study.levels, &runs, &study.states);
-    let x_max = 1.05 * study.levels[study.levels.len() - 1];
+    let measure = study.case.scaling.measure;
+    Ok(figure(
+        "Fragility",
+        study,
+        fragility_panel(&curves, measure, &study.levels),
+        &fragility_note(measure, &study.levels),
+    ))
+}
+
+/// The fragility curves of `curves` over `levels` (g) of `measure`: each
+/// limit state's fit and observed fractions, with pounding solid and
+/// without dashed.
+pub(super) fn fragility_panel(
+    curves: &[LimitStateFragility],
+    measure: IntensityMeasure,
+    levels: &[f64],
+) -> Panel {
+    let x_max = 1.05 * levels[levels.len() - 1];
     let mut panel = Panel::new(
         0,
         "Fragility: P(exceed | IM = x) = Φ(ln(x/θ)/β)",
-        &intensity_label(study.case.scaling.measure),
+        &intensity_label(measure),
         "P(exceed)",
     );
     for (i, c) in curves.iter().enumerate() {
@@ -310,16 +346,16 @@ pub fn fragility_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
     }
     panel.x_range = Some((0.0, x_max));
     panel.y_range = Some((-0.03, 1.03));
-    Ok(figure(
-        "Fragility",
-        study,
-        panel,
-        &format!(
-            "{}; lines: maximum-likelihood lognormal fits (SPEC §12), markers: \
-             observed fractions k/n; solid with pounding, dashed without (gap = ∞)",
-            levels_text(study)
-        ),
-    ))
+    panel
+}
+
+/// What a fragility figure's caption says of its curves.
+pub(super) fn fragility_note(measure: IntensityMeasure, levels: &[f64]) -> String {
+    format!(
+        "{}; lines: maximum-likelihood lognormal fits (SPEC §12), markers: \
+         observed fractions k/n; solid with pounding, dashed without (gap = ∞)",
+        levels_text(measure, levels)
+    )
 }
 
 /// The records' empirical distribution of `gaps` (mm) as a step curve from

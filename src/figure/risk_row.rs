@@ -1,0 +1,156 @@
+//! Figures of a suite study on a row of buildings (SPEC §12, §13): the IDA
+//! curves of each building's storey drift ratio and the fragility curves of
+//! the row's limit states. The runs and the fits are
+//! [`crate::analysis::row_ida`]'s, the drawing [`super::risk`]'s, so a
+//! row's figures read as the pair's do.
+//!
+//! - [`row_ida_figure`]: one panel per building, IM against its largest
+//!   storey drift ratio max_i |Δ_i|/h_i (%), one faint curve per record,
+//!   the median and the 16–84 % band, with pounding (solid) and with every
+//!   joint open (dashed).
+//! - [`row_fragility_figure`]: P(exceed | IM = x) = Φ(ln(x/θ)/β) of
+//!   pounding and of each limit state asked (`--drift`, `--acceleration`,
+//!   `--force`, each of a named building or of any).
+
+use crate::analysis::row_ida::{fragilities, plan_levels, run_levels};
+use crate::analysis::row_limit_state::RowLimitState;
+use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun};
+use crate::model::buildings::matrices::periods;
+use crate::model::params::echo::g4;
+use crate::model::suite::SuiteMember;
+
+use super::FigureError;
+use super::risk::{fragility_note, fragility_panel, ida_panel, levels_text, title};
+use super::spec::Figure;
+
+/// A suite study on a row to draw: the row and scaling, the records, the
+/// IDA's levels and the limit states beside pounding.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowSuiteStudy {
+    /// The suite as given (`synthetic:20`, a path), for the title and caption.
+    pub suite: String,
+    pub case: RowSuiteCase,
+    pub members: Vec<SuiteMember>,
+    /// Intensity levels (g), ascending.
+    pub levels: Vec<f64>,
+    /// The limit states, pounding first (as `ida --buildings` reads them).
+    pub states: Vec<RowLimitState>,
+}
+
+/// Every record at every level (level by level), or the first run that failed.
+fn runs(study: &RowSuiteStudy) -> Result<Vec<Vec<RowSuiteRun>>, FigureError> {
+    if study.levels.is_empty() {
+        return Err(FigureError::Input("an IDA needs --levels".into()));
+    }
+    let plans = plan_levels(&study.case, &study.members, &study.levels)
+        .map_err(|e| FigureError::Input(e.to_string()))?;
+    run_levels(&study.case, &study.members, &plans, &|_: &RowSuiteRun| {})
+        .map_err(|e| FigureError::Run(e.to_string()))
+}
+
+/// The row, the suite and `note`, for every caption: each building's
+/// storeys and T₁, each joint's gap, the contact law.
+fn caption(study: &RowSuiteStudy, note: &str) -> String {
+    let row = &study.case.row;
+    let buildings: Vec<String> = row
+        .buildings
+        .iter()
+        .map(|b| {
+            format!(
+                "{} ({} storeys, T1 = {} s)",
+                b.name,
+                b.storeys(),
+                g4(periods(b)[0])
+            )
+        })
+        .collect();
+    let gaps: Vec<String> = row
+        .joints
+        .iter()
+        .enumerate()
+        .map(|(j, joint)| {
+            let gap = if joint.gap.is_finite() {
+                format!("{} mm", g4(joint.gap * 1e3))
+            } else {
+                "inf".into()
+            };
+            let [a, b] = [j, j + 1].map(|k| &row.buildings[k].name);
+            format!("{a}–{b} {gap}")
+        })
+        .collect();
+    format!(
+        "{}: {}; gaps {}; suite {} ({} records), {note}; {} contact; exact method",
+        row.name,
+        buildings.join(", "),
+        gaps.join(", "),
+        study.suite,
+        study.members.len(),
+        row.model.name(),
+    )
+}
+
+/// IDA curves of each building's largest storey drift ratio (%) against IM (g).
+pub fn row_ida_figure(study: &RowSuiteStudy) -> Result<Figure, FigureError> {
+    let runs = runs(study)?;
+    let measure = study.case.scaling.measure;
+    let panels = study
+        .case
+        .row
+        .buildings
+        .iter()
+        .enumerate()
+        .map(|(b, building)| {
+            ida_panel(
+                b,
+                &building.name,
+                &format!("Largest storey drift ratio of {} (%)", building.name),
+                (measure, &study.levels),
+                study.members.len(),
+                |l, j, pounding| {
+                    let d = &runs[l][j].demands;
+                    let of = if pounding {
+                        &d.buildings
+                    } else {
+                        &d.no_pounding
+                    };
+                    of[b].max_drift_ratio * 100.0
+                },
+            )
+        })
+        .collect();
+    Ok(Figure {
+        title: title(
+            "IDA",
+            &study.case.row.name,
+            &study.suite,
+            study.members.len(),
+        ),
+        panels,
+        caption: caption(
+            study,
+            &format!(
+                "{}; curves: each building's largest storey drift ratio max |Δ_i|/h_i at each \
+                 level, median and 16–84 % over the records; dashed: every joint open",
+                levels_text(measure, &study.levels)
+            ),
+        ),
+    })
+}
+
+/// P(exceed | IM) of pounding and of each limit state asked, with pounding
+/// (solid) and with every joint open (dashed).
+pub fn row_fragility_figure(study: &RowSuiteStudy) -> Result<Figure, FigureError> {
+    let runs = runs(study)?;
+    let curves = fragilities(&study.levels, &runs, &study.states);
+    let measure = study.case.scaling.measure;
+    Ok(Figure {
+        title: title(
+            "Fragility",
+            &study.case.row.name,
+            &study.suite,
+            study.members.len(),
+        ),
+        panels: vec![fragility_panel(&curves, measure, &study.levels)],
+        caption: caption(study, &fragility_note(measure, &study.levels)),
+    })
+}
