@@ -66,7 +66,7 @@ fn reduces(excitation: Excitation, ground: impl Fn(f64, f64) -> Ground, velocity
         );
         assert!((f.velocity - v).abs() < 1e-10, "{name}: {} {v}", f.velocity);
     }
-    assert!(sdof.impacts.len() > 0, "{name}: the pair pounds");
+    assert!(!sdof.impacts.is_empty(), "{name}: the pair pounds");
     assert_eq!(r.impacts(), sdof.impacts.len(), "{name}");
     let acc = [
         sdof.left.peak_absolute_acceleration,

@@ -14,6 +14,9 @@
 //! (gap = ∞), so the same fragility of the no-pounding pair sits beside it,
 //! and the effect of pounding on a limit state is one comparison.
 
+// Comparisons are written `!(a > b)` on purpose: a NaN must fail them.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use std::sync::Mutex;
 
 use rayon::prelude::*;

@@ -305,6 +305,9 @@ pub struct SuiteStatistics {
 /// Each demand of SPEC §6 in SI, its key and unit, for statistics.
 type Demand = (&'static str, &'static str, fn(&DemandsSi) -> f64);
 
+/// A demand of a record's run as a whole (impacts, force, gap), for statistics.
+type RunDemand = fn(&SuiteRun) -> f64;
+
 const DEMANDS: [Demand; 6] = [
     ("peak_displacement_m", "m", |d| d.peak_displacement_m),
     ("peak_velocity_m_s", "m/s", |d| d.peak_velocity_m_s),
@@ -332,7 +335,7 @@ impl SuiteStatistics {
                 });
             }
         }
-        let pair: [(&str, &'static str, fn(&SuiteRun) -> f64); 3] = [
+        let pair: [(&str, &'static str, RunDemand); 3] = [
             ("impacts", "", |r| r.result.impacts.len() as f64),
             ("max_force_kn", "kN", SuiteRun::max_force_kn),
             ("min_gap_m", "m", SuiteRun::min_gap_m),

@@ -231,8 +231,8 @@ pub fn study_table(
     );
     let _ = writeln!(
         s,
-        "{:<5} {:>16} {:>18} {:>12}  {}",
-        "rule", "holds (records)", "on medians mm", "P(pounding)", "enough at probability"
+        "{:<5} {:>16} {:>18} {:>12}  enough at probability",
+        "rule", "holds (records)", "on medians mm", "P(pounding)"
     );
     for r in &st.rules {
         let enough = if r.sufficient_at.is_empty() {

@@ -147,10 +147,10 @@ impl ParamArgs {
         }
         // A physical preset under a record: the record's own a_p and ω_p
         // set the Π-groups of the same buildings (SPEC §12), as in a suite.
-        if let Excitation::Record(motion) = p.ground() {
-            if let Some(physical) = self.physical(&preset)?.filter(|_| motion.record.peak > 0.0) {
-                p = physical.under_record(&p, motion)?;
-            }
+        if let Excitation::Record(motion) = p.ground()
+            && let Some(physical) = self.physical(&preset)?.filter(|_| motion.record.peak > 0.0)
+        {
+            p = physical.under_record(&p, motion)?;
         }
         if self.no_pounding {
             p.gap = f64::INFINITY;

@@ -18,6 +18,7 @@ use super::row_suite::{
 };
 use super::study_tables::closing_tables;
 use crate::analysis::ida::{LimitStateFragility, parse_levels};
+use crate::analysis::limit_state::LimitStateError;
 use crate::analysis::row_ida::{fragilities, plan_levels, run_levels};
 use crate::analysis::row_limit_state::{RowLimitParser, RowLimitState};
 use crate::analysis::row_suite::{RowSuiteRun, statistics};
@@ -30,6 +31,9 @@ use crate::output::report::Report;
 fn usage(message: String) -> CliError {
     CliError::Usage(message)
 }
+
+/// How one flag's items become limit states.
+type ParseLimits = fn(&RowLimitParser, &str) -> Result<Vec<RowLimitState>, LimitStateError>;
 
 /// The limit states of a row of buildings beside `--acceleration`,
 /// `--force` and pounding (SPEC §12, §13; [`crate::analysis::row_limit_state`]).
@@ -92,7 +96,7 @@ pub fn limit_states(args: &RowIdaArgs, row: &Row) -> Result<Vec<RowLimitState>, 
     let parser = RowLimitParser::new(row, args.limits.building.as_deref())
         .map_err(|e| usage(e.to_string()))?;
     let mut states = vec![parser.pounding()];
-    let flags: [(Option<&str>, fn(&RowLimitParser, &str) -> _); 3] = [
+    let flags: [(Option<&str>, ParseLimits); 3] = [
         (args.limits.drift.as_deref(), RowLimitParser::drift),
         (args.acceleration, RowLimitParser::acceleration),
         (args.force, RowLimitParser::force),
@@ -110,7 +114,7 @@ pub fn report_with(
     args: &RowIdaArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let levels = parse_levels(&args.levels).map_err(usage)?;
+    let levels = parse_levels(args.levels).map_err(usage)?;
     let (case, members) = case_of(&args.study)?;
     let states = limit_states(args, &case.row)?;
     let plans = plan_levels(&case, &members, &levels).map_err(failed)?;

@@ -97,8 +97,8 @@ fn fragility_table(s: &mut String, fragility: &[LimitStateFragility], levels: &[
         .max(11);
     let _ = writeln!(
         s,
-        "{:<width$}  {:<36}  {}",
-        "limit state", "with pounding", "without pounding (gap = ∞)"
+        "{:<width$}  {:<36}  without pounding (gap = ∞)",
+        "limit state", "with pounding"
     );
     for f in fragility {
         let _ = writeln!(

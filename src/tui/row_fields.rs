@@ -208,14 +208,14 @@ pub fn nudged(
         Kind::Stiffness(i) => one(scaled(&row.buildings[i].stiffness, f)),
         Kind::YieldDrift(i) => {
             let d = &row.buildings[i].yield_drift;
-            d.iter().all(|x| x.is_finite()).then(|| ())?;
+            d.iter().all(|x| x.is_finite()).then_some(())?;
             one(scaled(d, f))
         }
         Kind::Alpha(i) => one(number(round(row.buildings[i].alpha + 0.01 * steps, 1e9))),
         Kind::Damping(i) => one(number(round(row.buildings[i].damping + 0.005 * steps, 1e9))),
         Kind::Gap(j) => {
             let g = row.joints[j].gap;
-            g.is_finite().then(|| ())?;
+            g.is_finite().then_some(())?;
             one(number(g * f))
         }
         Kind::JointStiffness(j) => one(number(row.joints[j].stiffness * f)),

@@ -91,12 +91,30 @@ impl App {
                 pane.play.pause();
                 Ok(())
             }
-            KeyCode::Char('[') => Ok(pane.move_cursor(-1.0, columns)),
-            KeyCode::Char(']') => Ok(pane.move_cursor(1.0, columns)),
-            KeyCode::Char('{') => Ok(pane.move_cursor(-10.0, columns)),
-            KeyCode::Char('}') => Ok(pane.move_cursor(10.0, columns)),
-            KeyCode::Home => Ok(pane.cursor = 0.0),
-            KeyCode::End => Ok(pane.cursor = pane.duration()),
+            KeyCode::Char('[') => {
+                pane.move_cursor(-1.0, columns);
+                Ok(())
+            }
+            KeyCode::Char(']') => {
+                pane.move_cursor(1.0, columns);
+                Ok(())
+            }
+            KeyCode::Char('{') => {
+                pane.move_cursor(-10.0, columns);
+                Ok(())
+            }
+            KeyCode::Char('}') => {
+                pane.move_cursor(10.0, columns);
+                Ok(())
+            }
+            KeyCode::Home => {
+                pane.cursor = 0.0;
+                Ok(())
+            }
+            KeyCode::End => {
+                pane.cursor = pane.duration();
+                Ok(())
+            }
             KeyCode::Char(c @ ('<' | '>')) => {
                 let shown = self
                     .jobs
@@ -107,9 +125,18 @@ impl App {
                 }
                 Ok(())
             }
-            KeyCode::Char('(') => Ok(pane.play.step_speed(false)),
-            KeyCode::Char(')') => Ok(pane.play.step_speed(true)),
-            KeyCode::Char('o') => Ok(pane.panel = pane.panel.next()),
+            KeyCode::Char('(') => {
+                pane.play.step_speed(false);
+                Ok(())
+            }
+            KeyCode::Char(')') => {
+                pane.play.step_speed(true);
+                Ok(())
+            }
+            KeyCode::Char('o') => {
+                pane.panel = pane.panel.next();
+                Ok(())
+            }
             KeyCode::Char('|') => {
                 pane.side_by_side = !pane.side_by_side;
                 Ok(())

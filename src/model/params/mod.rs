@@ -191,16 +191,16 @@ impl Params {
         // A record of zeros has no a_p to scale by (SPEC §9: a_p defaults to
         // its peak |a|), and shakes nothing: refuse it rather than run it at
         // an invented amplitude.
-        if let Excitation::Record(m) = self.excitation {
-            if m.record.peak <= 0.0 {
-                return Err(ParamError::OutOfRange {
-                    key: "excitation",
-                    value: m.record.spec.clone(),
-                    allowed: "every sample of the record is zero: a record needs a nonzero \
-                              acceleration to set a_p and to shake anything"
-                        .into(),
-                });
-            }
+        if let Excitation::Record(m) = self.excitation
+            && m.record.peak <= 0.0
+        {
+            return Err(ParamError::OutOfRange {
+                key: "excitation",
+                value: m.record.spec.clone(),
+                allowed: "every sample of the record is zero: a record needs a nonzero \
+                          acceleration to set a_p and to shake anything"
+                    .into(),
+            });
         }
         let dt_max = self.dt_max();
         if self.dt > dt_max {

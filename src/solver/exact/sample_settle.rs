@@ -35,6 +35,9 @@
 //! band within the margin), the sample is left to the full tests of
 //! [`super::sample::clear`].
 
+// Comparisons are written `!(a > b)` on purpose: a NaN must fail them.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use super::roots::monotone_root;
 use super::sample_peaks::IntervalSeries;
 use super::sample_run::{Margins, Pair, Peaks, Step, inside};
