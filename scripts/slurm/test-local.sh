@@ -4,10 +4,10 @@
 # mariadb-server for the accounting that sacct reads (as root; otherwise it
 # says "skipped: …" and exits 0), starts munged, MariaDB, slurmdbd,
 # slurmctld and slurmd with minimal configurations in a temporary directory,
-# submits a small sharded map as a job array (submit.sh: sweep.sbatch, then
-# merge.sbatch after it), waits with squeue, shows the jobs with sacct, and
-# checks that the merge equals the unsharded map but for its timing field.
-# Exits 0 only then.
+# submits a small sharded map and a suite on a row of buildings, each as a
+# job array (submit.sh: sweep.sbatch, then merge.sbatch after it), waits
+# with squeue, shows the jobs with sacct, and checks that each merge equals
+# the unsharded output but for its timing field. Exits 0 only then.
 # Every daemon it started is stopped by its PID and the temporary directory
 # removed, whatever happens.
 #
@@ -207,43 +207,56 @@ done
 [ -n "$up" ] || fail "the node did not come up ($(timeout 5 sinfo -h -o '%n %t' 2>&1 | head -1))"
 say "munged, MariaDB, slurmdbd, slurmctld and slurmd up after $(($(date +%s) - started)) s"
 
-# A small map, unsharded here and as a job array of 3 shards there.
-work="$tmp/work"
-mkdir -p "$work"
-cd "$work"
-map=(map --x omega1=0.2:2.4:0.1 --y mu=1:4:0.5 --format json)
-"$POUNDING" "${map[@]}" >unsharded.json
-read -r array merge < <(timeout 30 "$here/submit.sh" 3 "$work/parts" "$work/merged.json" "${map[@]}")
-[ -n "${merge:-}" ] || fail "sbatch did not take the jobs"
-say "submitted job array $array (3 shards) and merge job $merge"
-done_=
-deadline=$((SECONDS + 180))
-while [ $SECONDS -lt $deadline ]; do
-    queued=$(timeout 5 squeue -h -j "$array,$merge" -o %i 2>/dev/null) || queued=unknown
-    if [ -z "$queued" ]; then done_=1; break; fi
-    sleep 0.3
-done
-[ -n "$done_" ] || fail "the jobs did not finish within 3 minutes"
-echo "sacct:"
-# The accounting database takes the jobs' ends a moment after squeue drops them.
-lines=
-for _ in $(seq 20); do
-    lines=$(timeout 10 sacct -j "$array,$merge" -X -P --format=JobID,JobName,State,ExitCode,Start,End,Elapsed 2>/dev/null) || lines=
-    [ "$(grep -c COMPLETED <<<"$lines")" -ge 4 ] && break
-    sleep 0.5
-done
-if [ -n "$lines" ]; then
-    echo "$lines"
-else
-    # Without a slurmdbd there is no accounting database: Slurm's own job
-    # completion log holds the same facts.
-    echo "(no accounting database; Slurm's job completion log instead)"
-    awk '{ o = ""; for (i = 1; i <= NF; i++) if ($i ~ /^(JobId|Name|JobState|StartTime|EndTime|ExitCode)=/) o = o " " $i; print substr(o, 2) }' \
-        "$tmp/jobcomp.txt" 2>/dev/null || true
-fi
-[ -f merged.json ] || fail "the merge job wrote nothing ($(cat "$work"/parts/slurm-merge-*.out 2>/dev/null))"
 untimed() { sed -E 's/"elapsed_ms":[0-9.e+-]+/"elapsed_ms":T/' "$1"; }
-if ! diff <(untimed unsharded.json) <(untimed merged.json) >/dev/null; then
-    fail "the merged map differs from the unsharded one"
-fi
-say "OK: the merge of 3 shards run by Slurm equals the unsharded map ($(wc -c <merged.json) bytes)"
+
+# Runs COMMAND ARGS... unsharded here and as a job array of N shards there
+# (submit.sh), waits for the array and its merge, shows them with sacct and
+# checks that the merge equals the unsharded output but for its timing.
+#   sharded_equals NAME N COMMAND ARGS...
+sharded_equals() {
+    local name=$1 n=$2
+    shift 2
+    local work="$tmp/work-$name"
+    mkdir -p "$work"
+    cd "$work"
+    "$POUNDING" "$@" >unsharded.json
+    local array merge
+    read -r array merge < <(timeout 30 "$here/submit.sh" "$n" "$work/parts" "$work/merged.json" "$@")
+    [ -n "${merge:-}" ] || fail "$name: sbatch did not take the jobs"
+    say "$name: submitted job array $array ($n shards) and merge job $merge"
+    local done_= queued
+    local deadline=$((SECONDS + 180))
+    while [ $SECONDS -lt $deadline ]; do
+        queued=$(timeout 5 squeue -h -j "$array,$merge" -o %i 2>/dev/null) || queued=unknown
+        if [ -z "$queued" ]; then done_=1; break; fi
+        sleep 0.3
+    done
+    [ -n "$done_" ] || fail "$name: the jobs did not finish within 3 minutes"
+    echo "sacct:"
+    # The accounting database takes the jobs' ends a moment after squeue drops them.
+    local lines=
+    for _ in $(seq 20); do
+        lines=$(timeout 10 sacct -j "$array,$merge" -X -P --format=JobID,JobName,State,ExitCode,Start,End,Elapsed 2>/dev/null) || lines=
+        [ "$(grep -c COMPLETED <<<"$lines")" -ge $((n + 1)) ] && break
+        sleep 0.5
+    done
+    if [ -n "$lines" ]; then
+        echo "$lines"
+    else
+        # Without a slurmdbd there is no accounting database: Slurm's own job
+        # completion log holds the same facts.
+        echo "(no accounting database; Slurm's job completion log instead)"
+        awk '{ o = ""; for (i = 1; i <= NF; i++) if ($i ~ /^(JobId|Name|JobState|StartTime|EndTime|ExitCode)=/) o = o " " $i; print substr(o, 2) }' \
+            "$tmp/jobcomp.txt" 2>/dev/null || true
+    fi
+    [ -f merged.json ] || fail "$name: the merge job wrote nothing ($(cat "$work"/parts/slurm-merge-*.out 2>/dev/null))"
+    if ! diff <(untimed unsharded.json) <(untimed merged.json) >/dev/null; then
+        fail "$name: the merged output differs from the unsharded one"
+    fi
+    say "OK: the merge of $n shards run by Slurm equals the unsharded $name ($(wc -c <merged.json) bytes)"
+}
+
+# A small map, and a suite on a row of buildings (each record's row runs in
+# the parts).
+sharded_equals map 3 map --x omega1=0.2:2.4:0.1 --y mu=1:4:0.5 --format json
+sharded_equals row-suite 2 suite --buildings block-and-frame --suite synthetic:6@2 --level 0.3g --format json
