@@ -213,6 +213,61 @@ fn a_row_fragility_draws_the_fits_ida_buildings_reports() {
 }
 
 #[test]
+fn a_row_separation_has_a_panel_per_joint_with_what_gap_buildings_reports() {
+    let study = [
+        "--buildings",
+        "three-in-series",
+        "--suite",
+        "synthetic:8@2",
+        "--level",
+        "0.3g",
+    ];
+    let svg = draw_study("separation", &study);
+    let report: serde_json::Value = serde_json::from_slice(
+        &succeeds(&[&["gap", "--format", "json"][..], &study].concat()).stdout,
+    )
+    .unwrap();
+    let joints = report["joints"].as_array().unwrap();
+    assert_eq!(joints.len(), 2);
+    for (j, joint) in joints.iter().enumerate() {
+        let (left, right) = (
+            joint["left"].as_str().unwrap(),
+            joint["right"].as_str().unwrap(),
+        );
+        let title = format!(
+            "({}) Joint {left}–{right}: each record's gap that prevents pounding (SPEC §13)",
+            ["a", "b"][j]
+        );
+        assert!(svg.has_text(&title), "`{title}` in {:?}", svg.texts);
+        // The lognormal fit's median (mm, 4 digits) and β (3 decimals), and
+        // ABS on the median peaks (mm): the report's.
+        let fit = &joint["study"]["lognormal"];
+        let median = 1e3 * fit["median"].as_f64().unwrap();
+        let beta = fit["dispersion"].as_f64().unwrap();
+        let legend = svg
+            .texts_starting("lognormal fit: median ")
+            .into_iter()
+            .find(|t| (number_after(t, "median ") - median).abs() <= 5e-4 * median)
+            .unwrap_or_else(|| panic!("a fit of median {median} mm in {:?}", svg.texts));
+        assert!((number_after(legend, "β = ") - beta).abs() <= 5e-4);
+        let abs = 1e3
+            * joint["study"]["rules"][0]["at_median_peaks"]
+                .as_f64()
+                .unwrap();
+        assert!(
+            svg.texts_starting("ABS on the median peaks: ")
+                .iter()
+                .any(|t| (number_after(t, "peaks: ") - abs).abs() <= 5e-4 * abs),
+            "ABS at {abs} mm in {:?}",
+            svg.texts
+        );
+    }
+    // Each joint's records as a step curve: a riser and a tread per record.
+    assert_eq!(svg.curves(BLUE).len(), 2, "{:?}", svg.curves(BLUE));
+    assert!(svg.has_text("records (empirical, N = 8)"));
+}
+
+#[test]
 fn ida_has_a_curve_per_record_and_a_median_and_band_in_each_style() {
     let levels = ["0.1", "0.2", "0.4", "0.6"];
     let svg = draw("ida", &["--levels", &levels.join(",")]);
@@ -390,8 +445,12 @@ fn bad_input_is_one_line_and_exit_2() {
             "--suite applies to figure ida, fragility, separation, not fig3",
         ),
         (
-            [&["figure", "separation"][..], &ROW].concat(),
-            "figure separation: not with --buildings",
+            [
+                &["figure", "separation", "--level", "0.3", "--drift", "0.01"][..],
+                &ROW,
+            ]
+            .concat(),
+            "--drift applies to figure fragility, not separation",
         ),
         (
             [

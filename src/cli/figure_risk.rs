@@ -2,7 +2,7 @@
 //! its scaling and what each figure asks, parsed as `pounding suite`,
 //! `ida` and `gap --suite` parse them, into a [`RiskStudy`] for
 //! [`crate::figure::risk`] (the pair) or [`crate::figure::risk_row`] (a
-//! row of buildings, `--buildings`: ida and fragility).
+//! row of buildings, `--buildings`).
 
 use clap::Args;
 
@@ -16,7 +16,7 @@ use super::records::members;
 use super::row_ida::{RowIdaArgs, RowLimitArgs, limit_states};
 use super::row_suite::{self, RowStudyArgs};
 use super::shard::ShardArgs;
-use super::suite::{SuiteArgs, case_of, work_of};
+use super::suite::{SuiteArgs, case_of, parse_level, work_of};
 use crate::analysis::ida::{parse_levels, plan_levels};
 use crate::analysis::separation::parse_probabilities;
 use crate::analysis::suite::plan;
@@ -182,8 +182,9 @@ pub fn study(
 }
 
 /// The study of figure `name` on the row `buildings`, as `ida --buildings`
-/// reads it: the row with `--set` and `--model`, the scaling, the limit
-/// states (pounding first), checked and planned before any run.
+/// and `gap --buildings --suite` read it: the row with `--set` and
+/// `--model`, the scaling, the limit states (pounding first) or the
+/// probabilities, checked and planned before any run.
 fn row_study(
     risk: &RiskArgs,
     params: &ParamArgs,
@@ -191,25 +192,33 @@ fn row_study(
     suite: String,
     name: FigureName,
 ) -> Result<RowSuiteStudy, CliError> {
-    if name == FigureName::Separation {
-        return Err(usage(format!(
-            "figure {name}: not with --buildings (it draws the pair's minimum separation); \
-             `pounding gap --buildings {buildings} --suite {suite}` gives each joint's"
-        )));
-    }
-    let text = risk.levels.as_deref().ok_or_else(|| {
-        usage(format!(
-            "figure {name}: needs --levels START:STOP:STEP or X1,X2,… (intensities in g)"
-        ))
-    })?;
-    let levels = parse_levels(text).map_err(usage)?;
+    let separation = name == FigureName::Separation;
+    let text = match (separation, risk.levels.as_deref()) {
+        (true, _) => "",
+        (false, Some(text)) => text,
+        (false, None) => {
+            return Err(usage(format!(
+                "figure {name}: needs --levels START:STOP:STEP or X1,X2,… (intensities in g)"
+            )));
+        }
+    };
+    let levels = if separation {
+        Vec::new()
+    } else {
+        parse_levels(text).map_err(usage)?
+    };
+    let probabilities = parse_probabilities(
+        "--probability",
+        risk.probability.as_deref().unwrap_or(DEFAULT_PROBABILITIES),
+    )
+    .map_err(|e| usage(e.to_string()))?;
     let shard = ShardArgs::default();
     let study = RowStudyArgs {
         buildings,
         params,
         suite: &suite,
         im: risk.im.as_deref(),
-        level: None,
+        level: risk.level.as_deref().map(parse_level).transpose()?,
         allow_long: risk.long.allow_long,
         shard: &shard,
     };
@@ -223,8 +232,13 @@ fn row_study(
     };
     let (case, members) = row_suite::case_of(&study)?;
     let states = limit_states(&ida, &case.row)?;
-    crate::analysis::row_ida::plan_levels(&case, &members, &levels).map_err(row_suite::failed)?;
-    row_suite::work_of(&case.row, &members, levels.len()).check(
+    if separation {
+        crate::analysis::row_suite::plan(&case, &members).map_err(row_suite::failed)?;
+    } else {
+        crate::analysis::row_ida::plan_levels(&case, &members, &levels)
+            .map_err(row_suite::failed)?;
+    }
+    row_suite::work_of(&case.row, &members, levels.len().max(1)).check(
         &format!("figure {name}"),
         risk.long.allow_long,
         false,
@@ -235,5 +249,6 @@ fn row_study(
         members,
         levels,
         states,
+        probabilities,
     })
 }

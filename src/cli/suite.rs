@@ -139,7 +139,7 @@ impl SuiteArgs {
 }
 
 /// `--level X`: a positive, finite level in g (`0.3` or `0.3g`).
-fn parse_level(text: &str) -> Result<f64, CliError> {
+pub fn parse_level(text: &str) -> Result<f64, CliError> {
     let t = text.trim();
     let v = t.strip_suffix('g').unwrap_or(t).trim().parse::<f64>();
     match v {

@@ -7,7 +7,7 @@
 //! - [`history`]: Figures 3–6 and the scenes `history`, `loops`, `contact-laws`;
 //! - [`spectra`]: Figures 7–10 and the scene `spectrum`, regions shaded;
 //! - [`risk`]: a suite study's IDA curves, fragility curves and separation;
-//! - [`risk_row`]: the same IDA and fragility figures of a row of buildings;
+//! - [`risk_row`]: the same three figures of a row of buildings;
 //! - [`caption`]: the caption line (every Π, the law, the method);
 //! - [`render`]: plotters, SVG and bitmap back ends;
 //! - [`font`]: the embedded typeface (no system fonts needed);
@@ -230,8 +230,7 @@ pub struct Options {
     pub suite: Option<RiskStudy>,
 }
 
-/// A suite study: of the pair of buildings, or of a row (`ida` and
-/// `fragility` only).
+/// A suite study: of the pair of buildings, or of a row.
 // Made once per figure: the variants' sizes do not matter.
 #[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, PartialEq)]
@@ -292,10 +291,7 @@ pub fn build(name: FigureName, options: &Options) -> Result<Figure, FigureError>
                 (_, RiskStudy::Pair(s)) => risk::separation_figure(s),
                 (FigureName::Ida, RiskStudy::Row(s)) => risk_row::row_ida_figure(s),
                 (FigureName::Fragility, RiskStudy::Row(s)) => risk_row::row_fragility_figure(s),
-                (_, RiskStudy::Row(_)) => Err(FigureError::Input(format!(
-                    "figure {name}: draws the pair's separation; on a row, \
-                     `pounding gap --buildings NAME --suite SUITE` gives each joint's"
-                ))),
+                (_, RiskStudy::Row(s)) => risk_row::row_separation_figure(s),
             }
         }
     }

@@ -18,7 +18,7 @@
 use crate::analysis::fragility::{self, Fragility, LevelCount, describe};
 use crate::analysis::ida::{LimitStateFragility, fragilities, plan_levels, run_levels};
 use crate::analysis::limit_state::LimitState;
-use crate::analysis::separation::{self, RecordGap, probability_of_pounding};
+use crate::analysis::separation::{self, RecordGap, SeparationStudy, probability_of_pounding};
 use crate::analysis::statistics::Summary;
 use crate::analysis::suite::{SuiteCase, SuiteRun, plan, run_suite};
 use crate::model::intensity::IntensityMeasure;
@@ -385,7 +385,49 @@ pub fn separation_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
     let records: Vec<RecordGap> = runs.iter().map(RecordGap::of).collect();
     let gaps: Vec<f64> = records.iter().map(|r| r.min_gap).collect();
     let result = separation::study(&records, &study.probabilities);
-    let gap = study.case.physical.gap;
+    let panel = separation_panel(
+        0,
+        "Minimum separation of each record, Π_d,min (SPEC §11)",
+        &gaps,
+        &result,
+        ("the preset's gap", study.case.physical.gap),
+    );
+    let mm = 1e3;
+    Ok(figure(
+        "Separation",
+        study,
+        panel,
+        &format!(
+            "{}; Π_d,min of each record from its run without contact; \
+             code rules on the median peaks of the separate structures ({} mm, {} mm; ρ = {:.3})",
+            scaling_text(study.case.scaling.measure, study.case.scaling.level),
+            g4(result.median_peaks[0] * mm),
+            g4(result.median_peaks[1] * mm),
+            result.correlation
+        ),
+    ))
+}
+
+/// How a suite at one scaling is scaled, for a caption.
+pub(super) fn scaling_text(measure: IntensityMeasure, level: Option<f64>) -> String {
+    match level {
+        Some(x) => format!("each record scaled to {measure} = {} g", g4(x)),
+        None => "records at their list's scale".into(),
+    }
+}
+
+/// The records' gaps that prevent pounding (`gaps`, m) as an empirical step
+/// curve (mm) with its lognormal fit, each probability of `result` a
+/// horizontal line with its gap written, the gap at rest (`gap`: its name
+/// and value, m) and the code rules on the median peaks as labelled
+/// vertical lines, each with its probability of pounding.
+pub(super) fn separation_panel(
+    index: usize,
+    title: &str,
+    gaps: &[f64],
+    result: &SeparationStudy,
+    (gap_name, gap): (&str, f64),
+) -> Panel {
     let mm = 1e3;
     // The x axis reaches past every finite value drawn.
     let largest = gaps
@@ -398,8 +440,8 @@ pub fn separation_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
     let x_max = 1.1 * mm * largest.max(1e-6);
 
     let mut panel = Panel::new(
-        0,
-        "Minimum separation of each record, Π_d,min (SPEC §11)",
+        index,
+        title,
         "Separation d (mm)",
         "P(Π_d,min ≤ d): share of records that do not pound",
     );
@@ -463,9 +505,9 @@ pub fn separation_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
             color: None,
             tag: "gap".into(),
             label: format!(
-                "the preset's gap: {} mm, P(pounding) = {}",
+                "{gap_name}: {} mm, P(pounding) = {}",
                 g4(gap * mm),
-                g4(probability_of_pounding(&gaps, gap))
+                g4(probability_of_pounding(gaps, gap))
             ),
         });
     }
@@ -484,26 +526,7 @@ pub fn separation_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
     }
     panel.x_range = Some((0.0, x_max));
     panel.y_range = Some((0.0, 1.04));
-    let scaling = match study.case.scaling.level {
-        Some(x) => format!(
-            "each record scaled to {} = {} g",
-            study.case.scaling.measure,
-            g4(x)
-        ),
-        None => "records at their list's scale".into(),
-    };
-    Ok(figure(
-        "Separation",
-        study,
-        panel,
-        &format!(
-            "{scaling}; Π_d,min of each record from its run without contact; \
-             code rules on the median peaks of the separate structures ({} mm, {} mm; ρ = {:.3})",
-            g4(result.median_peaks[0] * mm),
-            g4(result.median_peaks[1] * mm),
-            result.correlation
-        ),
-    ))
+    panel
 }
 
 #[cfg(test)]

@@ -1,8 +1,9 @@
 //! Figures of a suite study on a row of buildings (SPEC §12, §13): the IDA
-//! curves of each building's storey drift ratio and the fragility curves of
-//! the row's limit states. The runs and the fits are
-//! [`crate::analysis::row_ida`]'s, the drawing [`super::risk`]'s, so a
-//! row's figures read as the pair's do.
+//! curves of each building's storey drift ratio, the fragility curves of
+//! the row's limit states and each joint's separation. The runs and the
+//! fits are [`crate::analysis::row_ida`]'s and
+//! [`crate::analysis::row_separation`]'s, the drawing [`super::risk`]'s, so
+//! a row's figures read as the pair's do.
 //!
 //! - [`row_ida_figure`]: one panel per building, IM against its largest
 //!   storey drift ratio max_i |Δ_i|/h_i (%), one faint curve per record,
@@ -11,16 +12,23 @@
 //! - [`row_fragility_figure`]: P(exceed | IM = x) = Φ(ln(x/θ)/β) of
 //!   pounding and of each limit state asked (`--drift`, `--acceleration`,
 //!   `--force`, each of a named building or of any).
+//! - [`row_separation_figure`]: one panel per joint, the records' gaps that
+//!   prevent pounding there (from the runs apart) as an empirical step
+//!   curve with its lognormal fit, the gap at each probability, the
+//!   joint's gap and the code rules on the median peaks of its paired floors.
 
 use crate::analysis::row_ida::{fragilities, plan_levels, run_levels};
 use crate::analysis::row_limit_state::RowLimitState;
-use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun};
+use crate::analysis::row_separation::joint_separations;
+use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun, plan, run_suite};
 use crate::model::buildings::matrices::periods;
 use crate::model::params::echo::g4;
 use crate::model::suite::SuiteMember;
 
 use super::FigureError;
-use super::risk::{fragility_note, fragility_panel, ida_panel, levels_text, title};
+use super::risk::{
+    fragility_note, fragility_panel, ida_panel, levels_text, scaling_text, separation_panel, title,
+};
 use super::spec::Figure;
 
 /// A suite study on a row to draw: the row and scaling, the records, the
@@ -31,10 +39,12 @@ pub struct RowSuiteStudy {
     pub suite: String,
     pub case: RowSuiteCase,
     pub members: Vec<SuiteMember>,
-    /// Intensity levels (g), ascending.
+    /// Intensity levels (g), ascending (ida, fragility).
     pub levels: Vec<f64>,
     /// The limit states, pounding first (as `ida --buildings` reads them).
     pub states: Vec<RowLimitState>,
+    /// The probabilities of no pounding asked for (separation).
+    pub probabilities: Vec<f64>,
 }
 
 /// Every record at every level (level by level), or the first run that failed.
@@ -152,5 +162,49 @@ pub fn row_fragility_figure(study: &RowSuiteStudy) -> Result<Figure, FigureError
         ),
         panels: vec![fragility_panel(&curves, measure, &study.levels)],
         caption: caption(study, &fragility_note(measure, &study.levels)),
+    })
+}
+
+/// Each joint's separation at the case's scaling: one panel per joint.
+pub fn row_separation_figure(study: &RowSuiteStudy) -> Result<Figure, FigureError> {
+    let row = &study.case.row;
+    let scales =
+        plan(&study.case, &study.members).map_err(|e| FigureError::Input(e.to_string()))?;
+    let runs = run_suite(row, &study.members, &scales, &|_: &RowSuiteRun| {})
+        .map_err(|e| FigureError::Run(e.to_string()))?;
+    let joints = joint_separations(row, &runs, &study.probabilities);
+    let panels = joints
+        .iter()
+        .enumerate()
+        .map(|(j, joint)| {
+            let gaps: Vec<f64> = runs
+                .iter()
+                .map(|r| r.demands.joints[j].gap.min_gap)
+                .collect();
+            separation_panel(
+                j,
+                &format!(
+                    "Joint {}–{}: each record's gap that prevents pounding (SPEC §13)",
+                    joint.left, joint.right
+                ),
+                &gaps,
+                &joint.study,
+                ("the joint's gap", joint.gap_m),
+            )
+        })
+        .collect();
+    let scaling = &study.case.scaling;
+    Ok(Figure {
+        title: title("Separation", &row.name, &study.suite, study.members.len()),
+        panels,
+        caption: caption(
+            study,
+            &format!(
+                "{}; each record's gap at a joint from its run with every joint open: the largest \
+                 u_A − u_B over its paired floors; code rules on the median peaks of the paired \
+                 floors, the largest over them",
+                scaling_text(scaling.measure, scaling.level)
+            ),
+        ),
     })
 }
