@@ -123,6 +123,19 @@ fn suite_merges_to_the_unsharded_suite() {
 }
 
 #[test]
+fn gap_suite_merges_to_the_unsharded_separation() {
+    merges_equal(
+        &[
+            &["gap"],
+            &TWO[..],
+            &["--suite", "synthetic:4@2", "--level", "0.3g"],
+        ]
+        .concat(),
+        &["json", "table"],
+    );
+}
+
+#[test]
 fn ida_merges_to_the_unsharded_ida() {
     merges_equal(
         &[

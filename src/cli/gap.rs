@@ -93,17 +93,16 @@ pub fn report_with(
         .records
         .request(&args.params, args.output, args.long, &others)?
     {
-        if args.shard.shard.is_some() {
-            return Err(CliError::Usage(
-                "--shard: gap shards a sweep over --x, not a suite; drop --shard or --suite".into(),
-            ));
-        }
         if args.x.is_some() {
             return Err(CliError::Usage(
                 "--x: a suite's separation is for the preset's buildings; drop --x or --suite"
                     .into(),
             ));
         }
+        let suite_args = super::suite::SuiteArgs {
+            shard: args.shard.clone(),
+            ..suite_args
+        };
         return super::gap_suite::report_with(&suite_args, args.probability.as_deref(), emit);
     }
     let (preset, mut p) = args.params.resolve()?;

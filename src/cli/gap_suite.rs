@@ -11,7 +11,7 @@ use serde::Serialize;
 use super::CliError;
 use super::description::Provenance;
 use super::output::{Emit, num};
-use super::suite::{Ran, SuiteArgs, run};
+use super::suite::{Ran, SuiteArgs, run_or_shard};
 use crate::analysis::separation::{
     RecordGap, SeparationStudy, parse_probabilities, probability_of_pounding, study,
 };
@@ -45,12 +45,15 @@ pub fn report_with(
 ) -> Result<(), CliError> {
     let probabilities = probabilities(probability)?;
     let suite = suite_args.suite.as_str();
-    let Ran {
+    let Some(Ran {
         preset,
         case,
         runs,
         elapsed_ms,
-    } = run(suite_args, "gap --suite")?;
+    }) = run_or_shard(suite_args, "gap")?
+    else {
+        return Ok(());
+    };
     let records: Vec<RecordGap> = runs.iter().map(RecordGap::of).collect();
     if let Some(r) = runs.iter().find(|r| !r.free.completed) {
         return Err(CliError::Failed(format!(

@@ -206,18 +206,10 @@ pub fn work_of<'a>(plans: impl IntoIterator<Item = &'a MemberPlan>) -> Work {
 
 /// Loads the suite of `args`, plans every record before any run (a zero
 /// record or Π-groups out of range fail at once, naming the record), and
-/// runs them in parallel with progress; `what` names the request in the
-/// work bound's message.
-pub fn run(args: &SuiteArgs, what: &str) -> Result<Ran, CliError> {
-    run_or_shard(args, what)?.ok_or_else(|| {
-        usage(format!(
-            "--shard: {what} does not shard; shard suite, ida, map, spectrum or gap --x"
-        ))
-    })
-}
-
-/// [`run`], or with `--shard` one shard of it (then `None`: its part was
-/// written), or under `pounding merge` the runs from the parts.
+/// runs them in parallel with progress; or with `--shard` one shard of it
+/// (then `None`: its part was written), or under `pounding merge` the runs
+/// from the parts. `what` names the request in the work bound's message
+/// and in its parts.
 pub fn run_or_shard(args: &SuiteArgs, what: &str) -> Result<Option<Ran>, CliError> {
     let (preset, case) = case_of(args)?;
     let members = members(&args.suite)?;

@@ -21,7 +21,8 @@ pub fn run(
     }
     if !sweep {
         return Err(CliError::Usage(
-            "--shard: gap shards a sweep; give --x KEY=START:STOP:STEP".into(),
+            "--shard: gap shards a sweep or a suite; give --x KEY=START:STOP:STEP or --suite SUITE"
+                .into(),
         ));
     }
     let fp = fingerprint(preset, points);
