@@ -245,7 +245,7 @@ fn a_row_separation_has_a_panel_per_joint_with_what_gap_buildings_reports() {
         let median = 1e3 * fit["median"].as_f64().unwrap();
         let beta = fit["dispersion"].as_f64().unwrap();
         let legend = svg
-            .texts_starting("lognormal fit: median ")
+            .texts_starting(&format!("{left}–{right}: lognormal fit: median "))
             .into_iter()
             .find(|t| (number_after(t, "median ") - median).abs() <= 5e-4 * median)
             .unwrap_or_else(|| panic!("a fit of median {median} mm in {:?}", svg.texts));
@@ -255,7 +255,7 @@ fn a_row_separation_has_a_panel_per_joint_with_what_gap_buildings_reports() {
                 .as_f64()
                 .unwrap();
         assert!(
-            svg.texts_starting("ABS on the median peaks: ")
+            svg.texts_starting(&format!("{left}–{right}: ABS on the median peaks: "))
                 .iter()
                 .any(|t| (number_after(t, "peaks: ") - abs).abs() <= 5e-4 * abs),
             "ABS at {abs} mm in {:?}",

@@ -391,6 +391,7 @@ pub fn separation_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
         &gaps,
         &result,
         ("the preset's gap", study.case.physical.gap),
+        "",
     );
     let mm = 1e3;
     Ok(figure(
@@ -420,13 +421,16 @@ pub(super) fn scaling_text(measure: IntensityMeasure, level: Option<f64>) -> Str
 /// curve (mm) with its lognormal fit, each probability of `result` a
 /// horizontal line with its gap written, the gap at rest (`gap`: its name
 /// and value, m) and the code rules on the median peaks as labelled
-/// vertical lines, each with its probability of pounding.
+/// vertical lines, each with its probability of pounding. `whose` starts
+/// the legend entries that differ from panel to panel (the fit, the gap,
+/// the rules), so that each names its panel.
 pub(super) fn separation_panel(
     index: usize,
     title: &str,
     gaps: &[f64],
     result: &SeparationStudy,
     (gap_name, gap): (&str, f64),
+    whose: &str,
 ) -> Panel {
     let mm = 1e3;
     // The x axis reaches past every finite value drawn.
@@ -461,7 +465,7 @@ pub(super) fn separation_panel(
             .collect();
         panel.series.push(Series::new(
             format!(
-                "lognormal fit: median {} mm, β = {:.3}",
+                "{whose}lognormal fit: median {} mm, β = {:.3}",
                 g4(fit.median * mm),
                 fit.dispersion
             ),
@@ -505,7 +509,7 @@ pub(super) fn separation_panel(
             color: None,
             tag: "gap".into(),
             label: format!(
-                "{gap_name}: {} mm, P(pounding) = {}",
+                "{whose}{gap_name}: {} mm, P(pounding) = {}",
                 g4(gap * mm),
                 g4(probability_of_pounding(gaps, gap))
             ),
@@ -517,7 +521,7 @@ pub(super) fn separation_panel(
             color: Some(2 + i),
             tag: r.rule.to_string(),
             label: format!(
-                "{} on the median peaks: {} mm, P(pounding) = {}",
+                "{whose}{} on the median peaks: {} mm, P(pounding) = {}",
                 r.rule,
                 g4(r.at_median_peaks * mm),
                 g4(r.pounding_probability)

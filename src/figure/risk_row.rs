@@ -190,6 +190,7 @@ pub fn row_separation_figure(study: &RowSuiteStudy) -> Result<Figure, FigureErro
                 &gaps,
                 &joint.study,
                 ("the joint's gap", joint.gap_m),
+                &format!("{}–{}: ", joint.left, joint.right),
             )
         })
         .collect();
