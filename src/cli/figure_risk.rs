@@ -132,17 +132,6 @@ pub fn study(
              --buildings block-and-frame"
         ))
     })?;
-    if let Some(buildings) = &row.buildings {
-        return row_study(risk, params, buildings, suite, name).map(RiskStudy::Row);
-    }
-    risk.row_limits.refuse_on_a_pair()?;
-    let suite_args = SuiteArgs {
-        params: params.clone(),
-        suite: suite.clone(),
-        im: risk.im.clone(),
-        level: risk.level.clone(),
-        ..SuiteArgs::default()
-    };
     let levels = match (name, &risk.levels) {
         (FigureName::Separation, _) => Vec::new(),
         (_, Some(text)) => parse_levels(text).map_err(usage)?,
@@ -152,12 +141,24 @@ pub fn study(
             )));
         }
     };
-    let states = risk.limits.parse()?;
     let probabilities = parse_probabilities(
         "--probability",
         risk.probability.as_deref().unwrap_or(DEFAULT_PROBABILITIES),
     )
     .map_err(|e| usage(e.to_string()))?;
+    if let Some(buildings) = &row.buildings {
+        let asked = (levels, probabilities);
+        return row_study(risk, params, buildings, suite, name, asked).map(RiskStudy::Row);
+    }
+    risk.row_limits.refuse_on_a_pair()?;
+    let suite_args = SuiteArgs {
+        params: params.clone(),
+        suite: suite.clone(),
+        im: risk.im.clone(),
+        level: risk.level.clone(),
+        ..SuiteArgs::default()
+    };
+    let states = risk.limits.parse()?;
     let (preset, case) = case_of(&suite_args)?;
     let members = members(&suite)?;
     let plans = match name {
@@ -183,35 +184,17 @@ pub fn study(
 
 /// The study of figure `name` on the row `buildings`, as `ida --buildings`
 /// and `gap --buildings --suite` read it: the row with `--set` and
-/// `--model`, the scaling, the limit states (pounding first) or the
-/// probabilities, checked and planned before any run.
+/// `--model`, the scaling, the limit states (pounding first), with the
+/// levels and probabilities `asked`, checked and planned before any run.
 fn row_study(
     risk: &RiskArgs,
     params: &ParamArgs,
     buildings: &str,
     suite: String,
     name: FigureName,
+    (levels, probabilities): (Vec<f64>, Vec<f64>),
 ) -> Result<RowSuiteStudy, CliError> {
     let separation = name == FigureName::Separation;
-    let text = match (separation, risk.levels.as_deref()) {
-        (true, _) => "",
-        (false, Some(text)) => text,
-        (false, None) => {
-            return Err(usage(format!(
-                "figure {name}: needs --levels START:STOP:STEP or X1,X2,… (intensities in g)"
-            )));
-        }
-    };
-    let levels = if separation {
-        Vec::new()
-    } else {
-        parse_levels(text).map_err(usage)?
-    };
-    let probabilities = parse_probabilities(
-        "--probability",
-        risk.probability.as_deref().unwrap_or(DEFAULT_PROBABILITIES),
-    )
-    .map_err(|e| usage(e.to_string()))?;
     let shard = ShardArgs::default();
     let study = RowStudyArgs {
         buildings,
@@ -224,7 +207,7 @@ fn row_study(
     };
     let ida = RowIdaArgs {
         study,
-        levels: text,
+        levels: risk.levels.as_deref().unwrap_or(""),
         limits: &risk.row_limits,
         ductility: risk.limits.ductility.as_deref(),
         acceleration: risk.limits.acceleration.as_deref(),
