@@ -479,7 +479,7 @@ fn bad_input_is_one_line_and_exit_2() {
         ),
         (
             vec!["figure", "history", "--buildings", "block-and-frame"],
-            "--buildings applies to figure buildings, ida and fragility, not history",
+            "--buildings applies to figure buildings, ida, fragility and separation, not history",
         ),
         (
             [

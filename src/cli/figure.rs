@@ -48,7 +48,8 @@ pub struct FigureArgs {
     /// The suite study of ida, fragility and separation.
     #[command(flatten)]
     pub risk: RiskArgs,
-    /// The row for `figure buildings` (SPEC §13).
+    /// The row for `figure buildings`, and for `ida`, `fragility` and
+    /// `separation` with `--buildings` (SPEC §13).
     #[command(flatten)]
     pub row: super::buildings::BuildingsArgs,
 }
@@ -153,17 +154,23 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
             args.name
         )));
     }
-    if !name.is_some_and(FigureName::is_risk) {
+    let risk = name.is_some_and(FigureName::is_risk);
+    if let Some(flag) = args.row.motion_flags().first() {
+        let why = if risk {
+            " (a suite scales its records by --level, --levels or its list)"
+        } else {
+            ""
+        };
+        return Err(usage(format!(
+            "{flag} applies to figure buildings, not {}{why}",
+            args.name
+        )));
+    }
+    if !risk {
         args.risk.check_applies(name, &args.name)?;
         if args.row.buildings.is_some() {
             return Err(usage(format!(
-                "--buildings applies to figure buildings, ida and fragility, not {}",
-                args.name
-            )));
-        }
-        if let Some(flag) = args.row.motion_flags().first() {
-            return Err(usage(format!(
-                "{flag} applies to figure buildings, not {}",
+                "--buildings applies to figure buildings, ida, fragility and separation, not {}",
                 args.name
             )));
         }
@@ -179,7 +186,8 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
         suite: None,
     };
     if let Some(n) = name.filter(|n| n.is_risk()) {
-        options.suite = Some(figure_risk::study(&args.risk, &args.params, &args.row, n)?);
+        let buildings = args.row.buildings.as_deref();
+        options.suite = Some(figure_risk::study(&args.risk, &args.params, buildings, n)?);
     } else if let Some(n) = name.filter(|n| !n.is_paper()) {
         let plan = SpectrumPlan::resolve(
             &args.params,

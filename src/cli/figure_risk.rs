@@ -8,7 +8,6 @@ use clap::Args;
 
 use super::CliError;
 use super::budget::LongArg;
-use super::buildings::BuildingsArgs;
 use super::gap_suite::DEFAULT_PROBABILITIES;
 use super::ida::LimitStateArgs;
 use super::params::ParamArgs;
@@ -109,22 +108,16 @@ impl RiskArgs {
 }
 
 /// The suite study of figure `name` (ida, fragility or separation) on the
-/// buildings and settings of `params`, checked and planned: a record
-/// that cannot be scaled, or work beyond the budget without `--allow-long`,
-/// is refused before any run.
+/// buildings and settings of `params`, or on the row `buildings`, checked
+/// and planned: a record that cannot be scaled, or work beyond the budget
+/// without `--allow-long`, is refused before any run.
 pub fn study(
     risk: &RiskArgs,
     params: &ParamArgs,
-    row: &BuildingsArgs,
+    buildings: Option<&str>,
     name: FigureName,
 ) -> Result<RiskStudy, CliError> {
     risk.check_applies(Some(name), name.name())?;
-    if let Some(flag) = row.motion_flags().first() {
-        return Err(usage(format!(
-            "{flag} applies to figure buildings, not {name} (a suite scales its records by --level, \
-             --levels or its list)"
-        )));
-    }
     let suite = risk.suite.clone().ok_or_else(|| {
         usage(format!(
             "figure {name}: needs --suite (a directory, a list file or synthetic:N) and a preset \
@@ -146,7 +139,7 @@ pub fn study(
         risk.probability.as_deref().unwrap_or(DEFAULT_PROBABILITIES),
     )
     .map_err(|e| usage(e.to_string()))?;
-    if let Some(buildings) = &row.buildings {
+    if let Some(buildings) = buildings {
         let asked = (levels, probabilities);
         return row_study(risk, params, buildings, suite, name, asked).map(RiskStudy::Row);
     }
