@@ -86,17 +86,19 @@ fn ida_runs(study: &SuiteStudy) -> Result<Vec<Vec<SuiteRun>>, FigureError> {
     }
 }
 
+/// A length in m as a caption writes it: mm to four digits, or `inf`.
+pub(super) fn mm(v: f64) -> String {
+    if v.is_finite() {
+        format!("{} mm", g4(v * 1e3))
+    } else {
+        "inf".into()
+    }
+}
+
 /// The buildings, the suite and the scaling, for every caption.
 fn caption(study: &SuiteStudy, scaling: &str) -> String {
     let phys = &study.case.physical;
     let period = |i: usize| g4(std::f64::consts::TAU / phys.omega[i]);
-    let mm = |v: f64| {
-        if v.is_finite() {
-            format!("{} mm", g4(v * 1e3))
-        } else {
-            "inf".into()
-        }
-    };
     format!(
         "{}: T1 = {} s, T2 = {} s, m1 = {} t, m2 = {} t, u_y1 = {}, u_y2 = {}, gap = {}; \
          suite {} ({} records), {scaling}; {} contact; {} method",

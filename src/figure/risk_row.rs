@@ -27,7 +27,8 @@ use crate::model::suite::SuiteMember;
 
 use super::FigureError;
 use super::risk::{
-    fragility_note, fragility_panel, ida_panel, levels_text, scaling_text, separation_panel, title,
+    fragility_note, fragility_panel, ida_panel, levels_text, mm, scaling_text, separation_panel,
+    title,
 };
 use super::spec::Figure;
 
@@ -79,13 +80,8 @@ fn caption(study: &RowSuiteStudy, note: &str) -> String {
         .iter()
         .enumerate()
         .map(|(j, joint)| {
-            let gap = if joint.gap.is_finite() {
-                format!("{} mm", g4(joint.gap * 1e3))
-            } else {
-                "inf".into()
-            };
             let [a, b] = [j, j + 1].map(|k| &row.buildings[k].name);
-            format!("{a}–{b} {gap}")
+            format!("{a}–{b} {}", mm(joint.gap))
         })
         .collect();
     format!(
