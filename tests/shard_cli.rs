@@ -186,6 +186,21 @@ fn row_studies_merge_to_their_unsharded_outputs() {
         .concat(),
         &["json", "table"],
     );
+    // An IDA to collapse (SPEC §15): collapsed runs carry their collapse in
+    // the parts, and their infinite demands merge as they were.
+    merges_equal(
+        &[
+            "ida",
+            "--buildings",
+            "block-and-frame-pdelta",
+            "--suite",
+            "synthetic:3@2",
+            "--levels",
+            "0.6,1.2",
+            "--collapse",
+        ],
+        &["json", "table"],
+    );
     merges_equal(
         &[
             "gap",

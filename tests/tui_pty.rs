@@ -222,13 +222,16 @@ fn picker_scrolls_typed_entry_replaces_and_export_asks_where() {
     let mut s = Session::start(80, 24, &config, &config);
     s.wait_for("impacts 9");
     // The picker: End goes to the last entry (the last row of buildings),
-    // which is on screen; three up is the last of the user's presets.
+    // which is on screen; one up per built-in row is the last of the
+    // user's presets.
     s.send(b"p");
     s.wait_for("preset for set 1");
     s.send(b"\x1b[F");
-    s.wait_for("three-in-series");
+    s.wait_for("block-and-frame-pdelta");
     s.wait_for("zz-last");
-    s.send(b"\x1b[A\x1b[A\x1b[A\r");
+    let rows = pounding::model::buildings::builtin::names().len();
+    s.send(&[&b"\x1b[A"[..]].repeat(rows).concat());
+    s.send(b"\r");
     s.wait_for("set 1: zz-last");
     // Typed entry: Enter on Π_m selects 0.5; typing 0.3 replaces it.
     s.send(b"\r0.3\r");

@@ -60,6 +60,17 @@ pub struct RiskPicture {
     pub fragility: Fragility,
     /// What the drift IDA follows, and its unit (`left drift [mm]`).
     pub drift_title: String,
+    /// For a row with a P-Δ building (SPEC §15): the records in which a
+    /// building collapsed at each level, and P(collapse | IM) fitted on them.
+    pub collapse: Option<CollapseCounts>,
+}
+
+/// Records that collapsed at each level and their fragility (SPEC §15):
+/// its median θ is the collapse intensity Ŝ_CT.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CollapseCounts {
+    pub counts: Vec<LevelCount>,
+    pub fragility: Fragility,
 }
 
 impl RiskPicture {
@@ -180,6 +191,7 @@ pub fn risk(
         pounding: pounding.counts,
         fragility: pounding.fragility,
         drift_title: "left drift [mm]".into(),
+        collapse: None,
     }))
 }
 
@@ -197,6 +209,7 @@ mod tests {
             pounding: Vec::new(),
             fragility: Fragility::TooFewRecords,
             drift_title: String::new(),
+            collapse: None,
         }
     }
 

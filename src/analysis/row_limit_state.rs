@@ -7,7 +7,9 @@
 //!   performance levels for frames are 0.005, 0.01 and 0.02: immediate
 //!   occupancy, life safety, collapse prevention);
 //! - a floor absolute acceleration max_i |ü_i + ü_g| above a value (g);
-//! - an impact force above a value (kN), the largest on the building.
+//! - an impact force above a value (kN), the largest on the building;
+//! - collapse (SPEC §15), for a building with P-Δ: a building that collapsed
+//!   in a record exceeds every limit state of its own there.
 //!
 //! Each applies to one named building, or to any building (exceeded when
 //! one of them is). Every comparison is strict (`>`) and a NaN demand
@@ -81,12 +83,15 @@ pub enum RowLimitState {
     Acceleration { building: Target, g: f64 },
     /// Largest impact force on the building above `kn` (kN).
     Force { building: Target, kn: f64 },
+    /// The building collapsed (SPEC §15).
+    Collapse { building: Target },
 }
 
 impl RowLimitState {
     fn building(&self) -> &Target {
         match self {
             RowLimitState::Pounding { building }
+            | RowLimitState::Collapse { building }
             | RowLimitState::Drift { building, .. }
             | RowLimitState::Acceleration { building, .. }
             | RowLimitState::Force { building, .. } => building,
@@ -94,9 +99,12 @@ impl RowLimitState {
     }
 
     /// Whether a run whose buildings' demands are `demands` (left to right)
-    /// exceeds this limit state.
+    /// exceeds this limit state. A building that collapsed exceeds every
+    /// limit state of its own (SPEC §15).
     pub fn exceeded(&self, demands: &[BuildingDemands]) -> bool {
         self.building().any(demands, |d| match *self {
+            _ if d.collapsed => true,
+            RowLimitState::Collapse { .. } => false,
             RowLimitState::Pounding { .. } => d.impacts > 0,
             RowLimitState::Drift { ratio, .. } => d.max_drift_ratio > ratio,
             RowLimitState::Acceleration { g, .. } => d.max_absolute_acceleration_g > g,
@@ -109,6 +117,7 @@ impl RowLimitState {
     pub fn label(&self) -> String {
         let what = match *self {
             RowLimitState::Pounding { .. } => "pounding".to_string(),
+            RowLimitState::Collapse { .. } => "collapse".to_string(),
             RowLimitState::Drift { ratio, .. } => format!("drift>{}", echo::number(ratio)),
             RowLimitState::Acceleration { g, .. } => format!("acceleration>{}g", echo::number(g)),
             RowLimitState::Force { kn, .. } => format!("force>{}kN", echo::number(kn)),
@@ -155,6 +164,22 @@ impl RowLimitParser {
             })?;
         }
         Ok(parser)
+    }
+
+    /// The collapse limit state of each building with P-Δ (SPEC §15), left
+    /// to right: the others cannot collapse.
+    pub fn collapses(&self, row: &Row) -> Vec<RowLimitState> {
+        row.buildings
+            .iter()
+            .enumerate()
+            .filter(|(_, b)| b.p_delta.is_some())
+            .map(|(index, b)| RowLimitState::Collapse {
+                building: Target::Building {
+                    index,
+                    name: b.name.clone(),
+                },
+            })
+            .collect()
     }
 
     /// The pounding limit state of `--building`.
@@ -265,6 +290,8 @@ mod tests {
                 max_residual_drift_m: 0.0,
                 impacts,
                 max_force_kn: 100.0 * impacts as f64,
+                collapsed: false,
+                cut_short: false,
             })
             .collect()
     }
@@ -349,5 +376,39 @@ mod tests {
         assert!(!p.force("100").unwrap()[0].exceeded(&demands([0.0; 2], 1)));
         let nan = demands([f64::NAN; 2], 0);
         assert!(!p.drift("0.001").unwrap()[0].exceeded(&nan));
+    }
+
+    /// A building that collapsed exceeds every limit state of its own, and
+    /// none of its neighbour's (SPEC §15).
+    #[test]
+    fn a_collapsed_building_exceeds_every_limit_state_of_its_own() {
+        let mut row = row();
+        row.buildings[1].p_delta = Some(crate::model::buildings::PDelta {
+            gravity_mass: vec![1.0; 8],
+            collapse_drift_ratio: 0.1,
+        });
+        let p = RowLimitParser::new(&row, None).unwrap();
+        let collapses = p.collapses(&row);
+        assert_eq!(collapses.len(), 1);
+        assert_eq!(collapses[0].label(), "collapse (frame)");
+        let mut d = demands([0.001, 0.001], 0);
+        d[1].collapsed = true;
+        d[0].cut_short = true;
+        assert!(collapses[0].exceeded(&d));
+        for state in [
+            p.drift("frame:0.5").unwrap()[0].clone(),
+            p.acceleration("frame:100g").unwrap()[0].clone(),
+            p.force("frame:1e9").unwrap()[0].clone(),
+            RowLimitParser::new(&row, Some("frame")).unwrap().pounding(),
+        ] {
+            assert!(state.exceeded(&d), "{state}");
+        }
+        for state in [
+            p.drift("block:0.5").unwrap()[0].clone(),
+            RowLimitParser::new(&row, Some("block")).unwrap().pounding(),
+        ] {
+            assert!(!state.exceeded(&d), "{state}");
+        }
+        assert!(!collapses[0].exceeded(&demands([0.5, 0.5], 3)));
     }
 }

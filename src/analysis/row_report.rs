@@ -30,9 +30,23 @@ pub struct FloorReport {
 #[derive(Debug, Clone, Serialize)]
 pub struct BuildingReport {
     pub name: String,
-    /// s, longest first.
+    /// s, longest first (under gravity with P-Δ, SPEC §15).
     pub periods: Vec<f64>,
+    /// θ_i = P_i/(k_i h_i) per storey, bottom to top, for a building with
+    /// P-Δ (SPEC §15).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stability_coefficients: Option<Vec<f64>>,
     pub floors: Vec<FloorReport>,
+}
+
+/// Where and when a building collapsed (SPEC §15).
+#[derive(Debug, Clone, Serialize)]
+pub struct CollapseReport {
+    pub building: String,
+    /// 1-based, bottom to top.
+    pub storey: usize,
+    /// s.
+    pub time: f64,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -100,6 +114,10 @@ pub struct RowReport {
     /// The energy balance (kJ), summed over buildings (exact method).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub energy: Option<EnergyReport>,
+    /// For a row with a P-Δ building: its collapse, or `None` (null) when
+    /// none collapsed; absent for a row that cannot collapse (SPEC §15).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub collapsed: Option<Option<CollapseReport>>,
     /// Set when no floors pair up: the row runs, but nothing can pound.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
@@ -124,6 +142,11 @@ impl RowReport {
             .map(|(b, floors)| BuildingReport {
                 name: b.name.clone(),
                 periods: periods(b),
+                stability_coefficients: b.p_delta.is_some().then(|| {
+                    (0..b.storeys())
+                        .map(|i| b.stability_coefficient(i))
+                        .collect()
+                }),
                 floors: floors
                     .iter()
                     .enumerate()
@@ -174,6 +197,13 @@ impl RowReport {
                 series_steps: run.series_steps,
             },
             energy: run.energy.as_ref().map(EnergyReport::of),
+            collapsed: row.buildings.iter().any(|b| b.p_delta.is_some()).then(|| {
+                run.collapse.map(|c| CollapseReport {
+                    building: row.buildings[c.building].name.clone(),
+                    storey: c.storey,
+                    time: c.time,
+                })
+            }),
             note,
             excitation_note: ground.note(),
         }
@@ -199,6 +229,10 @@ impl Report for RowReport {
                 .map(|p| format!("{p:.3}"))
                 .collect();
             let _ = writeln!(s, "\n{} (T = {} s)", b.name, t.join(", "));
+            if let Some(theta) = &b.stability_coefficients {
+                let list: Vec<String> = theta.iter().map(|x| format!("{x:.3}")).collect();
+                let _ = writeln!(s, "P-Δ: θ = P/(k h) by storey {}", list.join(", "));
+            }
             let _ = writeln!(
                 s,
                 "floor      u mm    v m/s      A g  drift mm   drift %        μ  resid mm"
@@ -243,6 +277,19 @@ impl Report for RowReport {
                 "\nenergy kJ: input {:.3}, kinetic {:.3}, damping {:.3}, spring {:.3}, contact {:.3}; residual {:.1e}",
                 e.input, e.kinetic, e.damping, e.spring, e.contact, e.residual
             );
+        }
+        match &self.collapsed {
+            Some(Some(c)) => {
+                let _ = writeln!(
+                    s,
+                    "\ncollapsed: {} storey {} at t = {:.4} s (its drift ratio reached the collapse ratio; the peaks are those up to then)",
+                    c.building, c.storey, c.time
+                );
+            }
+            Some(None) => {
+                let _ = writeln!(s, "\ncollapsed: none");
+            }
+            None => {}
         }
         if let Some(note) = &self.note {
             let _ = writeln!(s, "\n{note}");

@@ -15,10 +15,12 @@
 //!   largest storey drift max_i |Δ_i| (m), with pounding and apart;
 //! - the fragility P(the joint pounds | IM = x), fitted by maximum
 //!   likelihood on the counts of records whose joint had an impact (its
-//!   demands' impacts, [`super::row_suite::JointDemands`]) ([`fragility::fit`]).
+//!   demands' impacts, [`super::row_suite::JointDemands`]) ([`fragility::fit`]);
+//! - for a row with a P-Δ building (SPEC §15), P(collapse | IM = x), fitted
+//!   the same way on the records in which a building collapsed.
 
 use super::fragility::{self, LevelCount};
-use super::risk::{LevelDrift, RiskPicture, with_design_level};
+use super::risk::{CollapseCounts, LevelDrift, RiskPicture, with_design_level};
 use super::row_ida::{plan_levels, run_levels};
 use super::row_suite::{RowSuiteCase, RowSuiteError, RowSuiteRun};
 use super::statistics::Summary;
@@ -122,6 +124,26 @@ pub fn risk(
         })
         .collect();
     let fragility = fragility::fit(&counts);
+    let collapse = case
+        .row
+        .buildings
+        .iter()
+        .any(|b| b.p_delta.is_some())
+        .then(|| {
+            let counts: Vec<LevelCount> = levels
+                .iter()
+                .zip(ida_runs)
+                .map(|(&level, at)| LevelCount {
+                    level,
+                    runs: at.len(),
+                    exceeded: at.iter().filter(|r| r.run.collapse.is_some()).count(),
+                })
+                .collect();
+            CollapseCounts {
+                fragility: fragility::fit(&counts),
+                counts,
+            }
+        });
     let min_gaps_m = at_design
         .iter()
         .map(|r| r.demands.joints[case.joint].gap.min_gap)
@@ -135,5 +157,6 @@ pub fn risk(
         pounding: counts,
         fragility,
         drift_title: format!("{} drift [mm]", case.row.buildings[case.building].name),
+        collapse,
     }))
 }

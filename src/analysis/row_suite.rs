@@ -40,6 +40,7 @@ use crate::model::buildings::{Ground, Row};
 use crate::model::intensity::IntensityMeasure;
 use crate::model::record::STANDARD_GRAVITY;
 use crate::model::suite::SuiteMember;
+use crate::output::report::float_or_inf;
 use crate::solver::buildings::{MapCache, RowError, RowOptions, RowRun, run_row_cached};
 
 /// A row suite study: the buildings and how the records are scaled.
@@ -72,20 +73,32 @@ pub enum RowSuiteError {
 }
 
 /// One building's demands in one run (SPEC §13), the largest over its
-/// storeys and floors.
+/// storeys and floors. A building that collapsed (SPEC §15) has drift,
+/// acceleration and residual drift ∞ in that run, and exceeds every limit
+/// state of its own; the others' peaks are those up to the collapse.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BuildingDemands {
     pub name: String,
     /// max_i |Δ_i|/h_i.
+    #[serde(serialize_with = "float_or_inf")]
     pub max_drift_ratio: f64,
     /// max_i |ü_i + ü_g|, g.
+    #[serde(serialize_with = "float_or_inf")]
     pub max_absolute_acceleration_g: f64,
     /// max_i |(1 − α)(Δ_i − z_i)| at the end, m.
+    #[serde(serialize_with = "float_or_inf")]
     pub max_residual_drift_m: f64,
     /// Impacts at the joints on either side of it.
     pub impacts: usize,
     /// The largest impact force on it, kN (0 without impacts).
     pub max_force_kn: f64,
+    /// It collapsed in this run (SPEC §15).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub collapsed: bool,
+    /// Another building collapsed, and the run stopped there: these peaks
+    /// are those up to that instant.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub cut_short: bool,
 }
 
 /// One joint's demands in one record.
@@ -259,14 +272,20 @@ impl BuildingDemands {
                 let (impacts, force) = touching.fold((0, 0.0_f64), |(n, f), (_, r)| {
                     (n + r.impacts.len(), f.max(r.max_force()))
                 });
+                let collapsed = run.collapse.is_some_and(|c| c.building == i);
+                // A collapsed building's demands are ∞ (SPEC §15).
+                let or_infinite = |v: f64| if collapsed { f64::INFINITY } else { v };
                 BuildingDemands {
                     name: b.name.clone(),
-                    max_drift_ratio: largest(|f| f.drift_ratio),
-                    max_absolute_acceleration_g: largest(|f| f.absolute_acceleration)
-                        / STANDARD_GRAVITY,
-                    max_residual_drift_m: largest(|f| f.residual_drift.abs()),
+                    max_drift_ratio: or_infinite(largest(|f| f.drift_ratio)),
+                    max_absolute_acceleration_g: or_infinite(
+                        largest(|f| f.absolute_acceleration) / STANDARD_GRAVITY,
+                    ),
+                    max_residual_drift_m: or_infinite(largest(|f| f.residual_drift.abs())),
                     impacts,
                     max_force_kn: force / 1e3,
+                    collapsed,
+                    cut_short: run.collapse.is_some() && !collapsed,
                 }
             })
             .collect()

@@ -49,6 +49,11 @@ pub struct RowLimitArgs {
     /// items may name their own (`frame:0.5g`).
     #[arg(long, value_name = "NAME|any")]
     pub building: Option<String>,
+    /// With --buildings: the collapse limit state of every building with
+    /// P-Δ (SPEC §15), whose fragility's median is the collapse intensity
+    /// Ŝ_CT; a collapsed building exceeds every other limit state of its own.
+    #[arg(long)]
+    pub collapse: bool,
 }
 
 impl RowLimitArgs {
@@ -57,6 +62,7 @@ impl RowLimitArgs {
         for (flag, given) in [
             ("--drift", self.drift.is_some()),
             ("--building", self.building.is_some()),
+            ("--collapse", self.collapse),
         ] {
             if given {
                 return Err(usage(format!(
@@ -83,7 +89,8 @@ pub struct RowIdaArgs<'a> {
     pub force: Option<&'a str>,
 }
 
-/// The limit states of `args` for `row`: pounding first, then `--drift`,
+/// The limit states of `args` for `row`: pounding first, then with
+/// `--collapse` each P-Δ building's collapse, then `--drift`,
 /// `--acceleration` and `--force`, each item's building named or
 /// `--building`'s.
 pub fn limit_states(args: &RowIdaArgs, row: &Row) -> Result<Vec<RowLimitState>, CliError> {
@@ -96,6 +103,17 @@ pub fn limit_states(args: &RowIdaArgs, row: &Row) -> Result<Vec<RowLimitState>, 
     let parser = RowLimitParser::new(row, args.limits.building.as_deref())
         .map_err(|e| usage(e.to_string()))?;
     let mut states = vec![parser.pounding()];
+    if args.limits.collapse {
+        let collapses = parser.collapses(row);
+        if collapses.is_empty() {
+            return Err(usage(format!(
+                "--collapse: no building of `{}` has P-Δ (`p_delta = true`): a building without it \
+                 keeps a restoring force after yielding (α ≥ 0) and cannot collapse",
+                row.name
+            )));
+        }
+        states.extend(collapses);
+    }
     let flags: [(Option<&str>, ParseLimits); 3] = [
         (args.limits.drift.as_deref(), RowLimitParser::drift),
         (args.acceleration, RowLimitParser::acceleration),

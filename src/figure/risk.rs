@@ -153,6 +153,8 @@ const STYLES: [(bool, usize, Stroke, &str); 2] = [
 /// `demand(l, j, pounding)` of record j at level l, one faint curve per
 /// record from (0, 0), the median and the 16–84 % band over the records at
 /// each level, with pounding (solid) and without (dashed). IM is vertical.
+/// A collapsed record (an infinite demand, SPEC §15) ends at the flatline,
+/// marked, and the medians and bands run along it where they are infinite.
 pub(super) fn ida_panel(
     index: usize,
     title: &str,
@@ -162,19 +164,44 @@ pub(super) fn ida_panel(
     demand: impl Fn(usize, usize, bool) -> f64,
 ) -> Panel {
     let mut panel = Panel::new(index, title, x_label, &intensity_label(measure));
+    // A record whose building collapsed has an infinite demand (SPEC §15):
+    // its curve runs out to the flatline, drawn at 1.15 times the largest
+    // finite demand, and stops there with a marker.
+    let all = || {
+        STYLES.iter().flat_map(move |&(pounding, ..)| {
+            (0..levels.len()).flat_map(move |l| (0..records).map(move |j| (l, j, pounding)))
+        })
+    };
+    let collapsed = all().any(|(l, j, p)| demand(l, j, p) == f64::INFINITY);
+    let flat = 1.15
+        * all()
+            .map(|(l, j, p)| demand(l, j, p))
+            .filter(|d| d.is_finite())
+            .fold(0.0, f64::max)
+            .max(f64::MIN_POSITIVE);
+    let shown = |d: f64| if d == f64::INFINITY { flat } else { d };
     let mut medians = Vec::new();
     for &(pounding, color, stroke, name) in &STYLES {
+        let mut ends = Vec::new();
         for j in 0..records {
             let mut points = vec![(0.0, 0.0)];
-            points.extend(
-                levels
-                    .iter()
-                    .enumerate()
-                    .map(|(l, &x)| (demand(l, j, pounding), x)),
-            );
+            for (l, &x) in levels.iter().enumerate() {
+                let d = demand(l, j, pounding);
+                points.push((shown(d), x));
+                if d == f64::INFINITY {
+                    ends.push((flat, x));
+                    break;
+                }
+            }
             panel.series.push(
                 Series::new(format!("each record, {name}"), color, stroke, points)
                     .with_pen(Pen::Faint),
+            );
+        }
+        if !ends.is_empty() {
+            panel.series.push(
+                Series::new(format!("collapse, {name}"), color, stroke, ends)
+                    .with_pen(Pen::Markers),
             );
         }
         let summaries: Vec<(f64, Summary)> = levels
@@ -182,7 +209,11 @@ pub(super) fn ida_panel(
             .enumerate()
             .map(|(l, &x)| {
                 let values: Vec<f64> = (0..records).map(|j| demand(l, j, pounding)).collect();
-                (x, Summary::of(&values))
+                let mut summary = Summary::of(&values);
+                summary.median = shown(summary.median);
+                summary.p16 = shown(summary.p16);
+                summary.p84 = shown(summary.p84);
+                (x, summary)
             })
             .collect();
         let mut outline = vec![(0.0, 0.0)];
@@ -205,6 +236,14 @@ pub(super) fn ida_panel(
     }
     // The medians go over every record's curve.
     panel.series.extend(medians);
+    if collapsed {
+        panel.guides.push(Guide {
+            at: GuideAt::X(flat),
+            color: None,
+            tag: "collapse".into(),
+            label: String::new(),
+        });
+    }
     panel
 }
 

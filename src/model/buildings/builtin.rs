@@ -14,6 +14,10 @@ pub static BUILTIN: &[(&str, &str)] = &[
         "three-in-series",
         include_str!("../../../presets/buildings/three-in-series.toml"),
     ),
+    (
+        "block-and-frame-pdelta",
+        include_str!("../../../presets/buildings/block-and-frame-pdelta.toml"),
+    ),
 ];
 
 /// The text of the built-in row `name`.

@@ -3,7 +3,11 @@
 //!
 //! Storey i joins floors i−1 and i, so the initial stiffness of one building
 //! is tridiagonal: K₀[i][i] = k_i + k_{i+1}, K₀[i][i−1] = −k_i (k_{n+1} = 0).
-//! Damping is Rayleigh on K₀, C = a₀M + a₁K₀ with a₀ = 2ξω₁ω₂/(ω₁+ω₂),
+//! With P-Δ (SPEC §15) each storey loses P_i/h_i of it, the geometric
+//! stiffness K_G built as K₀ is; the stiffness below is then K₀ − K_G, the
+//! elastic stiffness under gravity, and the modes, periods and Rayleigh
+//! coefficients are its own (K_G = 0 without P-Δ).
+//! Damping is Rayleigh on K₀ − K_G, C = a₀M + a₁(K₀ − K_G) with a₀ = 2ξω₁ω₂/(ω₁+ω₂),
 //! a₁ = 2ξ/(ω₁+ω₂) at the first two modes (ω₂ = ω₁ for one storey, which
 //! gives c = 2ξmω₁, SPEC §2). The row's matrices are block diagonal: the
 //! buildings couple only through contact.
@@ -20,16 +24,18 @@ pub struct RowMatrices {
     pub damping: DMatrix<f64>,
 }
 
-/// K₀ of one building.
+/// K₀ − K_G of one building: storey i's elastic stiffness under gravity,
+/// k_i − P_i/h_i (SPEC §15; k_i without P-Δ), assembled tridiagonally.
 pub fn building_stiffness(b: &Building) -> DMatrix<f64> {
     let n = b.storeys();
     let mut k = DMatrix::zeros(n, n);
     for i in 0..n {
-        k[(i, i)] += b.stiffness[i];
+        let ki = b.stiffness[i] - b.geometric_stiffness(i);
+        k[(i, i)] += ki;
         if i > 0 {
-            k[(i - 1, i - 1)] += b.stiffness[i];
-            k[(i, i - 1)] -= b.stiffness[i];
-            k[(i - 1, i)] -= b.stiffness[i];
+            k[(i - 1, i - 1)] += ki;
+            k[(i, i - 1)] -= ki;
+            k[(i - 1, i)] -= ki;
         }
     }
     k

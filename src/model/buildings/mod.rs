@@ -22,4 +22,4 @@ pub mod row;
 pub use ground::Ground;
 pub use load::{load, load_with};
 pub use preset::{BuildingsError, parse};
-pub use row::{Building, FloorPair, Joint, Row};
+pub use row::{Building, FloorPair, Joint, PDelta, Row};

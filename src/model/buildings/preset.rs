@@ -9,7 +9,7 @@ use std::path::Path;
 
 use crate::model::ContactModel;
 
-use super::row::{Building, Joint, Row};
+use super::row::{Building, Joint, PDelta, Row};
 
 /// Most buildings in a row.
 pub const MAX_BUILDINGS: usize = 10;
@@ -49,6 +49,9 @@ const BUILDING_KEYS: &[&str] = &[
     "yield_drift",
     "alpha",
     "damping",
+    "p_delta",
+    "gravity_mass",
+    "collapse_drift_ratio",
 ];
 const JOINT_KEYS: &[&str] = &["gap", "stiffness"];
 
@@ -285,7 +288,8 @@ fn building(index: usize, t: &toml::Table) -> Result<Building, String> {
     if !(0.0..1.0).contains(&damping) {
         return Err(format!("{whose}`damping` = {damping}: must be in [0, 1)"));
     }
-    Ok(Building {
+    let p_delta = p_delta(t, &whose, &mass)?;
+    let building = Building {
         name,
         mass,
         stiffness,
@@ -293,7 +297,65 @@ fn building(index: usize, t: &toml::Table) -> Result<Building, String> {
         yield_drift,
         alpha,
         damping,
-    })
+        p_delta,
+    };
+    for i in 0..storeys {
+        let theta = building.stability_coefficient(i);
+        if theta >= 1.0 {
+            return Err(format!(
+                "{whose}storey {}: θ = P/(k h) = {theta:.4} from `gravity_mass`, `stiffness` and `height`: \
+                 must be < 1 (a storey with θ ≥ 1 cannot stand under its own gravity load)",
+                i + 1
+            ));
+        }
+    }
+    Ok(building)
+}
+
+/// The P-Δ keys of a building (SPEC §15): `p_delta = true` turns it on;
+/// `gravity_mass` (kg per floor, finite and > 0; the floor masses by
+/// default) and `collapse_drift_ratio` (in (0, 1); 0.10 by default) apply
+/// only with it.
+fn p_delta(t: &toml::Table, whose: &str, mass: &[f64]) -> Result<Option<PDelta>, String> {
+    let on = match t.get("p_delta") {
+        None => false,
+        Some(v) => v
+            .as_bool()
+            .ok_or_else(|| format!("{whose}`p_delta` = {v}: must be true or false"))?,
+    };
+    if !on {
+        if let Some(key) = ["gravity_mass", "collapse_drift_ratio"]
+            .into_iter()
+            .find(|k| t.contains_key(*k))
+        {
+            return Err(format!(
+                "{whose}`{key}` applies with P-Δ only: set `p_delta = true`, or remove `{key}`"
+            ));
+        }
+        return Ok(None);
+    }
+    let gravity_mass = if t.contains_key("gravity_mass") {
+        per_storey(
+            t,
+            "gravity_mass",
+            whose,
+            mass.len(),
+            None,
+            (positive_finite, "a finite number > 0 (kg)"),
+        )?
+    } else {
+        mass.to_vec()
+    };
+    let collapse_drift_ratio = number(t, "collapse_drift_ratio", whose, Some(0.10))?;
+    if !(collapse_drift_ratio > 0.0 && collapse_drift_ratio < 1.0) {
+        return Err(format!(
+            "{whose}`collapse_drift_ratio` = {collapse_drift_ratio}: must be in (0, 1)"
+        ));
+    }
+    Ok(Some(PDelta {
+        gravity_mass,
+        collapse_drift_ratio,
+    }))
 }
 
 fn joint(index: usize, t: &toml::Table) -> Result<Joint, String> {

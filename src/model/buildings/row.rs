@@ -2,6 +2,7 @@
 //! can pound.
 
 use crate::model::ContactModel;
+use crate::model::record::STANDARD_GRAVITY;
 
 /// Floors of neighbours pair up when their elevations differ by at most this (m).
 pub const ELEVATION_TOLERANCE: f64 = 1e-3;
@@ -24,11 +25,53 @@ pub struct Building {
     pub alpha: f64,
     /// ξ of the Rayleigh damping at modes 1 and 2.
     pub damping: f64,
+    /// The gravity load the storeys carry, when P-Δ is modelled (SPEC §15).
+    pub p_delta: Option<PDelta>,
+}
+
+/// P-Δ of one building (SPEC §15): the weight each storey carries, and the
+/// storey drift ratio at which the building collapses.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PDelta {
+    /// kg per floor, bottom to top, whose weight the storeys below carry
+    /// (the floor's own mass and any leaning gravity system it holds up).
+    pub gravity_mass: Vec<f64>,
+    /// |Δ_i|/h_i at which the building collapses, in (0, 1).
+    pub collapse_drift_ratio: f64,
 }
 
 impl Building {
     pub fn storeys(&self) -> usize {
         self.mass.len()
+    }
+
+    /// P_i = g Σ_{j ≥ i} gravity_mass_j (N): the gravity load storey `i`
+    /// (0-based, bottom first) carries; 0 without P-Δ (SPEC §15).
+    pub fn gravity_load(&self, storey: usize) -> f64 {
+        self.p_delta.as_ref().map_or(0.0, |p| {
+            STANDARD_GRAVITY * p.gravity_mass[storey..].iter().sum::<f64>()
+        })
+    }
+
+    /// P_i/h_i (N/m): the geometric stiffness storey `i` loses to P-Δ. Its
+    /// shear is V_i = αk_iΔ_i + (1 − α)k_i z_i − (P_i/h_i)Δ_i (SPEC §15).
+    pub fn geometric_stiffness(&self, storey: usize) -> f64 {
+        self.gravity_load(storey) / self.height[storey]
+    }
+
+    /// θ_i = P_i/(k_i h_i), the stability coefficient of storey `i`: 0
+    /// without P-Δ; a storey with θ_i ≥ 1 cannot stand (SPEC §15).
+    pub fn stability_coefficient(&self, storey: usize) -> f64 {
+        self.geometric_stiffness(storey) / self.stiffness[storey]
+    }
+
+    /// The storey drift |Δ_i| (m) at which the building collapses:
+    /// collapse_drift_ratio · h_i, or ∞ for a building without P-Δ, which
+    /// keeps a restoring force and is not watched (SPEC §15).
+    pub fn collapse_drift(&self, storey: usize) -> f64 {
+        self.p_delta.as_ref().map_or(f64::INFINITY, |p| {
+            p.collapse_drift_ratio * self.height[storey]
+        })
     }
 
     /// Elevation of floor i (1-based) above the ground: Σ_{j ≤ i} h_j.

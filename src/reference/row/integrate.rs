@@ -30,6 +30,9 @@ pub struct RowReference {
     pub impacts: Vec<usize>,
     /// Accepted steps.
     pub steps: usize,
+    /// (building, 1-based storey, time in s) of a collapse (SPEC §15), where
+    /// the run stopped.
+    pub collapse: Option<(usize, usize, f64)>,
 }
 
 /// Largest step (s): no event or turning point hides in one.
@@ -58,7 +61,8 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
     let mut impacts = vec![0; motion.pairs.len()];
     let mut steps = 0;
     let mut h: f64 = 1e-4;
-    for piece in ground.pieces(duration) {
+    let mut collapse = None;
+    'pieces: for piece in ground.pieces(duration) {
         let mut t = piece.t0;
         while t < piece.t1 {
             let f = |tt: f64, yy: &[f64], out: &mut [f64]| motion.rhs(&mode, tt, yy, out);
@@ -158,11 +162,15 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
             if end < hh {
                 let g = events(&motion, &mode, &y_end);
                 let ns = motion.storeys.len();
+                let np = motion.pairs.len();
                 for (j, (&gj, &a)) in g.iter().zip(&armed).enumerate() {
                     if !(a && gj > 0.0) {
                         continue;
                     }
-                    if j < ns {
+                    if j >= ns + np {
+                        let s = &motion.storeys[j - ns - np];
+                        collapse = Some((s.building, s.storey, t + end));
+                    } else if j < ns {
                         let s = &motion.storeys[j];
                         let d = motion.drift(s, &y_end[..n]);
                         if mode.branch[j] == 0 {
@@ -192,6 +200,9 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
             };
             y = y_end;
             steps += 1;
+            if collapse.is_some() {
+                break 'pieces;
+            }
             h = hh * (0.9 * norm.max(1e-10).powf(-0.2)).min(5.0);
         }
     }
@@ -210,10 +221,12 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
         absolute_acceleration: split(&peak_a),
         impacts,
         steps,
+        collapse,
     }
 }
 
-/// Event functions (an event where one turns positive): per storey, then per pair.
+/// Event functions (an event where one turns positive): per storey, then
+/// per pair, then per storey its collapse, |Δ| − Δ_c (SPEC §15).
 fn events(motion: &Motion, mode: &Mode, y: &[f64]) -> Vec<f64> {
     let n = motion.n;
     let mut g = Vec::with_capacity(motion.storeys.len() + motion.pairs.len());
@@ -228,6 +241,9 @@ fn events(motion: &Motion, mode: &Mode, y: &[f64]) -> Vec<f64> {
     for ((p, law), &gap) in motion.pairs.iter().zip(&mode.laws).zip(&motion.gaps) {
         let delta = y[p.left_dof] - y[p.right_dof] - gap;
         g.push(if law.is_some() { -delta } else { delta });
+    }
+    for s in &motion.storeys {
+        g.push(motion.drift(s, &y[..n]).abs() - s.collapse_drift);
     }
     g
 }

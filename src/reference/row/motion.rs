@@ -4,8 +4,10 @@
 //!
 //! ```text
 //! m_i ü_i = −(C u̇)_i − V_i + V_{i+1} ∓ Σ f_p − m_i ü_g(t),
-//! V_i = αk_iΔ_i + (1 − α)k_i z_i,
+//! V_i = αk_iΔ_i + (1 − α)k_i z_i − (P_i/h_i)Δ_i,
 //! ```
+//!
+//! the last term P-Δ's (SPEC §15, 0 without it).
 //!
 //! with z_i fixed by the storey's mode (Δ − p elastic, ±Δ_y yielding).
 
@@ -14,6 +16,7 @@ use nalgebra::DMatrix;
 use crate::model::ContactLaw;
 use crate::model::buildings::matrices::RowMatrices;
 use crate::model::buildings::{FloorPair, Ground, Row};
+use crate::model::record::STANDARD_GRAVITY;
 
 /// Mode of the whole row between events.
 #[derive(Debug, Clone)]
@@ -32,6 +35,13 @@ pub struct StoreyData {
     pub k: f64,
     pub alpha: f64,
     pub yield_drift: f64,
+    /// P_i/h_i (N/m), 0 without P-Δ.
+    pub p_over_h: f64,
+    /// |Δ| of collapse (m), ∞ without P-Δ.
+    pub collapse_drift: f64,
+    /// The building, and the storey in it (1-based).
+    pub building: usize,
+    pub storey: usize,
 }
 
 pub struct Motion<'a> {
@@ -48,14 +58,25 @@ impl<'a> Motion<'a> {
     pub fn new(row: &Row, ground: &'a Ground) -> Motion<'a> {
         let m = RowMatrices::of(row);
         let mut storeys = Vec::new();
-        for (b, &o) in row.buildings.iter().zip(&row.offsets()) {
+        for (bi, (b, &o)) in row.buildings.iter().zip(&row.offsets()).enumerate() {
             for i in 0..b.storeys() {
+                let (p_over_h, collapse_drift) = match &b.p_delta {
+                    Some(p) => {
+                        let load: f64 = p.gravity_mass[i..].iter().sum::<f64>() * STANDARD_GRAVITY;
+                        (load / b.height[i], p.collapse_drift_ratio * b.height[i])
+                    }
+                    None => (0.0, f64::INFINITY),
+                };
                 storeys.push(StoreyData {
                     lower: if i == 0 { None } else { Some(o + i - 1) },
                     upper: o + i,
                     k: b.stiffness[i],
                     alpha: b.alpha,
                     yield_drift: b.yield_drift[i],
+                    p_over_h,
+                    collapse_drift,
+                    building: bi,
+                    storey: i + 1,
                 });
             }
         }
@@ -99,7 +120,8 @@ impl<'a> Motion<'a> {
             .collect();
         for (i, s) in self.storeys.iter().enumerate() {
             let d = self.drift(s, u);
-            let shear = s.alpha * s.k * d + (1.0 - s.alpha) * s.k * self.z(mode, i, d);
+            let shear =
+                s.alpha * s.k * d + (1.0 - s.alpha) * s.k * self.z(mode, i, d) - s.p_over_h * d;
             force[s.upper] -= shear;
             if let Some(l) = s.lower {
                 force[l] += shear;
@@ -135,7 +157,8 @@ impl<'a> Motion<'a> {
     /// dF/dt = −C ü − Σ k_t,j Δ̇_j (storeys) ∓ Σ (∂f/∂δ δ̇ + ∂f/∂δ̇ δ̈) (pairs),
     /// ```
     ///
-    /// with k_t = k on the elastic branch and αk while yielding (SPEC §3).
+    /// with k_t = k on the elastic branch and αk while yielding (SPEC §3),
+    /// less P/h with P-Δ (SPEC §15).
     pub fn jerk(&self, mode: &Mode, i: usize, y: &[f64], rate: &[f64]) -> f64 {
         let n = self.n;
         let (u, v) = y.split_at(n);
@@ -153,7 +176,7 @@ impl<'a> Motion<'a> {
                 s.k
             } else {
                 s.alpha * s.k
-            };
+            } - s.p_over_h;
             d += sign * tangent * self.drift(s, v);
         }
         for ((p, law), &gap) in self.pairs.iter().zip(&mode.laws).zip(&self.gaps) {

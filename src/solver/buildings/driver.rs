@@ -9,7 +9,9 @@
 //! - a floor pair touches: δ = u_A − u_B − d turns positive; v₀ = δ̇ there;
 //! - a pair separates: δ returns to 0;
 //! - under the Jankowski law, a closed pair's δ̇ turns negative (its
-//!   damping switches off there).
+//!   damping switches off there);
+//! - a storey of a building with P-Δ reaches its collapse drift,
+//!   |Δ| = collapse_drift_ratio · h (SPEC §15): the run stops there.
 //!
 //! While a pair under a Hertz-type law is closed, the steps are those of
 //! the Runge–Kutta pair of [`super::contact_rk`] instead of the series.
@@ -37,7 +39,7 @@ use super::layout::Layout;
 use super::peaks::{Envelope, raise};
 use super::poly;
 use super::propagator::{Propagator, apply};
-use super::result::{FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};
+use super::result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
 use super::taylor::{ORDER, Series};
 
@@ -134,6 +136,8 @@ enum Event {
     Separation(usize),
     /// δ̇ of a closed Jankowski pair turns negative.
     Turn,
+    /// A storey reaches its building's collapse drift (SPEC §15).
+    Collapse(usize),
 }
 
 struct Run<'a> {
@@ -167,6 +171,8 @@ struct Run<'a> {
     next_contact_step: f64,
     /// The pairs' forces over time, when asked for.
     forces: Option<ForceHistory>,
+    /// Set at a collapse, where the run stops.
+    collapse: Option<Collapse>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -255,10 +261,11 @@ pub fn run_row_cached(
         forces: options.forces.then(|| ForceHistory {
             pairs: vec![Vec::new(); n_pairs],
         }),
+        collapse: None,
     };
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
-    for piece in ground.pieces(options.duration) {
+    'pieces: for piece in ground.pieces(options.duration) {
         let length = piece.length;
         if length <= 0.0 {
             continue;
@@ -273,6 +280,12 @@ pub fn run_row_cached(
             };
             if run.energy.is_some() || run.config.any_contact() || !run.quiet_step(&piece, h) {
                 run.careful(&piece, tb)?;
+            }
+            if run.collapse.is_some() {
+                if let Some(trace) = trace.as_mut() {
+                    trace.push(run.t, &run.u);
+                }
+                break 'pieces;
             }
             run.t = tb;
             if let Some(trace) = trace.as_mut() {
@@ -377,7 +390,11 @@ impl Run<'_> {
                 Branch::Plus => rate().0 > 0.0,
                 Branch::Minus => rate().1 < 0.0,
             };
-            if !quiet || (lo.abs().max(hi.abs()) > env.drift[k] && !monotone(base + k, q)) {
+            let extreme = lo.abs().max(hi.abs());
+            if !quiet
+                || extreme >= s.collapse_drift
+                || (extreme > env.drift[k] && !monotone(base + k, q))
+            {
                 return false;
             }
         }
@@ -478,6 +495,9 @@ impl Run<'_> {
             let (a1, _) = ground_at(piece, self.t);
             let acc = self.acceleration(piece, self.t, 0.0, (&self.u, &self.v));
             self.record_point(&acc, a1);
+            if self.collapse.is_some() {
+                break;
+            }
         }
         Ok(())
     }
@@ -532,6 +552,18 @@ impl Run<'_> {
     /// function ([`EventFunction`]).
     fn watched_events(&self, mut each: impl FnMut(Event, EventFunction)) {
         for (k, s) in self.layout.storeys.iter().enumerate() {
+            if s.collapse_drift.is_finite() {
+                // Δ − Δ_c and −Δ − Δ_c: the drift reaches the collapse drift either way.
+                let c = s.collapse_drift;
+                each(
+                    Event::Collapse(k),
+                    EventFunction::drift(s.upper, s.lower, 1.0, -c),
+                );
+                each(
+                    Event::Collapse(k),
+                    EventFunction::drift(s.upper, s.lower, -1.0, -c),
+                );
+            }
             match self.config.branch[k] {
                 Branch::Elastic => {
                     if !s.yield_drift.is_finite() {
@@ -712,8 +744,9 @@ impl Run<'_> {
                 let d = self.layout.drift(st, &u);
                 let rate = self.layout.drift(st, &v);
                 let z = self.config.z(k, d, st.yield_drift);
-                spring +=
-                    (st.alpha * st.stiffness * d + (1.0 - st.alpha) * st.stiffness * z) * rate;
+                spring += (st.alpha * st.stiffness * d + (1.0 - st.alpha) * st.stiffness * z
+                    - st.geometric * d)
+                    * rate;
             }
             let mut contact = 0.0;
             for (pi, p) in self.layout.pairs.iter().enumerate() {
@@ -761,6 +794,15 @@ impl Run<'_> {
                 });
             }
             Event::Turn => return,
+            Event::Collapse(k) => {
+                let (building, storey) = self.layout.building_storey(k);
+                self.collapse = Some(Collapse {
+                    building,
+                    storey,
+                    time: self.t,
+                });
+                return;
+            }
             Event::Separation(pi) => {
                 let p = self.layout.pairs[pi];
                 self.config.contact[pi] = None;
@@ -824,6 +866,7 @@ impl Run<'_> {
             configurations: self.configurations.len(),
             trace: None,
             forces: self.forces,
+            collapse: self.collapse,
         }
     }
 }

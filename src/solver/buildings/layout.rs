@@ -17,6 +17,10 @@ pub struct Storey {
     pub alpha: f64,
     pub yield_drift: f64,
     pub height: f64,
+    /// P/h (N/m), the stiffness the storey loses to P-Δ (0 without it, SPEC §15).
+    pub geometric: f64,
+    /// |Δ| at which its building collapses (m; ∞ without P-Δ, SPEC §15).
+    pub collapse_drift: f64,
 }
 
 /// What every configuration of a run shares.
@@ -60,6 +64,8 @@ impl Layout {
                     alpha: b.alpha,
                     yield_drift: b.yield_drift[i],
                     height: b.height[i],
+                    geometric: b.geometric_stiffness(i),
+                    collapse_drift: b.collapse_drift(i),
                 });
             }
         }
@@ -81,6 +87,16 @@ impl Layout {
             gaps,
             rate: stiff.sqrt().max(damp),
         }
+    }
+
+    /// Storey `k` of the row as (its building, its 1-based storey there).
+    pub fn building_storey(&self, k: usize) -> (usize, usize) {
+        let building = self.storeys[k].building;
+        let below = self.storeys[..k]
+            .iter()
+            .filter(|s| s.building == building)
+            .count();
+        (building, below + 1)
     }
 
     /// Drift Δ = u_upper − u_lower of a storey from displacements `u`.

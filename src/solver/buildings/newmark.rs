@@ -2,7 +2,8 @@
 //! row each step with the consistent tangent (storeys' return-map tangents,
 //! the contact tangent ∂f/∂δ + γ/(βΔt) ∂f/∂δ̇), and every contact onset and
 //! separation located inside its step and the step split there, so that
-//! the method stays second order and v₀ is the onset's own.
+//! the method stays second order and v₀ is the onset's own. A collapse
+//! (SPEC §15) is located the same way, and the run stops there.
 //!
 //! With u the unknown at t_{n+1}:
 //!
@@ -22,7 +23,7 @@ use crate::model::{Bilinear, ContactLaw, SpringState};
 use super::driver::RowError;
 use super::layout::Layout;
 use super::peaks::{Envelope, raise};
-use super::result::{FloorPeaks, PairImpact, PairResult, RowRun};
+use super::result::{Collapse, FloorPeaks, PairImpact, PairResult, RowRun};
 
 const GAMMA: f64 = 0.5;
 const BETA: f64 = 0.25;
@@ -65,13 +66,16 @@ impl Newmark<'_> {
         {
             let d = u[s.upper] - s.lower.map_or(0.0, |l| u[l]);
             let r = b.respond(*from, d);
-            f[s.upper] += r.force;
-            k[(s.upper, s.upper)] += r.tangent;
+            // P-Δ (SPEC §15): the storey loses (P/h)Δ of its shear.
+            let force = r.force - s.geometric * d;
+            let tangent = r.tangent - s.geometric;
+            f[s.upper] += force;
+            k[(s.upper, s.upper)] += tangent;
             if let Some(l) = s.lower {
-                f[l] -= r.force;
-                k[(l, l)] += r.tangent;
-                k[(l, s.upper)] -= r.tangent;
-                k[(s.upper, l)] -= r.tangent;
+                f[l] -= force;
+                k[(l, l)] += tangent;
+                k[(l, s.upper)] -= tangent;
+                k[(s.upper, l)] -= tangent;
             }
             out.push(r.state);
         }
@@ -156,32 +160,62 @@ impl Newmark<'_> {
             if !crosses {
                 continue;
             }
-            // Bisection on the Hermite cubic through (δ, δ̇) at both ends.
-            let h = |th: f64| {
-                let (h00, h10, h01, h11) = (
-                    2.0 * th.powi(3) - 3.0 * th * th + 1.0,
-                    th.powi(3) - 2.0 * th * th + th,
-                    -2.0 * th.powi(3) + 3.0 * th * th,
-                    th.powi(3) - th * th,
-                );
-                h00 * d0 + h10 * dt * r0 + h01 * d1 + h11 * dt * r1
-            };
             let sign = if closed { -1.0 } else { 1.0 };
-            let (mut lo, mut hi) = (0.0, 1.0);
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                if sign * h(mid) > 0.0 {
-                    hi = mid;
-                } else {
-                    lo = mid;
-                }
-            }
+            let hi = first_rise((sign * d0, sign * r0), (sign * d1, sign * r1), dt);
             if first.is_none_or(|(_, th)| hi < th) {
                 first = Some((i, hi));
             }
         }
         first
     }
+
+    /// The first storey of a building with P-Δ whose |Δ| reaches its
+    /// collapse drift in (p, q] (SPEC §15), and the fraction θ of the step
+    /// where it does (the root of the cubic Hermite of ±Δ − Δ_c).
+    fn collapse(&self, p: &Point, q: &Point, dt: f64) -> Option<(usize, f64)> {
+        let mut first: Option<(usize, f64)> = None;
+        for (k, s) in self.layout.storeys.iter().enumerate() {
+            let c = s.collapse_drift;
+            let d1 = self.layout.drift(s, q.u.as_slice());
+            if d1.abs() < c || d1.is_nan() {
+                continue;
+            }
+            let sign = d1.signum();
+            let d0 = sign * self.layout.drift(s, p.u.as_slice()) - c;
+            let r0 = sign * self.layout.drift(s, p.v.as_slice());
+            let r1 = sign * self.layout.drift(s, q.v.as_slice());
+            let th = first_rise((d0, r0), (sign * d1 - c, r1), dt);
+            if first.is_none_or(|(_, at)| th < at) {
+                first = Some((k, th));
+            }
+        }
+        first
+    }
+}
+
+/// The fraction θ ∈ (0, 1] of a step of length `dt` where the cubic
+/// Hermite through (g, ġ) at its two ends first turns positive, g(0) ≤ 0 <
+/// g(1), by bisection.
+fn first_rise((d0, r0): (f64, f64), (d1, r1): (f64, f64), dt: f64) -> f64 {
+    let h = |th: f64| {
+        let (h00, h10, h01, h11) = (
+            2.0 * th.powi(3) - 3.0 * th * th + 1.0,
+            th.powi(3) - 2.0 * th * th + th,
+            -2.0 * th.powi(3) + 3.0 * th * th,
+            th.powi(3) - th * th,
+        );
+        h00 * d0 + h10 * dt * r0 + h01 * d1 + h11 * dt * r1
+    };
+    let (mut lo, mut hi) = (0.0, 1.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if h(mid) > 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
 }
 
 /// Newmark's default step for a run of `duration` seconds under `ground` (s).
@@ -277,7 +311,8 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
     // step's end too, so that no step straddles the jump.
     let motion_end = ground.end();
     let mut ended = !(motion_end > 0.0 && motion_end < duration);
-    for k in 0..steps {
+    let mut collapse = None;
+    'steps: for k in 0..steps {
         let step_end = if k + 1 == steps {
             duration
         } else {
@@ -300,7 +335,21 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
                 break;
             }
             let q = nm.step(&p, dt)?;
-            match nm.change(&p, &q, dt) {
+            let contact = nm.change(&p, &q, dt);
+            if let Some((storey, theta)) = nm.collapse(&p, &q, dt)
+                && contact.is_none_or(|(_, at)| theta <= at)
+            {
+                p = nm.step(&p, theta * dt)?;
+                record(&p, &nm, &mut pairs);
+                let (building, storey) = nm.layout.building_storey(storey);
+                collapse = Some(Collapse {
+                    building,
+                    storey,
+                    time: p.t,
+                });
+                break 'steps;
+            }
+            match contact {
                 None => {
                     p = q;
                     record(&p, &nm, &mut pairs);
@@ -368,5 +417,6 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         configurations: 0,
         trace: None,
         forces: None,
+        collapse,
     })
 }

@@ -82,6 +82,22 @@ pub struct RowRun {
     /// The contact force of every floor pair over time, when asked for
     /// ([`super::RowOptions::forces`]).
     pub forces: Option<ForceHistory>,
+    /// Where and when a building with P-Δ collapsed (SPEC §15): the run
+    /// stops there, and every peak is the peak up to that instant.
+    #[serde(default)]
+    pub collapse: Option<Collapse>,
+}
+
+/// A collapse (SPEC §15): the first instant a storey's |Δ_i|/h_i reaches
+/// its building's `collapse_drift_ratio`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Collapse {
+    /// Index of the building, left to right.
+    pub building: usize,
+    /// 1-based storey of that building, bottom to top.
+    pub storey: usize,
+    /// s.
+    pub time: f64,
 }
 
 /// The contact force f_p(t) of every floor pair (SPEC §13), N: 0 at every

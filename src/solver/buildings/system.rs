@@ -5,8 +5,10 @@
 //! ```
 //!
 //! - Storey i on the elastic branch: V_i = k_iΔ_i − (1−α)k_i p_i; yielding:
-//!   V_i = αk_iΔ_i ± (1−α)k_iΔ_y,i. It acts −V_i on its upper floor and
-//!   +V_i on its lower one.
+//!   V_i = αk_iΔ_i ± (1−α)k_iΔ_y,i. With P-Δ (SPEC §15) both lose
+//!   (P_i/h_i)Δ_i, linear in the drift, so every configuration stays linear
+//!   (its stiffness may be negative on a yielding branch). It acts −V_i on
+//!   its upper floor and +V_i on its lower one.
 //! - A closed pair p (floors A left, B right), δ = u_A − u_B − d: the law
 //!   f = k̄δ + cδ̇ + hδδ̇ (SPEC §4) acts −f on A and +f on B; k̄ and c go into
 //!   K and C, k̄d into q, and the improved Kelvin law's hδδ̇ stays the one
@@ -64,6 +66,7 @@ impl System {
                     -(1.0 - s.alpha) * s.stiffness * s.yield_drift,
                 ),
             };
+            let ke = ke - s.geometric;
             let up = s.upper;
             k[(up, up)] += ke;
             q[up] -= v0;

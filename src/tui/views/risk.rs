@@ -330,14 +330,47 @@ impl LevelCharts<'_> {
             FRACTION_MARKER,
             fractions,
         ));
-        let spec = ChartSpec {
-            title: widest_fitting(
-                vec![
-                    format!("P(pounding | IM) {}", fragility_text(&p.fragility)),
-                    fragility_text(&p.fragility),
+        let mut titles = vec![
+            format!("P(pounding | IM) {}", fragility_text(&p.fragility)),
+            fragility_text(&p.fragility),
+        ];
+        // A row with P-Δ: P(collapse | IM) beside it (SPEC §15).
+        if let Some(c) = &p.collapse {
+            if let Fragility::Fitted { theta, beta, .. } = c.fragility {
+                let n = 120;
+                let line = (1..=n)
+                    .map(|k| {
+                        let x = x_end * k as f64 / n as f64;
+                        (x, fragility::probability(x, theta, beta))
+                    })
+                    .collect();
+                series.push(Series::line("collapse fit", palette::RIGHT, line));
+            }
+            let collapsed = c
+                .counts
+                .iter()
+                .filter(|c| c.runs > 0)
+                .map(|c| (c.level, c.exceeded as f64 / c.runs as f64))
+                .collect();
+            series.push(Series::points(
+                "collapsed",
+                palette::RIGHT,
+                FRACTION_MARKER,
+                collapsed,
+            ));
+            // The widest title that fits, keeping collapse in it as long as it can.
+            let (pounding, collapse) = (fragility_text(&p.fragility), fragility_text(&c.fragility));
+            titles.splice(
+                0..0,
+                [
+                    format!("P(pounding | IM) {pounding}; P(collapse | IM) {collapse}"),
+                    format!("pounding {pounding}; collapse {collapse}"),
+                    format!("P(collapse | IM) {collapse}"),
                 ],
-                area.width as usize,
-            ),
+            );
+        }
+        let spec = ChartSpec {
+            title: widest_fitting(titles, area.width as usize),
             x_title: self.x_title.clone(),
             x_bounds: Some([0.0, x_end]),
             y_range: Some([0.0, 1.0]),
