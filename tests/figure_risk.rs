@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{fails, succeeds};
+use common::{fails, json, succeeds};
 
 /// The preset and suite of every test: five or twenty simulated records
 /// (made in memory), Sa(0.95 s), the two-buildings pair.
@@ -500,4 +500,42 @@ fn bad_input_is_one_line_and_exit_2() {
     for (args, expected) in cases {
         fails(&args, 2, &[expected]);
     }
+}
+
+/// A row IDA to collapse (SPEC §15): each record that collapses ends at the
+/// flatline with one marker (filled with pounding, hollow without), as
+/// many as `ida --buildings --collapse` reports collapsed records, and the
+/// flatline is tagged.
+#[test]
+fn a_row_ida_to_collapse_marks_each_collapsed_record_at_the_flatline() {
+    let study = [
+        "--buildings",
+        "block-and-frame-pdelta",
+        "--suite",
+        "synthetic:6@3",
+        "--levels",
+        "0.6,1.0,1.4",
+    ];
+    let report = json(&[&["ida"], &study[..], &["--collapse", "--format", "json"]].concat());
+    let levels = report["levels"].as_array().unwrap();
+    let collapsed = |key: &str| {
+        (0..6)
+            .filter(|&j| {
+                levels
+                    .iter()
+                    .any(|l| l["records"][j][key][1]["collapsed"] == true)
+            })
+            .count()
+    };
+    let (with, without) = (collapsed("buildings"), collapsed("no_pounding"));
+    assert!(with > 0 && without > 0, "{with} {without}");
+    let svg = draw_study("ida", &study);
+    // One filled marker per record that collapsed with pounding, and the legend's.
+    assert_eq!(svg.circles, with + 1);
+    assert_eq!(
+        svg.outlines.iter().filter(|s| *s == DARK_ORANGE).count(),
+        without + 1
+    );
+    assert!(svg.has_text("collapse"), "{:?}", svg.texts);
+    assert!(svg.has_text("collapse, with pounding"));
 }

@@ -19,7 +19,8 @@
 //! - for a row with a P-Δ building (SPEC §15), P(collapse | IM = x), fitted
 //!   the same way on the records in which a building collapsed.
 
-use super::fragility::{self, LevelCount};
+use super::fragility;
+use super::ida;
 use super::risk::{CollapseCounts, LevelDrift, RiskPicture, with_design_level};
 use super::row_ida::{plan_levels, run_levels};
 use super::row_suite::{RowSuiteCase, RowSuiteError, RowSuiteRun};
@@ -111,18 +112,9 @@ pub fn risk(
             }
         })
         .collect();
-    let counts: Vec<LevelCount> = levels
-        .iter()
-        .zip(ida_runs)
-        .map(|(&level, at)| LevelCount {
-            level,
-            runs: at.len(),
-            exceeded: at
-                .iter()
-                .filter(|r| r.demands.joints[case.joint].impacts > 0)
-                .count(),
-        })
-        .collect();
+    let counts = ida::counts(levels, ida_runs, |r: &RowSuiteRun| {
+        r.demands.joints[case.joint].impacts > 0
+    });
     let fragility = fragility::fit(&counts);
     let collapse = case
         .row
@@ -130,15 +122,7 @@ pub fn risk(
         .iter()
         .any(|b| b.p_delta.is_some())
         .then(|| {
-            let counts: Vec<LevelCount> = levels
-                .iter()
-                .zip(ida_runs)
-                .map(|(&level, at)| LevelCount {
-                    level,
-                    runs: at.len(),
-                    exceeded: at.iter().filter(|r| r.run.collapse.is_some()).count(),
-                })
-                .collect();
+            let counts = ida::counts(levels, ida_runs, |r: &RowSuiteRun| r.run.collapse.is_some());
             CollapseCounts {
                 fragility: fragility::fit(&counts),
                 counts,

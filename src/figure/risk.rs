@@ -237,6 +237,8 @@ pub(super) fn ida_panel(
     // The medians go over every record's curve.
     panel.series.extend(medians);
     if collapsed {
+        // Room to the right of the flatline for its tag.
+        panel.x_range = Some((0.0, 1.12 * flat));
         panel.guides.push(Guide {
             at: GuideAt::X(flat),
             color: None,

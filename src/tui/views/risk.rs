@@ -22,7 +22,7 @@ use ratatui::widgets::{Paragraph, Wrap};
 
 use super::chart::{self, ChartSpec, MIN_ROWS, Series};
 use super::compact::num;
-use crate::analysis::fragility::{self, Fragility};
+use crate::analysis::fragility::{self, Fragility, LevelCount};
 use crate::analysis::risk::RiskPicture;
 use crate::model::intensity::IntensityMeasure;
 use crate::tui::jobs::RiskState;
@@ -307,28 +307,37 @@ impl LevelCharts<'_> {
     /// Chart 3: the fraction that pounded at each level and the fitted fragility.
     fn draw_fragility(&self, buf: &mut ratatui::buffer::Buffer, area: Rect) {
         let (p, x_end) = (self.picture, self.x_end);
-        let fractions: Vec<(f64, f64)> = p
-            .pounding
-            .iter()
-            .filter(|c| c.runs > 0)
-            .map(|c| (c.level, c.exceeded as f64 / c.runs as f64))
-            .collect();
+        // The fraction of records exceeding at each level, and the fit's curve.
+        let fractions = |counts: &[LevelCount]| -> Vec<(f64, f64)> {
+            counts
+                .iter()
+                .filter(|c| c.runs > 0)
+                .map(|c| (c.level, c.exceeded as f64 / c.runs as f64))
+                .collect()
+        };
+        let fitted = |f: &Fragility| match *f {
+            Fragility::Fitted { theta, beta, .. } => {
+                let n = 120;
+                Some(
+                    (1..=n)
+                        .map(|k| {
+                            let x = x_end * k as f64 / n as f64;
+                            (x, fragility::probability(x, theta, beta))
+                        })
+                        .collect::<Vec<_>>(),
+                )
+            }
+            _ => None,
+        };
         let mut series = Vec::new();
-        if let Fragility::Fitted { theta, beta, .. } = p.fragility {
-            let n = 120;
-            let line = (1..=n)
-                .map(|k| {
-                    let x = x_end * k as f64 / n as f64;
-                    (x, fragility::probability(x, theta, beta))
-                })
-                .collect();
+        if let Some(line) = fitted(&p.fragility) {
             series.push(Series::line("fit", palette::FORCE, line).marked('*'));
         }
         series.push(Series::points(
             "records",
             palette::LEFT,
             FRACTION_MARKER,
-            fractions,
+            fractions(&p.pounding),
         ));
         let mut titles = vec![
             format!("P(pounding | IM) {}", fragility_text(&p.fragility)),
@@ -336,27 +345,14 @@ impl LevelCharts<'_> {
         ];
         // A row with P-Δ: P(collapse | IM) beside it (SPEC §15).
         if let Some(c) = &p.collapse {
-            if let Fragility::Fitted { theta, beta, .. } = c.fragility {
-                let n = 120;
-                let line = (1..=n)
-                    .map(|k| {
-                        let x = x_end * k as f64 / n as f64;
-                        (x, fragility::probability(x, theta, beta))
-                    })
-                    .collect();
+            if let Some(line) = fitted(&c.fragility) {
                 series.push(Series::line("collapse fit", palette::RIGHT, line));
             }
-            let collapsed = c
-                .counts
-                .iter()
-                .filter(|c| c.runs > 0)
-                .map(|c| (c.level, c.exceeded as f64 / c.runs as f64))
-                .collect();
             series.push(Series::points(
                 "collapsed",
                 palette::RIGHT,
                 FRACTION_MARKER,
-                collapsed,
+                fractions(&c.counts),
             ));
             // The widest title that fits, keeping collapse in it as long as it can.
             let (pounding, collapse) = (fragility_text(&p.fragility), fragility_text(&c.fragility));
