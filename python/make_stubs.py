@@ -35,7 +35,7 @@ NUMBER = "Union[float, str, None]"
 SUITE = [("im", TEXT), ("level", NUMBER), ("allow_unreliable", "bool")]
 LIMITS = [("ductility", TEXT), ("acceleration", TEXT), ("force", TEXT)]
 ROW = [("buildings", "Union[str, Mapping[str, Any], None]")]
-ROW_LIMITS = [("drift", TEXT), ("building", TEXT)]
+ROW_LIMITS = [("drift", TEXT), ("building", TEXT), ("collapse", "bool")]
 
 # Each function: its leading arguments, then its own flags (keyword-only).
 COMMANDS = {

@@ -294,7 +294,8 @@ def ida(suite: str, levels: str, *, preset: Optional[str] = None, **keys: Any) -
     suite: the records; levels: intensities in g, START:STOP:STEP or X1,X2,…
     im: pga or sa:T; ductility, acceleration, force: limit states beside pounding.
     buildings: a row of buildings; drift (storey drift ratios), acceleration
-        and force items ``[NAME:]VALUE``, building: the one they read by default.
+        and force items ``[NAME:]VALUE``, building: the one they read by default;
+        collapse=True: each P-Δ building's collapse fragility (its θ is Ŝ_CT).
     Each level's records, the levels, and each limit state's counts are numpy arrays.
     {common}
     """

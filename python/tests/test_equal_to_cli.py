@@ -189,3 +189,19 @@ def test_map_over_a_suite_is_the_cli_json(cli):
     assert p.shape == (2, 3)
     assert [v.hex() for v in p.ravel()] == [c["pounding_probability"].hex() for c in theirs["cells"]]
     same(ours["x"], theirs["x"])
+
+
+def test_an_ida_to_collapse_is_the_cli_json(cli):
+    # P-Δ and collapse (SPEC §15): the collapse fragility, with pounding and
+    # apart, is the command line's, and a collapsed building's drift is ∞.
+    row = ("--buildings", "block-and-frame-pdelta", "--suite", "synthetic:3@3")
+    levels = "0.6,1.2"
+    i = pounding.ida(suite="synthetic:3@3", levels=levels, buildings="block-and-frame-pdelta", collapse=True)
+    theirs = cli.json("ida", *row, "--levels", levels, "--collapse")
+    collapse = [f for f in i["fragility"] if f["limit_state"] == "collapse (frame)"]
+    assert len(collapse) == 1
+    their = [f for f in theirs["fragility"] if f["limit_state"] == "collapse (frame)"][0]
+    same(collapse[0]["fragility"], their["fragility"])
+    same(collapse[0]["no_pounding_fragility"], their["no_pounding_fragility"])
+    np.testing.assert_array_equal(collapse[0]["counts"]["exceeded"], [c["exceeded"] for c in their["counts"]])
+    assert collapse[0]["counts"]["exceeded"][-1] > 0

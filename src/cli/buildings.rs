@@ -22,7 +22,7 @@ use crate::solver::buildings::{RowError, RowOptions, default_step, run_newmark, 
 #[derive(Debug, Clone, Default, Args)]
 pub struct BuildingsArgs {
     /// A row of shear buildings (SPEC §13): a built-in row (two-buildings,
-    /// block-and-frame, three-in-series) or a path to a row preset. `--set
+    /// block-and-frame, three-in-series, block-and-frame-pdelta) or a path to a row preset. `--set
     /// NAME.KEY=V` edits one building, `--set jointN.KEY=V` one joint.
     #[arg(long, value_name = "NAME|PATH")]
     pub buildings: Option<String>,

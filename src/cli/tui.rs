@@ -31,7 +31,7 @@ pub struct TuiArgs {
     #[arg(long, value_name = "DIR")]
     pub presets: Option<PathBuf>,
     /// Open the buildings scene on this row of shear buildings (SPEC §13):
-    /// a built-in row (two-buildings, block-and-frame, three-in-series) or
+    /// a built-in row (two-buildings, block-and-frame, three-in-series, block-and-frame-pdelta) or
     /// a path to a row preset.
     #[arg(long, value_name = "NAME|PATH")]
     pub buildings: Option<String>,
