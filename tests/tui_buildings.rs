@@ -274,3 +274,19 @@ fn the_risk_scene_studies_the_rows_joint() {
     key(&mut a, KeyCode::Char('y'));
     assert!(a.risk_spec().row.is_none());
 }
+
+/// A row with P-Δ that collapses (SPEC §15): the summary says which
+/// building, which storey and when, as `run --buildings` reports it.
+#[test]
+fn a_collapse_is_named_in_the_summary() {
+    let mut a = app((160, 40));
+    let record = Simulation::synthetic("synthetic:2000", 2000).unwrap();
+    let ground = Arc::new(Ground::from_record(&record, 6.0));
+    a.row = Some(RowPane::open("block-and-frame-pdelta", ground, "synthetic:2000", None).unwrap());
+    settle(&mut a);
+    let lines = row::summary(&a, 400);
+    assert!(
+        lines[0].contains("frame collapses (storey 4, 2.33 s)"),
+        "{lines:?}"
+    );
+}

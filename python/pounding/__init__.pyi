@@ -484,6 +484,7 @@ def ida(
     buildings: Union[str, Mapping[str, Any], None] = ...,
     drift: Optional[str] = ...,
     building: Optional[str] = ...,
+    collapse: bool = False,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -507,7 +508,8 @@ def ida(
     suite: the records; levels: intensities in g, START:STOP:STEP or X1,X2,…
     im: pga or sa:T; ductility, acceleration, force: limit states beside pounding.
     buildings: a row of buildings; drift (storey drift ratios), acceleration
-        and force items ``[NAME:]VALUE``, building: the one they read by default.
+        and force items ``[NAME:]VALUE``, building: the one they read by default;
+        collapse=True: each P-Δ building's collapse fragility (its θ is Ŝ_CT).
     Each level's records, the levels, and each limit state's counts are numpy arrays.
     preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
     model: contact law, kelvin, improved-kelvin, hertz, hertzdamp, jankowski or hunt-crossley.
@@ -564,6 +566,7 @@ def fragility(
     buildings: Union[str, Mapping[str, Any], None] = ...,
     drift: Optional[str] = ...,
     building: Optional[str] = ...,
+    collapse: bool = False,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,

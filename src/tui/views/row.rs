@@ -155,8 +155,15 @@ pub fn summary(app: &App, width: usize) -> Vec<String> {
             run.floors.iter().flatten().map(f).fold(0.0, f64::max)
         };
         let force = run.pairs.iter().map(|p| p.max_force()).fold(0.0, f64::max);
+        // A collapse (SPEC §15) ends the run: say where and when.
+        let collapse = run.collapse.map_or(String::new(), |c| {
+            format!(
+                ", {} collapses (storey {}, {:.2} s)",
+                row.buildings[c.building].name, c.storey, c.time
+            )
+        });
         first.push(format!(
-            "{}: {} impacts, {:.0} kN, drift {:.2}%, {:.2} g",
+            "{}: {} impacts, {:.0} kN, drift {:.2}%, {:.2} g{collapse}",
             law.name(),
             run.impacts(),
             force / 1e3,
