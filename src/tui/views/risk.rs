@@ -81,7 +81,15 @@ pub fn probability_title(p: &RiskPicture, width: usize) -> String {
 /// The fragility in a few words: θ and β, or why there is no fit.
 pub fn fragility_text(f: &Fragility) -> String {
     match *f {
-        Fragility::Fitted { theta, beta, .. } => format!("θ {} g β {:.2}", short(theta), beta),
+        Fragility::Fitted {
+            theta,
+            beta,
+            extrapolated,
+            ..
+        } => {
+            let outside = if extrapolated { " extrapolated," } else { "" };
+            format!("θ {} g{outside} β {:.2}", short(theta), beta)
+        }
         Fragility::TooFewRecords => "no fit: under 2 records".into(),
         Fragility::NeverExceeded => "no fit: never pounds".into(),
         Fragility::AlwaysExceeded => "no fit: pounds at every level".into(),
@@ -314,7 +322,13 @@ impl LevelCharts<'_> {
             .map(|c| (c.level, c.exceeded as f64 / c.runs as f64))
             .collect();
         let mut series = Vec::new();
-        if let Fragility::Fitted { theta, beta, .. } = p.fragility {
+        if let Fragility::Fitted {
+            theta,
+            beta,
+            extrapolated,
+            ..
+        } = p.fragility
+        {
             let n = 120;
             let line = (1..=n)
                 .map(|k| {
@@ -322,7 +336,12 @@ impl LevelCharts<'_> {
                     (x, fragility::probability(x, theta, beta))
                 })
                 .collect();
-            series.push(Series::line("fit", palette::FORCE, line).marked('*'));
+            let name = if extrapolated {
+                "fit, θ extrapolated"
+            } else {
+                "fit"
+            };
+            series.push(Series::line(name, palette::FORCE, line).marked('*'));
         }
         series.push(Series::points(
             "records",
@@ -346,5 +365,22 @@ impl LevelCharts<'_> {
             no_legend: false,
         };
         chart::draw(buf, area, self.look, &spec, &series);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_median_outside_the_levels_says_so_in_the_scene() {
+        let fit = |extrapolated| Fragility::Fitted {
+            theta: 1.8,
+            beta: 0.41,
+            log_likelihood: -3.0,
+            extrapolated,
+        };
+        assert_eq!(fragility_text(&fit(true)), "θ 1.8 g extrapolated, β 0.41");
+        assert_eq!(fragility_text(&fit(false)), "θ 1.8 g β 0.41");
     }
 }
