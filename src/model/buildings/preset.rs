@@ -176,14 +176,20 @@ pub const MIN_RESTITUTION: f64 = 1e-3;
 /// Range of the v₀ floor `min_impact_velocity` (m/s).
 pub const MIN_IMPACT_VELOCITY: (f64, f64) = (1e-9, 1.0);
 
-/// Most a joint's stiffness may be per kilogram of the reduced mass m̄ of
-/// any floor pair it joins (1/s² for the Kelvin family: the contact
-/// frequency √(k̄/m̄) ≤ 1e5 rad/s, a contact lasting π/ω̄ ≥ 31 μs; for the
-/// Hertz-type laws, β/m̄ in 1/(s²·√m)). The block-and-frame row (m̄ =
-/// 2.2e5 kg) runs its sine in 0.05 s at k̄ = 1e13 N/m, in 38 s with 241
-/// impacts and floor accelerations of 7e7 g at 1e17 N/m, and not at all
-/// at 1e19; 1e300 gives 300-digit accelerations and a NaN energy balance.
+/// Most a joint's stiffness k̄ (N/m, the Kelvin family) may be per
+/// kilogram of the reduced mass m̄ of any floor pair it joins (1/s²): the
+/// contact frequency √(k̄/m̄) ≤ 1e5 rad/s, a contact lasting π/ω̄ ≥ 31 μs.
+/// The block-and-frame row (m̄ = 1.7e5 to 1.9e5 kg) runs its sine in
+/// 0.05 s at k̄ = 1e13 N/m, in 38 s with 241 impacts and floor
+/// accelerations of 7e7 g at 1e17 N/m, and not at all at 1e19; 1e300 gives
+/// 300-digit accelerations and a NaN energy balance.
 pub const MAX_CONTACT_STIFFNESS_PER_MASS: f64 = 1e10;
+
+/// The same for β (N/m^1.5) of the Hertz-type laws, in 1/(s²·√m): their
+/// tangent stiffness 1.5β√δ grows with the penetration δ, and at δ = 1 mm
+/// this bound gives √(1.5β√δ/m̄) ≤ 2.2e5 rad/s. The block-and-frame row
+/// runs its sine at β = 1e17 N/m^1.5 in 0.8 s, and not at all at 1e19.
+pub const MAX_HERTZ_STIFFNESS_PER_MASS: f64 = 1e12;
 
 /// Every period of `b`'s modes within [`PERIOD_RANGE`].
 fn periods_in_range(b: &Building) -> Result<(), String> {
@@ -204,16 +210,27 @@ fn periods_in_range(b: &Building) -> Result<(), String> {
     ))
 }
 
-/// Every joint's stiffness within [`MAX_CONTACT_STIFFNESS_PER_MASS`] of the
-/// floor pairs it joins.
+/// Every joint's stiffness within [`MAX_CONTACT_STIFFNESS_PER_MASS`] (or
+/// [`MAX_HERTZ_STIFFNESS_PER_MASS`]) of the floor pairs it joins.
 fn contact_in_range(row: &Row) -> Result<(), String> {
+    let (per_mass, frequency) = if row.model.is_hertzian() {
+        (
+            MAX_HERTZ_STIFFNESS_PER_MASS,
+            "a contact frequency √(1.5β√δ/m̄) of at most 2.2e5 rad/s at δ = 1 mm",
+        )
+    } else {
+        (
+            MAX_CONTACT_STIFFNESS_PER_MASS,
+            "a contact frequency √(k̄/m̄) of at most 1e5 rad/s",
+        )
+    };
     for pair in row.pairs() {
         let m_bar = super::contact::reduced_mass(row, &pair);
         let k = row.joints[pair.joint].stiffness;
-        let most = MAX_CONTACT_STIFFNESS_PER_MASS * m_bar;
+        let most = per_mass * m_bar;
         if k > most {
             return Err(format!(
-                "joint{}: `stiffness` = {}: must be at most {most:.3e} here ({MAX_CONTACT_STIFFNESS_PER_MASS:e} times m̄ = {m_bar:.4e} kg of floors {}, a contact frequency √(k̄/m̄) of at most 1e5 rad/s)",
+                "joint{}: `stiffness` = {}: must be at most {most:.3e} here ({per_mass:e} times m̄ = {m_bar:.4e} kg of floors {}, {frequency})",
                 pair.joint + 1,
                 number_text(k),
                 row.pair_name(&pair),
