@@ -98,18 +98,22 @@ fn bad_input_exits_2_with_one_line() {
         ),
         (
             ROW.replace("mass = 1e5\nstiffness = 1e8", "mass = -1\nstiffness = 1e8"),
-            vec!["building `high`", "`mass` = -1", "finite number > 0"],
+            vec!["building `high`", "`mass` = -1", "in [1, 1e9] (kg)"],
         ),
         (
             ROW.replace(
                 "mass = 1e5\nstiffness = 1e8",
                 "mass = 1e5\nstiffness = \"inf\"",
             ),
-            vec!["building `high`", "`stiffness` = inf", "finite number > 0"],
+            vec![
+                "building `high`",
+                "`stiffness` = inf",
+                "in [100, 1e13] (N/m)",
+            ],
         ),
         (
             ROW.replace("yield_drift = 0.01", "yield_drift = 0"),
-            vec!["building `low`", "`yield_drift` = 0", "> 0"],
+            vec!["building `low`", "`yield_drift` = 0", "≥ 1e-5 (m)"],
         ),
         (
             format!("{ROW}[[joint]]\ngap = 0.01\nstiffness = 1e10\n"),
@@ -130,6 +134,35 @@ fn bad_input_exits_2_with_one_line() {
         (
             ROW.replace("gap = 0.01", "gap = 0.01\nwidth = 2"),
             vec!["joint1", "unknown key `width`"],
+        ),
+        // Two buildings of one name would make `--set NAME.KEY`, `--drift
+        // NAME:…` and the pairs of the output ambiguous.
+        (
+            ROW.replace("name = \"high\"", "name = \"low\""),
+            vec!["building 2: `name` = \"low\": building 1 has this name already"],
+        ),
+        // Physical ranges: a storey of 1e-300 m, a period of a microsecond,
+        // a restitution of 1e-10 (each ran without end, or gave drift
+        // ratios of 1e297).
+        (
+            ROW.replace("height = 3\nyield_drift", "height = 1e-300\nyield_drift"),
+            vec!["building `low`", "`height` = 1e-300", "in [0.1, 100] (m)"],
+        ),
+        (
+            ROW.replace("stiffness = [2e8, 1e8]", "stiffness = [1e13, 1e13]")
+                .replace(
+                    "name = \"low\"\nstoreys = 2\nmass = 1e5",
+                    "name = \"low\"\nstoreys = 2\nmass = 1",
+                ),
+            vec![
+                "building `low`",
+                "`mass` and `stiffness` give a shortest period",
+                "[0.001, 100] s",
+            ],
+        ),
+        (
+            format!("restitution = 1e-10\n{ROW}"),
+            vec!["`restitution` = 1e-10", "in [0.001, 1]"],
         ),
     ];
     for (i, (text, fragments)) in cases.iter().enumerate() {
@@ -186,6 +219,94 @@ fn bad_input_exits_2_with_one_line() {
         2,
         &["no building named `tower`"],
     );
+    // A contact stiffness of 1e300 N/m ran and printed 300-digit floor
+    // accelerations and a NaN energy balance with exit 0; it is beyond what
+    // the solvers resolve, and refused with the largest allowed here.
+    fails(
+        &[
+            "run",
+            "--buildings",
+            "block-and-frame",
+            "--set",
+            "joint1.stiffness=1e300",
+        ],
+        2,
+        &[
+            "presets/buildings/block-and-frame.toml: joint1: `stiffness` = 1e300: must be at most 1.875e15 here",
+            "floors block 1 – frame 1",
+            "1e5 rad/s",
+        ],
+    );
+    // Two buildings named alike through --set.
+    fails(
+        &[
+            "run",
+            "--buildings",
+            "block-and-frame",
+            "--set",
+            "frame.name=\"block\"",
+        ],
+        2,
+        &["building 2: `name` = \"block\": building 1 has this name already"],
+    );
+    // A long Newmark step is refused at once, with the limit and what
+    // sets it (it stopped at 6.29 s as a failed run, exit 1, "more than 10⁸
+    // events"): 20 steps per the 18.4 ms period of the contact
+    // element at the block's roof, √(k̄/m̄) with m̄ = 4e5·3e5/7e5 kg.
+    let m_bar = 4e5 * 3e5 / 7e5;
+    let contact_period = std::f64::consts::TAU / (2e10f64 / m_bar).sqrt();
+    assert!((contact_period / 20.0 - 9.198e-4).abs() < 1e-7);
+    for dt in ["10", "0.002"] {
+        fails(
+            &[
+                "run",
+                "--buildings",
+                "block-and-frame",
+                "--method",
+                "newmark",
+                "--dt",
+                dt,
+            ],
+            2,
+            &[
+                &format!("--dt `{dt}`: must be <= 0.0009198 s on this row"),
+                "20 steps per shortest period, 0.0184 s of the contact of block 3 – frame 3",
+            ],
+        );
+    }
+    // Under a record, its sample interval bounds the step too: a Hertz
+    // law has no contact period, so the 5 ms of the record sets it.
+    fails(
+        &[
+            "run",
+            "--buildings",
+            "two-buildings",
+            "--model",
+            "hertz",
+            "--method",
+            "newmark",
+            "--excitation",
+            "synthetic:400",
+            "--dt",
+            "0.006",
+        ],
+        2,
+        &["--dt `0.006`: must be <= 0.005 s on this row (the record's sample interval"],
+    );
+    // Just inside the limit, the run runs.
+    let v = json(&[
+        "run",
+        "--buildings",
+        "block-and-frame",
+        "--method",
+        "newmark",
+        "--dt",
+        "0.0009",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(v["method"], "newmark");
+    assert!(v["impacts"].as_u64().unwrap() > 0, "{v}");
     // Work beyond the commands' bound (a tail of 1e7 s, a Newmark step of
     // 1 ns) is refused at once, never a wait without end.
     let block = ["--buildings", "block-and-frame"];

@@ -29,6 +29,24 @@ fn top_help_names_excitations_laws_and_methods() {
     assert!(!first.contains("sinusoidal ground acceleration"), "{first}");
 }
 
+/// The first sentence of `pounding --help` names what the tool studies
+/// beyond the pair: rows of buildings, suites of records and the risk of
+/// pounding; the short `-h` says so too.
+#[test]
+fn top_help_first_sentence_names_rows_suites_and_risk() {
+    for flag in ["--help", "-h"] {
+        let text = stdout(&succeeds(&[flag]));
+        let first = text.lines().next().unwrap();
+        let sentence = first.split(". ").next().unwrap();
+        for word in ["SDOF", "rows of", "buildings", "suites", "risk"] {
+            assert!(
+                sentence.contains(word),
+                "{flag}: `{word}` missing from: {sentence}"
+            );
+        }
+    }
+}
+
 /// Each simulating command's options name every law, excitation and method.
 #[test]
 fn command_help_names_every_choice() {

@@ -200,6 +200,10 @@ fn full_texts() -> Vec<String> {
         "P(pounding | IM)".to_string(),
         "at d ".to_string(),
     ]);
+    // A law's words, where a label names the law its column shortens.
+    for (model, _) in pounding::tui::fit::SHORT_LAWS {
+        texts.push(pounding::tui::fit::law_words(model).to_string());
+    }
     let own = pounding::model::ContactModel::ImprovedKelvin;
     let mut laws = Laws::Paper;
     for _ in 0..8 {
@@ -244,7 +248,13 @@ fn cut_texts(screen: &str, texts: &[String]) -> Vec<String> {
                 // A prefix that is itself a whole text ("moves Π_m" of m1,
                 // beside m2's "moves Π_m and the force scale").
                 let whole = texts.contains(&t[..m].iter().collect());
-                if !goes_on && !wraps && !one_word && !whole {
+                // Another text shown whole there ("improved Kelvin" where
+                // "improved-kelvin" shares its first word) is that text.
+                let other = texts.iter().any(|o| {
+                    let o: Vec<char> = o.chars().collect();
+                    o.len() > m && c[i..].starts_with(&o)
+                });
+                if !goes_on && !wraps && !one_word && !whole && !other {
                     bad.push(c[i..(i + m + 1).min(c.len())].iter().collect());
                 }
             }

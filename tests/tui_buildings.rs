@@ -290,3 +290,110 @@ fn a_collapse_is_named_in_the_summary() {
         "{lines:?}"
     );
 }
+
+/// `e` and `g` in the buildings scene write the row's CSV and its figure
+/// (they pointed to the CLI before), the same bytes `pounding run
+/// --buildings --format csv` and `pounding figure buildings` write for
+/// this row and ground, each atomically: the file appears whole under its
+/// name (a file there before is replaced by a rename, not written into)
+/// and nothing else is left in the folder.
+#[test]
+fn e_and_g_write_the_rows_csv_and_figure() {
+    use pounding::tui::effects::{self, Done};
+    use std::os::unix::fs::MetadataExt;
+    let dir = tempfile::tempdir().unwrap();
+    let write = |a: &mut App, k: char, name: &str| -> (std::path::PathBuf, String) {
+        a.on_key(KeyEvent::new(KeyCode::Char(k), KeyModifiers::NONE));
+        assert!(matches!(a.mode, Mode::RowFile { .. }), "{:?}", a.mode);
+        let shown = screen(a);
+        a.on_key(KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL));
+        let path = dir.path().join(name);
+        typed(a, path.to_str().unwrap());
+        let effect = a
+            .on_key(KeyEvent::new(KeyCode::Enter, KeyModifiers::NONE))
+            .expect("Enter writes");
+        let status: Vec<String> = effects::run(effect, None)
+            .into_iter()
+            .map(|d| match d {
+                Done::Status(s) => s,
+                other => panic!("{other:?}"),
+            })
+            .collect();
+        assert_eq!(status.len(), 1);
+        assert!(status[0].contains("written to"), "{}", status[0]);
+        (path, shown)
+    };
+    let mut a = app((120, 40));
+    settle(&mut a);
+    // A file already at the CSV's path is replaced whole.
+    std::fs::write(dir.path().join("row.csv"), "old\n").unwrap();
+    let before = std::fs::metadata(dir.path().join("row.csv")).unwrap().ino();
+    let (csv, prompt) = write(&mut a, 'e', "row.csv");
+    assert!(prompt.contains("write the row's peaks as CSV"), "{prompt}");
+    assert!(
+        prompt.contains("pounding-block-and-frame-buildings.csv"),
+        "{prompt}"
+    );
+    assert_ne!(std::fs::metadata(&csv).unwrap().ino(), before);
+    let (svg, prompt) = write(&mut a, 'g', "row.svg");
+    assert!(prompt.contains("write the row's figure as SVG"), "{prompt}");
+    let mut names: Vec<String> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["row.csv", "row.svg"]);
+    // The CLI's own output for this row and ground.
+    let cli = std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args([
+            "run",
+            "--buildings",
+            "block-and-frame",
+            "--excitation",
+            "synthetic:2000",
+            "--format",
+            "csv",
+        ])
+        .output()
+        .unwrap();
+    assert!(cli.status.success());
+    let written = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(written, String::from_utf8(cli.stdout).unwrap());
+    assert_eq!(written.lines().count(), 1 + 3 + 8, "{written}");
+    let figure = dir.path().join("cli.svg");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args([
+            "figure",
+            "buildings",
+            "--buildings",
+            "block-and-frame",
+            "--excitation",
+            "synthetic:2000",
+            "--out",
+            figure.to_str().unwrap(),
+        ])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    assert_eq!(
+        std::fs::read(&svg).unwrap(),
+        std::fs::read(&figure).unwrap()
+    );
+}
+
+/// Where a column is too narrow for a law's name it shows the short form,
+/// and the row's label names the law in words: the first screen says
+/// "improved Kelvin" at 120×40 (it read `IK  IK`), and the row pane too.
+#[test]
+fn the_label_names_the_law_a_narrow_column_shortens() {
+    let mut a = app((120, 40));
+    a.view.scene = Scene::History;
+    let s = screen(&a);
+    let line = s.lines().find(|l| l.contains("IK")).expect("the model row");
+    assert!(line.contains("contact: improved Kelvin"), "{line}");
+    a.view.scene = Scene::Buildings;
+    settle(&mut a);
+    let s = screen(&a);
+    let line = s.lines().find(|l| l.contains("IK")).expect("the law row");
+    assert!(line.contains("improved Kelvin"), "{line}");
+}

@@ -49,6 +49,7 @@ where
     py.detach(|| {
         guarded(|| {
             let mut emit = |r: &dyn Emit| {
+                pounding::cli::output::finite(r)?;
                 report = Some(Python::attach(|py| {
                     let value = pythonize::pythonize(py, r)
                         .map_err(|e| Failure::Failed(format!("to Python: {e}")))?;

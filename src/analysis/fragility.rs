@@ -118,10 +118,14 @@ pub struct LevelCount {
 pub enum Fragility {
     /// The maximum-likelihood lognormal: median θ (g) and dispersion β, with
     /// the log-likelihood ln L at the maximum, binomial coefficients included.
+    /// `extrapolated` when θ lies outside the levels run (below the lowest
+    /// or above the highest): the median is then where the curve is only
+    /// drawn on, not where any record was run, and every output says so.
     Fitted {
         theta: f64,
         beta: f64,
         log_likelihood: f64,
+        extrapolated: bool,
     },
     /// No level ran two records or more.
     TooFewRecords,
@@ -189,11 +193,21 @@ pub fn probability(x: f64, theta: f64, beta: f64) -> f64 {
     normal::cdf((x / theta).ln() / beta)
 }
 
-/// A fragility in words: θ and β of a fit, or why there is none.
+/// How [`describe`] marks a θ outside the levels run.
+pub const EXTRAPOLATED: &str = " (extrapolated)";
+
+/// A fragility in words: θ and β of a fit, or why there is none; a θ
+/// outside the levels run is marked [`EXTRAPOLATED`].
 pub fn describe(f: &Fragility) -> String {
     match *f {
-        Fragility::Fitted { theta, beta, .. } => {
-            format!("θ = {} g, β = {:.3}", echo::g4(theta), beta)
+        Fragility::Fitted {
+            theta,
+            beta,
+            extrapolated,
+            ..
+        } => {
+            let outside = if extrapolated { EXTRAPOLATED } else { "" };
+            format!("θ = {} g{outside}, β = {:.3}", echo::g4(theta), beta)
         }
         Fragility::TooFewRecords => "not fitted: fewer than two records".into(),
         Fragility::NeverExceeded => "never exceeded".into(),
@@ -309,6 +323,7 @@ pub fn fit(counts: &[LevelCount]) -> Fragility {
         theta,
         beta,
         log_likelihood: log_likelihood(&points, 0.0, a, b) + binomial,
+        extrapolated: theta < lowest || theta > highest,
     }
 }
 
@@ -481,6 +496,7 @@ mod tests {
                 theta,
                 beta,
                 log_likelihood,
+                ..
             } => (theta, beta, log_likelihood),
             other => panic!("no fit: {other:?}"),
         }
@@ -721,6 +737,7 @@ mod tests {
                     theta,
                     beta,
                     log_likelihood,
+                    ..
                 } => {
                     fits += 1;
                     assert!(
@@ -846,6 +863,53 @@ mod tests {
         assert_eq!(j, r#"{"outcome":"too_few_records"}"#);
     }
 
+    /// A θ beyond the highest level run is flagged, in the fit and in its
+    /// words; one inside the levels is not. Counts from θ = 1.8 g, β = 0.5
+    /// at 0.2 … 1 g (expected counts of 100 runs, rounded), as a μ > 4
+    /// limit state that only the strongest records reach.
+    #[test]
+    fn a_median_outside_the_levels_run_is_flagged() {
+        let levels = [0.2, 0.4, 0.6, 0.8, 1.0];
+        let at = |theta: f64| -> Vec<LevelCount> {
+            levels
+                .iter()
+                .map(|&level| LevelCount {
+                    level,
+                    runs: 100,
+                    exceeded: (100.0 * probability(level, theta, 0.5)).round() as usize,
+                })
+                .collect()
+        };
+        let Fragility::Fitted {
+            theta,
+            extrapolated,
+            ..
+        } = fit(&at(1.8))
+        else {
+            panic!("no fit");
+        };
+        // Rounded counts (12 of 100 at 1 g) move the fit: θ = 1.66 g.
+        assert!((theta / 1.8 - 1.0).abs() < 0.1, "θ = {theta}");
+        assert!(theta > 1.0);
+        assert!(extrapolated);
+        let words = describe(&fit(&at(1.8)));
+        assert!(words.contains("g (extrapolated), β ="), "{words}");
+        let inside = fit(&at(0.5));
+        assert!(
+            matches!(
+                inside,
+                Fragility::Fitted {
+                    extrapolated: false,
+                    ..
+                }
+            ),
+            "{inside:?}"
+        );
+        assert!(!describe(&inside).contains("extrapolated"));
+        let json = serde_json::to_string(&fit(&at(1.8))).unwrap();
+        assert!(json.contains("\"extrapolated\":true"), "{json}");
+    }
+
     #[test]
     fn bridging_levels_fall_inside_the_separating_bracket() {
         let levels = [0.06, 0.12, 0.18, 0.24];
@@ -883,6 +947,7 @@ mod tests {
             theta: 0.1,
             beta: 0.3,
             log_likelihood: -1.0,
+            extrapolated: false,
         };
         assert!(bridging_levels(&levels, &fitted, 4).is_empty());
     }

@@ -16,7 +16,9 @@ use crate::model::buildings::matrices::default_tail;
 use crate::model::buildings::{Ground, Row, load_with};
 use crate::model::excitation::Excitation;
 use crate::model::physical::parse_acceleration;
-use crate::solver::buildings::{RowError, RowOptions, default_step, run_newmark, run_row};
+use crate::solver::buildings::{
+    RowError, RowOptions, default_step, max_step, run_newmark, run_row,
+};
 
 /// The options of a row of buildings.
 #[derive(Debug, Clone, Default, Args)]
@@ -201,20 +203,34 @@ pub fn bench(
     print(&render(&report, output.format)?)
 }
 
-/// `--dt` in seconds for rows, by default [`default_step`] of the run's length.
-fn newmark_step(params: &ParamArgs, duration: f64, ground: &Ground) -> Result<f64, CliError> {
-    match &params.dt {
-        None => Ok(default_step(duration, ground)),
-        Some(text) => text
-            .parse::<f64>()
-            .ok()
-            .filter(|d| *d > 0.0 && d.is_finite())
-            .ok_or_else(|| {
-                CliError::Usage(format!(
-                    "--dt `{text}`: rows take a step in seconds, a finite number > 0"
-                ))
-            }),
+/// `--dt` in seconds for rows, by default [`default_step`] of the run's
+/// length; at most [`max_step`].
+fn newmark_step(
+    params: &ParamArgs,
+    duration: f64,
+    row: &Row,
+    ground: &Ground,
+) -> Result<f64, CliError> {
+    let (most, why) = max_step(row, ground);
+    let Some(text) = &params.dt else {
+        return Ok(default_step(duration, ground).min(most));
+    };
+    let dt = text
+        .parse::<f64>()
+        .ok()
+        .filter(|d| *d > 0.0 && d.is_finite())
+        .ok_or_else(|| {
+            CliError::Usage(format!(
+                "--dt `{text}`: rows take a step in seconds, a finite number > 0"
+            ))
+        })?;
+    if dt > most {
+        return Err(CliError::Usage(format!(
+            "--dt `{text}`: must be <= {} s on this row ({why})",
+            crate::model::params::echo::g4(most)
+        )));
     }
+    Ok(dt)
 }
 
 /// Refuses a request on `row` estimated beyond the commands' work bound
@@ -247,9 +263,11 @@ pub fn run(
     let (ground, name, duration) =
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let method = params.method.as_deref().unwrap_or("exact");
-    let dt = newmark_step(params, duration, &ground)?;
+    let step = match method {
+        "newmark" => Some(newmark_step(params, duration, &row, &ground)?),
+        _ => None,
+    };
     // The runs asked for, and the exact method's one more for its energy.
-    let step = (method == "newmark").then_some(dt);
     let runs = f64::from(repeat.max(1)) + f64::from(u8::from(step.is_none()));
     let seconds = runs * work::row_seconds(row.dofs(), duration, step);
     bounded("run --buildings", seconds, allow_long)?;
@@ -258,10 +276,9 @@ pub fn run(
     let mut result = None;
     for _ in 0..repeat.max(1) {
         let t = Instant::now();
-        let run = if method == "newmark" {
-            run_newmark(&row, &ground, duration, dt)
-        } else {
-            run_row(&row, &ground, &options)
+        let run = match step {
+            Some(dt) => run_newmark(&row, &ground, duration, dt),
+            None => run_row(&row, &ground, &options),
         };
         result = Some(run.map_err(|e| match e {
             RowError::Runaway(_) => CliError::Failed(e.to_string()),
@@ -349,22 +366,10 @@ pub fn figure(
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let seconds = 2.0 * work::row_seconds(row.dofs(), duration, None);
     bounded("figure buildings", seconds, allow_long)?;
-    let apart = row.apart();
-    let failed = |e: crate::solver::buildings::RowError| CliError::Failed(e.to_string());
-    let traced = RowOptions {
-        forces: true,
-        ..RowOptions::lasting(duration)
-    };
-    let with = run_row(&row, &ground, &traced).map_err(failed)?;
-    let without = run_row(&apart, &ground, &RowOptions::lasting(duration)).map_err(failed)?;
-    let caption = format!(
-        "{} excitation, {} contact, exact method, {:.3} s; dashed: without pounding",
-        name,
-        row.model.name(),
-        duration
-    );
-    let fig = crate::figure::buildings::row_figure(&row, &with, &without, &caption);
-    let bytes = encode(&fig, format, (1400, 1000)).map_err(|e| CliError::Failed(e.to_string()))?;
+    let fig = crate::figure::buildings::row_figure_of(&row, &ground, &name, duration)
+        .map_err(|e| CliError::Failed(e.to_string()))?;
+    let bytes = encode(&fig, format, crate::figure::buildings::ROW_FIGURE_SIZE)
+        .map_err(|e| CliError::Failed(e.to_string()))?;
     crate::output::write_file(out, &bytes)?;
     Ok(())
 }

@@ -93,9 +93,13 @@ impl From<crate::model::PresetError> for CliError {
 #[command(
     name = "pounding",
     version,
-    about = "Pounding of two adjacent inelastic SDOF structures, in Buckingham-Π form",
-    long_about = "Pounding of two adjacent inelastic SDOF structures with bilinear hysteresis, \
-                  in Buckingham-Π form. Ground motion: a sine, the cycloidal pulses A, B, C1 \
+    about = "Pounding of adjacent buildings in earthquakes: a pair of inelastic SDOF structures \
+             in Buckingham-Π form, rows of multi-storey buildings, suites of records, and the \
+             risk of pounding",
+    long_about = "Pounding of adjacent buildings in earthquakes: a pair of inelastic SDOF \
+                  structures with bilinear hysteresis in Buckingham-Π form, rows of shear \
+                  buildings that pound at their floors (--buildings), and suites of records \
+                  with fragility and the risk of pounding (suite, ida). Ground motion: a sine, the cycloidal pulses A, B, C1 \
                   and C2, or a recorded accelerogram (PEER .AT2 or plain time-acceleration \
                   columns). Contact laws: kelvin, improved-kelvin, hertz, hertzdamp, jankowski, \
                   hunt-crossley. Methods: Newmark-β (average acceleration) or the exact \

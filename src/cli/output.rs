@@ -29,13 +29,26 @@ pub struct FormatArg {
     pub format: Format,
 }
 
-/// `report` in `format`.
+/// `report` in `format`, once [`finite`] has passed it.
 pub fn render(r: &impl Report, format: Format) -> Result<String, CliError> {
+    finite(r)?;
     Ok(match format {
         Format::Table => r.table(),
         Format::Json => report::json(r).map_err(|e| CliError::Failed(format!("JSON: {e}")))?,
         Format::Csv => report::csv(&r.csv_header(), &r.csv_rows()),
     })
+}
+
+/// Refuses a report holding a non-finite number where a finite one is
+/// meant ([`crate::output::audit`]): a failed run (exit 1), naming the
+/// quantity, rather than an absurd result printed as a success. Every
+/// front end (the tables, JSON and CSV here, the Python module) passes its
+/// report through this before showing it.
+pub fn finite<R: serde::Serialize + ?Sized>(report: &R) -> Result<(), CliError> {
+    match crate::output::audit::first_non_finite(report) {
+        Some(found) => Err(CliError::Failed(found.to_string())),
+        None => Ok(()),
+    }
 }
 
 /// A command's typed report as its printing step receives it: rendered in

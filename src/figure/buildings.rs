@@ -5,11 +5,38 @@
 //! per pair, from the exact method's force history
 //! ([`crate::solver::buildings::ForceHistory`]).
 
-use crate::model::buildings::Row;
+use crate::model::buildings::{Ground, Row};
 use crate::model::record::STANDARD_GRAVITY;
-use crate::solver::buildings::RowRun;
+use crate::solver::buildings::{RowError, RowOptions, RowRun, run_row};
 
 use super::spec::{Figure, Panel, Series, Stroke};
+
+/// The size `figure buildings` draws at (pixels; an SVG's view box).
+pub const ROW_FIGURE_SIZE: (u32, u32) = (1400, 1000);
+
+/// `figure buildings` of `row` under `ground` (named `excitation` in the
+/// caption) for `duration` s: the exact method's run with contact, its
+/// force history kept, and the run with every joint open.
+pub fn row_figure_of(
+    row: &Row,
+    ground: &Ground,
+    excitation: &str,
+    duration: f64,
+) -> Result<Figure, RowError> {
+    let traced = RowOptions {
+        forces: true,
+        ..RowOptions::lasting(duration)
+    };
+    let with = run_row(row, ground, &traced)?;
+    let without = run_row(&row.apart(), ground, &RowOptions::lasting(duration))?;
+    let caption = format!(
+        "{} excitation, {} contact, exact method, {:.3} s; dashed: without pounding",
+        excitation,
+        row.model.name(),
+        duration
+    );
+    Ok(row_figure(row, &with, &without, &caption))
+}
 
 /// The figure from a run with contact (its force history asked for:
 /// [`crate::solver::buildings::RowOptions::forces`]) and one without.
@@ -65,13 +92,7 @@ pub fn row_figure(row: &Row, with: &RowRun, without: &RowRun, caption: &str) -> 
             line.push((with.duration, 0.0));
         }
         forces.series.push(Series::new(
-            format!(
-                "{} {} – {} {}",
-                row.buildings[p.left].name,
-                p.left_floor,
-                row.buildings[p.right].name,
-                p.right_floor
-            ),
+            row.pair_name(p),
             row.buildings.len() + k,
             Stroke::Solid,
             line,

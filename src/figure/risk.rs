@@ -642,4 +642,29 @@ mod tests {
         assert!(legend[0].label().starts_with("ductility>2: θ = "));
         assert_eq!(legend[1].label(), "force>500kN: never exceeded");
     }
+
+    /// A median beyond the levels run is marked in the legend entry.
+    #[test]
+    fn an_extrapolated_median_is_marked_in_the_legend() {
+        // 1, 2 and 3 of 8 exceed at 0.2, 0.4 and 0.8 g: θ is above 0.8 g.
+        let counts: Vec<LevelCount> = [(0.2, 1), (0.4, 2), (0.8, 3)]
+            .map(|(level, exceeded)| LevelCount {
+                level,
+                runs: 8,
+                exceeded,
+            })
+            .to_vec();
+        let fit = fragility::fit(&counts);
+        let Fragility::Fitted { theta, .. } = fit else {
+            panic!("{fit:?}");
+        };
+        assert!(theta > 0.8, "θ = {theta}");
+        let series = fragility_series("ductility>4", None, 0, Stroke::Solid, &counts, &fit, 1.0);
+        assert!(
+            series[0].label.starts_with("ductility>4: θ = ")
+                && series[0].label.contains(" g (extrapolated), β = "),
+            "{}",
+            series[0].label
+        );
+    }
 }

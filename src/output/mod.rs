@@ -27,6 +27,7 @@
 //! This module sits beside `std` at the bottom of the crate: it knows nothing
 //! of the model or the terminal, so every layer may write through it.
 
+pub mod audit;
 pub mod number;
 pub mod report;
 pub mod stdout;

@@ -103,6 +103,11 @@ pub enum Mode {
     Figure {
         path: TextField,
     },
+    /// Where to write the row's CSV or figure (buildings scene).
+    RowFile {
+        path: TextField,
+        file: super::row_file::RowFile,
+    },
 }
 
 /// One line of the preset picker.
@@ -472,6 +477,7 @@ impl App {
                 confirmed,
             } => return self.on_export_key(key, path, full, confirmed),
             Mode::Figure { path } => return self.on_figure_key(key, path),
+            Mode::RowFile { path, file } => return self.on_row_file_key(key, path, file),
         }
         None
     }

@@ -34,6 +34,12 @@ pub enum Effect {
         params: Params,
         path: PathBuf,
     },
+    /// Write the row's CSV or figure.
+    RowFile {
+        snapshot: Box<super::row_file::RowSnapshot>,
+        file: super::row_file::RowFile,
+        path: PathBuf,
+    },
     /// Read the user's presets again (another process may have saved some).
     ReloadPresets,
     /// Capture mouse buttons (click, wheel) or leave the mouse to the terminal.
@@ -84,6 +90,11 @@ pub fn run(effect: Effect, user_dir: Option<&Path>) -> Vec<Done> {
             params,
             path,
         } => vec![Done::Status(write_figure(name, &title, &params, &path))],
+        Effect::RowFile {
+            snapshot,
+            file,
+            path,
+        } => vec![Done::Status(super::row_file::write(&snapshot, file, &path))],
         Effect::ReloadPresets => vec![Done::Presets(presets::user_presets(user_dir))],
         Effect::Quit | Effect::Mouse(_) => Vec::new(),
     }

@@ -16,6 +16,67 @@ pub const SHORT_LAWS: [(ContactModel, &str); 6] = [
     (ContactModel::HuntCrossley, "HC"),
 ];
 
+/// A law in words, as a label can carry it where its column shows the
+/// short form.
+pub fn law_words(model: ContactModel) -> &'static str {
+    match model {
+        ContactModel::Kelvin => "Kelvin",
+        ContactModel::ImprovedKelvin => "improved Kelvin",
+        ContactModel::Hertz => "Hertz",
+        ContactModel::HertzDamp => "Hertz with damping",
+        ContactModel::Jankowski => "Jankowski",
+        ContactModel::HuntCrossley => "Hunt–Crossley",
+    }
+}
+
+/// The label of a row whose `values` are shown in columns of
+/// `value_width`: where a column is too narrow for a law's name and shows
+/// its short form, the label names the law in words instead (`contact
+/// element: improved Kelvin`, else `contact: improved Kelvin`, else
+/// `IK = improved Kelvin`, else `improved Kelvin`; each short form used,
+/// when the values differ),
+/// so that the screen says which laws it compares. Else the label as it is.
+/// Either way fitted to `width`.
+pub fn law_label(label: &str, values: &[&str], value_width: usize, width: usize) -> String {
+    let law = |v: &&str| SHORT_LAWS.iter().find(|(m, _)| m.name() == *v);
+    let mut shortened: Vec<&(ContactModel, &str)> = Vec::new();
+    for v in values {
+        if v.chars().count() > value_width
+            && let Some(entry) = law(v)
+            && !shortened.contains(&entry)
+        {
+            shortened.push(entry);
+        }
+    }
+    let candidates: Vec<String> = match shortened.as_slice() {
+        [] => return fit(label, width),
+        [(model, short)] if values.iter().all(|v| law(v).map(|e| e.0) == Some(*model)) => {
+            let words = law_words(*model);
+            let noun = label.split(' ').next().unwrap_or(label);
+            vec![
+                format!("{label}: {words}"),
+                format!("{noun}: {words}"),
+                format!("{short} = {words}"),
+                words.to_string(),
+            ]
+        }
+        many => {
+            let each = |sep: &str| {
+                many.iter()
+                    .map(|(m, s)| format!("{s}{sep}{}", law_words(*m)))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            vec![each(" = "), each("="), each(" ")]
+        }
+    };
+    let last = candidates.last().cloned().unwrap_or_default();
+    candidates
+        .into_iter()
+        .find(|c| c.chars().count() <= width)
+        .unwrap_or_else(|| fit(&last, width))
+}
+
 /// The help's rows defining [`SHORT_LAWS`], two laws a row:
 /// (`K / IK`, `kelvin / improved-kelvin`), …
 pub fn short_laws_legend() -> Vec<(String, String)> {
@@ -108,5 +169,48 @@ mod tests {
             legend[0],
             ("K / IK".into(), "kelvin / improved-kelvin".into())
         );
+    }
+
+    #[test]
+    fn a_label_names_the_law_its_narrow_column_shortens() {
+        let both = ["improved-kelvin", "improved-kelvin"];
+        assert_eq!(
+            law_label("contact element", &both, 9, 40),
+            "contact element: improved Kelvin"
+        );
+        assert_eq!(
+            law_label("contact element", &both, 9, 24),
+            "contact: improved Kelvin"
+        );
+        assert_eq!(
+            law_label("contact element", &both, 9, 20),
+            "IK = improved Kelvin"
+        );
+        assert_eq!(
+            law_label("contact law", &["improved-kelvin"], 11, 17),
+            "improved Kelvin"
+        );
+        // A column wide enough for the name: the label as it is.
+        assert_eq!(
+            law_label("contact element", &both, 15, 24),
+            "contact element"
+        );
+        // Different laws: each short form used is named.
+        let mixed = ["improved-kelvin", "kelvin"];
+        assert_eq!(
+            law_label("contact element", &mixed, 9, 24),
+            "IK = improved Kelvin"
+        );
+        let two = ["improved-kelvin", "hunt-crossley"];
+        assert_eq!(
+            law_label("contact element", &two, 9, 40),
+            "IK = improved Kelvin, HC = Hunt–Crossley"
+        );
+        assert_eq!(
+            law_label("contact element", &two, 9, 24),
+            "IK improved Kelvin, HC…"
+        );
+        // Not a law: fitted as any label.
+        assert_eq!(law_label("restitution e", &["0.4"], 9, 24), "restitution e");
     }
 }

@@ -45,6 +45,7 @@ pub mod playback;
 pub mod presets;
 pub mod risk_job;
 pub mod row_fields;
+pub mod row_file;
 pub mod row_job;
 pub mod row_keys;
 pub mod row_pane;

@@ -3,17 +3,20 @@
 //! Kelvin against improved Kelvin, and recalling a row preset. Keys it does
 //! not take fall through to the explorer's own (scenes, help, quit).
 
+use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Instant;
 
 use crossterm::event::{KeyCode, KeyEvent};
 
 use super::app::{App, Mode};
+use super::effects::Effect;
 use super::fields::StepSize;
 use super::layout;
+use super::row_file::{RowFile, RowSnapshot};
 use super::row_pane::RowPane;
 use super::scene::Scene;
-use super::text_field::TextField;
+use super::text_field::{FieldKey, TextField};
 use crate::model::buildings::{Ground, builtin};
 use crate::model::simulated::Simulation;
 
@@ -167,10 +170,18 @@ impl App {
             KeyCode::Tab | KeyCode::BackTab | KeyCode::Char('u') => {
                 Err("one row: Tab and u act on the pair's scenes".to_string())
             }
-            KeyCode::Char('e' | 'g' | 's') => {
+            KeyCode::Char('e') => {
+                self.ask_row_file(RowFile::Csv);
+                Ok(())
+            }
+            KeyCode::Char('g') => {
+                self.ask_row_file(RowFile::Figure);
+                Ok(())
+            }
+            KeyCode::Char('s') => {
                 let name = &pane.source;
                 Err(format!(
-                    "rows: pounding run --buildings {name} (--format csv|json) and pounding figure buildings --buildings {name} --out F.svg"
+                    "rows are presets of their own: s saves the pair's sets; the row's edits are --set NAME.KEY=V of pounding run --buildings {name}"
                 ))
             }
             _ => return None,
@@ -204,5 +215,60 @@ impl App {
             return false;
         }
         self.row.as_mut().is_some_and(|p| p.tick(now))
+    }
+}
+
+/// Longest path typed.
+const PATH_MAX: usize = 1024;
+
+impl App {
+    /// `e` or `g` in the buildings scene: asks where, in the export folder
+    /// by default (`pounding-ROW-buildings.csv|svg`).
+    pub fn ask_row_file(&mut self, file: RowFile) {
+        let Some(pane) = self.row.as_ref() else {
+            return;
+        };
+        let name = format!(
+            "pounding-{}-buildings.{}",
+            pane.row.name.replace([' ', '/'], "-"),
+            file.extension()
+        );
+        let path = self.export_dir.join(name).display().to_string();
+        self.mode = Mode::RowFile {
+            path: TextField::new(&path, PATH_MAX),
+            file,
+        };
+    }
+
+    /// A key in the prompt of [`App::ask_row_file`].
+    pub fn on_row_file_key(
+        &mut self,
+        key: KeyEvent,
+        mut path: TextField,
+        file: RowFile,
+    ) -> Option<Effect> {
+        match path.on_key(key) {
+            FieldKey::Cancel => None,
+            FieldKey::Submit => {
+                let pane = self.row.as_ref()?;
+                let snapshot = RowSnapshot {
+                    row: pane.row.clone(),
+                    ground: pane.ground.clone(),
+                    ground_name: pane.ground_name.clone(),
+                    duration: pane.duration(),
+                };
+                let target = PathBuf::from(path.text());
+                self.status = Some(format!("writing {} ...", crate::output::shown(&target)));
+                Some(Effect::RowFile {
+                    snapshot: Box::new(snapshot),
+                    file,
+                    path: target,
+                })
+            }
+            _ => {
+                self.mode = Mode::RowFile { path, file };
+                None
+            }
+        }
     }
 }

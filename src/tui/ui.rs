@@ -64,6 +64,7 @@ pub fn render(app: &App, frame: &mut Frame) {
             Mode::ConfirmQuit => overlay::confirm_quit(app, frame, area),
             Mode::Export { path, full, .. } => overlay::export(app, path, *full, frame, area),
             Mode::Figure { path } => overlay::figure(app, path, frame, area),
+            Mode::RowFile { path, file } => overlay::row_file(app, path, *file, frame, area),
             Mode::Normal | Mode::Editing(_) => {}
         }
     }
@@ -123,6 +124,8 @@ pub fn key_bar(app: &App, width: usize) -> String {
             "| both laws",
             "p rows",
             "Enter type",
+            "e csv",
+            "g svg",
         ],
         _ => &[
             "↑↓ select",

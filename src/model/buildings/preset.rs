@@ -8,6 +8,7 @@ use std::fmt;
 use std::path::Path;
 
 use crate::model::ContactModel;
+use crate::model::params::echo::number as number_text;
 
 use super::row::{Building, Joint, PDelta, Row};
 
@@ -77,17 +78,27 @@ pub fn parse(file: &str, text: &str) -> Result<Row, BuildingsError> {
             })?
         }
     };
+    // e ≥ 1e-3 as for the pair (`model::params::table`): the improved
+    // Kelvin damping 3(1−e)/(2e) grows without bound as e → 0, and at
+    // e = 1e-10 a row's run does not end.
     let restitution = number(&table, "restitution", "", Some(0.65)).map_err(fail)?;
-    if !(restitution > 0.0 && restitution <= 1.0) {
+    if !(MIN_RESTITUTION..=1.0).contains(&restitution) {
         return Err(fail(format!(
-            "`restitution` = {restitution}: must be in (0, 1]"
+            "`restitution` = {}: must be in [{MIN_RESTITUTION}, 1]",
+            number_text(restitution)
         )));
     }
+    // The v₀ floor (SPEC §4) divides the damping of the laws that use it:
+    // below 1e-9 m/s a grazing contact's damping is without bound, and
+    // above 1 m/s the floor is no longer a floor but the law itself.
     let min_impact_velocity =
         number(&table, "min_impact_velocity", "", Some(1e-3)).map_err(fail)?;
-    if !(min_impact_velocity > 0.0 && min_impact_velocity.is_finite()) {
+    if !(MIN_IMPACT_VELOCITY.0..=MIN_IMPACT_VELOCITY.1).contains(&min_impact_velocity) {
         return Err(fail(format!(
-            "`min_impact_velocity` = {min_impact_velocity}: must be a finite number > 0 (m/s)"
+            "`min_impact_velocity` = {}: must be in [{:e}, {}] (m/s)",
+            number_text(min_impact_velocity),
+            MIN_IMPACT_VELOCITY.0,
+            MIN_IMPACT_VELOCITY.1
         )));
     }
     let buildings = tables(&table, "building").map_err(fail)?;
@@ -118,6 +129,19 @@ pub fn parse(file: &str, text: &str) -> Result<Row, BuildingsError> {
         .map(|(i, t)| joint(i, t))
         .collect::<Result<Vec<_>, _>>()
         .map_err(fail)?;
+    // A building is named in `--drift NAME:…`, `--building NAME`, `--set
+    // NAME.KEY=…` and in every pair of the output: two of one name would
+    // leave all of these ambiguous.
+    for (i, b) in buildings.iter().enumerate() {
+        if let Some(first) = buildings[..i].iter().position(|a| a.name == b.name) {
+            return Err(fail(format!(
+                "building {}: `name` = \"{}\": building {} has this name already; every building needs a name of its own",
+                i + 1,
+                b.name,
+                first + 1
+            )));
+        }
+    }
     let name = match table.get("name").and_then(|v| v.as_str()) {
         Some(n) => n.to_string(),
         None => Path::new(file)
@@ -125,14 +149,98 @@ pub fn parse(file: &str, text: &str) -> Result<Row, BuildingsError> {
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default(),
     };
-    Ok(Row {
+    let row = Row {
         name,
         buildings,
         joints,
         model,
         restitution,
         min_impact_velocity,
-    })
+    };
+    for b in &row.buildings {
+        periods_in_range(b).map_err(fail)?;
+    }
+    contact_in_range(&row).map_err(fail)?;
+    Ok(row)
+}
+
+/// Shortest and longest period a building's modes may have (s). Periods
+/// come from `mass` and `stiffness` together (SPEC §13): below 1 ms a
+/// storey is stiffer than any structure and a run takes without end (a
+/// storey of 1e30 N/m under 4e5 kg does not finish); above 100 s a
+/// building barely stands (the tallest towers are near 10 s), and the
+/// default free vibration after the motion, four fundamental periods,
+/// grows without bound.
+pub const PERIOD_RANGE: (f64, f64) = (1e-3, 100.0);
+
+/// Least coefficient of restitution (as the pair's `restitution`).
+pub const MIN_RESTITUTION: f64 = 1e-3;
+
+/// Range of the v₀ floor `min_impact_velocity` (m/s).
+pub const MIN_IMPACT_VELOCITY: (f64, f64) = (1e-9, 1.0);
+
+/// Most a joint's stiffness k̄ (N/m, the Kelvin family) may be per
+/// kilogram of the reduced mass m̄ of any floor pair it joins (1/s²): the
+/// contact frequency √(k̄/m̄) ≤ 1e5 rad/s, a contact lasting π/ω̄ ≥ 31 μs.
+/// The block-and-frame row (m̄ = 1.7e5 to 1.9e5 kg) runs its sine in
+/// 0.05 s at k̄ = 1e13 N/m, in 38 s with 241 impacts and floor
+/// accelerations of 7e7 g at 1e17 N/m, and not at all at 1e19; 1e300 gives
+/// 300-digit accelerations and a NaN energy balance.
+pub const MAX_CONTACT_STIFFNESS_PER_MASS: f64 = 1e10;
+
+/// The same for β (N/m^1.5) of the Hertz-type laws, in 1/(s²·√m): their
+/// tangent stiffness 1.5β√δ grows with the penetration δ, and at δ = 1 mm
+/// this bound gives √(1.5β√δ/m̄) ≤ 2.2e5 rad/s. The block-and-frame row
+/// runs its sine at β = 1e17 N/m^1.5 in 0.8 s, and not at all at 1e19.
+pub const MAX_HERTZ_STIFFNESS_PER_MASS: f64 = 1e12;
+
+/// Every period of `b`'s modes within [`PERIOD_RANGE`].
+fn periods_in_range(b: &Building) -> Result<(), String> {
+    let periods = super::matrices::periods(b);
+    let (shortest, longest) = (periods[periods.len() - 1], periods[0]);
+    let (lo, hi) = PERIOD_RANGE;
+    if shortest >= lo && longest <= hi {
+        return Ok(());
+    }
+    let (which, value) = if shortest < lo || shortest.is_nan() {
+        ("shortest", shortest)
+    } else {
+        ("longest", longest)
+    };
+    Err(format!(
+        "building `{}`: `mass` and `stiffness` give a {which} period of {value:.3e} s: every period must be in [{lo}, {hi}] s",
+        b.name
+    ))
+}
+
+/// Every joint's stiffness within [`MAX_CONTACT_STIFFNESS_PER_MASS`] (or
+/// [`MAX_HERTZ_STIFFNESS_PER_MASS`]) of the floor pairs it joins.
+fn contact_in_range(row: &Row) -> Result<(), String> {
+    let (per_mass, frequency) = if row.model.is_hertzian() {
+        (
+            MAX_HERTZ_STIFFNESS_PER_MASS,
+            "a contact frequency √(1.5β√δ/m̄) of at most 2.2e5 rad/s at δ = 1 mm",
+        )
+    } else {
+        (
+            MAX_CONTACT_STIFFNESS_PER_MASS,
+            "a contact frequency √(k̄/m̄) of at most 1e5 rad/s",
+        )
+    };
+    for pair in row.pairs() {
+        let m_bar = super::contact::reduced_mass(row, &pair);
+        let k = row.joints[pair.joint].stiffness;
+        let most = per_mass * m_bar;
+        if k > most {
+            return Err(format!(
+                "joint{}: `stiffness` = {}: must be at most {most:.3e} here ({per_mass:e} times m̄ = {m_bar:.4e} kg of floors {}, {frequency})",
+                pair.joint + 1,
+                number_text(k),
+                row.pair_name(&pair),
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn unknown_keys(t: &toml::Table, allowed: &[&str], whose: &str) -> Result<(), String> {
@@ -212,7 +320,11 @@ fn per_storey(
             } else {
                 String::new()
             };
-            return Err(format!("{whose}`{key}`{at} = {x}: must be {}", ok.1));
+            return Err(format!(
+                "{whose}`{key}`{at} = {}: must be {}",
+                number_text(x),
+                ok.1
+            ));
         }
     }
     Ok(values)
@@ -220,10 +332,6 @@ fn per_storey(
 
 fn positive_finite(x: f64) -> bool {
     x > 0.0 && x.is_finite()
-}
-
-fn positive(x: f64) -> bool {
-    x > 0.0
 }
 
 fn building(index: usize, t: &toml::Table) -> Result<Building, String> {
@@ -247,14 +355,17 @@ fn building(index: usize, t: &toml::Table) -> Result<Building, String> {
             }
         },
     };
-    let finite = (positive_finite as fn(f64) -> bool, "a finite number > 0");
+    // Physical ranges, wide enough for a laboratory model and for a tower:
+    // a floor of 1 kg to 1e9 kg, a storey of 100 N/m to 1e13 N/m and
+    // 0.1 m to 100 m high, yielding at a drift of 10 μm or more. Mass and
+    // stiffness together give the periods, checked by [`periods_in_range`].
     let mass = per_storey(
         t,
         "mass",
         &whose,
         storeys,
         None,
-        (finite.0, "a finite number > 0 (kg)"),
+        (|x| (1.0..=1e9).contains(&x), "in [1, 1e9] (kg)"),
     )?;
     let stiffness = per_storey(
         t,
@@ -262,7 +373,7 @@ fn building(index: usize, t: &toml::Table) -> Result<Building, String> {
         &whose,
         storeys,
         None,
-        (finite.0, "a finite number > 0 (N/m)"),
+        (|x| (1e2..=1e13).contains(&x), "in [100, 1e13] (N/m)"),
     )?;
     let height = per_storey(
         t,
@@ -270,7 +381,7 @@ fn building(index: usize, t: &toml::Table) -> Result<Building, String> {
         &whose,
         storeys,
         Some(3.0),
-        (finite.0, "a finite number > 0 (m)"),
+        (|x| (0.1..=100.0).contains(&x), "in [0.1, 100] (m)"),
     )?;
     let yield_drift = per_storey(
         t,
@@ -278,15 +389,21 @@ fn building(index: usize, t: &toml::Table) -> Result<Building, String> {
         &whose,
         storeys,
         Some(f64::INFINITY),
-        (positive, "a number > 0 (m) or \"inf\""),
+        (|x| x >= 1e-5, "a number ≥ 1e-5 (m) or \"inf\""),
     )?;
     let alpha = number(t, "alpha", &whose, Some(0.1))?;
     if !(0.0..=1.0).contains(&alpha) {
-        return Err(format!("{whose}`alpha` = {alpha}: must be in [0, 1]"));
+        return Err(format!(
+            "{whose}`alpha` = {}: must be in [0, 1]",
+            number_text(alpha)
+        ));
     }
     let damping = number(t, "damping", &whose, Some(0.05))?;
     if !(0.0..1.0).contains(&damping) {
-        return Err(format!("{whose}`damping` = {damping}: must be in [0, 1)"));
+        return Err(format!(
+            "{whose}`damping` = {}: must be in [0, 1)",
+            number_text(damping)
+        ));
     }
     let p_delta = p_delta(t, &whose, &mass)?;
     let building = Building {
@@ -364,13 +481,15 @@ fn joint(index: usize, t: &toml::Table) -> Result<Joint, String> {
     let gap = number(t, "gap", &whose, None)?;
     if gap.is_nan() || gap < 0.0 {
         return Err(format!(
-            "{whose}`gap` = {gap}: must be a number ≥ 0 (m) or \"inf\""
+            "{whose}`gap` = {}: must be a number ≥ 0 (m) or \"inf\"",
+            number_text(gap)
         ));
     }
     let stiffness = number(t, "stiffness", &whose, None)?;
     if !positive_finite(stiffness) {
         return Err(format!(
-            "{whose}`stiffness` = {stiffness}: must be a finite number > 0 (N/m, or N/m^1.5 for Hertz-type laws)"
+            "{whose}`stiffness` = {}: must be a finite number > 0 (N/m, or N/m^1.5 for Hertz-type laws)",
+            number_text(stiffness)
         ));
     }
     Ok(Joint { gap, stiffness })
@@ -409,7 +528,7 @@ mod tests {
         .to_string();
         assert_eq!(
             e,
-            "t.toml: building `b`: `mass` = -1: must be a finite number > 0 (kg)"
+            "t.toml: building `b`: `mass` = -1: must be in [1, 1e9] (kg)"
         );
         let e = parse(
             "t.toml",
@@ -418,5 +537,92 @@ mod tests {
         .unwrap_err()
         .to_string();
         assert!(e.starts_with("t.toml: joint1: unknown key `colour`"), "{e}");
+    }
+
+    #[test]
+    fn two_buildings_of_one_name_are_refused() {
+        let e = parse("t.toml", &TWO.replace("name = \"b\"", "name = \"a\""))
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            e,
+            "t.toml: building 2: `name` = \"a\": building 1 has this name already; every building needs a name of its own"
+        );
+        // Unnamed buildings take b1, b2, …: distinct by construction.
+        let unnamed = TWO
+            .replace("name = \"a\"\n", "")
+            .replace("name = \"b\"\n", "");
+        let row = parse("t.toml", &unnamed).unwrap();
+        assert_eq!(row.buildings[0].name, "b1");
+        assert_eq!(row.buildings[1].name, "b2");
+    }
+
+    #[test]
+    fn a_contact_stiffer_than_the_solvers_resolve_is_refused() {
+        // m̄ of floors a 1 and b 1 (1e5 kg each) is 5e4 kg: k̄ ≤ 5e14 N/m.
+        let at = |k: &str| {
+            parse(
+                "t.toml",
+                &TWO.replace("stiffness = 1e9\n", &format!("stiffness = {k}\n")),
+            )
+        };
+        assert!(at("5e14").is_ok());
+        let e = at("1e300").unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "t.toml: joint1: `stiffness` = 1e300: must be at most 5.000e14 here (1e10 times m̄ = 5.0000e4 kg of floors a 1 – b 1, a contact frequency √(k̄/m̄) of at most 1e5 rad/s)"
+        );
+        // An open joint pairs no floors, and its stiffness meets nothing.
+        assert!(
+            parse(
+                "t.toml",
+                &TWO.replace("gap = 0.01", "gap = \"inf\"")
+                    .replace("stiffness = 1e9\n", "stiffness = 1e300\n")
+            )
+            .is_ok()
+        );
+    }
+
+    #[test]
+    fn periods_outside_what_a_building_can_have_are_refused() {
+        // One storey of 1e5 kg: T = 2π√(m/k), 1 ms at k = 3.9e12 N/m.
+        let e = parse(
+            "t.toml",
+            &TWO.replace(
+                "mass = 1e5\nstiffness = 1e8",
+                "mass = 1e5\nstiffness = 1e13",
+            ),
+        )
+        .unwrap_err()
+        .to_string();
+        assert_eq!(
+            e,
+            "t.toml: building `b`: `mass` and `stiffness` give a shortest period of 6.283e-4 s: every period must be in [0.001, 100] s"
+        );
+        let e = parse(
+            "t.toml",
+            &TWO.replace("mass = 1e5\nstiffness = 1e8", "mass = 1e9\nstiffness = 100"),
+        )
+        .unwrap_err()
+        .to_string();
+        assert_eq!(
+            e,
+            "t.toml: building `b`: `mass` and `stiffness` give a longest period of 1.987e4 s: every period must be in [0.001, 100] s"
+        );
+    }
+
+    #[test]
+    fn restitution_and_the_impact_velocity_floor_have_ranges() {
+        let e = parse("t.toml", &format!("restitution = 1e-10\n{TWO}"))
+            .unwrap_err()
+            .to_string();
+        assert_eq!(e, "t.toml: `restitution` = 1e-10: must be in [0.001, 1]");
+        let e = parse("t.toml", &format!("min_impact_velocity = 1e300\n{TWO}"))
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            e,
+            "t.toml: `min_impact_velocity` = 1e300: must be in [1e-9, 1] (m/s)"
+        );
     }
 }

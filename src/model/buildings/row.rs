@@ -177,6 +177,17 @@ impl Row {
         out
     }
 
+    /// A floor pair as the output names it: `block 3 – frame 3`.
+    pub fn pair_name(&self, pair: &FloorPair) -> String {
+        format!(
+            "{} {} – {} {}",
+            self.buildings[pair.left].name,
+            pair.left_floor,
+            self.buildings[pair.right].name,
+            pair.right_floor
+        )
+    }
+
     /// The same buildings with every joint's gap infinite: the run without
     /// contact from which the gap that prevents pounding is measured
     /// (SPEC §11, §13), and the no-pounding baseline of every comparison.

@@ -14,9 +14,11 @@
 //! the solvers), so it cannot own the samples. A record is instead read once,
 //! leaked into a `&'static Record` and interned by path: a set holds that
 //! reference, which is `Copy`, costs no lookup on the solvers' hot path, and
-//! is shared by every set that names the same file. The memory of each
-//! distinct file read stays until the process ends, which for a command or
-//! an explorer session is a handful of records.
+//! is shared by every set that names the same file. The registry keeps each
+//! file's length and modification time beside its record: a file changed
+//! since it was read (a notebook kernel or an explorer session that outlives
+//! an edit) is read again, and the sets made afterwards get the new samples.
+//! The memory of each version read stays until the process ends.
 
 pub mod at2;
 pub mod columns;
@@ -26,6 +28,7 @@ pub use at2::parse_at2;
 pub use columns::parse_columns;
 pub use knet::parse_knet;
 
+use std::collections::HashMap;
 use std::fmt;
 use std::path::Path;
 use std::sync::Mutex;
@@ -201,11 +204,7 @@ impl Format {
 /// file is plain two-column text, time in seconds and acceleration in UNIT
 /// (g when not named), separated by commas or white space ([`parse_columns`]).
 pub fn read(spec: &str) -> Result<Record, RecordError> {
-    // A file whose own name holds an `@` is read as it is.
-    let split = spec
-        .rsplit_once('@')
-        .filter(|(_, unit)| Units::parse(unit).is_some() || !Path::new(spec).is_file());
-    let (path, units) = match split {
+    let (path, units) = match unit_of(spec) {
         Some((path, unit)) => {
             let units = Units::parse(unit).ok_or_else(|| RecordError {
                 path: path.to_string(),
@@ -239,6 +238,13 @@ pub fn read(spec: &str) -> Result<Record, RecordError> {
         (Format::At2, None) => parse_at2(path, &text),
         (Format::Knet, None) => parse_knet(path, &text),
     }
+}
+
+/// `PATH@UNIT` split at its `@`; `None` for a plain path (a file whose own
+/// name holds an `@` is read as it is).
+fn unit_of(spec: &str) -> Option<(&str, &str)> {
+    spec.rsplit_once('@')
+        .filter(|(_, unit)| Units::parse(unit).is_some() || !Path::new(spec).is_file())
 }
 
 /// The text of the file at `path` (invalid UTF-8 replaced).
@@ -328,42 +334,65 @@ fn amplitudes(a: &[f64], group: &[usize], n: usize) -> [f64; LANES] {
     amp
 }
 
-/// Records read so far, by path.
-static REGISTRY: Mutex<Vec<&'static Record>> = Mutex::new(Vec::new());
+/// What a file was when it was read: its length and modification time.
+type Stamp = Option<(u64, std::time::SystemTime)>;
 
-/// The record at `path`, read on first use and shared afterwards.
+/// The stamp of the file a `record:` spec names now (`None` if it cannot be
+/// told, which never matches: such a file is read every time).
+fn stamp(spec: &str) -> Stamp {
+    let path = unit_of(spec).map_or(spec, |(path, _)| path);
+    let meta = std::fs::metadata(path).ok()?;
+    Some((meta.len(), meta.modified().ok()?))
+}
+
+/// Records read from files, by `PATH` or `PATH@UNIT` as named, each with
+/// the stamp of the file it was read from.
+static FILES: Mutex<Option<HashMap<String, (Stamp, &'static Record)>>> = Mutex::new(None);
+
+/// Records built in memory ([`intern`]).
+static BUILT: Mutex<Vec<&'static Record>> = Mutex::new(Vec::new());
+
+/// The record at `path`, read on first use and shared afterwards, and read
+/// again when the file has changed since (its length or modification time).
 ///
 /// The file is read with the registry unlocked: reading runs on rayon's
 /// pool (the dominant frequency's transform), whose workers may be waiting
-/// for this lock in [`intern`] on another thread's behalf, so a read under
-/// the lock could wait for them for ever. Two threads reading the same path
-/// at once both read it, and the first to register it is kept.
+/// for a lock on another thread's behalf, so a read under the lock could
+/// wait for them for ever. Two threads reading the same file at once both
+/// read it, and the first to register it is kept.
 pub fn load(path: &str) -> Result<&'static Record, RecordError> {
-    let spec = format!("record:{path}");
-    let registered =
-        |registry: &Vec<&'static Record>| registry.iter().find(|r| r.spec == spec).copied();
-    if let Some(r) = registered(&REGISTRY.lock().unwrap_or_else(|e| e.into_inner())) {
+    let now = stamp(path);
+    let registered = |files: &Option<HashMap<String, (Stamp, &'static Record)>>| {
+        files
+            .as_ref()?
+            .get(path)
+            .filter(|(then, _)| then.is_some() && *then == now)
+            .map(|(_, r)| *r)
+    };
+    if let Some(r) = registered(&FILES.lock().unwrap_or_else(|e| e.into_inner())) {
         return Ok(r);
     }
     let record = read(path)?;
-    let mut registry = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
-    if let Some(r) = registered(&registry) {
+    let mut files = FILES.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(r) = registered(&files) {
         return Ok(r);
     }
     let record: &'static Record = Box::leak(Box::new(record));
-    registry.push(record);
+    files
+        .get_or_insert_with(HashMap::new)
+        .insert(path.to_string(), (now, record));
     Ok(record)
 }
 
 /// Interns a record built in memory (tests, generated motions); an equal
 /// record interned before is shared rather than kept twice.
 pub fn intern(record: Record) -> &'static Record {
-    let mut registry = REGISTRY.lock().unwrap_or_else(|e| e.into_inner());
-    if let Some(r) = registry.iter().find(|r| ***r == record) {
+    let mut built = BUILT.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(r) = built.iter().find(|r| ***r == record) {
         return r;
     }
     let record: &'static Record = Box::leak(Box::new(record));
-    registry.push(record);
+    built.push(record);
     record
 }
 
@@ -379,6 +408,52 @@ mod tests {
             .collect();
         let w = dominant_omega(&a, 0.01);
         assert!((w - 4.0 * std::f64::consts::PI).abs() < 1e-9, "{w}");
+    }
+
+    /// A record file edited between two loads in one process is read
+    /// again: the second load gives the new samples (it gave the first
+    /// file's, bit for bit, for the life of the process), and a file left
+    /// as it was is not read again.
+    #[test]
+    fn a_file_changed_since_it_was_read_is_read_again() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("rec.csv");
+        std::fs::write(&path, "0 0.5\n0.01 -1\n").unwrap();
+        let path = path.to_str().unwrap();
+        let first = load(path).unwrap();
+        assert_eq!(
+            first.acceleration,
+            [0.5 * STANDARD_GRAVITY, -STANDARD_GRAVITY]
+        );
+        assert!(std::ptr::eq(first, load(path).unwrap()));
+        std::fs::write(path, "0 0.25\n0.01 -1\n0.02 0.75\n").unwrap();
+        let second = load(path).unwrap();
+        assert_eq!(
+            second.acceleration,
+            [
+                0.25 * STANDARD_GRAVITY,
+                -STANDARD_GRAVITY,
+                0.75 * STANDARD_GRAVITY
+            ]
+        );
+        assert!(std::ptr::eq(second, load(path).unwrap()));
+        // Through the excitation, as a run names it.
+        let crate::model::excitation::Excitation::Record(m) =
+            crate::model::excitation::Excitation::parse(&format!("record:{path}")).unwrap()
+        else {
+            panic!("not a record");
+        };
+        assert_eq!(m.record.acceleration.len(), 3);
+        // An edit of the same length is told by its modification time.
+        let later = std::time::SystemTime::now() + std::time::Duration::from_secs(5);
+        std::fs::write(path, "0 0.75\n0.01 -1\n0.02 0.75\n").unwrap();
+        std::fs::File::options()
+            .write(true)
+            .open(path)
+            .unwrap()
+            .set_modified(later)
+            .unwrap();
+        assert_eq!(load(path).unwrap().acceleration[0], 0.75 * STANDARD_GRAVITY);
     }
 
     #[test]

@@ -49,5 +49,5 @@ pub mod taylor;
 
 pub use driver::{MapCache, RowError, RowOptions, run_row, run_row_cached};
 pub use energy::RowEnergy;
-pub use newmark::{default_step, run_newmark};
+pub use newmark::{default_step, max_step, run_newmark};
 pub use result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};

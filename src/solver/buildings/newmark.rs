@@ -15,9 +15,11 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::model::buildings::contact::pair_law;
-use crate::model::buildings::matrices::RowMatrices;
+use crate::model::buildings::contact::{pair_law, reduced_mass};
+use crate::model::buildings::matrices::{RowMatrices, periods};
 use crate::model::buildings::{Ground, Row};
+use crate::model::params::echo;
+use crate::model::params::table::STEPS_PER_PERIOD;
 use crate::model::{Bilinear, ContactLaw, SpringState};
 
 use super::driver::RowError;
@@ -244,6 +246,56 @@ pub fn default_step(duration: f64, ground: &Ground) -> f64 {
     match ground {
         Ground::Samples { dt, .. } if *dt > 0.0 && dt.is_finite() => dt / (dt / step).ceil(),
         _ => step,
+    }
+}
+
+/// The longest step Newmark may take on `row` under `ground` (s), and what
+/// sets it, for a message. As for the pair (`Params::validate`, SPEC §5),
+/// at least [`STEPS_PER_PERIOD`] steps per period of the motion (a sine's
+/// or a pulse's 2π/ω), of every mode of every building and, for the
+/// linear laws of the Kelvin family, of every floor pair's contact element
+/// 2π/√(k̄/m̄) (the Hertz-type laws have no one period); under a record, at
+/// most its sample interval too, so that a step straddles no more than one
+/// kink of the piecewise-linear ground. Average acceleration is stable at
+/// any step, but a step beyond these misses the response it is asked for,
+/// and Newton on a contact it cannot resolve stops converging: on the
+/// block-and-frame row (contact period 19 ms) Δt = 2 ms fails at 3.7 s,
+/// and Δt = 10 s under a 1 s sine fails too, where it should be refused.
+pub fn max_step(row: &Row, ground: &Ground) -> (f64, String) {
+    let (mut shortest, mut whose) = (f64::INFINITY, String::new());
+    let mut shorter = |t: f64, what: &dyn Fn() -> String| {
+        if t < shortest {
+            (shortest, whose) = (t, what());
+        }
+    };
+    for b in &row.buildings {
+        let t = *periods(b).last().expect("a building has a storey");
+        shorter(t, &|| format!("building `{}`", b.name));
+    }
+    if !row.model.is_hertzian() {
+        for pair in row.pairs() {
+            let stiffness = row.joints[pair.joint].stiffness;
+            let t = std::f64::consts::TAU / (stiffness / reduced_mass(row, &pair)).sqrt();
+            shorter(t, &|| format!("the contact of {}", row.pair_name(&pair)));
+        }
+    }
+    if let Ground::Sine { omega, .. } = ground {
+        shorter(std::f64::consts::TAU / omega, &|| "the motion".to_string());
+    }
+    let by_period = shortest / STEPS_PER_PERIOD;
+    let why = format!(
+        "{STEPS_PER_PERIOD} steps per shortest period, {} s of {whose}",
+        echo::g4(shortest)
+    );
+    match ground {
+        Ground::Samples { dt, .. } if *dt < by_period => (
+            *dt,
+            format!(
+                "the record's sample interval; {why} allows {}",
+                echo::g4(by_period)
+            ),
+        ),
+        _ => (by_period, why),
     }
 }
 

@@ -11,6 +11,7 @@ use ratatui::widgets::{Block, Clear, List, ListItem, ListState, Paragraph, Wrap}
 use crate::tui::app::{App, LARGE_EXPORT};
 use crate::tui::export;
 use crate::tui::keys;
+use crate::tui::row_file::RowFile;
 use crate::tui::text_field::TextField;
 use crate::tui::worker::Slot;
 
@@ -172,6 +173,25 @@ pub fn figure(app: &App, field: &TextField, frame: &mut Frame, area: Rect) {
     ));
     lines.push("Enter writes, Esc cancels; Ctrl-U clears".into());
     boxed(app, frame, area, "write the scene as SVG", lines, width);
+}
+
+/// Where `e` and `g` of the buildings scene write the row's file.
+pub fn row_file(app: &App, field: &TextField, file: RowFile, frame: &mut Frame, area: Rect) {
+    let width = 72.min(area.width);
+    let mut lines = prompt_lines(field, "path: ", width);
+    lines.push(
+        match file {
+            RowFile::Csv => "peaks per floor, as pounding run --buildings --format csv",
+            RowFile::Figure => "figure `buildings`, as pounding figure buildings (SVG)",
+        }
+        .to_string(),
+    );
+    lines.push("Enter writes, Esc cancels; Ctrl-U clears".into());
+    let title = match file {
+        RowFile::Csv => "write the row's peaks as CSV",
+        RowFile::Figure => "write the row's figure as SVG",
+    };
+    boxed(app, frame, area, title, lines, width);
 }
 
 pub fn confirm(app: &App, name: &str, frame: &mut Frame, area: Rect) {

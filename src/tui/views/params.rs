@@ -15,7 +15,7 @@ use ratatui::widgets::{Block, Cell, Paragraph, Row, Table, Wrap};
 use crate::model::params::echo;
 use crate::tui::app::{App, Mode};
 use crate::tui::fields::FIELDS;
-use crate::tui::fit::{fit, fit_value};
+use crate::tui::fit::{fit, fit_value, law_label};
 use crate::tui::physical::ROWS;
 
 const SYMBOL: u16 = 9;
@@ -94,7 +94,10 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
         let (symbol, meaning) = row_names(app, r);
         let mut cells = vec![Cell::from(fit(&app.look.text(&symbol), columns[0]))];
         if wide {
-            cells.push(Cell::from(fit(&app.look.text(&meaning), columns[1])));
+            let values = [app.row_text(0, r), app.row_text(1, r)];
+            let values = [values[0].as_str(), values[1].as_str()];
+            let label = law_label(&app.look.text(&meaning), &values, value_width, columns[1]);
+            cells.push(Cell::from(app.look.text(&label)));
         }
         for i in 0..2 {
             let mut text = fit_value(&app.row_text(i, r), value_width);

@@ -81,7 +81,15 @@ pub fn probability_title(p: &RiskPicture, width: usize) -> String {
 /// The fragility in a few words: θ and β, or why there is no fit.
 pub fn fragility_text(f: &Fragility) -> String {
     match *f {
-        Fragility::Fitted { theta, beta, .. } => format!("θ {} g β {:.2}", short(theta), beta),
+        Fragility::Fitted {
+            theta,
+            beta,
+            extrapolated,
+            ..
+        } => {
+            let outside = if extrapolated { " extrapolated," } else { "" };
+            format!("θ {} g{outside} β {:.2}", short(theta), beta)
+        }
         Fragility::TooFewRecords => "no fit: under 2 records".into(),
         Fragility::NeverExceeded => "no fit: never pounds".into(),
         Fragility::AlwaysExceeded => "no fit: pounds at every level".into(),
@@ -331,7 +339,19 @@ impl LevelCharts<'_> {
         };
         let mut series = Vec::new();
         if let Some(line) = fitted(&p.fragility) {
-            series.push(Series::line("fit", palette::FORCE, line).marked('*'));
+            let extrapolated = matches!(
+                p.fragility,
+                Fragility::Fitted {
+                    extrapolated: true,
+                    ..
+                }
+            );
+            let name = if extrapolated {
+                "fit, θ extrapolated"
+            } else {
+                "fit"
+            };
+            series.push(Series::line(name, palette::FORCE, line).marked('*'));
         }
         series.push(Series::points(
             "records",
@@ -375,5 +395,22 @@ impl LevelCharts<'_> {
             no_legend: false,
         };
         chart::draw(buf, area, self.look, &spec, &series);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_median_outside_the_levels_says_so_in_the_scene() {
+        let fit = |extrapolated| Fragility::Fitted {
+            theta: 1.8,
+            beta: 0.41,
+            log_likelihood: -3.0,
+            extrapolated,
+        };
+        assert_eq!(fragility_text(&fit(true)), "θ 1.8 g extrapolated, β 0.41");
+        assert_eq!(fragility_text(&fit(false)), "θ 1.8 g β 0.41");
     }
 }

@@ -11,7 +11,7 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Cell, Row, Table};
 
 use crate::tui::app::{App, Mode};
-use crate::tui::fit::{fit, fit_value};
+use crate::tui::fit::{fit, fit_value, law_label};
 use crate::tui::row_fields::{Kind, RowField};
 use crate::tui::row_pane::RowPane;
 
@@ -45,7 +45,12 @@ pub fn render(app: &App, pane: &RowPane, frame: &mut Frame, area: Rect) {
                 style = style.add_modifier(Modifier::BOLD);
             }
             Row::new(vec![
-                Cell::from(fit(&app.look.text(&f.label), label_width)),
+                Cell::from(app.look.text(&law_label(
+                    &app.look.text(&f.label),
+                    &[f.value.as_str()],
+                    usize::from(VALUE),
+                    label_width,
+                ))),
                 Cell::from(text).style(style),
             ])
         });
