@@ -268,3 +268,41 @@ fn bad_p_delta_keys_are_refused_naming_building_key_value_and_range() {
         "t.toml: building `tower`: `p_delta` = \"yes\": must be true or false"
     );
 }
+
+/// The shipped P-Δ row struck hard enough to collapse (SPEC §15): the
+/// exact method's collapse is the reference's, building, storey and
+/// instant, with 38 impacts each, and every peak up to it agrees to 1e-9.
+#[test]
+fn the_shipped_p_delta_row_collapses_where_the_reference_says() {
+    let r = buildings::load("block-and-frame-pdelta").unwrap();
+    let record = pounding::model::simulated::Simulation::synthetic("synthetic:2000", 2000).unwrap();
+    let ground = Ground::from_record(&record, 6.0);
+    let duration = ground.end() + pounding::model::buildings::matrices::default_tail(&r);
+    let run = run_row(&r, &ground, &RowOptions::lasting(duration)).unwrap();
+    let c = run.collapse.expect("it collapses at scale 6");
+    let reference = reference_row(&r, &ground, duration, 1e-13);
+    let (b, s, t) = reference.collapse.expect("the reference collapses too");
+    assert_eq!((c.building, c.storey), (b, s));
+    assert_eq!(
+        (c.building, c.storey),
+        (1, 4),
+        "the frame's storey above the struck floor"
+    );
+    assert!((c.time - t).abs() <= 1e-9, "{} against {t}", c.time);
+    let impacts: Vec<usize> = run.pairs.iter().map(|p| p.impacts.len()).collect();
+    assert_eq!(impacts, reference.impacts);
+    for (k, floors) in run.floors.iter().enumerate() {
+        for (i, f) in floors.iter().enumerate() {
+            for (got, want) in [
+                (f.displacement, reference.displacement[k][i]),
+                (f.velocity, reference.velocity[k][i]),
+                (f.drift, reference.drift[k][i]),
+            ] {
+                assert!(
+                    (got - want).abs() <= 1e-9 * want.max(1e-3),
+                    "{got} against {want}"
+                );
+            }
+        }
+    }
+}
