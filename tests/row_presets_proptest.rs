@@ -1,5 +1,6 @@
 //! Row presets with random, possibly hostile values of every key of
-//! `[[building]]` and `[[joint]]` (and the row's own keys): every case ends
+//! `[[building]]` (P-Δ's among them) and `[[joint]]` (and the row's own
+//! keys): every case ends
 //! in a finite result or a one-line refusal (exit 2), never a panic, a
 //! hang, a failed run or a non-finite number. The cases run through the
 //! command's own path (`run --buildings`: the preset's checks, the work
@@ -105,9 +106,30 @@ fn building(index: usize) -> BoxedStrategy<String> {
                 ),
                 entry("alpha", plain(0.0, 0.3)),
                 entry("damping", plain(0.0, 0.2)),
+                // P-Δ (SPEC §15), in two buildings of five: θ from small to
+                // past 1, gravity masses up to ten times a floor's.
+                prop_oneof![
+                    3 => Just(String::new()),
+                    2 => (
+                        entry(
+                            "p_delta",
+                            prop_oneof![
+                                8 => Just("true".to_string()),
+                                1 => Just("false".to_string()),
+                                1 => hostile(),
+                            ]
+                            .boxed(),
+                        ),
+                        entry("gravity_mass", per_storey(number(3.0, 7.0), n)),
+                        entry("collapse_drift_ratio", plain(0.01, 0.3)),
+                    )
+                        .prop_map(|(p, g, c)| format!("{p}{g}{c}")),
+                ],
             )
-                .prop_map(move |(m, k, h, y, a, d)| {
-                    format!("[[building]]\nname = {name}\nstoreys = {storeys}\n{m}{k}{h}{y}{a}{d}")
+                .prop_map(move |(m, k, h, y, a, d, pd)| {
+                    format!(
+                        "[[building]]\nname = {name}\nstoreys = {storeys}\n{m}{k}{h}{y}{a}{d}{pd}"
+                    )
                 })
         })
         .boxed()
@@ -199,9 +221,12 @@ fn run_preset(text: &str) -> Result<Outcome, String> {
 }
 
 /// Every number of a report, with its path; the strings `inf`, `-inf` and
-/// `nan` are the non-finite values a report marks as possible.
+/// `nan` are the non-finite values a report marks as possible. A null is a
+/// NaN serde_json could not write, but for `collapsed`, which a row with
+/// P-Δ reports as null when no building collapsed (SPEC §15).
 fn non_finite(v: &serde_json::Value, path: &str, out: &mut Vec<String>) {
     match v {
+        serde_json::Value::Null if path == ".collapsed" => {}
         serde_json::Value::Null => out.push(format!("{path} = null")),
         serde_json::Value::String(s) if s == "nan" || s == "-inf" => {
             out.push(format!("{path} = {s}"))

@@ -429,6 +429,15 @@ fn building(index: usize, t: &toml::Table) -> Result<Building, String> {
     Ok(building)
 }
 
+/// A TOML value as a message shows it: a number in its shortest form,
+/// anything else as written, cut where long.
+fn shown(v: &toml::Value) -> String {
+    match as_f64(v) {
+        Some(x) => number_text(x),
+        None => crate::model::params::echo::text(&v.to_string()),
+    }
+}
+
 /// The P-Δ keys of a building (SPEC §15): `p_delta = true` turns it on;
 /// `gravity_mass` (kg per floor, finite and > 0; the floor masses by
 /// default) and `collapse_drift_ratio` (in (0, 1); 0.10 by default) apply
@@ -438,7 +447,7 @@ fn p_delta(t: &toml::Table, whose: &str, mass: &[f64]) -> Result<Option<PDelta>,
         None => false,
         Some(v) => v
             .as_bool()
-            .ok_or_else(|| format!("{whose}`p_delta` = {v}: must be true or false"))?,
+            .ok_or_else(|| format!("{whose}`p_delta` = {}: must be true or false", shown(v)))?,
     };
     if !on {
         if let Some(key) = ["gravity_mass", "collapse_drift_ratio"]
@@ -466,7 +475,8 @@ fn p_delta(t: &toml::Table, whose: &str, mass: &[f64]) -> Result<Option<PDelta>,
     let collapse_drift_ratio = number(t, "collapse_drift_ratio", whose, Some(0.10))?;
     if !(collapse_drift_ratio > 0.0 && collapse_drift_ratio < 1.0) {
         return Err(format!(
-            "{whose}`collapse_drift_ratio` = {collapse_drift_ratio}: must be in (0, 1)"
+            "{whose}`collapse_drift_ratio` = {}: must be in (0, 1)",
+            number_text(collapse_drift_ratio)
         ));
     }
     Ok(Some(PDelta {
