@@ -1,5 +1,7 @@
 //! `pounding records`: ground-motion records for suites (SPEC §12).
-//! `records synth` writes simulated records ([`crate::model::simulated`]) as
+//! `records scale` and `records select` ([`super::records_scale`],
+//! [`super::records_select`]) scale and choose records for a target
+//! spectrum. `records synth` writes simulated records ([`crate::model::simulated`]) as
 //! `.AT2` files and a suite list naming them, through [`crate::output`]; the
 //! files read back bit for bit as the suite `synthetic:N@SEED` holds them.
 
@@ -23,6 +25,10 @@ pub struct RecordsArgs {
 pub enum RecordsCommand {
     /// Write N simulated records (filtered white noise, SPEC §12) as .AT2 files and a suite list.
     Synth(SynthArgs),
+    /// Scale a suite's records to a target spectrum by a code's rule (EC8, ASCE 7) and write the list.
+    Scale(super::records_scale::ScaleArgs),
+    /// Choose the N records of a directory that best fit a target spectrum, and scale them.
+    Select(super::records_select::SelectArgs),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -88,6 +94,8 @@ pub struct SynthArgs {
 pub fn execute(args: &RecordsArgs) -> Result<(), CliError> {
     match &args.command {
         RecordsCommand::Synth(synth) => execute_synth(synth),
+        RecordsCommand::Scale(scale) => super::records_scale::execute(scale),
+        RecordsCommand::Select(select) => super::records_select::execute(select),
     }
 }
 
@@ -187,7 +195,7 @@ fn execute_synth(args: &SynthArgs) -> Result<(), CliError> {
 }
 
 /// An existing target that is not a regular file (after links) is refused.
-fn refuse_non_file(path: &Path) -> Result<(), CliError> {
+pub fn refuse_non_file(path: &Path) -> Result<(), CliError> {
     match std::fs::metadata(path) {
         Ok(m) if !m.is_file() => Err(CliError::Failed(format!(
             "cannot write {}: it exists and is not a regular file",
