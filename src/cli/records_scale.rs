@@ -388,7 +388,12 @@ impl Report for ScaleReport<'_> {
             "mean/target over the range: min {} at T = {} s (margin {:+.2} % over {} %)",
             format_args!("{:.4}", c.min_ratio),
             g4(c.at_period_s),
-            c.margin * 100.0,
+            // A suite scaled to sit at 90 % is there to rounding: no `-0.00`.
+            if c.margin.abs() < 1e-9 {
+                0.0
+            } else {
+                c.margin * 100.0
+            },
             FRACTION * 100.0
         );
         if let (Some(pga), Some(anchor)) = (c.mean_pga_g, c.zero_period_target_g) {
