@@ -409,3 +409,58 @@ fn bad_input_is_one_line_and_exit_2() {
         &["not a regular file"],
     );
 }
+
+#[test]
+fn figure_match_draws_each_record_the_mean_the_target_and_the_verdict() {
+    let dir = tempfile::tempdir().unwrap();
+    synth(dir.path(), "3");
+    let list = dir.path().join("scaled.txt");
+    succeeds(&[
+        "records",
+        "scale",
+        "--suite",
+        s(dir.path()),
+        "--target",
+        EC8,
+        "--period",
+        "0.5",
+        "--out",
+        s(&list),
+    ]);
+    let svg = dir.path().join("match.svg");
+    succeeds(&[
+        "figure",
+        "match",
+        "--suite",
+        s(&list),
+        "--target",
+        EC8,
+        "--period",
+        "0.5",
+        "--out",
+        s(&svg),
+    ]);
+    let text = fs::read_to_string(&svg).unwrap();
+    for label in [
+        "each record at its factor",
+        "suite mean",
+        "16–84 % of the records",
+        "90 % of the target",
+        "T1 = 0.5 s",
+        "0.2·T1",
+        "2·T1",
+        "the rule of EN 1998-1 §3.2.3.1.2(4) holds",
+    ] {
+        assert!(text.contains(label), "`{label}` missing from the SVG");
+    }
+    fails(
+        &["figure", "fig3", "--target", EC8],
+        2,
+        &["--target applies to figure match, not fig3"],
+    );
+    fails(
+        &["figure", "match", "--suite", s(&list), "--target", EC8],
+        2,
+        &["give --period T1"],
+    );
+}
