@@ -404,6 +404,21 @@ pub struct RuleCheck {
     pub failures: Vec<String>,
 }
 
+impl RuleCheck {
+    /// The verdict in words: `the rule of CLAUSE holds`, or why it does not.
+    pub fn verdict(&self) -> String {
+        if self.holds {
+            format!("the rule of {} holds", self.clause)
+        } else {
+            format!(
+                "the rule of {} does not hold: {}",
+                self.clause,
+                self.failures.join("; ")
+            )
+        }
+    }
+}
+
 /// A suite matched to a target: the grid, the target on it, each record,
 /// the suite's mean and percentiles, the common factor and the rule.
 #[derive(Debug, Clone, PartialEq)]

@@ -15,6 +15,7 @@ pub mod budget;
 pub mod buildings;
 pub mod description;
 pub mod design;
+pub mod design_suite;
 pub mod figure;
 pub mod figure_risk;
 pub mod gap;

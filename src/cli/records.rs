@@ -12,7 +12,7 @@ use clap::{Args, Subcommand, ValueEnum};
 use super::CliError;
 use super::output::print;
 use crate::model::simulated::{self, Filter, MAX_COUNT, Simulation, SimulationError};
-use crate::model::suite::{LIST_FILE, SuiteMember, SuiteSpec};
+use crate::model::suite::{LIST_FILE, SuiteMember};
 use crate::output::{shown, write_file};
 
 #[derive(Debug, Clone, Args)]
@@ -231,10 +231,9 @@ fn list_text(args: &SynthArgs, simulation: &Simulation, names: &[String]) -> Str
     text
 }
 
-/// The records of `SUITE` (a directory, a list file or `synthetic:N@S`),
-/// or the one-line error naming the file and line.
+/// The records of `SUITE` (a directory, a list file, `synthetic:N@S`, or
+/// a suite scaled to a target: [`super::design_suite`]), or the one-line
+/// error naming the file and line.
 pub fn members(suite: &str) -> Result<Vec<SuiteMember>, CliError> {
-    SuiteSpec::parse(suite)
-        .and_then(|s| s.load())
-        .map_err(|e| CliError::Usage(e.to_string()))
+    super::design_suite::load(suite)
 }

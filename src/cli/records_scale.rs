@@ -410,15 +410,7 @@ impl Report for ScaleReport<'_> {
             "{} records (at least {}): {}",
             c.records,
             c.min_records,
-            if c.holds {
-                format!("the rule of {} holds", c.clause)
-            } else {
-                format!(
-                    "the rule of {} does not hold: {}",
-                    c.clause,
-                    c.failures.join("; ")
-                )
-            }
+            c.verdict()
         );
         if let Some(list) = &self.list {
             let _ = writeln!(s, "list: {list}");

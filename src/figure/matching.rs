@@ -145,15 +145,7 @@ pub fn match_figure(
         });
     }
     let c = &matching.check;
-    let verdict = if c.holds {
-        format!("the rule of {} holds", c.clause)
-    } else {
-        format!(
-            "the rule of {} does not hold: {}",
-            c.clause,
-            c.failures.join("; ")
-        )
-    };
+    let verdict = c.verdict();
     Ok(Figure {
         title: format!("Suite {suite} against its target spectrum"),
         panels: vec![panel],
