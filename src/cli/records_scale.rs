@@ -52,12 +52,21 @@ pub fn execute(args: &ScaleArgs) -> Result<(), CliError> {
     report_with(args, printer(args.output.format))
 }
 
-/// The scaling of `args`, its report handed to `emit`; the list written
-/// after it; exit 1 when the rule does not hold.
+/// The scaling of `args`, its report handed to `emit` (the list written
+/// first); exit 1 when the rule does not hold.
 pub fn report_with(
     args: &ScaleArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
+    verdict(&scaled(args, emit)?)
+}
+
+/// [`report_with`] without the verdict's exit: the rule's check, whatever
+/// it says (the Python module returns it in the report).
+pub fn scaled(
+    args: &ScaleArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<RuleCheck, CliError> {
     let design = args.target.required(parse_period(&args.period)?)?;
     if args.check && args.out.is_some() {
         return Err(usage(
@@ -99,7 +108,7 @@ pub fn report_with(
         &matching,
         args.out.as_deref(),
     ))?;
-    verdict(&matching.check)
+    Ok(matching.check)
 }
 
 /// Writes a suite list atomically, never over a file that is not regular.
