@@ -5,12 +5,12 @@
 //! `.AT2` files and a suite list naming them, through [`crate::output`]; the
 //! files read back bit for bit as the suite `synthetic:N@SEED` holds them.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
 
 use super::CliError;
-use super::output::print;
+use super::output::{print, refuse_non_file};
 use crate::model::simulated::{self, Filter, MAX_COUNT, Simulation, SimulationError};
 use crate::model::suite::{LIST_FILE, SuiteMember};
 use crate::output::{shown, write_file};
@@ -192,17 +192,6 @@ fn execute_synth(args: &SynthArgs) -> Result<(), CliError> {
         LIST_FILE,
         shown(dir)
     ))
-}
-
-/// An existing target that is not a regular file (after links) is refused.
-pub fn refuse_non_file(path: &Path) -> Result<(), CliError> {
-    match std::fs::metadata(path) {
-        Ok(m) if !m.is_file() => Err(CliError::Failed(format!(
-            "cannot write {}: it exists and is not a regular file",
-            shown(path)
-        ))),
-        _ => Ok(()),
-    }
 }
 
 /// The suite list: a comment stating how the records were made, then one

@@ -13,8 +13,8 @@ use serde::Serialize;
 
 use super::CliError;
 use super::design::{TargetArgs, parse_period};
-use super::output::{Emit, FormatArg, num, printer};
-use super::records::{members, refuse_non_file};
+use super::design_suite::load as members;
+use super::output::{Emit, FormatArg, num, printer, refuse_non_file};
 use crate::analysis::record_scaling::{
     Binding, Design, FACTOR_BAND, FRACTION, Matching, PeriodRange, RecordMatch, RuleCheck, check,
     scale,
@@ -95,7 +95,10 @@ pub fn scaled(
             &members,
             &matching,
             &design,
-            &format!("pounding records scale --suite {}", args.suite),
+            &format!(
+                "pounding records scale --suite {}",
+                crate::output::escape_controls(args.suite.chars())
+            ),
         )?),
         None => None,
     };
