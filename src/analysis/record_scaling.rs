@@ -166,7 +166,7 @@ impl PeriodRange {
                 "must be LO:HI, two numbers, multiples of T1, e.g. 0.2:2.0",
             ));
         };
-        if !(low > 0.0) || low >= high {
+        if low <= 0.0 || low >= high {
             return Err(fail("the low end must be positive and below the high end"));
         }
         if !(low <= 1.0 && high >= 1.0) {
@@ -493,7 +493,10 @@ fn fits(
         .map(|(m, s)| {
             least_squares(target, s).ok_or_else(|| SilentRecord {
                 record: m.name.clone(),
-                period: periods[s.iter().position(|v| !(*v > 0.0)).unwrap_or(0)],
+                period: periods[s
+                    .iter()
+                    .position(|v| !v.is_finite() || *v <= 0.0)
+                    .unwrap_or(0)],
             })
         })
         .collect()
@@ -651,12 +654,12 @@ fn rule_check(
     let anchor = zero_period_target(design);
     let mean_pga =
         anchor.map(|_| records.iter().map(|r| r.pga_g).sum::<f64>() / records.len() as f64);
-    if let (Some(anchor), Some(mean_pga)) = (anchor, mean_pga) {
-        if mean_pga < anchor * (1.0 - ROUNDING) {
-            failures.push(format!(
-                "the mean PGA {mean_pga:.4} g is below a_g·S = {anchor:.4} g"
-            ));
-        }
+    if let (Some(anchor), Some(mean_pga)) = (anchor, mean_pga)
+        && mean_pga < anchor * (1.0 - ROUNDING)
+    {
+        failures.push(format!(
+            "the mean PGA {mean_pga:.4} g is below a_g·S = {anchor:.4} g"
+        ));
     }
     RuleCheck {
         code,
