@@ -7,7 +7,7 @@
 
 use super::FigureError;
 use super::spec::{Area, Figure, Guide, GuideAt, Panel, Series, Stroke};
-use crate::analysis::record_scaling::{Design, FRACTION, Matching, spectra};
+use crate::analysis::record_scaling::{Binding, Design, FRACTION, Matching, spectra};
 use crate::analysis::statistics::quantile;
 use crate::model::params::echo::g4;
 use crate::model::suite::SuiteMember;
@@ -150,13 +150,18 @@ pub fn match_figure(
         title: format!("Suite {suite} against its target spectrum"),
         panels: vec![panel],
         caption: format!(
-            "{} at T1 = {} s, range {}–{} s; records at their factors (common factor {}); \
-             mean/target min {:.4} at T = {} s; {verdict}",
+            "{} at T1 = {} s, range {}–{} s; {}; mean/target min {:.4} at T = {} s; {verdict}",
             design.target.label(),
             g4(design.period),
             g4(low),
             g4(high),
-            g4(matching.common_factor),
+            match matching.binding {
+                Binding::List => "records at their list's scales".to_string(),
+                _ => format!(
+                    "records at their factors (common factor {})",
+                    g4(matching.common_factor)
+                ),
+            },
             c.min_ratio,
             g4(c.at_period_s)
         ),
