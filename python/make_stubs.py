@@ -36,14 +36,23 @@ SUITE = [("im", TEXT), ("level", NUMBER), ("allow_unreliable", "bool")]
 LIMITS = [("ductility", TEXT), ("acceleration", TEXT), ("force", TEXT)]
 ROW = [("buildings", "Union[str, Mapping[str, Any], None]")]
 ROW_LIMITS = [("drift", TEXT), ("building", TEXT), ("collapse", "bool")]
+DESIGN = [("target", TEXT), ("code", TEXT), ("range", TEXT)]
+PERIOD = [("period", NUMBER)]
 
 # Each function: its leading arguments, then its own flags (keyword-only).
 COMMANDS = {
     "run": ([], [("history", "bool"), ("repeat", "int"), ("allow_large", "bool"), ("allow_unreliable", "bool")]),
     "spectrum": ([], [("omega1", TEXT), ("mu", NUMBER), ("family", TEXT)]),
-    "map": ([("x", "str"), ("y", "str")], [("mu", NUMBER), ("suite", TEXT)] + SUITE[:2]),
-    "gap": ([], [("x", TEXT), ("mu", NUMBER), ("suite", TEXT), ("probability", TEXT)] + SUITE[:2] + ROW),
-    "suite": ([("suite", "str")], SUITE + ROW),
+    "map": ([("x", "str"), ("y", "str")], [("mu", NUMBER), ("suite", TEXT)] + SUITE[:2] + DESIGN),
+    "gap": (
+        [],
+        [("x", TEXT), ("mu", NUMBER), ("suite", TEXT), ("probability", TEXT)]
+        + SUITE[:2]
+        + ROW
+        + DESIGN
+        + PERIOD,
+    ),
+    "suite": ([("suite", "str")], SUITE + ROW + DESIGN + PERIOD),
     "ida": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS + ROW + ROW_LIMITS),
     "fragility": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS + ROW + ROW_LIMITS),
 }
@@ -87,6 +96,21 @@ def render() -> str:
         "",
         "def presets() -> list[dict[str, Any]]:",
         f'    """{pounding.presets.__doc__}"""',
+        "",
+        "def target_spectrum(target: str, periods: Any) -> Any:",
+        f'    """{pounding.target_spectrum.__doc__.rstrip()}\n    """',
+        "",
+        "def scale_suite(",
+        "    suite: str,",
+        "    target: str,",
+        "    period: float,",
+        "    *,",
+        "    range: Optional[str] = ...,",
+        "    code: Optional[str] = ...,",
+        "    out: Optional[str] = ...,",
+        "    check: bool = False,",
+        ") -> dict[str, Any]:",
+        f'    """{pounding.scale_suite.__doc__.rstrip()}\n    """',
         "",
     ]
     for name, (leading, own) in COMMANDS.items():

@@ -36,6 +36,8 @@ __all__ = [
     "suite",
     "ida",
     "fragility",
+    "target_spectrum",
+    "scale_suite",
     "presets",
     "Params",
     "Field",
@@ -316,6 +318,63 @@ def fragility(suite: str, levels: str, *, preset: Optional[str] = None, **keys: 
     with _row_file(keys) as keys:
         r = _native.ida(suite=suite, levels=levels, preset=preset, **keys)
     r["levels"] = r["levels"]["level_g"]
+    return r
+
+
+def target_spectrum(target: str, periods: Any) -> "numpy.ndarray":
+    """Sa (g, 5 % damped) of a target spectrum at each of ``periods`` (s).
+
+    target: ``asce7:SDS=…,SD1=…,TL=…`` (ASCE 7-16 §11.4.6), ``asce7-mce:…``
+    (1.5 times it), ``ec8:ag=…,ground=A|B|C|D|E,type=1|2[,importance=…]``
+    (EN 1998-1 §3.2.2.2), or ``file:PATH`` (two columns T s, Sa g,
+    interpolated log-log). A period outside the target's raises ValueError.
+    """
+    import numpy as np
+
+    flat = np.asarray(periods, dtype=float)
+    return _native.target_spectrum(target, flat.ravel().tolist()).reshape(flat.shape)
+
+
+def scale_suite(
+    suite: str,
+    target: str,
+    period: float,
+    *,
+    range: Optional[str] = None,  # noqa: A002
+    code: Optional[str] = None,
+    out: Optional[str] = None,
+    check: bool = False,
+) -> dict:
+    """A suite's records scaled to a target spectrum by the code's rule:
+    ``pounding records scale --format json``.
+
+    Each record's least-squares factor in ln Sa over ``range`` (multiples
+    of T1 = ``period``, ``"0.2:2.0"`` by default), then one common factor so
+    that the suite meets the rule of ``code`` (``"ec8"``, EN 1998-1
+    §3.2.3.1.2; ``"asce7"``, ASCE 7-16 §16.2.3; the target's own by
+    default). ``out`` writes the suite list; ``check=True`` applies the rule
+    to the list's own scales instead. The dict holds ``periods`` (s),
+    ``target``, ``mean``, ``p16`` and ``p84`` (g) as numpy arrays, the
+    records as columns (``spectrum`` a 2-D array, a row a record) and
+    ``check`` (``holds``, ``min_ratio``, ``at_period_s``, ``failures``):
+    a rule that does not hold is returned, not raised.
+    """
+    import numpy as np
+
+    r = _native.records_scale(
+        suite=suite,
+        target=target,
+        period=str(period),
+        range=range,
+        code=code,
+        out=out,
+        check=check,
+    )
+    for key in ("periods", "target", "mean", "p16", "p84"):
+        r[key] = np.asarray(r[key], dtype=float)
+    records = r["records"]
+    if isinstance(records, dict) and "spectrum" in records:
+        records["spectrum"] = np.asarray(records["spectrum"], dtype=float)
     return r
 
 

@@ -82,6 +82,40 @@ class Params:
 def presets() -> list[dict[str, Any]]:
     """The built-in presets: name, description, and whether it has a [physical] table."""
 
+def target_spectrum(target: str, periods: Any) -> Any:
+    """Sa (g, 5 % damped) of a target spectrum at each of ``periods`` (s).
+
+    target: ``asce7:SDS=…,SD1=…,TL=…`` (ASCE 7-16 §11.4.6), ``asce7-mce:…``
+    (1.5 times it), ``ec8:ag=…,ground=A|B|C|D|E,type=1|2[,importance=…]``
+    (EN 1998-1 §3.2.2.2), or ``file:PATH`` (two columns T s, Sa g,
+    interpolated log-log). A period outside the target's raises ValueError.
+    """
+
+def scale_suite(
+    suite: str,
+    target: str,
+    period: float,
+    *,
+    range: Optional[str] = ...,
+    code: Optional[str] = ...,
+    out: Optional[str] = ...,
+    check: bool = False,
+) -> dict[str, Any]:
+    """A suite's records scaled to a target spectrum by the code's rule:
+    ``pounding records scale --format json``.
+
+    Each record's least-squares factor in ln Sa over ``range`` (multiples
+    of T1 = ``period``, ``"0.2:2.0"`` by default), then one common factor so
+    that the suite meets the rule of ``code`` (``"ec8"``, EN 1998-1
+    §3.2.3.1.2; ``"asce7"``, ASCE 7-16 §16.2.3; the target's own by
+    default). ``out`` writes the suite list; ``check=True`` applies the rule
+    to the list's own scales instead. The dict holds ``periods`` (s),
+    ``target``, ``mean``, ``p16`` and ``p84`` (g) as numpy arrays, the
+    records as columns (``spectrum`` a 2-D array, a row a record) and
+    ``check`` (``holds``, ``min_ratio``, ``at_period_s``, ``failures``):
+    a rule that does not hold is returned, not raised.
+    """
+
 def run(
     *,
     preset: Optional[str] = ...,
@@ -250,6 +284,9 @@ def map(
     suite: Optional[str] = ...,
     im: Optional[str] = ...,
     level: Union[float, str, None] = ...,
+    target: Optional[str] = ...,
+    code: Optional[str] = ...,
+    range: Optional[str] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -327,6 +364,10 @@ def gap(
     im: Optional[str] = ...,
     level: Union[float, str, None] = ...,
     buildings: Union[str, Mapping[str, Any], None] = ...,
+    target: Optional[str] = ...,
+    code: Optional[str] = ...,
+    range: Optional[str] = ...,
+    period: Union[float, str, None] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -402,6 +443,10 @@ def suite(
     level: Union[float, str, None] = ...,
     allow_unreliable: bool = False,
     buildings: Union[str, Mapping[str, Any], None] = ...,
+    target: Optional[str] = ...,
+    code: Optional[str] = ...,
+    range: Optional[str] = ...,
+    period: Union[float, str, None] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,

@@ -20,6 +20,7 @@ use pounding::cli::output::Emit;
 use pounding::cli::{self as commands, CliError};
 use pounding::model::params::{FIELDS, Group, Kind};
 use pounding::model::preset;
+use pounding::model::target_spectrum::TargetSpectrum;
 use pounding::solver::{FullHistory, solve};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -35,6 +36,7 @@ thread_local! {
     static GAP: RefCell<Option<clap::Command>> = const { RefCell::new(None) };
     static SUITE: RefCell<Option<clap::Command>> = const { RefCell::new(None) };
     static IDA: RefCell<Option<clap::Command>> = const { RefCell::new(None) };
+    static SCALE: RefCell<Option<clap::Command>> = const { RefCell::new(None) };
 }
 
 /// The report of `command` as Python objects. The command runs without the
@@ -193,6 +195,44 @@ fn ida(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>
     Ok(report)
 }
 
+/// `pounding records scale`: a suite's records scaled to a target spectrum
+/// by the code's rule, as `records scale --format json` gives it, whether
+/// or not the rule holds (`check.holds` says); the records as columns.
+#[pyfunction]
+#[pyo3(signature = (**kwargs))]
+fn records_scale(py: Python<'_>, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Py<PyAny>> {
+    let args: commands::records_scale::ScaleArgs = parse(&SCALE, "records scale", kwargs)?;
+    let report = emitted(py, |emit| {
+        commands::records_scale::scaled(&args, |r| emit(r)).map(|_| ())
+    })?;
+    columns_at(report.bind(py).cast::<PyDict>()?, "records", None)?;
+    Ok(report)
+}
+
+/// Sa (g) of the target spectrum `target` (`asce7:…`, `asce7-mce:…`,
+/// `ec8:…`, `file:PATH`) at each of `periods` (s).
+#[pyfunction]
+fn target_spectrum<'py>(
+    py: Python<'py>,
+    target: &str,
+    periods: Vec<f64>,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let spectrum =
+        TargetSpectrum::parse(target).map_err(|e| Failure::Usage(format!("target {e}")))?;
+    let (first, last) = spectrum.periods();
+    let values = periods
+        .iter()
+        .map(|&t| {
+            spectrum.sa(t).ok_or_else(|| {
+                Failure::Usage(format!(
+                    "periods: {t} s is outside the target's periods {first}–{last} s"
+                ))
+            })
+        })
+        .collect::<Result<Vec<f64>, Failure>>()?;
+    Ok(PyArray1::from_vec(py, values))
+}
+
 /// The built-in presets: name and description of each.
 #[pyfunction]
 fn presets(py: Python<'_>) -> PyResult<Py<PyList>> {
@@ -286,6 +326,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(gap, m)?)?;
     m.add_function(wrap_pyfunction!(suite, m)?)?;
     m.add_function(wrap_pyfunction!(ida, m)?)?;
+    m.add_function(wrap_pyfunction!(records_scale, m)?)?;
+    m.add_function(wrap_pyfunction!(target_spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(parameter_table, m)?)?;
     m.add_function(wrap_pyfunction!(_run_in_rust, m)?)?;

@@ -36,6 +36,9 @@
 //!   physical quantities of the buildings, under a suite (SPEC §12);
 //! - [`shard`]: a sweep cut into shards balanced by estimated work, and
 //!   their parts merged;
+//! - [`record_scaling`], [`record_selection`]: records scaled to a
+//!   target spectrum by the codes' rules (EC8, ASCE 7), and chosen for it
+//!   from a collection;
 //! - [`work`]: what one run costs, estimated before it starts (the shards'
 //!   balance, the commands' bound on long requests, their progress bars).
 
@@ -47,6 +50,8 @@ pub mod gap;
 pub mod ida;
 pub mod limit_state;
 pub mod map;
+pub mod record_scaling;
+pub mod record_selection;
 pub mod risk;
 pub mod row_gap;
 pub mod row_ida;

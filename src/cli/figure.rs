@@ -52,6 +52,9 @@ pub struct FigureArgs {
     /// `separation` with `--buildings` (SPEC §13).
     #[command(flatten)]
     pub row: super::buildings::BuildingsArgs,
+    /// `figure match`: the target spectrum and its rule (T1 is `--period`).
+    #[command(flatten)]
+    pub design: super::design::TargetArgs,
 }
 
 fn usage(msg: impl std::fmt::Display) -> CliError {
@@ -107,6 +110,22 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
     if args.name.trim() == "buildings" {
         let long = args.risk.long.allow_long;
         return super::buildings::figure(&args.row, &args.params, args.out.as_deref(), long);
+    }
+    if args.name.trim() == "match" {
+        return match_figure(args);
+    }
+    if let Some(flag) = [
+        ("--target", args.design.target.is_some()),
+        ("--code", args.design.code.is_some()),
+        ("--range", args.design.range.is_some()),
+    ]
+    .into_iter()
+    .find_map(|(flag, given)| given.then_some(flag))
+    {
+        return Err(usage(format!(
+            "{flag} applies to figure match, not {}",
+            args.name
+        )));
     }
     let all = args.name.trim() == "all";
     let name = if all {
@@ -244,4 +263,44 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
             Ok(())
         }
     }
+}
+
+/// `figure match --suite LIST --target TARGET --period T1`: the suite at its
+/// list's scales (as a study runs it) against the target and the rule
+/// ([`figure::matching`]).
+fn match_figure(args: &FigureArgs) -> Result<(), CliError> {
+    let suite = args.risk.suite.as_deref().ok_or_else(|| {
+        usage("figure match: give --suite LIST (a list `records scale --out` wrote, or any suite)")
+    })?;
+    let period = args
+        .row
+        .period
+        .ok_or_else(|| usage("figure match: give --period T1 (s)"))?;
+    let design = args
+        .design
+        .required(super::design::parse_period(&period.to_string())?)?;
+    let size = figure::check_size(
+        parse_side("--width", args.width.as_deref(), DEFAULT_SIZE.0)?,
+        parse_side("--height", args.height.as_deref(), DEFAULT_SIZE.1)?,
+    )?;
+    let format = match (&args.format, &args.out) {
+        (Some(f), _) => parse_format(f)?,
+        (None, Some(out))
+            if out
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("png")) =>
+        {
+            Format::Png
+        }
+        _ => Format::Svg,
+    };
+    let members = super::records::members(suite)?;
+    let matching = crate::analysis::record_scaling::check(&design, &members)
+        .map_err(|e| usage(e.to_string()))?;
+    let fig = figure::matching::match_figure(suite, &design, &members, &matching)?;
+    let out = args
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("match.{}", format.extension())));
+    write(&out, &figure::encode(&fig, format, size)?)
 }

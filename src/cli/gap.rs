@@ -73,7 +73,10 @@ pub fn report_with(
             ("--scale", args.row.scale.is_some()),
             ("--tail", args.row.tail.is_some()),
             ("--amplitude", args.row.amplitude.is_some()),
-            ("--period", args.row.period.is_some()),
+            (
+                "--period",
+                args.row.period.is_some() && args.records.design.target.is_none(),
+            ),
         ]
         .into_iter()
         .find(|(_, given)| *given)
@@ -85,6 +88,8 @@ pub fn report_with(
         }
         suite_args.buildings = args.row.buildings.clone();
         suite_args.shard = args.shard.clone();
+        suite_args.period = args.row.period.map(|t| t.to_string());
+        let suite_args = suite_args.at_design_level()?;
         if let Some(study) = suite_args.row_study()? {
             return super::row_gap_suite::report_with(&study, args.probability.as_deref(), emit);
         }
@@ -101,8 +106,10 @@ pub fn report_with(
         }
         let suite_args = super::suite::SuiteArgs {
             shard: args.shard.clone(),
+            period: args.row.period.map(|t| t.to_string()),
             ..suite_args
-        };
+        }
+        .at_design_level()?;
         return super::gap_suite::report_with(&suite_args, args.probability.as_deref(), emit);
     }
     let (preset, mut p) = args.params.resolve()?;

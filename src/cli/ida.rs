@@ -88,6 +88,7 @@ pub fn report_with(
     args: &IdaArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
+    super::design_suite::refuse_in_ida(&args.suite.design, args.suite.period.as_deref())?;
     if args.suite.level.is_some() {
         return Err(usage(
             "--level: an IDA runs every level of --levels; use `pounding suite` for one".into(),

@@ -65,6 +65,7 @@ pub fn report_with(
         .request(&args.params, args.output, args.long, &[])?
     {
         suite_args.shard = args.shard.clone();
+        let suite_args = suite_args.at_design_level()?;
         return super::map_suite::report_with(&suite_args, &args.x, &args.y, emit);
     }
     let (preset, p) = args.params.resolve_for_many()?;

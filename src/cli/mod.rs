@@ -14,6 +14,8 @@ pub mod bench;
 pub mod budget;
 pub mod buildings;
 pub mod description;
+pub mod design;
+pub mod design_suite;
 pub mod figure;
 pub mod figure_risk;
 pub mod gap;
@@ -27,6 +29,8 @@ pub mod output;
 pub mod params;
 pub mod progress;
 pub mod records;
+pub mod records_scale;
+pub mod records_select;
 pub mod row_gap_suite;
 pub mod row_ida;
 pub mod row_suite;
@@ -142,7 +146,8 @@ pub enum Command {
     Stress(stress::StressArgs),
     /// The paper's figures and the scenes as SVG or PNG files.
     Figure(Box<figure::FigureArgs>),
-    /// Ground-motion records for suites: `records synth` writes simulated ones (SPEC §12).
+    /// Ground-motion records for suites: `records synth` writes simulated ones, `records scale`
+    /// and `records select` scale and choose them for a target spectrum (SPEC §12).
     Records(records::RecordsArgs),
     /// The parts of a sharded sweep (`--shard K/N`) into the output the
     /// unsharded command writes.

@@ -112,3 +112,14 @@ pub fn param_cells(p: &Params) -> Vec<String> {
     row.extend(FIELDS.iter().map(|f| f.text(p)));
     row
 }
+
+/// An existing target that is not a regular file (after links) is refused.
+pub fn refuse_non_file(path: &std::path::Path) -> Result<(), CliError> {
+    match std::fs::metadata(path) {
+        Ok(m) if !m.is_file() => Err(CliError::Failed(format!(
+            "cannot write {}: it exists and is not a regular file",
+            crate::output::shown(path)
+        ))),
+        _ => Ok(()),
+    }
+}

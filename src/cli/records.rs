@@ -1,16 +1,18 @@
 //! `pounding records`: ground-motion records for suites (SPEC §12).
-//! `records synth` writes simulated records ([`crate::model::simulated`]) as
+//! `records scale` and `records select` ([`super::records_scale`],
+//! [`super::records_select`]) scale and choose records for a target
+//! spectrum. `records synth` writes simulated records ([`crate::model::simulated`]) as
 //! `.AT2` files and a suite list naming them, through [`crate::output`]; the
 //! files read back bit for bit as the suite `synthetic:N@SEED` holds them.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
 
 use super::CliError;
-use super::output::print;
+use super::output::{print, refuse_non_file};
 use crate::model::simulated::{self, Filter, MAX_COUNT, Simulation, SimulationError};
-use crate::model::suite::{LIST_FILE, SuiteMember, SuiteSpec};
+use crate::model::suite::{LIST_FILE, SuiteMember};
 use crate::output::{shown, write_file};
 
 #[derive(Debug, Clone, Args)]
@@ -23,6 +25,10 @@ pub struct RecordsArgs {
 pub enum RecordsCommand {
     /// Write N simulated records (filtered white noise, SPEC §12) as .AT2 files and a suite list.
     Synth(SynthArgs),
+    /// Scale a suite's records to a target spectrum by a code's rule (EC8, ASCE 7) and write the list.
+    Scale(super::records_scale::ScaleArgs),
+    /// Choose the N records of a directory that best fit a target spectrum, and scale them.
+    Select(super::records_select::SelectArgs),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -88,6 +94,8 @@ pub struct SynthArgs {
 pub fn execute(args: &RecordsArgs) -> Result<(), CliError> {
     match &args.command {
         RecordsCommand::Synth(synth) => execute_synth(synth),
+        RecordsCommand::Scale(scale) => super::records_scale::execute(scale),
+        RecordsCommand::Select(select) => super::records_select::execute(select),
     }
 }
 
@@ -186,17 +194,6 @@ fn execute_synth(args: &SynthArgs) -> Result<(), CliError> {
     ))
 }
 
-/// An existing target that is not a regular file (after links) is refused.
-fn refuse_non_file(path: &Path) -> Result<(), CliError> {
-    match std::fs::metadata(path) {
-        Ok(m) if !m.is_file() => Err(CliError::Failed(format!(
-            "cannot write {}: it exists and is not a regular file",
-            shown(path)
-        ))),
-        _ => Ok(()),
-    }
-}
-
 /// The suite list: a comment stating how the records were made, then one
 /// file name a line (scale 1).
 fn list_text(args: &SynthArgs, simulation: &Simulation, names: &[String]) -> String {
@@ -223,10 +220,9 @@ fn list_text(args: &SynthArgs, simulation: &Simulation, names: &[String]) -> Str
     text
 }
 
-/// The records of `SUITE` (a directory, a list file or `synthetic:N@S`),
-/// or the one-line error naming the file and line.
+/// The records of `SUITE` (a directory, a list file, `synthetic:N@S`, or
+/// a suite scaled to a target: [`super::design_suite`]), or the one-line
+/// error naming the file and line.
 pub fn members(suite: &str) -> Result<Vec<SuiteMember>, CliError> {
-    SuiteSpec::parse(suite)
-        .and_then(|s| s.load())
-        .map_err(|e| CliError::Usage(e.to_string()))
+    super::design_suite::load(suite)
 }

@@ -61,6 +61,13 @@ pub struct SuiteArgs {
     /// T₁ (to four significant digits).
     #[arg(long, value_name = "NAME|PATH")]
     pub buildings: Option<String>,
+    /// Scale the records to a target spectrum by the code's rule (see
+    /// `records scale`) instead of --level; the suite's name then says so.
+    #[command(flatten)]
+    pub design: super::design::TargetArgs,
+    /// With --target: T1 (s) [default: the pair's left T1, or the row's longest T1].
+    #[arg(long, value_name = "T1")]
+    pub period: Option<String>,
 }
 
 /// `--suite`, `--im` and `--level` for a command that runs one set or,
@@ -76,6 +83,10 @@ pub struct SuiteOptions {
     /// With --suite: scale each record so that its intensity measure equals X (g).
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub level: Option<String>,
+    /// With --suite: scale the records to a target spectrum by the code's
+    /// rule (T1: `--period`, else the buildings').
+    #[command(flatten)]
+    pub design: super::design::TargetArgs,
 }
 
 impl SuiteOptions {
@@ -93,6 +104,7 @@ impl SuiteOptions {
             let flags = [
                 ("--im", self.im.is_some()),
                 ("--level", self.level.is_some()),
+                ("--target", self.design.target.is_some()),
             ];
             if let Some((flag, _)) = flags.iter().chain(others).find(|(_, given)| *given) {
                 return Err(usage(format!(
@@ -111,6 +123,8 @@ impl SuiteOptions {
             allow_unreliable: true,
             shard: Default::default(),
             buildings: None,
+            design: self.design.clone(),
+            period: None,
         }))
     }
 }
@@ -120,6 +134,37 @@ fn usage(message: String) -> CliError {
 }
 
 impl SuiteArgs {
+    /// These arguments with `--target` written into the suite's name
+    /// ([`super::design_suite`]): the records scaled to the target by the
+    /// code's rule, T1 `--period` or the buildings'.
+    pub fn at_design_level(&self) -> Result<SuiteArgs, CliError> {
+        let name = super::design_suite::scaled_name(
+            &self.suite,
+            &self.design,
+            self.period.as_deref(),
+            self.level.as_deref(),
+            || match &self.buildings {
+                Some(b) => super::design_suite::row_period(
+                    &super::buildings::BuildingsArgs {
+                        buildings: Some(b.clone()),
+                        ..Default::default()
+                    }
+                    .row(&self.params.overrides, self.params.model.as_deref())?,
+                ),
+                None => super::design_suite::pair_period(&self.params),
+            },
+        )?;
+        Ok(match name {
+            Some(suite) => SuiteArgs {
+                suite,
+                design: Default::default(),
+                period: None,
+                ..self.clone()
+            },
+            None => self.clone(),
+        })
+    }
+
     /// The study on a row that `--buildings` asks for (`--level` read), or
     /// `None` without it.
     pub fn row_study(&self) -> Result<Option<RowStudyArgs<'_>>, CliError> {
@@ -257,6 +302,7 @@ pub fn report_with(
     args: &SuiteArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
+    let args = &args.at_design_level()?;
     if let Some(study) = args.row_study()? {
         return super::row_suite::report_with(&study, emit);
     }

@@ -7,6 +7,7 @@
 //! - [`history`]: Figures 3–6 and the scenes `history`, `loops`, `contact-laws`;
 //! - [`spectra`]: Figures 7–10 and the scene `spectrum`, regions shaded;
 //! - [`risk`]: a suite study's IDA curves, fragility curves and separation;
+//! - [`matching`]: a suite against its target spectrum (`figure match`);
 //! - [`risk_row`]: the same three figures of a row of buildings;
 //! - [`caption`]: the caption line (every Π, the law, the method);
 //! - [`render`]: plotters, SVG and bitmap back ends;
@@ -23,6 +24,7 @@ pub mod caption;
 pub mod font;
 pub mod history;
 pub mod map;
+pub mod matching;
 pub mod render;
 pub mod risk;
 pub mod risk_row;

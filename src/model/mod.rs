@@ -17,6 +17,7 @@ pub mod simulated;
 pub mod spectrum_spec;
 pub mod suite;
 pub mod synthetic;
+pub mod target_spectrum;
 
 pub use contact::{ContactLaw, ContactModel};
 pub use excitation::{Excitation, Pulse, RecordMotion, Rotation};

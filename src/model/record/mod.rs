@@ -22,6 +22,7 @@
 
 pub mod at2;
 pub mod columns;
+pub mod event;
 pub mod knet;
 
 pub use at2::parse_at2;
