@@ -215,14 +215,14 @@ pub fn replan(
 /// for Π_d,min unless the pounding run had no impact (then it is its own).
 pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> SuiteRun {
     let params = &plan.params;
-    let result = solve(&params, &mut ());
+    let result = solve(params, &mut ());
     // The same buildings without contact (gap = ∞), by the exact method:
     // their demands are the no-pounding baseline of every comparison, their
     // separate peaks what the code rules combine (SPEC §11), and their
     // largest x1 − x2 is Π_d,min unless the pounding run had no impact
     // (then it is its own no-pounding run).
     let free = if params.pounding() {
-        free_run(&params)
+        free_run(params)
     } else {
         result.clone()
     };

@@ -397,7 +397,7 @@ trait Entry {
     }
 }
 
-impl Entry for (Stamp, Weak<Record>) {
+impl Entry for FileEntry {
     fn live(&self) -> usize {
         usize::from(self.1.strong_count() > 0)
     }
@@ -409,10 +409,13 @@ impl Entry for Vec<Weak<Record>> {
     }
 }
 
-/// Records read from files, by `PATH` or `PATH@UNIT` as named, each with
-/// the stamp of the file it was read from.
-static FILES: LazyLock<Mutex<Registry<String, (Stamp, Weak<Record>)>>> =
-    LazyLock::new(|| Mutex::new(Registry::new()));
+/// A record read from a file, with the stamp of the file it was read from.
+type FileEntry = (Stamp, Weak<Record>);
+
+/// Records read from files, by `PATH` or `PATH@UNIT` as named.
+type Files = Registry<String, FileEntry>;
+
+static FILES: LazyLock<Mutex<Files>> = LazyLock::new(|| Mutex::new(Registry::new()));
 
 /// Records built in memory ([`intern`]), by their `record:` name; equal
 /// records share one entry of the list under their name.
@@ -436,7 +439,7 @@ fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
 /// read it, and the first to register it is kept.
 pub fn load(path: &str) -> Result<Arc<Record>, RecordError> {
     let now = stamp(path);
-    let registered = |files: &Registry<String, (Stamp, Weak<Record>)>| {
+    let registered = |files: &Files| {
         files
             .entries
             .get(path)
