@@ -16,7 +16,10 @@ fn runs(c: &mut Criterion) {
     let mut group = c.benchmark_group("run");
     for (name, base) in [("set1", SET1), ("set2", SET2)] {
         for model in ContactModel::ALL {
-            let p = Params { model, ..base };
+            let p = Params {
+                model,
+                ..base.clone()
+            };
             group.bench_function(format!("{name}/{model}/peaks-only"), |b| {
                 b.iter(|| simulate(black_box(&p), &options, &mut ()))
             });

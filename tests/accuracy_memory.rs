@@ -48,10 +48,13 @@ fn peaks_only_memory_does_not_grow_with_run_length() {
         gap: f64::INFINITY,
         ..SET1
     };
-    let short = allocated_by(&Params { cycles: 1, ..free });
+    let short = allocated_by(&Params {
+        cycles: 1,
+        ..free.clone()
+    });
     let long = allocated_by(&Params {
         cycles: 200,
-        ..free
+        ..free.clone()
     });
     assert_eq!(short, long);
     let p = Params {

@@ -22,7 +22,7 @@ const G: f64 = 9.80665;
 fn reduces(excitation: Excitation, ground: impl Fn(f64, f64) -> Ground, velocity_tolerance: f64) {
     let mut p = builtin("two-buildings").unwrap().params;
     p.method = Method::Exact;
-    p.excitation = excitation;
+    p.excitation = excitation.clone();
     let sdof = run(&p);
     let (ap, omega_p) = (0.5 * G, 2.0 * std::f64::consts::PI);
     let le = ap / (omega_p * omega_p);

@@ -141,7 +141,7 @@ fn matched_hertz_contact_lasts_as_long_as_the_linear_one() {
     let stiff = Params {
         hertz_stiffness: 32.0 * matched_hertz_stiffness(0.5, 50.0),
         method: Method::Exact,
-        ..p
+        ..p.clone()
     };
     let r = exact_impact(&stiff, &mut FullHistory::default());
     let duration = r.impacts[0].end - r.impacts[0].start;

@@ -95,7 +95,7 @@ fn exact_matches_the_closed_form_under_every_pulse() {
             unreachable!()
         };
         let (a, theta) = sinusoid(pulse);
-        let p = linear(excitation);
+        let p = linear(excitation.clone());
         let v0 = excitation.initial_velocity();
         let mut h = FullHistory::default();
         let r = solve(&p, &mut h);
@@ -110,7 +110,14 @@ fn exact_matches_the_closed_form_under_every_pulse() {
         assert!(worst < 1e-9, "{name}: {worst:e}");
         assert!(h.samples.len() > 2000);
         // Newmark (Δτ = 0.001) agrees to its own accuracy.
-        let n = simulate(&Params { dt: 0.001, ..p }, &newmark_options(&p), &mut ());
+        let n = simulate(
+            &Params {
+                dt: 0.001,
+                ..p.clone()
+            },
+            &newmark_options(&p),
+            &mut (),
+        );
         let e = pounding::solver::relative_peak_error(&n.peaks(), &r.peaks());
         assert!(e < 2e-4, "{name}: Newmark {e:e}");
         let _ = exact_options(&p);
@@ -155,7 +162,7 @@ fn newmark_is_second_order_under_pulse_c1() {
     let p = linear("pulse-c1".parse().unwrap());
     let truth = solve(&p, &mut ()).peaks();
     let err = |dt: f64| {
-        let q = Params { dt, ..p };
+        let q = Params { dt, ..p.clone() };
         pounding::solver::relative_peak_error(
             &simulate(&q, &newmark_options(&q), &mut ()).peaks(),
             &truth,

@@ -2,6 +2,8 @@
 //! short piecewise-linear record against the reference, and Newmark's
 //! convergence towards the exact method under it.
 
+use std::sync::Arc;
+
 use pounding::model::record::{Record, intern, load};
 use pounding::model::{Excitation, Method, Params, RecordMotion, SET1, synthetic};
 use pounding::reference::{ReferenceOptions, reference};
@@ -31,7 +33,7 @@ fn the_shipped_file_is_the_generator_s_output_and_reads_back() {
 }
 
 /// A short record: 40 samples at DT = 0.05 s of a decaying two-tone signal.
-fn short_record() -> &'static Record {
+fn short_record() -> Arc<Record> {
     let a: Vec<f64> = (0..40)
         .map(|k| {
             let t = k as f64 * 0.05;
@@ -71,7 +73,7 @@ fn exact_and_reference_agree_under_a_piecewise_linear_record() {
                 yield1: f64::INFINITY,
                 yield2: f64::INFINITY,
                 gap: f64::INFINITY,
-                ..p
+                ..p.clone()
             },
             p,
         ] {
@@ -109,7 +111,7 @@ fn newmark_converges_at_second_order_under_a_record() {
     };
     let truth = pounding::solver::exact::simulate(&p, &exact_options(&p), &mut ()).peaks();
     let err = |dt: f64| {
-        let q = Params { dt, ..p };
+        let q = Params { dt, ..p.clone() };
         relative_peak_error(&simulate(&q, &newmark_options(&q), &mut ()).peaks(), &truth)
     };
     let (coarse, fine) = (err(0.0137), err(0.0137 / 2.0));

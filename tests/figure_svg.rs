@@ -162,7 +162,7 @@ fn spectrum_scene_with_a_family() {
     let o = Options {
         scene: figure::Scene {
             name: "set1".into(),
-            params: p,
+            params: p.clone(),
             spectrum: Some(SpectrumInput {
                 name: "set1".into(),
                 params: p,

@@ -11,7 +11,7 @@ fn exact_at_gap(p: &Params, gap: f64) -> Params {
     Params {
         gap,
         method: Method::Exact,
-        ..*p
+        ..p.clone()
     }
 }
 
@@ -80,7 +80,7 @@ fn tracked_maximum_bounds_the_sampled_history() {
     let newmark = solve(
         &Params {
             method: Method::Newmark,
-            ..p
+            ..p.clone()
         },
         &mut (),
     );

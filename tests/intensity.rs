@@ -136,7 +136,7 @@ fn sa_of_the_shipped_record_is_in_g_and_quick() {
     let r = record::load(shipped).unwrap();
     let sa = IntensityMeasure::Sa { period: 0.4 };
     let t = Instant::now();
-    let value = sa.measure(r);
+    let value = sa.measure(&r);
     let elapsed = t.elapsed();
     let direct = spectral_acceleration(&r.acceleration, r.dt, 0.4, SA_DAMPING) / STANDARD_GRAVITY;
     assert_eq!(value, direct);

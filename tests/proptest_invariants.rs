@@ -56,7 +56,7 @@ proptest! {
         prop_assume!(p.validate().is_ok());
         let case = Case {
             name: "proptest".into(),
-            params: p,
+            params: p.clone(),
             options: SolverOptions::default(),
             expect: Expect::Invariants,
         };

@@ -49,8 +49,8 @@ fn files_read_back_bit_for_bit_as_the_suite_in_memory() {
     let from_list = load(dir.path().join("suite.txt").to_str().unwrap());
     assert_eq!(memory.len(), 3);
     for ((m, d), l) in memory.iter().zip(&from_dir).zip(&from_list) {
-        assert_eq!(bits(m.record), bits(d.record), "{} vs {}", m.name, d.name);
-        assert_eq!(bits(m.record), bits(l.record));
+        assert_eq!(bits(&m.record), bits(&d.record), "{} vs {}", m.name, d.name);
+        assert_eq!(bits(&m.record), bits(&l.record));
         assert_eq!((m.scale, d.scale, l.scale), (1.0, 1.0, 1.0));
     }
     assert_eq!(from_dir[0].name, "synthetic-001.at2");
@@ -76,7 +76,7 @@ fn the_same_seed_gives_the_same_bytes_and_record_j_ignores_n() {
     );
     // synthetic:2@9 is a prefix of synthetic:4@9.
     let (two, four) = (load("synthetic:2@9"), load("synthetic:4@9"));
-    assert_eq!(bits(two[1].record), bits(four[1].record));
+    assert_eq!(bits(&two[1].record), bits(&four[1].record));
     // Written again over itself: the same bytes.
     let before = fs::read(a.path().join("synthetic-002.at2")).unwrap();
     synth(a.path(), "2", "9");

@@ -10,7 +10,7 @@ fn linear(p: Params) -> Params {
         yield1: f64::INFINITY,
         yield2: f64::INFINITY,
         gap: f64::INFINITY,
-        ..p
+        ..p.clone()
     }
 }
 
@@ -114,7 +114,7 @@ fn yield_detected_only_beyond_yield_displacement() {
     for (uy, yields) in [(pu * 1.01, false), (pu * 0.99, true)] {
         let p = Params {
             yield1: uy,
-            ..elastic
+            ..elastic.clone()
         };
         let r = reference(&p, &ReferenceOptions::default());
         assert_eq!(r.yielded[0], yields, "Π_uy1 = {uy}, elastic peak {pu}");

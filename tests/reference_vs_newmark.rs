@@ -19,10 +19,17 @@ fn max_rel(a: [f64; 4], b: [f64; 4]) -> f64 {
 fn newmark_converges_to_reference_at_order_two() {
     for base in [SET1, SET2] {
         for model in ContactModel::PAPER {
-            let p = Params { model, ..base };
+            let p = Params {
+                model,
+                ..base.clone()
+            };
             let truth = reference(&p, &ReferenceOptions::default());
             let err = |dt: f64| {
-                let r = simulate(&Params { dt, ..p }, &SolverOptions::located(), &mut ());
+                let r = simulate(
+                    &Params { dt, ..p.clone() },
+                    &SolverOptions::located(),
+                    &mut (),
+                );
                 assert_eq!(
                     r.impacts.len(),
                     truth.impacts.len(),

@@ -20,7 +20,7 @@ fn case() -> (SuiteCase, Vec<SuiteMember>) {
         physical,
         settings: Params {
             method: Method::Exact,
-            ..preset.params
+            ..preset.params.clone()
         },
         scaling: Scaling {
             measure: IntensityMeasure::Sa { period: 0.95 },
@@ -37,7 +37,7 @@ fn suite_at(case: &SuiteCase, members: &[SuiteMember], level: f64) -> Vec<SuiteR
             level: Some(level),
             ..case.scaling
         },
-        ..*case
+        ..case.clone()
     };
     let plans = plan(&at, members).unwrap();
     run_suite(&at, members, &plans, &|_| ())

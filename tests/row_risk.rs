@@ -38,7 +38,7 @@ fn the_row_picture_is_made_of_the_runs_one_by_one() {
     assert_eq!(p.drift_title, "frame drift [mm]");
     let run_at = |m: &pounding::model::suite::SuiteMember, x: f64| {
         let scale = x / raw_intensity(m, &case.measure).unwrap();
-        let ground = Ground::from_record(m.record, scale);
+        let ground = Ground::from_record(&m.record, scale);
         let duration = ground.end() + default_tail(&row);
         (ground, duration)
     };

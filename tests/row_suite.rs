@@ -56,7 +56,7 @@ fn same_motion(a: &RowRun, b: &RowRun) {
 
 /// The run `pounding run --buildings` makes of a record at scale s.
 fn own_run(row: &Row, member: &SuiteMember, scale: f64) -> RowRun {
-    let ground = Ground::from_record(member.record, scale);
+    let ground = Ground::from_record(&member.record, scale);
     let duration = ground.end() + default_tail(row);
     run_row(row, &ground, &RowOptions::lasting(duration)).unwrap()
 }
@@ -190,7 +190,7 @@ fn the_separation_per_joint_is_the_order_statistic_of_each_records_gap() {
     // Every record pounds, so its gap comes from a run apart, which is
     // bit for bit the run `gap --buildings` makes for that record.
     for (r, member) in runs.iter().zip(&m) {
-        let ground = Ground::from_record(member.record, r.scale);
+        let ground = Ground::from_record(&member.record, r.scale);
         let report = row_gap(&c.row, &ground, ground.end() + default_tail(&c.row), "x").unwrap();
         assert_eq!(report.joints[0], r.demands.joints[0].gap);
     }

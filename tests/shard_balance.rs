@@ -18,7 +18,8 @@ fn plan(y: &str, method: Method) -> MapPlan {
     let p = Params { method, ..SET1 };
     let x = Axis::parse("--x", "omega1=0.1:3.0:0.02").unwrap();
     let y = Axis::parse("--y", y).unwrap();
-    MapPlan::new(p, p.mu(), x, y).unwrap()
+    let mu = p.mu();
+    MapPlan::new(p, mu, x, y).unwrap()
 }
 
 #[test]

@@ -8,7 +8,7 @@ use pounding::model::{ContactModel, Params, SET1, SET2};
 use pounding::solver::{SolverOptions, simulate};
 
 fn peaks(p: &Params, dt: f64, options: &SolverOptions) -> [f64; 4] {
-    let q = Params { dt, ..*p };
+    let q = Params { dt, ..p.clone() };
     simulate(&q, options, &mut ()).peaks()
 }
 
@@ -28,7 +28,10 @@ fn errors(p: &Params, options: &SolverOptions, steps: [f64; 3]) -> [f64; 3] {
 fn check_order(options: SolverOptions, label: &str, steps: [f64; 3]) {
     for (name, set) in [("set1", SET1), ("set2", SET2)] {
         for model in ContactModel::PAPER {
-            let p = Params { model, ..set };
+            let p = Params {
+                model,
+                ..set.clone()
+            };
             let e = errors(&p, &options, steps);
             let ratios = [e[0] / e[1], e[1] / e[2]];
             eprintln!("{label} {name} {model}: errors {e:?} ratios {ratios:.2?}");

@@ -4,6 +4,8 @@
 //! hysteretic energy E_h,i = ∫ f_s ẋ dτ − f_s²/(2k), against closed forms
 //! and the independent reference solver.
 
+use std::sync::Arc;
+
 use pounding::model::record::{Record, intern};
 use pounding::model::{ContactModel, Excitation, Method, Params, RecordMotion, SET1};
 use pounding::reference::closed_form::LinearOscillator;
@@ -78,7 +80,7 @@ fn piece(omega: f64, zeta: f64, a: f64, b: f64, x0: f64, v0: f64) -> impl Fn(f64
 /// A short record: 30 samples at DT = 0.04 s of a chirp under a rising then
 /// falling envelope (ω_p = 5 rad/s: 0.2 in τ between samples), ending away from 0
 /// so that g jumps to 0 after its last sample.
-fn short_record() -> &'static Record {
+fn short_record() -> Arc<Record> {
     let a: Vec<f64> = (0..30)
         .map(|k| {
             let t = k as f64 * 0.04;
@@ -220,7 +222,7 @@ fn a_kelvin_onset_jump_counts_in_the_peak_absolute_acceleration() {
     let newmark = solve(
         &Params {
             method: Method::Newmark,
-            ..p
+            ..p.clone()
         },
         &mut (),
     );
@@ -242,10 +244,10 @@ fn residual_displacement_is_the_final_plastic_offset() {
     let newmark = simulate(&p, &newmark_options(&p), &mut ());
     // Set 1's right structure does not yield; make it elastic outright too.
     for q in [
-        p,
+        p.clone(),
         Params {
             yield2: f64::INFINITY,
-            ..p
+            ..p.clone()
         },
     ] {
         assert_eq!(solve(&q, &mut ()).right.residual_displacement, 0.0);
@@ -368,7 +370,7 @@ fn newmark_absolute_acceleration_converges_to_the_exact_one() {
         let q = Params {
             dt,
             method: Method::Newmark,
-            ..p
+            ..p.clone()
         };
         (solve(&q, &mut ()).left.peak_absolute_acceleration - truth).abs() / truth
     };

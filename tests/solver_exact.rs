@@ -75,7 +75,11 @@ fn agrees_with_reference(name: &str, p: &Params, tolerance: f64) {
 fn presets_agree_with_the_reference_to_1e_8() {
     for (name, p) in [("set1", SET1), ("set2", SET2)] {
         for model in ContactModel::PAPER {
-            agrees_with_reference(&format!("{name} {model}"), &Params { model, ..p }, 1e-8);
+            agrees_with_reference(
+                &format!("{name} {model}"),
+                &Params { model, ..p.clone() },
+                1e-8,
+            );
         }
     }
 }
@@ -325,7 +329,10 @@ fn contact_extremes_are_located_only_when_asked_and_change_nothing_else() {
     };
     for (name, base) in [("set1", SET1), ("set2", SET2)] {
         for model in ContactModel::PAPER {
-            let p = Params { model, ..base };
+            let p = Params {
+                model,
+                ..base.clone()
+            };
             let all = with(&p, ContactExtremes::All);
             let forces = with(&p, ContactExtremes::Forces);
             let none = with(&p, ContactExtremes::None);
@@ -384,7 +391,7 @@ fn a_parameter_sets_contact_tolerance_is_the_methods() {
     let error = |tolerance: f64| {
         let p = Params {
             contact_tolerance: tolerance,
-            ..base
+            ..base.clone()
         };
         relative_peak_error(&pounding::solver::run(&p).peaks(), &truth.peaks)
     };

@@ -5,14 +5,17 @@ use pounding::model::{ContactModel, Params, SET1, SET2};
 use pounding::solver::run;
 
 fn with(set: Params, model: ContactModel) -> Params {
-    Params { model, ..set }
+    Params {
+        model,
+        ..set.clone()
+    }
 }
 
 #[test]
 fn energy_balance_closes() {
     for set in [SET1, SET2] {
         for model in ContactModel::PAPER {
-            let r = run(&with(set, model));
+            let r = run(&with(set.clone(), model));
             let e = r.energy;
             assert!(e.residual < 1e-6, "{model}: residual {}", e.residual);
             // The balance is not trivially zero: input, damping and contact work are all sizeable.
@@ -67,7 +70,7 @@ fn set1_improved_kelvin_pounds_nine_times() {
 fn both_models_give_nearly_the_same_displacements() {
     // Figures 4–5: the displacement histories of the two models basically coincide.
     for set in [SET1, SET2] {
-        let k = run(&with(set, ContactModel::Kelvin));
+        let k = run(&with(set.clone(), ContactModel::Kelvin));
         let ik = run(&with(set, ContactModel::ImprovedKelvin));
         let rel = (k.left.peak_displacement - ik.left.peak_displacement).abs()
             / ik.left.peak_displacement;
@@ -81,7 +84,7 @@ fn pounding_amplifies_set1_and_suppresses_set2_on_the_left() {
     let free = |p: &Params| {
         run(&Params {
             gap: f64::INFINITY,
-            ..*p
+            ..p.clone()
         })
     };
     let (p1, f1) = (run(&SET1), free(&SET1));

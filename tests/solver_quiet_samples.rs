@@ -44,7 +44,7 @@ fn peaks_only(p: &Params) -> ExactOptions {
 fn both(p: &Params, options: &ExactOptions) -> (RunResult, RunResult) {
     let series = ExactOptions {
         quiet_samples: false,
-        ..*options
+        ..options.clone()
     };
     (
         exact::simulate(p, options, &mut ()),
@@ -135,35 +135,41 @@ fn quiet_samples_agree_with_the_series_with_and_without_pounding_and_yielding() 
                     yield1: f64::INFINITY,
                     yield2: f64::INFINITY,
                     gap: f64::INFINITY,
-                    ..base
+                    ..base.clone()
                 },
             ),
             (
                 "inelastic apart",
                 Params {
                     gap: f64::INFINITY,
-                    ..base
+                    ..base.clone()
                 },
             ),
-            ("pounding", base),
+            ("pounding", base.clone()),
             (
                 "pounding, elastic",
                 Params {
                     yield1: f64::INFINITY,
                     yield2: f64::INFINITY,
-                    ..base
+                    ..base.clone()
                 },
             ),
             // α = 0: no stiffness once yielded, the load Q/m an input of
             // its own in the map and the tight loop.
-            ("pounding, perfectly plastic", Params { alpha: 0.0, ..base }),
+            (
+                "pounding, perfectly plastic",
+                Params {
+                    alpha: 0.0,
+                    ..base.clone()
+                },
+            ),
             // Kelvin (the force jumps at onset) and a wide gap (few impacts).
             (
                 "kelvin, wide gap",
                 Params {
                     model: pounding::model::ContactModel::Kelvin,
                     gap: 1.0,
-                    ..base
+                    ..base.clone()
                 },
             ),
         ];
@@ -198,7 +204,10 @@ fn elastic_peaks_match_the_series_to_1e_12() {
 fn gap_with_onset_at(base: &Params, from: f64, tau_k: f64) -> Option<f64> {
     let mut gap = from;
     for _ in 0..8 {
-        let p = Params { gap, ..*base };
+        let p = Params {
+            gap,
+            ..base.clone()
+        };
         let r = exact::simulate(&p, &peaks_only(&p), &mut ());
         let first = r.impacts.first()?;
         let miss = tau_k - first.start;
@@ -230,7 +239,7 @@ fn an_onset_within_1e_9_of_a_sample_is_located_as_before() {
         // The onset about `shift` after τ_k: the gap moved by v₀ · shift.
         let p = Params {
             gap: gap + first.approach_velocity * shift,
-            ..base
+            ..base.clone()
         };
         for options in [peaks_only(&p), exact_options(&p)] {
             let (quiet, series) = both(&p, &options);
@@ -266,7 +275,7 @@ fn a_contact_inside_one_interval_and_peaks_between_samples_are_located() {
     let h = m.record.dt * m.omega;
     let p = Params {
         gap: dmin - 1e-6,
-        ..base
+        ..base.clone()
     };
     for options in [peaks_only(&p), exact_options(&p)] {
         let (quiet, series) = both(&p, &options);
@@ -282,7 +291,7 @@ fn a_contact_inside_one_interval_and_peaks_between_samples_are_located() {
     let elastic = Params {
         yield1: f64::INFINITY,
         yield2: f64::INFINITY,
-        ..base
+        ..base.clone()
     };
     let exact_peaks = exact::simulate(&elastic, &peaks_only(&elastic), &mut ()).peaks();
     let floor = pounding::accuracy::floor::NigamJennings::new(&elastic)

@@ -23,8 +23,9 @@ use pounding::solver::{
 /// each of these runs returns in milliseconds.
 fn run_guarded(p: Params, options: SolverOptions) -> RunResult {
     let (send, receive) = mpsc::channel();
+    let run = p.clone();
     thread::spawn(move || {
-        let _ = send.send(simulate(&p, &options, &mut ()));
+        let _ = send.send(simulate(&run, &options, &mut ()));
     });
     receive
         .recv_timeout(Duration::from_secs(60))
@@ -99,7 +100,7 @@ fn inputs_that_used_to_hang_return_flagged() {
         ),
     ];
     for (label, p, reason) in cases {
-        let r = run_guarded(p, SolverOptions::default());
+        let r = run_guarded(p.clone(), SolverOptions::default());
         assert_eq!(r.method, Method::Newmark);
         let stop = r.stop.unwrap_or_else(|| panic!("{label}: no stop: {r:?}"));
         assert_eq!(stop.reason, reason, "{label}");
@@ -263,7 +264,10 @@ fn the_retry_cap_stops_a_run_that_will_not_converge() {
 fn presets_meet_no_cap() {
     for base in [SET1, SET2] {
         for model in ContactModel::ALL {
-            let p = Params { model, ..base };
+            let p = Params {
+                model,
+                ..base.clone()
+            };
             for options in [
                 SolverOptions::default(),
                 SolverOptions::located(),
@@ -283,7 +287,10 @@ fn presets_meet_no_cap() {
 fn the_result_does_not_depend_on_the_observer() {
     for base in [SET1, SET2] {
         for model in ContactModel::ALL {
-            let p = Params { model, ..base };
+            let p = Params {
+                model,
+                ..base.clone()
+            };
             let options = SolverOptions::default();
             let bare = simulate(&p, &options, &mut ());
             let full = simulate(&p, &options, &mut FullHistory::default());
@@ -313,7 +320,10 @@ fn the_summary_is_what_the_accepted_states_imply() {
                     ..SolverOptions::located()
                 },
             ] {
-                let p = Params { model, ..base };
+                let p = Params {
+                    model,
+                    ..base.clone()
+                };
                 let label = format!("{model} locate={}", options.locate_contact);
                 let mut history = FullHistory::default();
                 let r = simulate(&p, &options, &mut history);

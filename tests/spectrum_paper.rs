@@ -103,7 +103,7 @@ fn baselines_are_shared_across_gaps_and_models() {
     let preset = Preset::find("fig8-gap", &[]).unwrap();
     let kelvin = pounding::model::Params {
         model: ContactModel::Kelvin,
-        ..preset.params
+        ..preset.params.clone()
     };
     let specs = curve_specs(&kelvin, 1.5, None).unwrap();
     let k = sweep(&specs, &grid, &mut cache);

@@ -575,7 +575,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
         generation: g,
         runs: vec![],
         spectrum: Some(SpectrumSpec {
-            params: p,
+            params: p.clone(),
             mu: p.mu(),
             // Seconds of work: the grid swept over 250 times.
             grid: (0..50_000).map(|i| 0.2 + 0.02 * (i % 200) as f64).collect(),
@@ -593,7 +593,7 @@ fn worker_latest_wins_and_cancels_the_running_job() {
         generation: 4,
         runs: vec![RunSpec {
             slot: Slot::Set(0),
-            params: p,
+            params: p.clone(),
             buckets: 100,
             window: [0.0, p.tau_end()],
         }],
@@ -1010,7 +1010,7 @@ fn the_risk_scene_prints_the_librarys_probability_at_the_sets_gap() {
     assert_eq!(a.view.risk_level, 0.1);
     let preset = a.sets[0].preset.clone();
     let physical = Physical::from_table(preset.physical.as_ref().unwrap()).unwrap();
-    let (p, k, gaps) = direct_probability(physical, preset.params, 0.1);
+    let (p, k, gaps) = direct_probability(physical, preset.params.clone(), 0.1);
     assert!(0 < k && k < 20, "a mixed level: {k}");
     let s = screen(&a);
     let shown = format!("P(pounding) {p:.2} ({k}/20) at d 25 mm");
@@ -1037,7 +1037,7 @@ fn the_risk_scene_prints_the_librarys_probability_at_the_sets_gap() {
         gap: gap_m,
         ..physical
     };
-    let (p2, k2, _) = direct_probability(wider, preset.params, 0.1);
+    let (p2, k2, _) = direct_probability(wider, preset.params.clone(), 0.1);
     assert!(k2 < k, "{k2} {k}");
     let s = screen(&a);
     let shown = format!("P(pounding) {p2:.2} ({k2}/20)");

@@ -34,11 +34,11 @@ fn figure_curves(method: Method) -> Vec<(&'static str, Vec<CurveSpec>, Vec<f64>)
         .iter()
         .map(|&name| {
             let preset = preset::builtin(name).expect("figure presets are built in");
-            let own = PresetSpectrum::of(preset.spectrum.as_ref(), preset.params)
+            let own = PresetSpectrum::of(preset.spectrum.as_ref(), preset.params.clone())
                 .expect("built-in spectrum tables are valid");
             let p = Params {
                 method,
-                ..preset.params
+                ..preset.params.clone()
             };
             let curves = curve_specs(&p, own.mu, own.family.as_ref()).expect("built-in curves");
             (name, curves, own.grid.values())
@@ -58,8 +58,9 @@ pub fn figure_runs(method: Method) -> Vec<(String, Params)> {
                     "{name} {} Π_ω1={omega1:.2}",
                     curve_label(&curve.params, curve.mu)
                 );
+                let free = baseline_params(&q);
                 runs.push((label.clone(), q));
-                runs.push((format!("{label} no pounding"), baseline_params(&q)));
+                runs.push((format!("{label} no pounding"), free));
             }
         }
     }

@@ -18,6 +18,9 @@
 //! x_p = −b t/K + b c/K² for g = b t (K = ω², c = 2ζω), the state one
 //! interval on is y₁ = A y₀ + B (g_k, g_{k+1}), the classical recurrence.
 
+use std::sync::Arc;
+
+use crate::model::record::Record;
 use crate::model::{Excitation, Params};
 
 /// The Nigam–Jennings recurrence of both structures over one record.
@@ -25,8 +28,9 @@ use crate::model::{Excitation, Params};
 pub struct NigamJennings {
     /// Per structure: [A11, A12, A21, A22, B11, B12, B21, B22].
     coefficients: [[f64; 8]; 2],
-    /// The record's accelerations, in its units, and the factor to g.
-    acceleration: &'static [f64],
+    /// The record, whose accelerations (in its units) the pass reads, and
+    /// the factor to g.
+    record: Arc<Record>,
     factor: f64,
     /// Intervals of the free tail after the record (g = 0), of the same length.
     tail: usize,
@@ -64,7 +68,7 @@ impl NigamJennings {
         });
         Some(NigamJennings {
             coefficients,
-            acceleration: &m.record.acceleration,
+            record: m.record,
             factor: m.scale / m.amplitude,
             tail: (tail_length / h).ceil().max(0.0) as usize,
         })
@@ -72,7 +76,7 @@ impl NigamJennings {
 
     /// Intervals the pass takes: the record's and the tail's.
     pub fn intervals(&self) -> usize {
-        self.acceleration.len() - 1 + self.tail
+        self.record.acceleration.len() - 1 + self.tail
     }
 
     /// The sampled peaks [max |x1|, max |ẋ1|, max |x2|, max |ẋ2|] from rest.
@@ -81,7 +85,7 @@ impl NigamJennings {
         let (mut x1, mut v1, mut x2, mut v2) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
         let (mut u1, mut w1, mut u2, mut w2) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
         let f = self.factor;
-        let acc = self.acceleration;
+        let acc = &self.record.acceleration[..];
         let mut g0 = acc[0] * f;
         let mut step = |g0: f64, g1: f64| {
             let y1 = a[0] * x1 + a[1] * v1 + a[4] * g0 + a[5] * g1;

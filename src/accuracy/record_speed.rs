@@ -47,17 +47,17 @@ pub fn cases(base: &Params) -> [(&'static str, Params); 3] {
                 yield1: f64::INFINITY,
                 yield2: f64::INFINITY,
                 gap: f64::INFINITY,
-                ..*base
+                ..base.clone()
             },
         ),
         (
             "inelastic, no pounding",
             Params {
                 gap: f64::INFINITY,
-                ..*base
+                ..base.clone()
             },
         ),
-        ("inelastic, pounding", *base),
+        ("inelastic, pounding", base.clone()),
     ]
 }
 
@@ -70,7 +70,7 @@ pub fn runs(p: &Params) -> [(&'static str, ExactOptions); 2] {
         energy: false,
         absolute_acceleration: false,
         extremes: ContactExtremes::None,
-        ..full
+        ..full.clone()
     };
     [("peaks", peaks), ("full", full)]
 }
@@ -85,7 +85,7 @@ pub fn rows(base: &Params) -> Option<Vec<RecordRow>> {
         for (run, options) in runs(&p) {
             let series = ExactOptions {
                 quiet_samples: false,
-                ..options
+                ..options.clone()
             };
             let (series_ms, old) = median_ms(|| exact::simulate(&p, &series, &mut ()));
             let (ms, new) = median_ms(|| exact::simulate(&p, &options, &mut ()));

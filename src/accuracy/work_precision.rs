@@ -70,7 +70,7 @@ pub fn rows(preset: &str, p: &Params) -> Vec<Row> {
     for method in Method::NEWMARK {
         let mut previous = None;
         for dt in STEPS {
-            let q = Params { dt, ..*p };
+            let q = Params { dt, ..p.clone() };
             let error = row(method, &q, Some(dt), None, previous);
             previous = Some((dt, error));
         }

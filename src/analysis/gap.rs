@@ -144,7 +144,7 @@ pub fn free_params(p: &Params) -> Params {
     Params {
         gap: f64::INFINITY,
         method: Method::Exact,
-        ..*p
+        ..p.clone()
     }
 }
 

@@ -55,7 +55,7 @@ pub fn plan_levels(
                     level: Some(level),
                     ..case.scaling
                 },
-                ..*case
+                ..case.clone()
             };
             let scales: Vec<(f64, f64)> = members
                 .iter()

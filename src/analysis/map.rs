@@ -168,7 +168,7 @@ fn set_number(p: &mut Params, key: &str, v: f64) {
 /// Π_ω2 = μ Π_ω1 (μ = `mu` unless it is an axis); an `omega2` axis sets Π_ω2
 /// itself, and otherwise Π_ω2 keeps the base's value, bit for bit.
 pub fn set_axes(base: &Params, mu: f64, values: &[(&str, f64)]) -> Params {
-    let mut p = *base;
+    let mut p = base.clone();
     let mut mu = mu;
     let mut follows = false;
     for &(key, v) in values {
@@ -359,7 +359,7 @@ pub fn compute_rows(plan: &MapPlan, ys: &[f64], cache: &mut MapCache) -> Vec<Map
 pub fn compute_cells(plan: &MapPlan, at: &[(f64, f64)], cache: &mut MapCache) -> Vec<MapCell> {
     let cells: Vec<(f64, f64, Params)> = at.iter().map(|&(x, y)| (x, y, plan.at(x, y))).collect();
 
-    let points: Vec<Params> = cells.iter().map(|(_, _, q)| *q).collect();
+    let points: Vec<Params> = cells.iter().map(|(_, _, q)| q.clone()).collect();
     let batch = run_points(&points, ContactExtremes::Forces, |q| {
         cache.baselines.contains(q)
     });

@@ -147,7 +147,7 @@ pub struct RowSuiteRun {
 /// The ground motion of a member at scale `s`: s·a(t) in m/s², linear
 /// between samples, as `--excitation record:PATH --scale s` builds it.
 pub fn ground_of(member: &SuiteMember, scale: f64) -> Ground {
-    Ground::from_record(member.record, scale)
+    Ground::from_record(&member.record, scale)
 }
 
 /// The length of a row's run under `ground` (s): the motion and four times

@@ -53,7 +53,7 @@ pub fn study(
         .iter()
         .map(|(_, p)| CurveSpec {
             member: None,
-            params: *p,
+            params: p.clone(),
             mu,
         })
         .collect();

@@ -98,7 +98,7 @@ pub fn at_omega(p: &Params, omega1: f64, mu: f64) -> Params {
     Params {
         omega1,
         omega2: mu * omega1,
-        ..*p
+        ..p.clone()
     }
 }
 
@@ -106,7 +106,7 @@ pub fn at_omega(p: &Params, omega1: f64, mu: f64) -> Params {
 pub fn baseline_params(p: &Params) -> Params {
     Params {
         gap: f64::INFINITY,
-        ..*p
+        ..p.clone()
     }
 }
 

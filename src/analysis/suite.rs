@@ -44,7 +44,7 @@ pub struct Scaling {
 }
 
 /// A suite study: the buildings, the run settings and the scaling.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SuiteCase {
     /// The buildings in SI (the preset's `[physical]` table).
     pub physical: Physical,
@@ -126,7 +126,7 @@ pub fn raw_intensity(
     member: &SuiteMember,
     measure: &IntensityMeasure,
 ) -> Result<f64, SuiteRunError> {
-    let raw = measure.measure(member.record);
+    let raw = measure.measure(&member.record);
     if !(raw > 0.0 && raw.is_finite()) || member.record.peak <= 0.0 {
         return Err(SuiteRunError::ZeroIntensity {
             record: member.name.clone(),
@@ -157,7 +157,7 @@ pub fn member_params(
     let motion = RecordMotion {
         scale,
         amplitude: scale * member.record.peak,
-        ..RecordMotion::new(member.record)
+        ..RecordMotion::new(member.record.clone())
     };
     case.physical
         .under_record(&case.settings, motion)
@@ -169,7 +169,7 @@ pub fn member_params(
 
 /// What one member will run: its scale, the IM of the scaled record (g)
 /// and its parameters.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct MemberPlan {
     pub scale: f64,
     pub intensity: f64,
@@ -214,15 +214,15 @@ pub fn replan(
 /// Runs one planned member: its pounding run, and its run without contact
 /// for Π_d,min unless the pounding run had no impact (then it is its own).
 pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> SuiteRun {
-    let params = plan.params;
-    let result = solve(&params, &mut ());
+    let params = &plan.params;
+    let result = solve(params, &mut ());
     // The same buildings without contact (gap = ∞), by the exact method:
     // their demands are the no-pounding baseline of every comparison, their
     // separate peaks what the code rules combine (SPEC §11), and their
     // largest x1 − x2 is Π_d,min unless the pounding run had no impact
     // (then it is its own no-pounding run).
     let free = if params.pounding() {
-        free_run(&params)
+        free_run(params)
     } else {
         result.clone()
     };
@@ -238,7 +238,7 @@ pub fn member_run(
     result: RunResult,
     free: RunResult,
 ) -> SuiteRun {
-    let params = plan.params;
+    let params = &plan.params;
     let min_gap = from_max_relative(
         result
             .max_relative_displacement
@@ -256,7 +256,7 @@ pub fn member_run(
         scale: plan.scale,
         intensity: plan.intensity,
         si,
-        params,
+        params: params.clone(),
         result,
         free,
         free_si,

@@ -127,7 +127,14 @@ pub fn cell_cases(
     for &yv in &y.values {
         for &xv in &x.values {
             let physical = set(&set(&case.physical, x.key, xv), y.key, yv);
-            cells.push((xv, yv, SuiteCase { physical, ..*case }));
+            cells.push((
+                xv,
+                yv,
+                SuiteCase {
+                    physical,
+                    ..case.clone()
+                },
+            ));
         }
     }
     cells

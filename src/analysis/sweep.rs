@@ -43,7 +43,7 @@ pub fn curve_specs(
     let Some(family) = family else {
         return Ok(vec![CurveSpec {
             member: None,
-            params: *base,
+            params: base.clone(),
             mu,
         }]);
     };

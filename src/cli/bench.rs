@@ -91,7 +91,7 @@ pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
         for &model in &models {
             let p = crate::model::Params {
                 model,
-                ..preset.params
+                ..preset.params.clone()
             };
             groups.push(rows(&preset.name, &p));
         }

@@ -59,7 +59,7 @@ pub struct Case<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mu: Option<f64>,
     pub model: &'static str,
-    pub excitation: &'static str,
+    pub excitation: &'a str,
     /// The type B pulse's initial velocity, a record's scaling; absent for the sine.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub excitation_note: Option<String>,

@@ -216,10 +216,10 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
         )?;
         options.scene = Scene {
             name: plan.preset.name.clone(),
-            params: plan.params,
+            params: plan.params.clone(),
             spectrum: (n == FigureName::Spectrum).then(|| SpectrumInput {
                 name: plan.preset.name.clone(),
-                params: plan.params,
+                params: plan.params.clone(),
                 mu: plan.mu,
                 family: plan.family.clone(),
                 grid: plan.grid,

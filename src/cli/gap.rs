@@ -127,7 +127,7 @@ pub fn report_with(
     };
     let points: Vec<(f64, Params)> = match (&axis, mu) {
         (Some(a), Some(mu)) => line(&p, mu, a).map_err(|e| CliError::Usage(e.to_string()))?,
-        _ => vec![(f64::NAN, p)],
+        _ => vec![(f64::NAN, p.clone())],
     };
     let work = Work {
         steps: points.len() as f64 * run_steps(&p),
@@ -137,7 +137,7 @@ pub fn report_with(
     let progress = Progress::start(&work);
     let t = Instant::now();
     let whole = || match &axis {
-        Some(_) => minimum_gaps(&points.iter().map(|(_, q)| *q).collect::<Vec<_>>()),
+        Some(_) => minimum_gaps(&points.iter().map(|(_, q)| q.clone()).collect::<Vec<_>>()),
         None => vec![minimum_gap(&p)],
     };
     let Some((gaps, merged_ms)) =
@@ -221,7 +221,7 @@ impl<'a> GapReport<'a> {
                     ratio_srss: srss,
                     ratio_double_difference: ddc,
                     pounds_at_set_gap: q.gap < g.exact,
-                    params: *q,
+                    params: q.clone(),
                 }
             })
             .collect();

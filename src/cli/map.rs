@@ -73,7 +73,7 @@ pub fn report_with(
     let x = Axis::parse("--x", &args.x).map_err(usage)?;
     let y = Axis::parse("--y", &args.y).map_err(usage)?;
     let mu = resolve_mu(&preset, &p, args.mu.as_deref())?;
-    let plan = MapPlan::new(p, mu, x, y).map_err(usage)?;
+    let plan = MapPlan::new(p.clone(), mu, x, y).map_err(usage)?;
     let work = Work {
         steps: 2.0 * plan.cells() as f64 * run_steps(&p),
         rows: 0.0,

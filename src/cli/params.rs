@@ -116,7 +116,7 @@ impl ParamArgs {
     pub fn resolve(&self) -> Result<(Preset, Params), CliError> {
         let dirs: Vec<PathBuf> = user_preset_dir(self.presets.as_ref()).into_iter().collect();
         let preset = Preset::find(self.preset.as_deref().unwrap_or("set1"), &dirs)?;
-        let mut p = preset.params;
+        let mut p = preset.params.clone();
         for kv in &self.overrides {
             let (key, value) = kv.split_once('=').ok_or_else(|| {
                 CliError::Usage(format!(

@@ -423,7 +423,7 @@ impl Report for RunReport<'_> {
         let mut row = vec![self.provenance.preset.to_string()];
         row.extend(param_cells(&Params {
             method: self.case.method,
-            ..*self.case.params
+            ..self.case.params.clone()
         }));
         row.extend([self.case.excitation_note.clone().unwrap_or_default()]);
         row.extend(RecordNumbers::cells(self.case.params));

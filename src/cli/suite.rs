@@ -399,7 +399,7 @@ impl SuiteRow {
             max_force_kn: r.max_force_kn(),
             min_gap_m: r.min_gap_m(),
             min_gap: r.min_gap,
-            params: r.params,
+            params: r.params.clone(),
             reliable: unreliable_reason.is_none(),
             unreliable_reason,
         }

@@ -94,13 +94,13 @@ fn law_label(m: ContactModel) -> &'static str {
 }
 
 fn with_model(p: &Params, model: ContactModel) -> Params {
-    Params { model, ..*p }
+    Params { model, ..p.clone() }
 }
 
 fn free(p: &Params) -> Params {
     Params {
         gap: f64::INFINITY,
-        ..*p
+        ..p.clone()
     }
 }
 

@@ -33,8 +33,12 @@ pub fn map_scene(
     };
     let x = Axis::parse("--omega1", &x_text).map_err(input)?;
     let y = Axis::parse("map μ axis", DEFAULT_MU).map_err(input)?;
-    let base = Params { method, ..*params };
-    let plan = MapPlan::new(base, base.mu(), x, y).map_err(input)?;
+    let base = Params {
+        method,
+        ..params.clone()
+    };
+    let mu = base.mu();
+    let plan = MapPlan::new(base, mu, x, y).map_err(input)?;
     let (cells, _) = compute(&plan);
     let xs = plan.x.values();
     let ys = plan.y.values();
@@ -82,12 +86,12 @@ pub fn map_scene(
         panels: vec![panel],
         caption: format!(
             "{}; {} × {} cells ({}, {}): {amplified} amplified, {suppressed} suppressed, the rest no influence (2 %); {}",
-            params_text(&base, &["omega1", "omega2"]),
+            params_text(&plan.base, &["omega1", "omega2"]),
             xs.len(),
             ys.len(),
             plan.x,
             plan.y,
-            method_text(&base, method)
+            method_text(&plan.base, method)
         ),
     })
 }

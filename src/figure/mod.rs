@@ -273,7 +273,7 @@ pub fn build(name: FigureName, options: &Options) -> Result<Figure, FigureError>
         FigureName::Spectrum => {
             let input = scene.spectrum.clone().unwrap_or_else(|| SpectrumInput {
                 name: scene.name.clone(),
-                params: scene.params,
+                params: scene.params.clone(),
                 mu: scene.params.mu(),
                 family: None,
                 grid: options.grid.unwrap_or_default(),

@@ -14,7 +14,10 @@ use super::FigureError;
 
 /// One run with every accepted state recorded.
 pub fn history(p: &Params, method: Method) -> Result<(RunResult, FullHistory), FigureError> {
-    let p = &Params { method, ..*p };
+    let p = &Params {
+        method,
+        ..p.clone()
+    };
     let mut h = FullHistory::with_capacity((p.tau_end() / p.dt) as usize + 16);
     let r = solve(p, &mut h);
     if let Some(why) = r.unreliable() {
@@ -32,7 +35,10 @@ pub fn spectra(
     let specs: Vec<CurveSpec> = specs
         .iter()
         .map(|s| CurveSpec {
-            params: Params { method, ..s.params },
+            params: Params {
+                method,
+                ..s.params.clone()
+            },
             ..s.clone()
         })
         .collect();
@@ -50,7 +56,7 @@ pub fn levels(
 ) -> Result<Vec<Level>, FigureError> {
     let settings = &Params {
         method,
-        ..*settings
+        ..settings.clone()
     };
     study(physical, settings, amplitudes, omega1, mu, true)
         .map_err(|e| FigureError::Input(e.to_string()))

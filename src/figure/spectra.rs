@@ -43,8 +43,8 @@ impl SpectrumInput {
     pub fn builtin(name: &str, grid: Option<Grid>) -> Result<SpectrumInput, FigureError> {
         let bad = |e: &dyn std::fmt::Display| FigureError::Input(format!("{name}: {e}"));
         let preset = preset::builtin(name).ok_or_else(|| bad(&"no such built-in preset"))?;
-        let own =
-            PresetSpectrum::of(preset.spectrum.as_ref(), preset.params).map_err(|e| bad(&e))?;
+        let own = PresetSpectrum::of(preset.spectrum.as_ref(), preset.params.clone())
+            .map_err(|e| bad(&e))?;
         Ok(SpectrumInput {
             name: name.to_string(),
             params: preset.params,

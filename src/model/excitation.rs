@@ -5,6 +5,7 @@
 use std::f64::consts::PI;
 use std::fmt;
 use std::str::FromStr;
+use std::sync::Arc;
 
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
@@ -73,9 +74,13 @@ impl Pulse {
 
 /// A recorded accelerogram scaled into Π form (SPEC §9, §12):
 /// g(τ) = s·a(τ/ω_p)/a_p, the record scaled by s (1 as read).
-#[derive(Debug, Clone, Copy)]
+///
+/// The motion shares its record with every other motion scaled from it (a
+/// suite at each intensity of an IDA, the explorer's reruns): cloning one
+/// counts one more holder, and the samples are freed with the last.
+#[derive(Debug, Clone)]
 pub struct RecordMotion {
-    pub record: &'static Record,
+    pub record: Arc<Record>,
     /// The factor s on the record's accelerations (SPEC §12: a record scaled
     /// to an intensity); 1 as read.
     pub scale: f64,
@@ -87,7 +92,7 @@ pub struct RecordMotion {
 
 impl PartialEq for RecordMotion {
     fn eq(&self, other: &Self) -> bool {
-        std::ptr::eq(self.record, other.record)
+        Arc::ptr_eq(&self.record, &other.record)
             && self.scale == other.scale
             && self.amplitude == other.amplitude
             && self.omega == other.omega
@@ -96,12 +101,12 @@ impl PartialEq for RecordMotion {
 
 impl RecordMotion {
     /// The record at its defaults: a_p = peak |a|, ω_p = dominant frequency.
-    pub fn new(record: &'static Record) -> Self {
+    pub fn new(record: Arc<Record>) -> Self {
         RecordMotion {
-            record,
             scale: 1.0,
             amplitude: if record.peak > 0.0 { record.peak } else { 1.0 },
             omega: record.dominant_omega,
+            record,
         }
     }
 
@@ -181,8 +186,9 @@ impl RecordMotion {
     }
 }
 
-/// The excitation a run is driven by.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+/// The excitation a run is driven by (`Clone`, not `Copy`: a record is
+/// shared with its other holders, see [`RecordMotion`]).
+#[derive(Debug, Clone, PartialEq, Default)]
 pub enum Excitation {
     /// g(τ) = sin τ, the paper's sinusoidal pulse train.
     #[default]
@@ -226,7 +232,7 @@ impl Excitation {
     }
 
     /// The name, as [`Excitation::parse`] reads it.
-    pub fn name(&self) -> &'static str {
+    pub fn name(&self) -> &str {
         match self {
             Excitation::Sine => "sine",
             Excitation::None => "none",
@@ -363,7 +369,7 @@ impl Excitation {
                 [g, vel, disp + vel * (tau - t)]
             }
             Excitation::Record(m) => {
-                let r = m.record;
+                let r = &*m.record;
                 let scale_v = m.scale * m.omega / m.amplitude;
                 let scale_u = m.scale * m.omega * m.omega / m.amplitude;
                 let t = (tau / m.omega).clamp(0.0, r.duration());
@@ -461,7 +467,7 @@ impl Excitation {
     /// k < out.len(). For the sine, g^{(k)}(τ) cycles through sin τ, cos τ,
     /// −sin τ, −cos τ, so `out[k]` = g^{(k)}(τ)/k!. The event-driven method
     /// expands the ground motion this way on each segment.
-    pub fn taylor(self, tau: f64, out: &mut [f64]) {
+    pub fn taylor(&self, tau: f64, out: &mut [f64]) {
         match self {
             Excitation::Sine => sinusoid_taylor(1.0, tau, out),
             Excitation::None => out.iter_mut().for_each(|o| *o = 0.0),
@@ -490,7 +496,7 @@ impl Excitation {
     /// where a segment of the event-driven method must end: never, for the
     /// sine; the pulse's end; the next sample of a record (its last sample,
     /// after which g = 0). Always > `tau`, so a segment never has zero length.
-    pub fn next_break(self, tau: f64) -> f64 {
+    pub fn next_break(&self, tau: f64) -> f64 {
         match self {
             Excitation::Sine | Excitation::None => f64::INFINITY,
             Excitation::Pulse(p) => {

@@ -54,9 +54,9 @@ impl Member {
     pub fn apply(&self, base: &Params, mu: f64) -> Result<(Params, f64), FamilyError> {
         if self.key == MU {
             let mu = parse_mu(&self.text).ok_or_else(|| self.error(mu_error(&self.text)))?;
-            return Ok((*base, mu));
+            return Ok((base.clone(), mu));
         }
-        let mut p = *base;
+        let mut p = base.clone();
         p.set(&self.key, &self.text)
             .and_then(|()| p.validate())
             .map_err(|e: ParamError| self.error(e))?;

@@ -291,7 +291,7 @@ impl Physical {
             hertz_stiffness: self
                 .hertz_beta
                 .map_or(settings.hertz_stiffness, |b| self.hertz_stiffness(b)),
-            ..*settings
+            ..settings.clone()
         };
         p.validate()?;
         Ok(p)
@@ -315,11 +315,11 @@ impl Physical {
             ..*self
         };
         at_record.to_params(&Params {
-            excitation: super::excitation::Excitation::Record(motion),
             record_scale: motion.scale,
             record_amplitude: motion.amplitude,
             record_omega: motion.omega,
-            ..*settings
+            excitation: super::excitation::Excitation::Record(motion),
+            ..settings.clone()
         })
     }
 

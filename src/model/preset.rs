@@ -353,7 +353,7 @@ impl Preset {
     /// The preset as TOML, flat keys as in `presets/` (tables kept).
     pub fn to_toml(&self) -> String {
         // With a [physical] table the Π-groups come from it: write only the settings.
-        let mut params = toml::Table::try_from(self.params).unwrap_or_default();
+        let mut params = toml::Table::try_from(&self.params).unwrap_or_default();
         if self.physical.is_some() {
             params.retain(|k, _| !is_pi(k));
         }

@@ -134,7 +134,7 @@ pub fn check_sweep(
     family: Option<&Family>,
 ) -> Result<(), String> {
     let curves: Vec<(Params, f64, String)> = match family {
-        None => vec![(*base, mu, String::new())],
+        None => vec![(base.clone(), mu, String::new())],
         Some(f) => f
             .members
             .iter()
@@ -150,7 +150,7 @@ pub fn check_sweep(
             let q = Params {
                 omega1: w,
                 omega2: mu * w,
-                ..p
+                ..p.clone()
             };
             q.validate().map_err(|e| {
                 format!(

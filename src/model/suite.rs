@@ -14,11 +14,14 @@
 //!   [`MAX_COUNT`], seed [`DEFAULT_SEED`] unless given. These equal bit for
 //!   bit the files `pounding records synth --count N --seed SEED` writes.
 //!
-//! Loading reads every record (interned, [`record::load`]) or fails with one
+//! Loading reads every record (shared, [`record::load`]) or fails with one
 //! line naming the file, the line and what is wrong: never a partial suite.
+//! A suite holds its records while it lives: the runs made from it share
+//! them, and they are freed when the suite and its runs are dropped.
 
 use std::fmt;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use super::record::{self, Format, Record, columns};
 use super::simulated::{self, DEFAULT_SEED, MAX_COUNT, Simulation};
@@ -44,7 +47,7 @@ pub struct SuiteMember {
     /// The file name (a directory), the path as written (a list), or
     /// `synthetic-001` (simulated).
     pub name: String,
-    pub record: &'static Record,
+    pub record: Arc<Record>,
     /// The list file's scale factor on the record's accelerations; 1
     /// otherwise. The member as listed has intensity `scale` ×
     /// [`crate::model::intensity::IntensityMeasure::measure`] of `record`.

@@ -20,7 +20,7 @@ use super::events::{self, Event};
 use super::system::{Branch, Mode, Structures};
 
 /// Knobs of a reference run.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct ReferenceOptions {
     /// Absolute and relative local error tolerance of each step.
     pub tolerance: f64,
@@ -56,8 +56,8 @@ impl ReferenceOptions {
         let excitation = p.ground();
         ReferenceOptions {
             tolerance,
-            excitation,
             initial_velocity: excitation.initial_velocity(),
+            excitation,
             ..Self::default()
         }
     }
@@ -113,7 +113,7 @@ pub struct ReferenceResult {
 
 /// Integrates `p` from rest (or the given initial state) to τ_end = 2π·cycles.
 pub fn reference(p: &Params, options: &ReferenceOptions) -> ReferenceResult {
-    let system = Structures::new(p, options.excitation);
+    let system = Structures::new(p, options.excitation.clone());
     let mut run = Run::new(&system, options);
     run.integrate(p.tau_end());
     run.result

@@ -47,7 +47,7 @@ pub struct Mode {
 }
 
 /// The constant coefficients, recomputed from the Π-groups.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Structures {
     /// Masses (Π_m, 1).
     pub mass: [f64; 2],
@@ -75,7 +75,7 @@ impl Structures {
             alpha: p.alpha,
             gap: p.gap,
             excitation,
-            params: *p,
+            params: p.clone(),
         }
     }
 

@@ -23,8 +23,8 @@ pub fn solve<O: Observer>(p: &Params, observer: &mut O) -> RunResult {
 pub fn newmark_options(p: &Params) -> SolverOptions {
     let excitation = p.ground();
     SolverOptions {
-        excitation,
         initial_velocity: excitation.initial_velocity(),
+        excitation,
         ..SolverOptions::default()
     }
 }
@@ -33,8 +33,8 @@ pub fn newmark_options(p: &Params) -> SolverOptions {
 pub fn exact_options(p: &Params) -> ExactOptions {
     let excitation = p.ground();
     ExactOptions {
-        excitation,
         initial_velocity: excitation.initial_velocity(),
+        excitation,
         contact_tolerance: p.contact_tolerance,
         ..ExactOptions::default()
     }
@@ -72,7 +72,7 @@ pub fn error_vs_exact(p: &Params, result: &RunResult) -> f64 {
     let exact = run_for_sweep(
         &Params {
             method: Method::Exact,
-            ..*p
+            ..p.clone()
         },
         ContactExtremes::None,
     );

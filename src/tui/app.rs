@@ -46,7 +46,7 @@ pub struct SetState {
 impl SetState {
     pub fn new(preset: Preset) -> Self {
         SetState {
-            params: preset.params,
+            params: preset.params.clone(),
             base: Base::of(&preset),
             preset,
         }
@@ -249,12 +249,12 @@ impl App {
     pub fn needed(&self) -> Need {
         let buckets = (layout::chart_columns(self.size) as usize * 2).max(16);
         let set = |i: usize, buckets: usize| {
-            let params = self.sets[i].params;
+            let params = self.sets[i].params.clone();
             RunSpec {
                 slot: Slot::Set(i),
-                params,
                 buckets,
                 window: self.view.window(params.tau_end()),
+                params,
             }
         };
         let active = set(self.active, buckets);
@@ -269,7 +269,7 @@ impl App {
                     .shown(own)
                     .into_iter()
                     .map(|law| {
-                        let mut run = active;
+                        let mut run = active.clone();
                         if law != own {
                             run.slot = Slot::Law(law);
                             run.params.model = law;
@@ -301,7 +301,7 @@ impl App {
                     params: Params {
                         omega1: 1.0,
                         omega2: mu,
-                        ..*p
+                        ..p.clone()
                     },
                     mu,
                     grid: spectrum_grid(),
@@ -352,7 +352,7 @@ impl App {
             plan: MapPlan {
                 base: Params {
                     method: Method::Exact,
-                    ..*p
+                    ..p.clone()
                 },
                 mu,
                 x: axis("omega1", x0, x1, columns),
@@ -535,7 +535,7 @@ impl App {
             }
             KeyCode::Char('r') => {
                 let s = &mut self.sets[self.active];
-                s.params = s.preset.params;
+                s.params = s.preset.params.clone();
                 s.base = Base::of(&s.preset);
                 self.status = Some(format!(
                     "set {} reset to preset `{}`",
@@ -721,10 +721,10 @@ impl App {
     /// Takes new parameters for the active set; warns when Δτ cannot
     /// resolve a contact (the rule `pounding run` applies).
     fn accept(&mut self, next: Params) {
-        self.sets[self.active].params = next;
         if let Some(w) = next.coarse_dt_warning() {
             self.status = Some(w);
         }
+        self.sets[self.active].params = next;
     }
 
     /// Moves the selected row of the active set by one step of `size`.
@@ -748,7 +748,7 @@ impl App {
             return;
         }
         let field = &FIELDS[self.selected];
-        let params = self.sets[self.active].params;
+        let params = self.sets[self.active].params.clone();
         match nudged_text(&params, field, direction, size) {
             None => {
                 self.status = Some(format!(
@@ -788,7 +788,7 @@ impl App {
             let base = s.base.expect("physical view has a base");
             physical::apply(&base, &s.params, self.selected, &text).map(|(p, b)| (p, Some(b)))
         } else {
-            let mut next = s.params;
+            let mut next = s.params.clone();
             next.set(FIELDS[self.selected].key, &text)
                 .and_then(|_| next.validate())
                 .map(|()| (next, s.base))
@@ -936,7 +936,7 @@ impl App {
         let preset = Preset {
             name: name.to_string(),
             description: format!("saved from the explorer, based on {}", s.preset.name),
-            params: s.params,
+            params: s.params.clone(),
             spectrum: s.preset.spectrum.clone(),
             physical: s.base.map(|b| physical::table(&b, &s.params)),
             path: Some(path.clone()),
@@ -964,7 +964,7 @@ impl App {
                 confirmed = false;
             }
             FieldKey::Submit => {
-                let params = *self.active_params();
+                let params = self.active_params().clone();
                 let bytes = export::full_bytes(&params);
                 if full && bytes > LARGE_EXPORT && !confirmed {
                     path.error = Some(format!(
@@ -1031,7 +1031,7 @@ impl App {
 
     /// The figure of the visible scene: the same quantities as the screen.
     pub fn figure_of_scene(&self) -> (FigureName, Params) {
-        let p = *self.active_params();
+        let p = self.active_params().clone();
         let name = match self.view.scene {
             Scene::History | Scene::Sets | Scene::Impacts => FigureName::History,
             Scene::Loops => FigureName::Loops,

@@ -107,7 +107,7 @@ fn write_figure(name: FigureName, title: &str, params: &Params, path: &Path) -> 
         grid: None,
         scene: figure::Scene {
             name: title.to_string(),
-            params: *params,
+            params: params.clone(),
             spectrum: None,
         },
         suite: None,

@@ -79,7 +79,7 @@ pub fn spec_of(params: &Params, base: Option<Base>, design_level: f64, pga: bool
         suite: SUITE.to_string(),
         physical,
         reference: base.is_none(),
-        settings: *params,
+        settings: params.clone(),
         measure,
         design_level,
         levels: levels(design_level),
@@ -195,7 +195,7 @@ pub fn run_risk(spec: &RiskSpec, current: &dyn Fn() -> bool, send: &dyn Fn(RiskO
         physical: spec.physical,
         settings: Params {
             method: Method::Exact,
-            ..spec.settings
+            ..spec.settings.clone()
         },
         scaling: Scaling {
             measure: spec.measure,

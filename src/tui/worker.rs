@@ -32,7 +32,7 @@ pub enum Slot {
 }
 
 /// One run to compute: its parameters and the history to keep.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct RunSpec {
     pub slot: Slot,
     pub params: Params,
@@ -290,7 +290,7 @@ pub fn run_job(job: &Job, current: &dyn Fn() -> bool, send: &dyn Fn(Output)) -> 
         // A spectrum runs many cases: the exact method, whatever the set's own.
         let params = crate::model::Params {
             method: Method::Exact,
-            ..s.params
+            ..s.params.clone()
         };
         // Points are computed in parallel, a chunk at a time so that a newer
         // job cancels within one chunk, and sent in batches a few times per
@@ -345,7 +345,7 @@ fn run_map(
     send: &dyn Fn(Output),
 ) -> bool {
     let p = &m.plan;
-    let plan = match MapPlan::new(p.base, p.mu, p.x, p.y) {
+    let plan = match MapPlan::new(p.base.clone(), p.mu, p.x, p.y) {
         Ok(plan) => plan,
         Err(e) => {
             send(Output::MapError {
@@ -413,7 +413,7 @@ pub fn compute_run(spec: &RunSpec, current: &dyn Fn() -> bool) -> RunOutput {
         .then(|| error_vs_exact(&spec.params, &result));
     let min_gap = matches!(spec.slot, Slot::Set(_)).then(|| gap_of(&spec.params, &result));
     RunOutput {
-        spec: *spec,
+        spec: spec.clone(),
         result,
         history: observer.history,
         elapsed_ms,
@@ -448,7 +448,7 @@ pub fn gap_of(p: &Params, run: &RunResult) -> MinimumGap {
         if cache.len() == GAP_CACHE {
             cache.remove(0);
         }
-        cache.push((*p, g));
+        cache.push((p.clone(), g));
         g
     })
 }
@@ -461,9 +461,9 @@ mod tests {
     fn run_of(params: Params) -> RunOutput {
         let spec = RunSpec {
             slot: Slot::Set(0),
-            params,
             buckets: 100,
             window: [0.0, params.tau_end()],
+            params,
         };
         compute_run(&spec, &|| true)
     }
@@ -473,7 +473,7 @@ mod tests {
         let set1 = builtin("set1").unwrap().params;
         let exact = minimum_gap(&set1).exact;
         // Set 1 pounds (its Π_d is below Π_d,min): one extra run.
-        let pounding = run_of(set1);
+        let pounding = run_of(set1.clone());
         assert!(!pounding.result.impacts.is_empty());
         assert!(set1.gap < exact);
         assert_eq!(pounding.min_gap.unwrap().exact, exact);
@@ -482,7 +482,7 @@ mod tests {
         let clear = run_of(Params {
             gap: exact + 1e-6,
             method: Method::Exact,
-            ..set1
+            ..set1.clone()
         });
         assert!(clear.result.max_relative_displacement.is_some());
         assert!(clear.result.impacts.is_empty());

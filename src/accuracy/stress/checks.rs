@@ -84,8 +84,8 @@ pub fn check(case: &Case) -> Outcome {
     let exact_ms = start.elapsed().as_secs_f64() * 1e3;
     let exact_case = Case {
         name: case.name.clone(),
-        params: *p,
-        options: case.options,
+        params: p.clone(),
+        options: case.options.clone(),
         expect: case.expect,
     };
     failures.extend(
@@ -257,7 +257,7 @@ pub fn model_tension(case: &Case) -> Option<f64> {
         &case.params,
         &ReferenceOptions {
             tolerance: 1e-10,
-            excitation: o.excitation,
+            excitation: o.excitation.clone(),
             initial_displacement: o.initial_displacement,
             initial_velocity: o.initial_velocity,
             ..ReferenceOptions::default()

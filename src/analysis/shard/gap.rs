@@ -21,5 +21,10 @@ pub fn fingerprint(preset: &str, points: &[(f64, Params)]) -> Fingerprint {
 
 /// The minimum gaps at the points `mine` (indices), in that order.
 pub fn compute(points: &[(f64, Params)], mine: &[usize]) -> Vec<MinimumGap> {
-    minimum_gaps(&mine.iter().map(|&i| points[i].1).collect::<Vec<_>>())
+    minimum_gaps(
+        &mine
+            .iter()
+            .map(|&i| points[i].1.clone())
+            .collect::<Vec<_>>(),
+    )
 }

@@ -35,7 +35,7 @@ pub enum Kind {
     /// One of a few names; `set` returns false for a text that is none of them.
     Choice {
         names: &'static [&'static str],
-        get: fn(&Params) -> &'static str,
+        get: fn(&Params) -> &str,
         set: fn(&mut Params, &str) -> bool,
     },
 }
@@ -180,7 +180,7 @@ impl Field {
                 set(p, self.check_number(v)? as u32);
             }
             Kind::Choice { set, .. } => {
-                let mut next = *p;
+                let mut next = p.clone();
                 if !set(&mut next, text.trim()) {
                     return Err(self.out_of_range(echo::text(text)));
                 }

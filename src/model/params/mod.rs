@@ -24,7 +24,7 @@ pub use field::{Field, Group, Kind, Step};
 pub use table::{FIELDS, field, is_pi, keys};
 
 /// The ten Π-groups (SPEC §1) and the run settings.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Params {
     /// Π_m = m1/m2, mass ratio of the left (lighter) to the right structure.
     pub mass_ratio: f64,
@@ -191,7 +191,7 @@ impl Params {
         // A record of zeros has no a_p to scale by (SPEC §9: a_p defaults to
         // its peak |a|), and shakes nothing: refuse it rather than run it at
         // an invented amplitude.
-        if let Excitation::Record(m) = self.excitation
+        if let Excitation::Record(m) = &self.excitation
             && m.record.peak <= 0.0
         {
             return Err(ParamError::OutOfRange {
@@ -250,8 +250,9 @@ impl Params {
     /// s, with its a_p (s·max|a| unless given) and ω_p (SPEC §9, §12),
     /// otherwise as named.
     pub fn ground(&self) -> Excitation {
-        match self.excitation {
-            Excitation::Record(mut m) => {
+        match &self.excitation {
+            Excitation::Record(m) => {
+                let mut m = m.clone();
                 m.scale = self.record_scale;
                 m.amplitude = if self.record_amplitude > 0.0 {
                     self.record_amplitude
@@ -263,7 +264,7 @@ impl Params {
                 }
                 Excitation::Record(m)
             }
-            e => e,
+            e => e.clone(),
         }
     }
 

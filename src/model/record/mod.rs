@@ -1,6 +1,6 @@
-//! Recorded ground motions (SPEC §9), read once and kept for the life of the
-//! process. Three formats, recognised by their content whatever the file's
-//! name ([`Format::of`]):
+//! Recorded ground motions (SPEC §9), read once and shared while any run
+//! holds them. Three formats, recognised by their content whatever the
+//! file's name ([`Format::of`]):
 //!
 //! - [`at2`]: a PEER NGA `.AT2` accelerogram, in g;
 //! - [`knet`]: a K-NET or KiK-net ASCII record (NIED), integer counts with a
@@ -10,15 +10,21 @@
 //! Sample k is at t_k = k·DT; between samples the acceleration is linear,
 //! after the last one it is zero.
 //!
-//! A parameter set is `Copy` (it is copied freely by sweeps, the explorer and
-//! the solvers), so it cannot own the samples. A record is instead read once,
-//! leaked into a `&'static Record` and interned by path: a set holds that
-//! reference, which is `Copy`, costs no lookup on the solvers' hot path, and
-//! is shared by every set that names the same file. The registry keeps each
-//! file's length and modification time beside its record: a file changed
-//! since it was read (a notebook kernel or an explorer session that outlives
-//! an edit) is read again, and the sets made afterwards get the new samples.
-//! The memory of each version read stays until the process ends.
+//! A record's samples are owned jointly by the runs driven by it: every
+//! parameter set, suite member and excitation that names a record holds an
+//! [`Arc<Record>`], so a sweep, an IDA or the explorer's reruns share one
+//! copy of the samples and cloning a set costs a reference count, not the
+//! record. The solvers borrow the samples for a run and never touch the
+//! count per step.
+//!
+//! The registry that shares them ([`load`], [`intern`]) holds only weak
+//! references: when the last run, suite or set that names a record is
+//! dropped, its samples are freed, so a notebook kernel or a long explorer
+//! session keeps only the records it still uses, not every one it ever read.
+//! A file is keyed by its path as named together with its length and
+//! modification time: a file changed since it was read is read again, and
+//! the sets made afterwards get the new samples while runs already holding
+//! the old ones keep them until they end.
 
 pub mod at2;
 pub mod columns;
@@ -32,7 +38,7 @@ pub use knet::parse_knet;
 use std::collections::HashMap;
 use std::fmt;
 use std::path::Path;
-use std::sync::Mutex;
+use std::sync::{Arc, LazyLock, Mutex, MutexGuard, Weak};
 
 /// Standard gravity, the unit of `.AT2` accelerations (m/s²).
 pub const STANDARD_GRAVITY: f64 = 9.80665;
@@ -346,55 +352,154 @@ fn stamp(spec: &str) -> Stamp {
     Some((meta.len(), meta.modified().ok()?))
 }
 
-/// Records read from files, by `PATH` or `PATH@UNIT` as named, each with
-/// the stamp of the file it was read from.
-static FILES: Mutex<Option<HashMap<String, (Stamp, &'static Record)>>> = Mutex::new(None);
+/// Weak references to the records in use, by key, pruned of the dead ones
+/// as it grows: a record is freed when its last holder drops it, and its
+/// entry goes at the next pruning, so the table stays within twice the
+/// number of records live at its last pruning (and at least
+/// [`Registry::FLOOR`] entries before any).
+struct Registry<K, V> {
+    entries: HashMap<K, V>,
+    /// The length at which the dead entries are pruned next.
+    prune_at: usize,
+}
 
-/// Records built in memory ([`intern`]).
-static BUILT: Mutex<Vec<&'static Record>> = Mutex::new(Vec::new());
+impl<K: std::hash::Hash + Eq, V: Entry> Registry<K, V> {
+    /// Entries held before the first pruning.
+    const FLOOR: usize = 64;
 
-/// The record at `path`, read on first use and shared afterwards, and read
-/// again when the file has changed since (its length or modification time).
+    fn new() -> Self {
+        Registry {
+            entries: HashMap::new(),
+            prune_at: Self::FLOOR,
+        }
+    }
+
+    /// Inserts `value` at `key` (replacing what was there), first dropping
+    /// the dead entries if the table has reached its pruning length.
+    fn insert(&mut self, key: K, value: V) {
+        if self.entries.len() >= self.prune_at {
+            self.entries.retain(|_, v| v.is_live());
+            self.prune_at = (2 * self.entries.len()).max(Self::FLOOR);
+        }
+        self.entries.insert(key, value);
+    }
+
+    fn live(&self) -> usize {
+        self.entries.values().map(Entry::live).sum()
+    }
+}
+
+/// What a registry holds per key: one weak record or several.
+trait Entry {
+    /// How many of the records are still held by a run.
+    fn live(&self) -> usize;
+    fn is_live(&self) -> bool {
+        self.live() > 0
+    }
+}
+
+impl Entry for FileEntry {
+    fn live(&self) -> usize {
+        usize::from(self.1.strong_count() > 0)
+    }
+}
+
+impl Entry for Vec<Weak<Record>> {
+    fn live(&self) -> usize {
+        self.iter().filter(|w| w.strong_count() > 0).count()
+    }
+}
+
+/// A record read from a file, with the stamp of the file it was read from.
+type FileEntry = (Stamp, Weak<Record>);
+
+/// Records read from files, by `PATH` or `PATH@UNIT` as named.
+type Files = Registry<String, FileEntry>;
+
+static FILES: LazyLock<Mutex<Files>> = LazyLock::new(|| Mutex::new(Registry::new()));
+
+/// Records built in memory ([`intern`]), by their `record:` name; equal
+/// records share one entry of the list under their name.
+static BUILT: LazyLock<Mutex<Registry<String, Vec<Weak<Record>>>>> =
+    LazyLock::new(|| Mutex::new(Registry::new()));
+
+/// A registry's lock, taken even if a thread panicked while holding it
+/// (the tables stay consistent: each change is one insertion or one prune).
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// The record at `path`, read on first use and shared afterwards while any
+/// run holds it, and read again when the file has changed since (its
+/// length or modification time) or when every holder has dropped it.
 ///
 /// The file is read with the registry unlocked: reading runs on rayon's
 /// pool (the dominant frequency's transform), whose workers may be waiting
 /// for a lock on another thread's behalf, so a read under the lock could
 /// wait for them for ever. Two threads reading the same file at once both
 /// read it, and the first to register it is kept.
-pub fn load(path: &str) -> Result<&'static Record, RecordError> {
+pub fn load(path: &str) -> Result<Arc<Record>, RecordError> {
     let now = stamp(path);
-    let registered = |files: &Option<HashMap<String, (Stamp, &'static Record)>>| {
+    let registered = |files: &Files| {
         files
-            .as_ref()?
+            .entries
             .get(path)
             .filter(|(then, _)| then.is_some() && *then == now)
-            .map(|(_, r)| *r)
+            .and_then(|(_, r)| r.upgrade())
     };
-    if let Some(r) = registered(&FILES.lock().unwrap_or_else(|e| e.into_inner())) {
+    if let Some(r) = registered(&lock(&FILES)) {
         return Ok(r);
     }
     let record = read(path)?;
-    let mut files = FILES.lock().unwrap_or_else(|e| e.into_inner());
+    let mut files = lock(&FILES);
     if let Some(r) = registered(&files) {
         return Ok(r);
     }
-    let record: &'static Record = Box::leak(Box::new(record));
-    files
-        .get_or_insert_with(HashMap::new)
-        .insert(path.to_string(), (now, record));
+    let record = Arc::new(record);
+    files.insert(path.to_string(), (now, Arc::downgrade(&record)));
     Ok(record)
 }
 
-/// Interns a record built in memory (tests, generated motions); an equal
-/// record interned before is shared rather than kept twice.
-pub fn intern(record: Record) -> &'static Record {
-    let mut built = BUILT.lock().unwrap_or_else(|e| e.into_inner());
-    if let Some(r) = built.iter().find(|r| ***r == record) {
+/// Shares a record built in memory (tests, generated motions): an equal
+/// record still held by a run is shared rather than kept twice; once every
+/// holder has dropped it, it is freed, and an equal one built later is new.
+pub fn intern(record: Record) -> Arc<Record> {
+    let mut built = lock(&BUILT);
+    if let Some(r) = built
+        .entries
+        .get(&record.spec)
+        .into_iter()
+        .flatten()
+        .filter_map(Weak::upgrade)
+        .find(|r| **r == record)
+    {
         return r;
     }
-    let record: &'static Record = Box::leak(Box::new(record));
-    built.push(record);
+    let key = record.spec.clone();
+    let record = Arc::new(record);
+    let mut same_name: Vec<Weak<Record>> = built
+        .entries
+        .remove(&key)
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|w| w.strong_count() > 0)
+        .collect();
+    same_name.push(Arc::downgrade(&record));
+    built.insert(key, same_name);
     record
+}
+
+/// How many records, read from files or built in memory, some run, suite
+/// or parameter set still holds: the records whose memory is in use.
+pub fn live_records() -> usize {
+    lock(&FILES).live() + lock(&BUILT).live()
+}
+
+/// How many entries the registries keep, live or dead (a dead one awaits
+/// the next pruning): bounded by twice the live records at the last
+/// pruning, never by every record the process has read.
+pub fn registry_len() -> usize {
+    lock(&FILES).entries.len() + lock(&BUILT).entries.len()
 }
 
 #[cfg(test)]
@@ -426,7 +531,7 @@ mod tests {
             first.acceleration,
             [0.5 * STANDARD_GRAVITY, -STANDARD_GRAVITY]
         );
-        assert!(std::ptr::eq(first, load(path).unwrap()));
+        assert!(Arc::ptr_eq(&first, &load(path).unwrap()));
         std::fs::write(path, "0 0.25\n0.01 -1\n0.02 0.75\n").unwrap();
         let second = load(path).unwrap();
         assert_eq!(
@@ -437,7 +542,7 @@ mod tests {
                 0.75 * STANDARD_GRAVITY
             ]
         );
-        assert!(std::ptr::eq(second, load(path).unwrap()));
+        assert!(Arc::ptr_eq(&second, &load(path).unwrap()));
         // Through the excitation, as a run names it.
         let crate::model::excitation::Excitation::Record(m) =
             crate::model::excitation::Excitation::parse(&format!("record:{path}")).unwrap()

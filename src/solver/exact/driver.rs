@@ -107,7 +107,7 @@ const BLOCK: usize = 16;
 const POLL_EVERY: usize = 256;
 
 /// What a run may use besides the Π-groups.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct ExactOptions {
     pub excitation: Excitation,
     pub initial_displacement: [f64; 2],
@@ -178,7 +178,7 @@ impl ExactOptions {
     /// contact tolerance.
     pub fn matching(p: &Params, o: &SolverOptions) -> Self {
         ExactOptions {
-            excitation: o.excitation,
+            excitation: o.excitation.clone(),
             initial_displacement: o.initial_displacement,
             initial_velocity: o.initial_velocity,
             contact_tolerance: p.contact_tolerance,
@@ -297,7 +297,7 @@ impl<'a> Run<'a> {
             } else {
                 [None, None]
             },
-            samples: match options.excitation {
+            samples: match &options.excitation {
                 Excitation::Record(m) if options.quiet_samples => {
                     let h = m.record.dt * m.omega;
                     // A peak inside a sample is located on the series a free
@@ -385,7 +385,9 @@ impl<'a> Run<'a> {
                 self.stop(StopReason::NonFinite);
                 return;
             }
-            let excitation = self.options.excitation;
+            // Borrowed for the run (`options` outlives it): no count per segment.
+            let options = self.options;
+            let excitation = &options.excitation;
             let to_end = tau_end - self.tau;
             // With no samples to hand over, a quiet free segment needs no
             // series; nor, with its work in closed form, a record's quiet sample.
@@ -546,7 +548,8 @@ impl<'a> Run<'a> {
             return false;
         };
         let h = maps[0][0].length;
-        let Excitation::Record(motion) = self.options.excitation else {
+        let options = self.options;
+        let Excitation::Record(motion) = &options.excitation else {
             return false;
         };
         // Sample k of the record: known where the last quiet sample ended,
@@ -758,8 +761,8 @@ impl<'a> Run<'a> {
     /// where it is monotone; after one, that maximum no longer moves (it is
     /// carried as ∞ in the loop and not written back).
     fn quiet_run_with<const ACCEL: bool, const ENERGY: bool>(&mut self, to_end: f64) {
-        let (Some(maps), Excitation::Record(motion)) = (&self.samples, self.options.excitation)
-        else {
+        let options = self.options;
+        let (Some(maps), Excitation::Record(motion)) = (&self.samples, &options.excitation) else {
             return;
         };
         let tau_end = self.tau + to_end;

@@ -94,7 +94,8 @@ impl<'a> Driver<'a> {
     pub fn new<O: Observer>(p: &'a Params, options: &'a SolverOptions, observer: &mut O) -> Self {
         let substeps = options.substeps(p);
         let clock = Clock::new(p, substeps);
-        let system = System::new(p, options.excitation).with_steps([clock.dt, clock.contact_dt]);
+        let system =
+            System::new(p, options.excitation.clone()).with_steps([clock.dt, clock.contact_dt]);
         let x = options.initial_displacement;
         let v = options.initial_velocity;
         let mut d = Driver {
@@ -117,11 +118,11 @@ impl<'a> Driver<'a> {
         };
         d.result.impacts.reserve(32);
         // Starting in contact: v₀ is the initial δ̇.
-        let in_contact = system.penetration(x) > 0.0;
+        let in_contact = d.system.penetration(x) > 0.0;
         if in_contact {
             d.phase = Phase::Contact(contact_law(p, v[0] - v[1]));
         }
-        d.state = system.initial_state(x, v, &d.phase);
+        d.state = d.system.initial_state(x, v, &d.phase);
         if !is_finite(&d.state) {
             d.halt(StopReason::NonFinite);
             return d;

@@ -28,7 +28,7 @@ const MAX_AUTO_SUBSTEPS: f64 = 1e6;
 /// Numerical choices of a run beyond the Π-groups. The defaults are the
 /// project's accurate scheme; the paper's plain scheme is
 /// [`SolverOptions::plain`].
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SolverOptions {
     /// Locate contact onset and separation inside the step and split it there.
     /// Without it, a phase change is noticed at the end of the step and the step is redone in the new phase.

@@ -28,7 +28,7 @@ use nalgebra::{Matrix2, Vector2};
 use crate::model::{Bilinear, ContactLaw, Excitation, Params, Rotation, SpringState};
 
 /// The constant coefficients of the equations of motion (SPEC §2–3).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct System {
     /// Diagonal of M: (Π_m, 1).
     pub mass: [f64; 2],
