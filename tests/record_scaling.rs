@@ -87,7 +87,7 @@ fn the_least_squares_factor_is_the_mean_log_ratio_worked_by_hand() {
     }
     let m = scale(&design, &members).unwrap();
     for (member, r) in members.iter().zip(&m.records) {
-        let rec = member.record;
+        let rec = &member.record;
         let mut sum = 0.0;
         let mut residuals = Vec::new();
         for &t in &periods {

@@ -295,7 +295,7 @@ impl Design {
 pub fn record_spectrum(member: &SuiteMember, periods: &[f64]) -> Vec<f64> {
     periods
         .iter()
-        .map(|&period| IntensityMeasure::Sa { period }.measure(member.record))
+        .map(|&period| IntensityMeasure::Sa { period }.measure(&member.record))
         .collect()
 }
 
@@ -308,7 +308,7 @@ pub fn spectra(members: &[SuiteMember], periods: &[f64]) -> Vec<Vec<f64>> {
             IntensityMeasure::Sa {
                 period: periods[i % n],
             }
-            .measure(members[i / n].record)
+            .measure(&members[i / n].record)
         })
         .collect();
     flat.chunks(n.max(1)).map(<[f64]>::to_vec).collect()

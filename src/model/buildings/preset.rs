@@ -420,9 +420,11 @@ fn building(index: usize, t: &toml::Table) -> Result<Building, String> {
         let theta = building.stability_coefficient(i);
         if theta >= 1.0 {
             return Err(format!(
-                "{whose}storey {}: θ = P/(k h) = {theta:.4} from `gravity_mass`, `stiffness` and `height`: \
+                "{whose}storey {}: θ = P/(k h) = {} from `gravity_mass`, `stiffness` and `height`: \
                  must be < 1 (a storey with θ ≥ 1 cannot stand under its own gravity load)",
-                i + 1
+                i + 1,
+                // Five significant digits, in the short form every range message uses.
+                number_text(format!("{theta:.4e}").parse().unwrap_or(theta))
             ));
         }
     }
@@ -439,7 +441,7 @@ fn shown(v: &toml::Value) -> String {
 }
 
 /// The P-Δ keys of a building (SPEC §15): `p_delta = true` turns it on;
-/// `gravity_mass` (kg per floor, finite and > 0; the floor masses by
+/// `gravity_mass` (kg per floor, in [1, 1e10]; the floor masses by
 /// default) and `collapse_drift_ratio` (in (0, 1); 0.10 by default) apply
 /// only with it.
 fn p_delta(t: &toml::Table, whose: &str, mass: &[f64]) -> Result<Option<PDelta>, String> {
@@ -461,13 +463,15 @@ fn p_delta(t: &toml::Table, whose: &str, mass: &[f64]) -> Result<Option<PDelta>,
         return Ok(None);
     }
     let gravity_mass = if t.contains_key("gravity_mass") {
+        // A floor's own mass and the gravity system it holds up: up to ten
+        // times the heaviest floor a row takes.
         per_storey(
             t,
             "gravity_mass",
             whose,
             mass.len(),
             None,
-            (positive_finite, "a finite number > 0 (kg)"),
+            (|x| (1.0..=1e10).contains(&x), "in [1, 1e10] (kg)"),
         )?
     } else {
         mass.to_vec()
