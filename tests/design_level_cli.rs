@@ -3,7 +3,9 @@
 //! gives it, bit for bit, for the pair and for the row; the suite's name
 //! in the output says the records were scaled, by which rule, at which T1
 //! and where T1 came from (the pair's left T1, the row's longest); the
-//! name given back as --suite runs the same study; `ida` refuses it.
+//! name given back as --suite runs the same study; `ida` scales that
+//! suite as a whole to each level (FEMA P-695): the median IM of each
+//! level's records is the level, in the proportions of the code's factors.
 
 mod common;
 
@@ -166,17 +168,74 @@ fn refusals_name_the_flag() {
             "two-buildings",
             "--suite",
             "synthetic:3",
-            "--target",
-            EC8,
+            "--period",
+            "0.5",
             "--levels",
             "0.1,0.2",
         ],
         2,
-        &["--target: an IDA scales every record to each of --levels"],
+        &["--period: applies with --target"],
     );
     fails(
         &["gap", "--preset", "two-buildings", "--target", EC8],
         2,
         &["--target: applies to a suite of records"],
     );
+}
+
+/// The median of `values` (type 7, as the statistics take it).
+fn median(values: &[f64]) -> f64 {
+    let mut v = values.to_vec();
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+/// `ida --target`, on the pair and on the row: at every level the records'
+/// median IM is the level, and their scales keep the proportions of the
+/// code's factors (`records scale`, the scales `suite --target` runs).
+#[test]
+fn an_ida_scales_the_designed_suite_as_a_whole() {
+    for (study, period) in [
+        (&["--preset", "two-buildings"][..], "0.95"),
+        (&["--buildings", "block-and-frame"][..], "1.146"),
+    ] {
+        let mut args = vec!["ida"];
+        args.extend_from_slice(study);
+        args.extend([
+            "--suite",
+            "synthetic:5",
+            "--target",
+            EC8,
+            "--levels",
+            "0.2,0.5",
+            "--format",
+            "json",
+        ]);
+        let v = json(&args);
+        let whole = v["scaled_as_a_whole"].as_str().unwrap();
+        assert!(whole.contains("median pga is the level"), "{whole}");
+        let f = factors("synthetic:5", period);
+        for (level, at) in [0.2, 0.5].iter().zip(v["levels"].as_array().unwrap()) {
+            assert_eq!(at["level_g"].as_f64().unwrap(), *level);
+            let records = at["records"].as_array().unwrap();
+            let im: Vec<f64> = records
+                .iter()
+                .map(|r| r["intensity_g"].as_f64().unwrap())
+                .collect();
+            assert!((median(&im) - level).abs() <= 1e-12 * level, "{im:?}");
+            let s = scales(at);
+            for (j, (sj, fj)) in s.iter().zip(&f).enumerate() {
+                let ratio = (sj / s[0]) / (fj / f[0]);
+                assert!(
+                    (ratio - 1.0).abs() <= 1e-12,
+                    "record {j}: {sj} against {fj}"
+                );
+            }
+        }
+    }
 }

@@ -25,6 +25,7 @@ fn case() -> (SuiteCase, Vec<SuiteMember>) {
         scaling: Scaling {
             measure: IntensityMeasure::Sa { period: 0.95 },
             level: None,
+            collective: false,
         },
     };
     let members = SuiteSpec::parse("synthetic:8").unwrap().load().unwrap();

@@ -35,6 +35,7 @@ fn case(row: &str, level: f64) -> RowSuiteCase {
         scaling: Scaling {
             measure: IntensityMeasure::Pga,
             level: Some(level),
+            collective: false,
         },
     }
 }

@@ -146,6 +146,23 @@ fn ida_merges_to_the_unsharded_ida() {
         .concat(),
         &["json", "table"],
     );
+    // A suite scaled to a design spectrum, then as a whole to each level.
+    merges_equal(
+        &[
+            &["ida"],
+            &TWO[..],
+            &[
+                "--suite",
+                "synthetic:3@2",
+                "--target",
+                "asce7:SDS=1.0,SD1=0.6,TL=8",
+                "--levels",
+                "0.2,0.4",
+            ],
+        ]
+        .concat(),
+        &["json"],
+    );
 }
 
 #[test]

@@ -988,6 +988,7 @@ fn direct_probability_at(
         scaling: Scaling {
             measure,
             level: Some(level),
+            collective: false,
         },
     };
     let plans = plan(&case, &members).unwrap();

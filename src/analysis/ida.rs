@@ -25,8 +25,8 @@ use serde::Serialize;
 use super::fragility::{self, Fragility, LevelCount};
 use super::limit_state::{self, LimitState, Observed};
 use super::suite::{
-    MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteRunError, raw_intensity, replan, run_member,
-    scaled,
+    MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteRunError, level_scales, raw_intensity, replan,
+    run_member,
 };
 use crate::model::suite::SuiteMember;
 use crate::solver::RunResult;
@@ -35,7 +35,9 @@ use super::demands::RunSi;
 
 /// The plans of every record at every level, level by level: level l's are
 /// those of a suite scaled to `levels[l]`, bit for bit ([`plan`](super::suite::plan) applies
-/// the same [`scaled`] to the same measurement). Each record's intensity
+/// the same [`scaled`](super::suite::scaled) to the same measurement), or
+/// with [`Scaling::collective`] the suite scaled as a whole to each level
+/// ([`level_scales`]). Each record's intensity
 /// measure is taken once, not once per level: Sa(T) is a pass of the
 /// Nigam–Jennings map over the whole record.
 pub fn plan_levels(
@@ -57,11 +59,7 @@ pub fn plan_levels(
                 },
                 ..case.clone()
             };
-            let scales: Vec<(f64, f64)> = members
-                .iter()
-                .zip(&raws)
-                .map(|(m, &raw)| scaled(m, raw, Some(level)))
-                .collect();
+            let scales = level_scales(members, &raws, level, case.scaling.collective);
             replan(&at_level, members, &scales)
         })
         .collect()

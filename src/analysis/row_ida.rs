@@ -4,7 +4,7 @@
 //! Every record runs at every level x_1 < … < x_L, scaled so that its
 //! intensity measure equals the level; a level's runs are those of the row
 //! suite at that level ([`super::row_suite`]), bit for bit: both scale by
-//! [`scaled`] from the same measurement and run [`run_member`]. At level l,
+//! [`level_scales`] from the same measurement and run [`run_member`]. At level l,
 //! k_l of the n_l records exceed a limit state ([`RowLimitState`]); the counts
 //! give P(exceed | IM = x) = Φ(ln(x/θ)/β) by maximum likelihood
 //! ([`fragility::fit`], Baker 2015, SPEC §12), and the same fit on the runs
@@ -13,7 +13,7 @@
 use super::ida::{LimitStateFragility, fragility_of, over_levels};
 use super::row_limit_state::RowLimitState;
 use super::row_suite::{RowCaches, RowSuiteCase, RowSuiteError, RowSuiteRun, run_member};
-use super::suite::{raw_intensity, scaled};
+use super::suite::{level_scales, raw_intensity};
 use crate::model::suite::SuiteMember;
 
 /// Each record's (scale, intensity) at every level, level by level. Each
@@ -29,13 +29,7 @@ pub fn plan_levels(
         .collect::<Result<_, _>>()?;
     Ok(levels
         .iter()
-        .map(|&level| {
-            members
-                .iter()
-                .zip(&raws)
-                .map(|(m, &raw)| scaled(m, raw, Some(level)))
-                .collect()
-        })
+        .map(|&level| level_scales(members, &raws, level, case.scaling.collective))
         .collect())
 }
 

@@ -80,6 +80,7 @@ pub fn risk(
         scaling: Scaling {
             measure: case.measure,
             level: None,
+            collective: false,
         },
     };
     let plans = plan_levels(&suite, members, &all)?;

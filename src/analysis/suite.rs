@@ -41,6 +41,59 @@ pub struct Scaling {
     /// The level X (g) every record is scaled to; `None`: each record at its
     /// suite list's scale.
     pub level: Option<f64>,
+    /// An IDA's levels scale the suite as a whole rather than each record
+    /// to the level ([`level_scales`]): the list's scales (a suite scaled to
+    /// a design spectrum by the code's rule) keep their proportions.
+    pub collective: bool,
+}
+
+impl Scaling {
+    /// How an IDA's levels scale the records, in words, for its reports:
+    /// `None` one by one, the scaling every IDA used before a suite could be
+    /// scaled to a design spectrum.
+    pub fn as_a_whole(&self) -> Option<String> {
+        self.collective.then(|| {
+            format!(
+                "the suite scaled as a whole to each level: its median {m} is the level, its \
+                 records in their list's proportions (the code's factors; FEMA P-695)",
+                m = self.measure
+            )
+        })
+    }
+}
+
+/// Each member's (scale, intensity) at an IDA level X (g), from the IM of
+/// its record as recorded (`raws`):
+///
+/// - one by one (SPEC §12): s_j = X / IM_j, so every record has IM = X;
+/// - collectively (FEMA P-695 §A.8, a suite scaled as a whole): with f_j
+///   the list's scales, s_j = f_j · X / median_k(f_k IM_k), so that the
+///   suite's median IM is X and the records keep the proportions the list
+///   gave them (the code's factors of a suite scaled to a design spectrum).
+pub fn level_scales(
+    members: &[SuiteMember],
+    raws: &[f64],
+    level: f64,
+    collective: bool,
+) -> Vec<(f64, f64)> {
+    if !collective {
+        return members
+            .iter()
+            .zip(raws)
+            .map(|(m, &raw)| scaled(m, raw, Some(level)))
+            .collect();
+    }
+    let mut listed: Vec<f64> = members.iter().zip(raws).map(|(m, r)| m.scale * r).collect();
+    listed.sort_by(f64::total_cmp);
+    let median = super::statistics::quantile(&listed, 0.5);
+    members
+        .iter()
+        .zip(raws)
+        .map(|(m, &raw)| {
+            let scale = m.scale * level / median;
+            (scale, raw * scale)
+        })
+        .collect()
 }
 
 /// A suite study: the buildings, the run settings and the scaling.

@@ -201,25 +201,6 @@ pub fn pair_period(params: &ParamArgs) -> Result<(f64, String), CliError> {
     ))
 }
 
-/// An IDA scales every record to each of its levels, which undoes any
-/// scaling to a target: `--target` is refused there, saying why.
-pub fn refuse_in_ida(design: &TargetArgs, period: Option<&str>) -> Result<(), CliError> {
-    if let Some(flag) = design.without_target().or(period.map(|_| "--period")) {
-        return Err(usage(format!(
-            "{flag}: applies with --target, which ida refuses"
-        )));
-    }
-    if design.target.is_some() {
-        return Err(usage(
-            "--target: an IDA scales every record to each of --levels, which replaces a \
-             scaling to a target; run suite or gap --suite at the design level, or ida with \
-             --im sa:T1 and the target's Sa(T1) among --levels"
-                .into(),
-        ));
-    }
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

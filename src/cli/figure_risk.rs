@@ -197,6 +197,7 @@ fn row_study(
         level: risk.level.as_deref().map(parse_level).transpose()?,
         allow_long: risk.long.allow_long,
         shard: &shard,
+        collective: false,
     };
     let ida = RowIdaArgs {
         study,

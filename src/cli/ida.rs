@@ -88,12 +88,21 @@ pub fn report_with(
     args: &IdaArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    super::design_suite::refuse_in_ida(&args.suite.design, args.suite.period.as_deref())?;
     if args.suite.level.is_some() {
         return Err(usage(
             "--level: an IDA runs every level of --levels; use `pounding suite` for one".into(),
         ));
     }
+    // With --target, the records are first scaled to the design spectrum by
+    // the code's rule, and each level then scales that suite as a whole
+    // (FEMA P-695), keeping the code's proportions between records.
+    let args = &IdaArgs {
+        suite: SuiteArgs {
+            collective: args.suite.design.target.is_some(),
+            ..args.suite.at_design_level()?
+        },
+        ..args.clone()
+    };
     if let Some(study) = args.suite.row_study()? {
         let row = RowIdaArgs {
             study,
@@ -147,6 +156,7 @@ pub fn report_with(
         model: case.settings.model.name(),
         method: case.settings.method,
         measure: case.scaling.measure.to_string(),
+        scaled_as_a_whole: case.scaling.as_a_whole(),
         records_per_level: members.len(),
         levels: levels
             .iter()
@@ -197,6 +207,9 @@ struct IdaReport<'a> {
     model: &'static str,
     method: Method,
     measure: String,
+    /// Set when the levels scale the suite as a whole ([`crate::analysis::suite::Scaling::as_a_whole`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    scaled_as_a_whole: Option<String>,
     records_per_level: usize,
     levels: Vec<LevelReport>,
     /// Per limit state: counts at each level and the maximum-likelihood
@@ -241,6 +254,9 @@ impl Report for IdaReport<'_> {
             self.model,
             self.method.name()
         );
+        if let Some(words) = &self.scaled_as_a_whole {
+            let _ = writeln!(s, "{words}");
+        }
         let _ = writeln!(s);
         // One line per level: the medians that matter, with the 16–84 % band of drift.
         let _ = writeln!(

@@ -172,6 +172,7 @@ pub fn report_with(
     drop(progress);
     let report = RowIdaReport {
         row: RowHeader::new(&case, args.study.suite),
+        scaled_as_a_whole: case.scaling.as_a_whole(),
         records_per_level: members.len(),
         levels: levels
             .iter()
@@ -203,6 +204,9 @@ struct LevelReport {
 struct RowIdaReport<'a> {
     #[serde(flatten)]
     row: RowHeader<'a>,
+    /// Set when the levels scale the suite as a whole ([`crate::analysis::suite::Scaling::as_a_whole`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    scaled_as_a_whole: Option<String>,
     records_per_level: usize,
     levels: Vec<LevelReport>,
     /// The limit states, in the order of `fragility`.
@@ -247,10 +251,12 @@ impl Report for RowIdaReport<'_> {
             self.row.scaling.measure,
             self.records_per_level
         );
-        let scaling = format!(
-            "each record scaled to every level of {}",
-            self.row.scaling.measure
-        );
+        let scaling = self.scaled_as_a_whole.clone().unwrap_or_else(|| {
+            format!(
+                "each record scaled to every level of {}",
+                self.row.scaling.measure
+            )
+        });
         self.row.table(self.records_per_level, &scaling, &mut s);
         let _ = writeln!(s);
         // One line per level: who pounded, each building's median drift

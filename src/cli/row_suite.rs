@@ -52,6 +52,8 @@ pub struct RowStudyArgs<'a> {
     pub allow_long: bool,
     /// `--shard`, `--part`, `--skip-done` (and a merge's parts).
     pub shard: &'a ShardArgs,
+    /// An IDA's levels scale the suite as a whole ([`Scaling::collective`]).
+    pub collective: bool,
 }
 
 /// The row study of `args`, checked: the row with `--set` and `--model`
@@ -112,7 +114,11 @@ pub fn case_of(args: &RowStudyArgs) -> Result<(RowSuiteCase, Vec<SuiteMember>), 
     Ok((
         RowSuiteCase {
             row,
-            scaling: Scaling { measure, level },
+            scaling: Scaling {
+                measure,
+                level,
+                collective: args.collective,
+            },
         },
         members,
     ))

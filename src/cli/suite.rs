@@ -61,6 +61,10 @@ pub struct SuiteArgs {
     /// T₁ (to four significant digits).
     #[arg(long, value_name = "NAME|PATH")]
     pub buildings: Option<String>,
+    /// An IDA of a suite scaled to a target: its levels scale the suite as a
+    /// whole (set by `ida --target`, not a flag of its own).
+    #[arg(skip)]
+    pub collective: bool,
     /// Scale the records to a target spectrum by the code's rule (see
     /// `records scale`) instead of --level; the suite's name then says so.
     #[command(flatten)]
@@ -123,6 +127,7 @@ impl SuiteOptions {
             allow_unreliable: true,
             shard: Default::default(),
             buildings: None,
+            collective: false,
             design: self.design.clone(),
             period: None,
         }))
@@ -179,6 +184,7 @@ impl SuiteArgs {
             level: self.level.as_deref().map(parse_level).transpose()?,
             allow_long: self.long.allow_long,
             shard: &self.shard,
+            collective: self.collective,
         }))
     }
 }
@@ -222,7 +228,11 @@ pub fn case_of(args: &SuiteArgs) -> Result<(crate::model::Preset, SuiteCase), Cl
         SuiteCase {
             physical,
             settings,
-            scaling: Scaling { measure, level },
+            scaling: Scaling {
+                measure,
+                level,
+                collective: args.collective,
+            },
         },
     ))
 }

@@ -200,6 +200,7 @@ pub fn run_risk(spec: &RiskSpec, current: &dyn Fn() -> bool, send: &dyn Fn(RiskO
         scaling: Scaling {
             measure: spec.measure,
             level: None,
+            collective: false,
         },
     };
     let coarse = members.len() > COARSE_RECORDS || spec.levels.len() > COARSE_LEVELS.len();
