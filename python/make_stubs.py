@@ -53,8 +53,8 @@ COMMANDS = {
         + PERIOD,
     ),
     "suite": ([("suite", "str")], SUITE + ROW + DESIGN + PERIOD),
-    "ida": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS + ROW + ROW_LIMITS),
-    "fragility": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS + ROW + ROW_LIMITS),
+    "ida": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS + ROW + ROW_LIMITS + DESIGN + PERIOD),
+    "fragility": ([("suite", "str"), ("levels", "str")], SUITE + LIMITS + ROW + ROW_LIMITS + DESIGN + PERIOD),
 }
 
 

@@ -298,6 +298,8 @@ def ida(suite: str, levels: str, *, preset: Optional[str] = None, **keys: Any) -
     buildings: a row of buildings; drift (storey drift ratios), acceleration
         and force items ``[NAME:]VALUE``, building: the one they read by default;
         collapse=True: each P-Δ building's collapse fragility (its θ is Ŝ_CT).
+    target (with period, code, range): the records scaled to a design spectrum
+        by the code's rule, then the suite as a whole to each level (FEMA P-695).
     Each level's records, the levels, and each limit state's counts are numpy arrays.
     {common}
     """

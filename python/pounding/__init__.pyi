@@ -530,6 +530,10 @@ def ida(
     drift: Optional[str] = ...,
     building: Optional[str] = ...,
     collapse: bool = False,
+    target: Optional[str] = ...,
+    code: Optional[str] = ...,
+    range: Optional[str] = ...,
+    period: Union[float, str, None] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,
@@ -555,6 +559,8 @@ def ida(
     buildings: a row of buildings; drift (storey drift ratios), acceleration
         and force items ``[NAME:]VALUE``, building: the one they read by default;
         collapse=True: each P-Δ building's collapse fragility (its θ is Ŝ_CT).
+    target (with period, code, range): the records scaled to a design spectrum
+        by the code's rule, then the suite as a whole to each level (FEMA P-695).
     Each level's records, the levels, and each limit state's counts are numpy arrays.
     preset: a built-in preset (``pounding.presets()``) or a preset file [default: set1].
     model: contact law, kelvin, improved-kelvin, hertz, hertzdamp, jankowski or hunt-crossley.
@@ -612,6 +618,10 @@ def fragility(
     drift: Optional[str] = ...,
     building: Optional[str] = ...,
     collapse: bool = False,
+    target: Optional[str] = ...,
+    code: Optional[str] = ...,
+    range: Optional[str] = ...,
+    period: Union[float, str, None] = ...,
     mass_ratio: Union[float, str, None] = ...,
     omega1: Union[float, str, None] = ...,
     omega2: Union[float, str, None] = ...,

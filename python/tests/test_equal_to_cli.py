@@ -205,3 +205,14 @@ def test_an_ida_to_collapse_is_the_cli_json(cli):
     same(collapse[0]["no_pounding_fragility"], their["no_pounding_fragility"])
     np.testing.assert_array_equal(collapse[0]["counts"]["exceeded"], [c["exceeded"] for c in their["counts"]])
     assert collapse[0]["counts"]["exceeded"][-1] > 0
+
+
+def test_an_ida_to_a_design_target_is_the_cli_json(cli):
+    # A suite scaled to a design spectrum, then as a whole to each level.
+    target = "asce7:SDS=1.0,SD1=0.6,TL=8"
+    i = pounding.ida(suite="synthetic:3", levels="0.2,0.4", preset="two-buildings", target=target)
+    theirs = cli.json("ida", "--preset", "two-buildings", "--suite", "synthetic:3", "--target", target, "--levels", "0.2,0.4")
+    assert i["suite"] == theirs["suite"] and i["scaled_as_a_whole"] == theirs["scaled_as_a_whole"]
+    # Each level's records as columns: the scales of level l are the CLI's.
+    for ours, their in zip(i["levels"]["records"]["scale"], theirs["levels"]):
+        assert [v.hex() for v in ours] == [r["scale"].hex() for r in their["records"]]
