@@ -50,7 +50,6 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::model::intensity::IntensityMeasure;
-use crate::model::record::STANDARD_GRAVITY;
 use crate::model::suite::SuiteMember;
 use crate::model::target_spectrum::TargetSpectrum;
 
@@ -299,19 +298,13 @@ pub fn record_spectrum(member: &SuiteMember, periods: &[f64]) -> Vec<f64> {
         .collect()
 }
 
-/// Every member's spectrum on `periods`, computed in parallel.
+/// Every member's spectrum on `periods` ([`record_spectrum`]), the
+/// records in parallel.
 pub fn spectra(members: &[SuiteMember], periods: &[f64]) -> Vec<Vec<f64>> {
-    let n = periods.len();
-    let flat: Vec<f64> = (0..members.len() * n)
-        .into_par_iter()
-        .map(|i| {
-            IntensityMeasure::Sa {
-                period: periods[i % n],
-            }
-            .measure(&members[i / n].record)
-        })
-        .collect();
-    flat.chunks(n.max(1)).map(<[f64]>::to_vec).collect()
+    members
+        .par_iter()
+        .map(|m| record_spectrum(m, periods))
+        .collect()
 }
 
 /// The least-squares factor and ln-misfit of a spectrum `sa` against
@@ -511,9 +504,9 @@ fn mean_spectrum(sa: &[Vec<f64>], factors: &[f64]) -> Vec<f64> {
         .collect()
 }
 
-/// The PGA of a member's record as recorded (g).
+/// The PGA of a member's record as recorded (g), as the studies measure it.
 fn pga(member: &SuiteMember) -> f64 {
-    member.record.peak / STANDARD_GRAVITY
+    IntensityMeasure::Pga.measure(&member.record)
 }
 
 /// The target at T = 0 when EC8's zero-period condition applies.
