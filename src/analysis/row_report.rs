@@ -197,7 +197,7 @@ impl RowReport {
                 series_steps: run.series_steps,
             },
             energy: run.energy.as_ref().map(EnergyReport::of),
-            collapsed: row.buildings.iter().any(|b| b.p_delta.is_some()).then(|| {
+            collapsed: row.can_collapse().then(|| {
                 run.collapse.map(|c| CollapseReport {
                     building: row.buildings[c.building].name.clone(),
                     storey: c.storey,

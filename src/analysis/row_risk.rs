@@ -117,18 +117,13 @@ pub fn risk(
         r.demands.joints[case.joint].impacts > 0
     });
     let fragility = fragility::fit(&counts);
-    let collapse = case
-        .row
-        .buildings
-        .iter()
-        .any(|b| b.p_delta.is_some())
-        .then(|| {
-            let counts = ida::counts(levels, ida_runs, |r: &RowSuiteRun| r.run.collapse.is_some());
-            CollapseCounts {
-                fragility: fragility::fit(&counts),
-                counts,
-            }
-        });
+    let collapse = case.row.can_collapse().then(|| {
+        let counts = ida::counts(levels, ida_runs, |r: &RowSuiteRun| r.run.collapse.is_some());
+        CollapseCounts {
+            fragility: fragility::fit(&counts),
+            counts,
+        }
+    });
     let min_gaps_m = at_design
         .iter()
         .map(|r| r.demands.joints[case.joint].gap.min_gap)

@@ -188,6 +188,12 @@ impl Row {
         )
     }
 
+    /// Whether a building of the row has P-Δ and so can collapse (SPEC §15):
+    /// without it every storey keeps a restoring force.
+    pub fn can_collapse(&self) -> bool {
+        self.buildings.iter().any(|b| b.p_delta.is_some())
+    }
+
     /// The same buildings with every joint's gap infinite: the run without
     /// contact from which the gap that prevents pounding is measured
     /// (SPEC §11, §13), and the no-pounding baseline of every comparison.
