@@ -89,8 +89,8 @@ pub fn scaled(
         scale(&design, &members)
     }
     .map_err(|e| usage(e.to_string()))?;
-    let list = match &args.out {
-        Some(out) => Some(list_text(
+    if let Some(out) = &args.out {
+        let text = list_text(
             out,
             &members,
             &matching,
@@ -99,10 +99,7 @@ pub fn scaled(
                 "pounding records scale --suite {}",
                 crate::output::escape_controls(args.suite.chars())
             ),
-        )?),
-        None => None,
-    };
-    if let (Some(out), Some(text)) = (&args.out, list) {
+        )?;
         write_list(out, &text)?;
     }
     emit(&ScaleReport::new(
