@@ -206,11 +206,12 @@ fn physical_preset_runs_its_own_pi_groups() {
     assert!((gap - expected).abs() < 1e-12, "{gap} vs {expected}");
 }
 
-/// The README's key list is the parameter table: one row per key, with its
-/// symbol, meaning and range exactly as the table states them.
+/// The guide's key list (docs/src/physics/pair.md) is the parameter table:
+/// one row per key, with its symbol, meaning and range exactly as the table
+/// states them.
 #[test]
-fn readme_lists_every_key_of_the_table() {
-    let readme = include_str!("../README.md");
+fn the_guide_lists_every_key_of_the_table() {
+    let guide = include_str!("../docs/src/physics/pair.md");
     let rows: Vec<String> = pounding::model::params::FIELDS
         .iter()
         .map(|f| {
@@ -225,11 +226,11 @@ fn readme_lists_every_key_of_the_table() {
         .collect();
     let missing: Vec<&String> = rows
         .iter()
-        .filter(|r| !readme.contains(r.as_str()))
+        .filter(|r| !guide.contains(r.as_str()))
         .collect();
     assert!(
         missing.is_empty(),
-        "README lacks these rows:\n{}",
+        "docs/src/physics/pair.md lacks these rows:\n{}",
         rows.join("\n")
     );
 }

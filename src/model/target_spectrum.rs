@@ -470,7 +470,7 @@ impl TargetSpectrum {
         }
     }
 
-    /// The clause the spectrum comes from, for headers and the README.
+    /// The clause the spectrum comes from, for headers and the guide.
     pub fn clause(&self) -> &'static str {
         match self {
             TargetSpectrum::Asce7(s) if s.mce => "ASCE/SEI 7-16 §11.4.7 (1.5 × §11.4.6)",

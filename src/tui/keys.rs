@@ -1,8 +1,8 @@
-//! Every key of the explorer, as the help overlay and the README list
+//! Every key of the explorer, as the help overlay and the guide (docs/src/explorer.md) list
 //! them, and the help's lines (data only: the app scrolls the help by
 //! them, the overlay draws them).
 
-/// Every key, as the help overlay and the README list them.
+/// Every key, as the help overlay and the guide lists them.
 pub const KEYS: [(&str, &str); 34] = [
     ("?", "this help (↑↓ scroll; other keys close)"),
     ("↑/↓, k/j", "select a parameter"),

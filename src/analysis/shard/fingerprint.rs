@@ -27,7 +27,7 @@ impl Fingerprint {
         let mut f = Fingerprint(OFFSET);
         f.add_str(env!("CARGO_PKG_VERSION"));
         // A build with fused multiply-add differs from one without in the
-        // last bits (see the README's set-up): their parts do not mix.
+        // last bits (see the guide's getting-started chapter): their parts do not mix.
         f.add_str(if cfg!(target_feature = "fma") {
             "fma"
         } else {

@@ -1,6 +1,6 @@
 //! The parameter table: one row per key a preset, `--set`, a family or the
 //! explorer can set. Everything that names a key — validation, `--set`,
-//! presets, the explorer's rows, the README's key list and the error
+//! presets, the explorer's rows, the guide's key list (docs/src/physics/pair.md) and the error
 //! messages — reads it from here, so a new key is one row.
 //!
 //! Each range is the one in which a run means something and the solver is
