@@ -4,7 +4,7 @@
 //! Every record of the suite runs at every intensity level x_1 < … < x_L,
 //! scaled so that its intensity measure equals the level. A level's runs are
 //! exactly those of [`suite`](super::suite) at that level: both plan them by
-//! [`plan`] with the same scaling, so a level's rows are bit for bit the
+//! [`plan`](super::suite::plan) with the same scaling, so a level's rows are bit for bit the
 //! suite's.
 //!
 //! At each level l, k_l of the n_l records exceed a limit state

@@ -7,7 +7,7 @@
 //! [`level_scales`] from the same measurement and run [`run_member`]. At level l,
 //! k_l of the n_l records exceed a limit state ([`RowLimitState`]); the counts
 //! give P(exceed | IM = x) = Φ(ln(x/θ)/β) by maximum likelihood
-//! ([`fragility::fit`], Baker 2015, SPEC §12), and the same fit on the runs
+//! ([`fragility::fit`](super::fragility::fit), Baker 2015, SPEC §12), and the same fit on the runs
 //! without contact sits beside it.
 
 use super::ida::{LimitStateFragility, fragility_of, over_levels};

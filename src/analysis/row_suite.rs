@@ -8,7 +8,7 @@
 //! `pounding run --buildings` gives it, by the exact method. So each record's
 //! run is bit for bit `pounding run --buildings PRESET --excitation
 //! record:PATH --scale s_j`: both build the ground by
-//! [`Ground::from_record`] and run [`run_row`] with the same options.
+//! [`Ground::from_record`] and run [`run_row`](crate::solver::buildings::run_row) with the same options.
 //!
 //! **Intensity.** As for the pair (SPEC §12, [`super::suite::Scaling`]):
 //! at a level X (g) of an intensity measure IM, s_j = X / IM(record j);

@@ -35,6 +35,8 @@ pub struct MapArgs {
     /// Frequency ratio μ, Π_ω2 = μ Π_ω1 on an omega1 axis [default: the preset's, else omega2/omega1].
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub mu: Option<String>,
+    // The help's `[physical]` is a preset's table, not a doc link.
+    #[allow(rustdoc::broken_intra_doc_links)]
     /// A suite of records instead of one set: --x and --y are then physical
     /// quantities of the preset's [physical] table (m1, m2, period1, period2,
     /// yield1, yield2, gap, damping, alpha, contact_omega, restitution), and

@@ -26,6 +26,8 @@ use crate::output::shown;
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct ScaleArgs {
+    // The help's `[@SEED]` is an optional part, not a doc link.
+    #[allow(rustdoc::broken_intra_doc_links)]
     /// The records: a directory, a list file of `PATH [SCALE]` lines, or synthetic:N[@SEED].
     #[arg(long, value_name = "SUITE")]
     pub suite: String,

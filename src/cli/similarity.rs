@@ -33,6 +33,8 @@ pub struct SimilarityArgs {
         allow_hyphen_values = true
     )]
     pub ap: String,
+    // The help's `[physical]` is a preset's table, not a doc link.
+    #[allow(rustdoc::broken_intra_doc_links)]
     /// Excitation circular frequency ω_p in rad/s [default: the preset's [physical] omega_p].
     #[arg(long = "omega-p", value_name = "W", allow_hyphen_values = true)]
     pub omega_p: Option<String>,

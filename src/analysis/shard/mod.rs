@@ -3,7 +3,7 @@
 //! output one machine would have written.
 //!
 //! - [`spec`]: which shard a process runs, `K/N` or from Slurm's array variables;
-//! - [`partition`]: the study's units dealt to the shards by estimated work;
+//! - [`partition`](mod@partition): the study's units dealt to the shards by estimated work;
 //! - [`fingerprint`]: one hash of the whole request, so that parts of
 //!   different requests are never merged;
 //! - [`part`]: the partial result on disk, written atomically and read back

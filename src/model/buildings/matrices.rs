@@ -2,7 +2,7 @@
 //! modes of each building.
 //!
 //! Storey i joins floors i−1 and i, so the initial stiffness of one building
-//! is tridiagonal: K₀[i][i] = k_i + k_{i+1}, K₀[i][i−1] = −k_i (k_{n+1} = 0).
+//! is tridiagonal: `K₀[i][i] = k_i + k_{i+1}`, `K₀[i][i−1] = −k_i` (k_{n+1} = 0).
 //! With P-Δ (SPEC §15) each storey loses P_i/h_i of it, the geometric
 //! stiffness K_G built as K₀ is; the stiffness below is then K₀ − K_G, the
 //! elastic stiffness under gravity, and the modes, periods and Rayleigh

@@ -3,7 +3,7 @@
 //!
 //! - [`row`]: the row as read, building by building, and its floor pairs;
 //! - [`preset`]: the TOML preset and its one-line errors;
-//! - [`load`]: a preset by built-in name or path, with `--set` edits;
+//! - [`load`](mod@load): a preset by built-in name or path, with `--set` edits;
 //! - [`builtin`]: the presets shipped under `presets/buildings/`;
 //! - [`matrices`]: mass, initial stiffness and Rayleigh damping, and the modes;
 //! - [`edit`]: `--set` edits of a preset, checked as the file is;

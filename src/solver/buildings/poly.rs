@@ -174,7 +174,7 @@ fn scan_values(c: &[f64], end: f64) -> [f64; SCAN + 1] {
 }
 
 /// The first s in [0, end] where p turns positive, if any: scanned on
-/// [`SCAN`] points, with a positive hump between two non-positive points
+/// `SCAN` points, with a positive hump between two non-positive points
 /// caught by the sign change of p' between them. A p already positive at 0
 /// counts at 0 if rising there; if falling (it was just switched on, at its
 /// own root, and rounding put it a hair above zero) only after it has been
@@ -221,7 +221,7 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
 }
 
 /// max |p| over [0, end]: the ends and every turning point, found where p'
-/// changes sign on [`SCAN`] points.
+/// changes sign on `SCAN` points.
 pub fn max_abs(c: &[f64], end: f64) -> f64 {
     argmax_abs(c, end).1
 }

@@ -237,7 +237,7 @@ pub fn cleared(d0: f64, d1: f64, d2: f64, m: f64, w: f64) -> bool {
 
 /// The one root of a rate known to be monotone on [0, h] and to change
 /// sign there (its end values strictly of opposite signs on the series):
-/// [`solve`] on e or on −e, whichever rises. `None` where the series' own
+/// `solve` on e or on −e, whichever rises. `None` where the series' own
 /// end values do not show the change (a zero at an end, to round-off).
 pub fn monotone_root(e: &Series, h: f64) -> Option<f64> {
     let (e0, eh) = (e.c[0], e.value(h));

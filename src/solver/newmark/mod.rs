@@ -1,19 +1,19 @@
 //! Newmark-β with γ = 1/2, β = 1/4 (SPEC §5): the paper's method, run from
 //! rest to τ_end.
 //!
-//! A run is a loop over phases ([`driver`]): out of contact, whole steps of
-//! Δτ in a tight loop; in contact, Newton steps of Δτ/n ([`phases`]). A step
+//! A run is a loop over phases (`driver`): out of contact, whole steps of
+//! Δτ in a tight loop; in contact, Newton steps of Δτ/n (`phases`). A step
 //! that crosses δ = 0 is handed to the [`policy`]: the plain scheme switches
 //! the phase at the step's end, the located one cuts the step at the
 //! crossing ([`locate`]). Every accepted state, whichever loop produced it,
-//! goes through one `accept` ([`accept`]): work integrals, peaks (with the
+//! goes through one `accept`: work integrals, peaks (with the
 //! Hermite peaks inside a step, [`peaks`]), impacts, force extremes and the
 //! observer. A run stops early, and says where and why, when the observer
 //! cancels it, its state stops being finite, or it meets a [`caps`] limit.
 //!
 //! - [`step`]: one step of the coupled 2-DOF system (exact branch solve out
 //!   of contact, Newton with the consistent tangent in contact);
-//! - [`options`]: the numerical choices ([`SolverOptions`]).
+//! - `options`: the numerical choices ([`SolverOptions`]).
 
 mod accept;
 pub mod caps;

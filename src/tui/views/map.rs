@@ -2,7 +2,7 @@
 //! ratio Π_u1/Π_u1,free (key o), over Π_ω1 across and a second parameter
 //! down (key y: μ, Π_d, Π_m, Π_e), for the active set. Two map rows per
 //! terminal row in colour (half blocks, one half in the foreground colour,
-//! the other in the background; see [`half_cell`]), one row per terminal row in shading
+//! the other in the background; see `half_cell`), one row per terminal row in shading
 //! characters under NO_COLOR or `--ascii`. A marker sits at the set's own
 //! point, the cursor cell is read out below, and rows not yet computed show
 //! their nearest computed neighbour, so the coarse picture comes first.
