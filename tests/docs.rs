@@ -130,7 +130,8 @@ fn every_fence_names_its_language() {
     }
 }
 
-/// The targets of a file's Markdown links and images, outside code.
+/// The targets of a file's Markdown links and images, outside code, with
+/// their `#fragment` if any (web addresses left out).
 fn relative_links(text: &str) -> Vec<String> {
     let mut links = Vec::new();
     let mut in_fence = false;
@@ -154,12 +155,8 @@ fn relative_links(text: &str) -> Vec<String> {
             let after = &rest[at + 2..];
             let end = after.find(')').unwrap_or(after.len());
             let target = after[..end].split_whitespace().next().unwrap_or("");
-            if !target.is_empty()
-                && !target.contains("://")
-                && !target.starts_with('#')
-                && !target.starts_with("mailto:")
-            {
-                links.push(target.split('#').next().unwrap().to_string());
+            if !target.is_empty() && !target.contains("://") && !target.starts_with("mailto:") {
+                links.push(target.to_string());
             }
             rest = &after[end..];
         }
@@ -167,17 +164,60 @@ fn relative_links(text: &str) -> Vec<String> {
     links
 }
 
+/// A heading's anchor as GitHub and mdBook write it: lower case, letters,
+/// digits, `-` and `_` kept, each space a `-`, the rest dropped.
+fn anchor(heading: &str) -> String {
+    heading
+        .to_lowercase()
+        .chars()
+        .filter_map(|c| match c {
+            c if c.is_alphanumeric() || c == '-' || c == '_' => Some(c),
+            c if c.is_whitespace() => Some('-'),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The anchors of a Markdown file's headings, outside code.
+fn anchors(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut in_fence = false;
+    for line in text.lines() {
+        if line.starts_with("```") {
+            in_fence = !in_fence;
+        } else if !in_fence && line.starts_with('#') {
+            out.push(anchor(line.trim_start_matches('#').trim()));
+        }
+    }
+    out
+}
+
+/// Every relative link names a file that exists, and a `#fragment` names a
+/// heading of that file (or of the file itself, for `#…` alone).
 #[test]
 fn every_relative_link_resolves() {
     let mut broken = Vec::new();
     let mut count = 0;
     for file in markdown_files() {
         let text = std::fs::read_to_string(&file).unwrap();
-        for target in relative_links(&text) {
+        for link in relative_links(&text) {
             count += 1;
-            let path = file.parent().unwrap().join(&target);
-            if !path.exists() {
-                broken.push(format!("{}: {target}", file.display()));
+            let (path, fragment) = match link.split_once('#') {
+                Some((p, f)) => (p, Some(f)),
+                None => (link.as_str(), None),
+            };
+            let target = if path.is_empty() {
+                file.clone()
+            } else {
+                file.parent().unwrap().join(path)
+            };
+            if !target.exists() {
+                broken.push(format!("{}: {link}", file.display()));
+            } else if let Some(fragment) = fragment {
+                let heads = anchors(&std::fs::read_to_string(&target).unwrap());
+                if !heads.iter().any(|h| h == fragment) {
+                    broken.push(format!("{}: {link} (no such heading)", file.display()));
+                }
             }
         }
     }
@@ -195,7 +235,10 @@ fn every_relative_link_resolves() {
 fn the_summary_lists_every_chapter() {
     let src = root().join("docs/src");
     let summary = std::fs::read_to_string(src.join("SUMMARY.md")).unwrap();
-    let listed: Vec<String> = relative_links(&summary);
+    let listed: Vec<String> = relative_links(&summary)
+        .into_iter()
+        .filter(|l| !l.is_empty())
+        .collect();
     for chapter in &listed {
         assert!(src.join(chapter).exists(), "SUMMARY lists {chapter}");
     }
