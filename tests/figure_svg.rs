@@ -143,7 +143,7 @@ fn paper_spectrum_figures_on_a_coarse_grid() {
     let a = &fig7.panels[0].series;
     let ratio = a[4].points[5].1 / a[0].points[5].1;
     assert!((ratio - 4.0).abs() < 1e-9, "{ratio}");
-    // The bands lie where the README's region table puts them (within the coarse step).
+    // The bands lie where the guide's region table (docs/src/verification.md) puts them (within the coarse step).
     let amp = fig7.panels[0]
         .bands
         .iter()

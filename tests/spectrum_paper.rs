@@ -36,7 +36,7 @@ fn fig7_regions_run_amplification_suppression_none() {
     let pts = &curves[0].points;
     // The paper: amplification for 0.5 < Π_ω1 < 1.25, suppression for
     // 1.25 < Π_ω1 < 1.75, no influence beyond. Ours: boundaries at 1.28 and
-    // 1.84 on the 0.01 grid (see the README), so on this grid:
+    // 1.84 on the 0.01 grid (see docs/src/verification.md), so on this grid:
     for w in [0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2] {
         assert_eq!(region_at(pts, w), Region::Amplification, "Π_ω1 = {w}");
     }
