@@ -130,19 +130,25 @@ fn every_fence_names_its_language() {
     }
 }
 
+/// The lines of a Markdown file outside its fenced blocks.
+fn prose_lines(text: &str) -> Vec<&str> {
+    let mut in_fence = false;
+    text.lines()
+        .filter(|line| {
+            if line.starts_with("```") {
+                in_fence = !in_fence;
+                return false;
+            }
+            !in_fence
+        })
+        .collect()
+}
+
 /// The targets of a file's Markdown links and images, outside code, with
 /// their `#fragment` if any (web addresses left out).
 fn relative_links(text: &str) -> Vec<String> {
     let mut links = Vec::new();
-    let mut in_fence = false;
-    for line in text.lines() {
-        if line.starts_with("```") {
-            in_fence = !in_fence;
-            continue;
-        }
-        if in_fence {
-            continue;
-        }
+    for line in prose_lines(text) {
         // Drop code spans: `a](b)` inside backticks is not a link.
         let mut prose = String::new();
         for (i, part) in line.split('`').enumerate() {
@@ -180,16 +186,11 @@ fn anchor(heading: &str) -> String {
 
 /// The anchors of a Markdown file's headings, outside code.
 fn anchors(text: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut in_fence = false;
-    for line in text.lines() {
-        if line.starts_with("```") {
-            in_fence = !in_fence;
-        } else if !in_fence && line.starts_with('#') {
-            out.push(anchor(line.trim_start_matches('#').trim()));
-        }
-    }
-    out
+    prose_lines(text)
+        .into_iter()
+        .filter(|line| line.starts_with('#'))
+        .map(|line| anchor(line.trim_start_matches('#').trim()))
+        .collect()
 }
 
 /// Every relative link names a file that exists, and a `#fragment` names a
