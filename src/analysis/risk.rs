@@ -18,15 +18,16 @@
 //!
 //! The runs are those of `pounding ida` and `pounding gap --suite` with the
 //! same buildings, settings and measure: all three plan them by
-//! [`ida::plan_levels`] and run them by [`run_member`].
+//! [`plan_levels`] and run them by [`run_member`].
 
 use rayon::prelude::*;
 
 use super::fragility::{Fragility, LevelCount};
-use super::ida::{self, plan_levels};
+use super::ida;
 use super::limit_state::LimitState;
 use super::separation;
 use super::statistics::Summary;
+use super::subject::runs::plan_levels;
 use super::suite::{SuiteCase, SuiteRun, SuiteRunError, run_member};
 use crate::model::suite::SuiteMember;
 

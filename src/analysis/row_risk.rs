@@ -3,8 +3,8 @@
 //! so that the explorer's risk scene draws either.
 //!
 //! Every record runs at every level x_1 < … < x_L and at the design level X
-//! as the row's IDA runs it ([`super::row_ida::plan_levels`],
-//! [`super::row_ida::run_levels`]: the row with contact, and apart when it
+//! as the row's IDA runs it ([`super::subject::runs::plan_levels`],
+//! [`super::subject::runs::run_levels`]: the row with contact, and apart when it
 //! pounded). From those runs:
 //!
 //! - at X, each record's gap that prevents pounding at the joint, d_min =
@@ -22,9 +22,9 @@
 use super::fragility;
 use super::ida;
 use super::risk::{CollapseCounts, LevelDrift, RiskPicture, with_design_level};
-use super::row_ida::{plan_levels, run_levels};
 use super::row_suite::{RowSuiteCase, RowSuiteError, RowSuiteRun};
 use super::statistics::Summary;
+use super::subject::runs::{plan_levels, run_levels};
 use super::suite::Scaling;
 use crate::model::buildings::Row;
 use crate::model::intensity::IntensityMeasure;
