@@ -9,6 +9,7 @@
 
 use pounding::analysis::fragility::LevelCount;
 use pounding::analysis::ida::counts;
+use pounding::analysis::risk::{Focus, picture};
 use pounding::analysis::row_suite::RowSuiteCase;
 use pounding::analysis::separation::gap_at_probability;
 use pounding::analysis::shard::partition;
@@ -186,6 +187,39 @@ fn an_ida_its_limit_state_counts_and_the_separation_are_the_same_for_both() {
         );
         close("gap at a probability", a, b, 1.0);
     }
+}
+
+#[test]
+fn the_risk_picture_is_the_same_for_the_pair_and_its_row() {
+    let m = members();
+    let focus = Focus {
+        joint: 0,
+        building: 0,
+    };
+    let levels = [0.1, 0.3];
+    let p = picture(&pair(None), focus, &m, 0.2, &levels, &|| true)
+        .unwrap()
+        .unwrap();
+    let r = picture(&row(None), focus, &m, 0.2, &levels, &|| true)
+        .unwrap()
+        .unwrap();
+    assert_eq!((p.records, p.gap_m), (r.records, r.gap_m));
+    assert_eq!(p.pounding, r.pounding);
+    assert_eq!(p.fragility, r.fragility);
+    assert_eq!(p.collapse, r.collapse);
+    for (a, b) in p.min_gaps_m.iter().zip(&r.min_gaps_m) {
+        close("gap at the design level", *a, *b, 1.0);
+    }
+    for (a, b) in p.drift.iter().zip(&r.drift) {
+        for (x, y) in [(a.pounding, b.pounding), (a.free, b.free)] {
+            close("median drift", x.median, y.median, 1.0);
+            close("16th percentile drift", x.p16, y.p16, 1.0);
+            close("84th percentile drift", x.p84, y.p84, 1.0);
+        }
+    }
+    // The titles name each subject's own building.
+    assert_eq!(p.drift_title, "left drift [mm]");
+    assert_eq!(r.drift_title, "frame drift [mm]");
 }
 
 /// The subject's study cut into `n` shards: each shard's runs through the

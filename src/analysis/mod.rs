@@ -58,7 +58,6 @@ pub mod risk;
 pub mod row_gap;
 pub mod row_limit_state;
 pub mod row_report;
-pub mod row_risk;
 pub mod row_separation;
 pub mod row_suite;
 pub mod separation;

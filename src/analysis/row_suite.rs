@@ -87,7 +87,8 @@ pub struct BuildingDemands {
     /// max_i |(1 − α)(Δ_i − z_i)| at the end, m.
     #[serde(serialize_with = "float_or_inf")]
     pub max_residual_drift_m: f64,
-    /// max_i |Δ_i| (m), and max_i |Δ_i|/Δ_y,i: read by the studies
+    /// max_i |Δ_i| (m), and max_i |Δ_i|/Δ_y,i, up to the end of the run
+    /// (a collapse's instant; `collapsed` says so): read by the studies
     /// written over a [`Subject`](super::subject::Subject), not reported.
     #[serde(skip)]
     pub max_drift_m: f64,
@@ -246,8 +247,8 @@ impl BuildingDemands {
                         largest(|f| f.absolute_acceleration) / STANDARD_GRAVITY,
                     ),
                     max_residual_drift_m: or_infinite(largest(|f| f.residual_drift.abs())),
-                    max_drift_m: or_infinite(largest(|f| f.drift)),
-                    max_ductility: or_infinite(largest(|f| f.ductility)),
+                    max_drift_m: largest(|f| f.drift),
+                    max_ductility: largest(|f| f.ductility),
                     impacts,
                     max_force_kn: force / 1e3,
                     collapsed,

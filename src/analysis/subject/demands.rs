@@ -20,8 +20,9 @@ pub struct Joint {
 }
 
 /// One building's demands in one run, the largest over its storeys and
-/// floors. A building that collapsed (SPEC §15) has drift, drift ratio,
-/// ductility and acceleration ∞.
+/// floors. A building that collapsed (SPEC §15) has drift ratio and
+/// acceleration ∞, as a row's suite reports them; its drift and ductility
+/// are the peaks up to the collapse (what the risk picture's IDA draws).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BuildingDemand {
     /// max_i |Δ_i| (m); for the pair, max |x| of the one storey.

@@ -86,6 +86,11 @@ pub trait Subject: Sync {
         self.buildings()[0].period_s
     }
 
+    /// Whether a building can collapse (SPEC §15): a row with P-Δ.
+    fn can_collapse(&self) -> bool {
+        false
+    }
+
     /// A record's demands in SI, per building and per joint.
     fn demands(&self, run: &Self::Run) -> Demands;
 

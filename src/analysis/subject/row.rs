@@ -93,6 +93,10 @@ impl Subject for RowSuiteCase {
             .collect()
     }
 
+    fn can_collapse(&self) -> bool {
+        self.row.can_collapse()
+    }
+
     fn demands(&self, run: &RowSuiteRun) -> Demands {
         let of = |all: &[BuildingDemands]| -> Vec<BuildingDemand> {
             all.iter()
