@@ -25,8 +25,9 @@
 //! - [`suite`]: one pair of physical buildings under a suite of records,
 //!   each scaled to an intensity (SPEC §12), and [`statistics`], the
 //!   median, percentiles and dispersion of a demand over a suite;
-//! - [`risk`]: the risk picture of one pair over a suite: P(pounding)
-//!   against the gap, the IDA of the left drift and the pounding fragility;
+//! - [`risk`]: the risk picture of the pair, or of one joint of a row, over
+//!   a suite ([`subject`]): P(pounding) against the gap, the IDA of one
+//!   building's drift and the pounding (and collapse) fragility;
 //! - [`subject`]: what a study runs records on, the physical pair or a row
 //!   of buildings (SPEC §12, §13), and the suite and the IDA's levels
 //!   planned and run over either ([`subject::runs`]);
