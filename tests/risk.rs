@@ -6,7 +6,8 @@
 
 use pounding::analysis::risk::risk;
 use pounding::analysis::statistics::Summary;
-use pounding::analysis::suite::{Scaling, SuiteCase, SuiteRun, plan, run_suite};
+use pounding::analysis::subject::runs::{plan, run_suite};
+use pounding::analysis::suite::{Scaling, SuiteCase, SuiteRun};
 use pounding::model::intensity::IntensityMeasure;
 use pounding::model::physical::Physical;
 use pounding::model::preset::builtin;
@@ -41,7 +42,7 @@ fn suite_at(case: &SuiteCase, members: &[SuiteMember], level: f64) -> Vec<SuiteR
         ..case.clone()
     };
     let plans = plan(&at, members).unwrap();
-    run_suite(&at, members, &plans, &|_| ())
+    run_suite(&at, members, &plans, &|_| ()).unwrap()
 }
 
 #[test]

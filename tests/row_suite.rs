@@ -8,14 +8,14 @@
 use pounding::analysis::fragility::{self, LevelCount};
 use pounding::analysis::ida::over_levels;
 use pounding::analysis::row_gap::row_gap;
-use pounding::analysis::row_ida::{fragilities, plan_levels, run_levels};
-use pounding::analysis::row_limit_state::RowLimitParser;
+use pounding::analysis::row_limit_state::{RowLimitParser, fragilities};
 use pounding::analysis::row_separation::joint_separations;
 use pounding::analysis::row_suite::{
-    RowCaches, RowSuiteCase, RowSuiteRun, plan, row_intensity, run_member, run_suite, statistics,
+    RowCaches, RowSuiteCase, RowSuiteRun, row_intensity, statistics,
 };
 use pounding::analysis::separation::gap_at_probability;
 use pounding::analysis::statistics::Summary;
+use pounding::analysis::subject::runs::{plan, plan_levels, run_levels, run_one, run_suite};
 use pounding::analysis::suite::Scaling;
 use pounding::model::buildings::matrices::{default_tail, periods};
 use pounding::model::buildings::{Ground, Row, load};
@@ -67,7 +67,7 @@ fn a_suite_record_is_the_rows_own_run_bit_for_bit() {
     let c = case("block-and-frame", 0.3);
     let m = members(4);
     let scales = plan(&c, &m).unwrap();
-    let runs = run_suite(&c.row, &m, &scales, &|_| {}).unwrap();
+    let runs = run_suite(&c, &m, &scales, &|_| {}).unwrap();
     let apart = c.row.apart();
     for (r, member) in runs.iter().zip(&m) {
         // s = X / PGA, and the scaled record's PGA is the level.
@@ -93,7 +93,7 @@ fn a_suite_record_is_the_rows_own_run_bit_for_bit() {
         assert_eq!(r.demands.joints[0].impacts, r.run.impacts());
     }
     // A record run alone, with fresh caches, is the same record.
-    let alone = run_member(&c.row, &m[2], scales[2], &mut RowCaches::default()).unwrap();
+    let alone = run_one(&c, &m[2], &scales[2], &mut RowCaches::default()).unwrap();
     same_motion(&alone.run, &runs[2].run);
     assert_eq!(alone.demands, runs[2].demands);
 }
@@ -102,7 +102,7 @@ fn a_suite_record_is_the_rows_own_run_bit_for_bit() {
 fn statistics_are_those_of_the_records_demands() {
     let c = case("three-in-series", 0.2);
     let m = members(5);
-    let runs = run_suite(&c.row, &m, &plan(&c, &m).unwrap(), &|_| {}).unwrap();
+    let runs = run_suite(&c, &m, &plan(&c, &m).unwrap(), &|_| {}).unwrap();
     let st = statistics(&runs);
     assert_eq!(st.records, 5);
     let tall: Vec<f64> = runs
@@ -133,7 +133,7 @@ fn a_rows_fragility_is_the_maximum_likelihood_fit_of_its_counts() {
     let runs = run_levels(&c, &m, &plans, &|_| {}).unwrap();
     // Level l's records are the suite's at that level, bit for bit.
     let at = case("block-and-frame", 0.3);
-    let suite = run_suite(&at.row, &m, &plan(&at, &m).unwrap(), &|_| {}).unwrap();
+    let suite = run_suite(&at, &m, &plan(&at, &m).unwrap(), &|_| {}).unwrap();
     for (a, b) in runs[2].iter().zip(&suite) {
         same_motion(&a.run, &b.run);
     }
@@ -181,7 +181,7 @@ fn a_rows_fragility_is_the_maximum_likelihood_fit_of_its_counts() {
 fn the_separation_per_joint_is_the_order_statistic_of_each_records_gap() {
     let c = case("block-and-frame", 0.3);
     let m = members(7);
-    let runs: Vec<RowSuiteRun> = run_suite(&c.row, &m, &plan(&c, &m).unwrap(), &|_| {}).unwrap();
+    let runs: Vec<RowSuiteRun> = run_suite(&c, &m, &plan(&c, &m).unwrap(), &|_| {}).unwrap();
     let seps = joint_separations(&c.row, &runs, &[0.5, 0.9]);
     assert_eq!(seps.len(), 1);
     let gaps: Vec<f64> = runs

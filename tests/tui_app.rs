@@ -976,7 +976,8 @@ fn direct_probability_at(
     measure: pounding::model::intensity::IntensityMeasure,
 ) -> (f64, usize, Vec<f64>) {
     use pounding::analysis::separation::probability_of_pounding;
-    use pounding::analysis::suite::{Scaling, SuiteCase, plan, run_suite};
+    use pounding::analysis::subject::runs::{plan, run_suite};
+    use pounding::analysis::suite::{Scaling, SuiteCase};
     use pounding::model::suite::SuiteSpec;
     let members = SuiteSpec::parse("synthetic:20").unwrap().load().unwrap();
     let case = SuiteCase {
@@ -992,7 +993,7 @@ fn direct_probability_at(
         },
     };
     let plans = plan(&case, &members).unwrap();
-    let runs = run_suite(&case, &members, &plans, &|_| ());
+    let runs = run_suite(&case, &members, &plans, &|_| ()).unwrap();
     let gaps: Vec<f64> = runs.iter().map(|r| r.min_gap_m()).collect();
     let p = probability_of_pounding(&gaps, physical.gap);
     let k = gaps.iter().filter(|&&d| d > physical.gap).count();

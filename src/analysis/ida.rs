@@ -3,9 +3,11 @@
 //!
 //! Every record of the suite runs at every intensity level x_1 < … < x_L,
 //! scaled so that its intensity measure equals the level. A level's runs are
-//! exactly those of [`suite`](super::suite) at that level: both plan them by
-//! [`plan`](super::suite::plan) with the same scaling, so a level's rows are bit for bit the
-//! suite's.
+//! exactly those of [`suite`](super::suite) at that level: both plan them
+//! over the same [`Subject`](super::subject::Subject)
+//! ([`plan_levels`](super::subject::runs::plan_levels)) with the same
+//! scaling, so a level's rows are bit for bit the suite's, for the pair and
+//! for a row alike.
 //!
 //! At each level l, k_l of the n_l records exceed a limit state
 //! ([`LimitState`]); the counts of all levels give the lognormal fragility
@@ -24,67 +26,10 @@ use serde::Serialize;
 
 use super::fragility::{self, Fragility, LevelCount};
 use super::limit_state::{self, LimitState, Observed};
-use super::suite::{
-    MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteRunError, level_scales, raw_intensity, replan,
-    run_member,
-};
-use crate::model::suite::SuiteMember;
+use super::suite::SuiteRun;
 use crate::solver::RunResult;
 
 use super::demands::RunSi;
-
-/// The plans of every record at every level, level by level: level l's are
-/// those of a suite scaled to `levels[l]`, bit for bit ([`plan`](super::suite::plan) applies
-/// the same [`scaled`](super::suite::scaled) to the same measurement), or
-/// with [`Scaling::collective`] the suite scaled as a whole to each level
-/// ([`level_scales`]). Each record's intensity
-/// measure is taken once, not once per level: Sa(T) is a pass of the
-/// Nigam–Jennings map over the whole record.
-pub fn plan_levels(
-    case: &SuiteCase,
-    members: &[SuiteMember],
-    levels: &[f64],
-) -> Result<Vec<Vec<MemberPlan>>, SuiteRunError> {
-    let raws: Vec<f64> = members
-        .iter()
-        .map(|m| raw_intensity(m, &case.scaling.measure))
-        .collect::<Result<_, _>>()?;
-    levels
-        .iter()
-        .map(|&level| {
-            let at_level = SuiteCase {
-                scaling: Scaling {
-                    level: Some(level),
-                    ..case.scaling
-                },
-                ..case.clone()
-            };
-            let scales = level_scales(members, &raws, level, case.scaling.collective);
-            replan(&at_level, members, &scales)
-        })
-        .collect()
-}
-
-/// Runs every (level, record) pair in parallel, as one pool of work so that
-/// the cores stay busy; the runs come back level by level, in suite order.
-/// `done` is told of each finished run (progress).
-pub fn run_levels(
-    case: &SuiteCase,
-    members: &[SuiteMember],
-    plans: &[Vec<MemberPlan>],
-    done: &(dyn Fn(&SuiteRun) + Sync),
-) -> Vec<Vec<SuiteRun>> {
-    over_levels(
-        plans.len(),
-        members.len(),
-        || (),
-        |_, l, j| {
-            let run = run_member(case, &members[j], &plans[l][j]);
-            done(&run);
-            run
-        },
-    )
-}
 
 /// `run(state, l, j)` for every level l < `levels` and record j <
 /// `records`, in parallel as one pool of work (so that the cores stay busy

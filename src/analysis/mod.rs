@@ -25,13 +25,16 @@
 //! - [`suite`]: one pair of physical buildings under a suite of records,
 //!   each scaled to an intensity (SPEC §12), and [`statistics`], the
 //!   median, percentiles and dispersion of a demand over a suite;
-//! - [`risk`]: the risk picture of one pair over a suite: P(pounding)
-//!   against the gap, the IDA of the left drift and the pounding fragility;
-//! - [`row_suite`], [`row_ida`], [`row_limit_state`], [`row_separation`]:
-//!   the same studies on a row of buildings (SPEC §13): each record's
-//!   demands per building and joint, the IDA and fragility of a building's
-//!   drift, acceleration, impact force or pounding, and the separation at a
-//!   probability per joint;
+//! - [`risk`]: the risk picture of the pair, or of one joint of a row, over
+//!   a suite ([`subject`]): P(pounding) against the gap, the IDA of one
+//!   building's drift and the pounding (and collapse) fragility;
+//! - [`subject`]: what a study runs records on, the physical pair or a row
+//!   of buildings (SPEC §12, §13), and the suite and the IDA's levels
+//!   planned and run over either ([`subject::runs`]);
+//! - [`row_suite`], [`row_limit_state`], [`row_separation`]: a row's
+//!   demands per building and joint, its limit states (a building's drift,
+//!   acceleration, impact force or pounding, and their fragilities), and the
+//!   separation at a probability per joint;
 //! - [`suite_map`]: P(pounding) and the median amplification over two
 //!   physical quantities of the buildings, under a suite (SPEC §12);
 //! - [`shard`]: a sweep cut into shards balanced by estimated work, and
@@ -54,10 +57,8 @@ pub mod record_scaling;
 pub mod record_selection;
 pub mod risk;
 pub mod row_gap;
-pub mod row_ida;
 pub mod row_limit_state;
 pub mod row_report;
-pub mod row_risk;
 pub mod row_separation;
 pub mod row_suite;
 pub mod separation;
@@ -65,6 +66,7 @@ pub mod shard;
 pub mod similarity;
 pub mod spectrum;
 pub mod statistics;
+pub mod subject;
 pub mod suite;
 pub mod suite_map;
 pub mod sweep;

@@ -1,5 +1,6 @@
-//! The risk of pounding of one pair of buildings over a suite, in one
-//! picture (SPEC §11, §12): what the explorer's risk scene draws.
+//! The risk of pounding of one pair of buildings, or of one joint of a row,
+//! over a suite, in one picture (SPEC §11, §12, §13): what the explorer's
+//! risk scene draws, written once over the [`Subject`].
 //!
 //! Every record of the suite runs at every intensity level x_1 < … < x_L
 //! (an IDA, [`super::ida`]) and at a design level X (when X is not one of
@@ -9,25 +10,34 @@
 //!   run without contact), whence the probability of pounding at a gap d,
 //!   the fraction of records with Π_d,min > d
 //!   ([`separation::probability_of_pounding`]);
-//! - at each level, the median and the 16th and 84th percentiles of the
-//!   left building's peak drift, with pounding and without contact
-//!   ([`Summary`]);
+//! - at each level, the median and the 16th and 84th percentiles of one
+//!   building's peak drift (the pair's left; a row's building of
+//!   [`Focus`], by default the joint's taller, [`RowRiskCase::taller_of`]),
+//!   with pounding and without contact ([`Summary`]);
 //! - the pounding fragility P(pounding | IM = x) fitted on the counts of
-//!   records that pounded at each level ([`ida::fragilities`]), or why
-//!   there is none.
+//!   records that pounded at each level ([`fragility::fit`]), or why
+//!   there is none;
+//! - for a subject whose buildings can collapse (SPEC §15), the collapse
+//!   fragility fitted the same way on the records in which a building
+//!   collapsed.
 //!
 //! The runs are those of `pounding ida` and `pounding gap --suite` with the
 //! same buildings, settings and measure: all three plan them by
-//! [`ida::plan_levels`] and run them by [`run_member`].
+//! [`plan_levels`] and run them by [`run_one`].
 
 use rayon::prelude::*;
 
-use super::fragility::{Fragility, LevelCount};
-use super::ida::{self, plan_levels};
-use super::limit_state::LimitState;
+use super::fragility::{self, Fragility, LevelCount};
+use super::ida;
+use super::row_suite::{RowSuiteCase, RowSuiteError};
 use super::separation;
 use super::statistics::Summary;
-use super::suite::{SuiteCase, SuiteRun, SuiteRunError, run_member};
+use super::subject::Subject;
+use super::subject::demands::Demands;
+use super::subject::runs::{plan_levels, run_one};
+use super::suite::{Scaling, SuiteCase, SuiteRunError};
+use crate::model::buildings::Row;
+use crate::model::intensity::IntensityMeasure;
 use crate::model::suite::SuiteMember;
 
 /// The left building's peak drift (m) at one level, over the records.
@@ -119,12 +129,15 @@ pub fn with_design_level(levels: &[f64], design_level: f64) -> (Vec<f64>, usize)
     (all, design)
 }
 
-/// Runs every record at every level and at the design level, in parallel
-/// chunks, while `keep_going()` holds (asked between chunks); the picture, or `None` when stopped. A
-/// record that cannot be planned (zero intensity, Π-groups out of range)
-/// fails the whole picture, naming it, before any run.
-///
-/// `levels` must be ascending and > 0, `design_level` > 0.
+/// Which joint's pounding a picture counts and which building's drift its
+/// IDA follows (0 and 0, the left building, for the pair).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Focus {
+    pub joint: usize,
+    pub building: usize,
+}
+
+/// The risk picture of the pair (its left building, its one joint).
 pub fn risk(
     case: &SuiteCase,
     members: &[SuiteMember],
@@ -132,25 +145,104 @@ pub fn risk(
     levels: &[f64],
     keep_going: &dyn Fn() -> bool,
 ) -> Result<Option<RiskPicture>, SuiteRunError> {
+    let focus = Focus {
+        joint: 0,
+        building: 0,
+    };
+    picture(case, focus, members, design_level, levels, keep_going)
+}
+
+/// What the picture of a row is of: the row, the joint whose pounding it
+/// counts, the building whose drift it follows, and the measure records
+/// are scaled by.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowRiskCase {
+    pub row: Row,
+    /// Index of the joint (0: between the first two buildings).
+    pub joint: usize,
+    /// Index of the building whose drift the IDA follows.
+    pub building: usize,
+    pub measure: IntensityMeasure,
+}
+
+impl RowRiskCase {
+    /// The joint's taller building: where pounding concentrates drift
+    /// (above the contact), the one the IDA follows by default.
+    pub fn taller_of(row: &Row, joint: usize) -> usize {
+        let top = |b: usize| {
+            let b = &row.buildings[b];
+            b.elevation(b.storeys())
+        };
+        if top(joint + 1) > top(joint) {
+            joint + 1
+        } else {
+            joint
+        }
+    }
+}
+
+/// The risk picture of a row, at its joint and building.
+pub fn row_risk(
+    case: &RowRiskCase,
+    members: &[SuiteMember],
+    design_level: f64,
+    levels: &[f64],
+    keep_going: &dyn Fn() -> bool,
+) -> Result<Option<RiskPicture>, RowSuiteError> {
+    let suite = RowSuiteCase {
+        row: case.row.clone(),
+        scaling: Scaling {
+            measure: case.measure,
+            level: None,
+            collective: false,
+        },
+    };
+    let focus = Focus {
+        joint: case.joint,
+        building: case.building,
+    };
+    picture(&suite, focus, members, design_level, levels, keep_going)
+}
+
+/// Runs every record at every level and at the design level, in parallel
+/// chunks, while `keep_going()` holds (asked between chunks); the picture,
+/// or `None` when stopped. A record that cannot be planned (zero
+/// intensity, Π-groups out of range) fails the whole picture, naming it,
+/// before any run; a run that fails (a row's runaway), at its chunk.
+///
+/// `levels` must be ascending and > 0, `design_level` > 0.
+pub fn picture<S: Subject>(
+    subject: &S,
+    focus: Focus,
+    members: &[SuiteMember],
+    design_level: f64,
+    levels: &[f64],
+    keep_going: &dyn Fn() -> bool,
+) -> Result<Option<RiskPicture>, S::Error> {
     let (all, design) = with_design_level(levels, design_level);
-    let plans = plan_levels(case, members, &all)?;
+    let plans = plan_levels(subject, members, &all)?;
     let pairs: Vec<(usize, usize)> = (0..all.len())
         .flat_map(|l| (0..members.len()).map(move |j| (l, j)))
         .collect();
     // A chunk of runs at a time, so that `keep_going` is asked between two
     // chunks on the calling thread (a few milliseconds apart).
     let chunk = 4 * rayon::current_num_threads().max(1);
-    let mut runs: Vec<SuiteRun> = Vec::with_capacity(pairs.len());
+    let mut runs: Vec<Demands> = Vec::with_capacity(pairs.len());
     for part in pairs.chunks(chunk) {
         if !keep_going() {
             return Ok(None);
         }
-        runs.par_extend(
-            part.par_iter()
-                .map(|&(l, j)| run_member(case, &members[j], &plans[l][j])),
-        );
+        let done: Vec<Result<Demands, S::Error>> = part
+            .par_iter()
+            .map_init(S::Caches::default, |caches, &(l, j)| {
+                run_one(subject, &members[j], &plans[l][j], caches).map(|r| subject.demands(&r))
+            })
+            .collect();
+        for run in done {
+            runs.push(run?);
+        }
     }
-    let mut by_level: Vec<Vec<SuiteRun>> = Vec::with_capacity(all.len());
+    let mut by_level: Vec<Vec<Demands>> = Vec::with_capacity(all.len());
     for _ in 0..all.len() {
         let rest = runs.split_off(members.len().min(runs.len()));
         by_level.push(std::mem::replace(&mut runs, rest));
@@ -161,37 +253,49 @@ pub fn risk(
         .iter()
         .zip(ida_runs)
         .map(|(&level, at)| {
-            let left = |free: bool| {
+            let of = |free: bool| {
                 let values: Vec<f64> = at
                     .iter()
-                    .map(|r| {
-                        let si = if free { &r.free_si } else { &r.si };
-                        si.left.peak_displacement_m
+                    .map(|d| {
+                        let b = if free { &d.no_pounding } else { &d.buildings };
+                        b[focus.building].peak_drift_m
                     })
                     .collect();
                 Summary::of(&values)
             };
             LevelDrift {
                 level,
-                pounding: left(false),
-                free: left(true),
+                pounding: of(false),
+                free: of(true),
             }
         })
         .collect();
-    let pounding = ida::fragilities(levels, ida_runs, &[LimitState::Pounding])
-        .into_iter()
-        .next()
-        .expect("the pounding limit state comes first");
+    let counts = ida::counts(levels, ida_runs, |d: &Demands| {
+        d.joints[focus.joint].impacts > 0
+    });
+    let collapse = subject.can_collapse().then(|| {
+        let counts = ida::counts(levels, ida_runs, |d: &Demands| {
+            d.buildings.iter().any(|b| b.collapsed)
+        });
+        CollapseCounts {
+            fragility: fragility::fit(&counts),
+            counts,
+        }
+    });
+    let building = &subject.buildings()[focus.building];
     Ok(Some(RiskPicture {
         records: members.len(),
         design_level,
-        min_gaps_m: at_design.iter().map(SuiteRun::min_gap_m).collect(),
-        gap_m: case.physical.gap,
+        min_gaps_m: at_design
+            .iter()
+            .map(|d| d.joints[focus.joint].min_gap_m)
+            .collect(),
+        gap_m: subject.joints()[focus.joint].gap_m,
         drift,
-        pounding: pounding.counts,
-        fragility: pounding.fragility,
-        drift_title: "left drift [mm]".into(),
-        collapse: None,
+        fragility: fragility::fit(&counts),
+        pounding: counts,
+        drift_title: format!("{} drift [mm]", building.name),
+        collapse,
     }))
 }
 

@@ -32,8 +32,9 @@ use std::fmt;
 
 use serde::Serialize;
 
+use super::ida::{LimitStateFragility, fragility_of};
 use super::limit_state::{LimitStateError, acceleration_g, items, positive};
-use super::row_suite::BuildingDemands;
+use super::row_suite::{BuildingDemands, RowSuiteRun};
 use crate::model::buildings::Row;
 use crate::model::params::echo;
 
@@ -271,6 +272,29 @@ impl RowLimitParser {
     }
 }
 
+/// The fragility of every limit state over an IDA's runs of a row (`runs[l]`
+/// at `levels[l]`), in the order given, with the buildings apart beside
+/// each but pounding (which they never reach).
+pub fn fragilities(
+    levels: &[f64],
+    runs: &[Vec<RowSuiteRun>],
+    states: &[RowLimitState],
+) -> Vec<LimitStateFragility> {
+    states
+        .iter()
+        .map(|state| {
+            fragility_of(
+                state.label(),
+                levels,
+                runs,
+                |r: &RowSuiteRun| state.exceeded(&r.demands.buildings),
+                (!state.is_pounding())
+                    .then_some(|r: &RowSuiteRun| state.exceeded(&r.demands.no_pounding)),
+            )
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -288,6 +312,8 @@ mod tests {
                 max_drift_ratio: d,
                 max_absolute_acceleration_g: 10.0 * d,
                 max_residual_drift_m: 0.0,
+                max_drift_m: 3.0 * d,
+                max_ductility: d / 0.01,
                 impacts,
                 max_force_kn: 100.0 * impacts as f64,
                 collapsed: false,

@@ -31,10 +31,9 @@
 
 use serde::Serialize;
 
-use super::ida::over_levels;
 use super::row_gap::{JointGap, joint_gaps};
 use super::statistics::Summary;
-use super::suite::{DemandSummary, Scaling, SuiteRunError, SuiteStatistics, scales};
+use super::suite::{DemandSummary, Scaling, SuiteRunError, SuiteStatistics};
 use crate::model::buildings::matrices::{default_tail, periods};
 use crate::model::buildings::{Ground, Row};
 use crate::model::intensity::IntensityMeasure;
@@ -88,6 +87,13 @@ pub struct BuildingDemands {
     /// max_i |(1 − α)(Δ_i − z_i)| at the end, m.
     #[serde(serialize_with = "float_or_inf")]
     pub max_residual_drift_m: f64,
+    /// max_i |Δ_i| (m), and max_i |Δ_i|/Δ_y,i, up to the end of the run
+    /// (a collapse's instant; `collapsed` says so): read by the studies
+    /// written over a [`Subject`](super::subject::Subject), not reported.
+    #[serde(skip)]
+    pub max_drift_m: f64,
+    #[serde(skip)]
+    pub max_ductility: f64,
     /// Impacts at the joints on either side of it.
     pub impacts: usize,
     /// The largest impact force on it, kN (0 without impacts).
@@ -156,15 +162,6 @@ pub fn run_length(row: &Row, ground: &Ground) -> f64 {
     ground.end() + default_tail(row)
 }
 
-/// Each member's (scale, intensity) under the case's scaling, before any
-/// run: a record that cannot be scaled fails at once, naming it.
-pub fn plan(
-    case: &RowSuiteCase,
-    members: &[SuiteMember],
-) -> Result<Vec<(f64, f64)>, RowSuiteError> {
-    Ok(scales(members, &case.scaling)?)
-}
-
 /// The linear maps of the row and of its buildings apart, kept from record
 /// to record by one worker ([`MapCache`]: the runs are bit for bit those of
 /// fresh caches, and faster).
@@ -172,18 +169,6 @@ pub fn plan(
 pub struct RowCaches {
     with_contact: MapCache,
     apart: MapCache,
-}
-
-/// Runs one member at (scale, intensity): with contact, and apart unless
-/// the run with contact had no impact.
-pub fn run_member(
-    row: &Row,
-    member: &SuiteMember,
-    plan: (f64, f64),
-    caches: &mut RowCaches,
-) -> Result<RowSuiteRun, RowSuiteError> {
-    let (run, free) = member_runs(row, member, plan.0, caches)?;
-    Ok(member_run(row, member, plan, run, free))
 }
 
 /// The two runs of one member at scale `scale`: with contact, and apart
@@ -232,26 +217,6 @@ pub fn member_run(
     }
 }
 
-/// Runs every member in parallel, in suite order; `done` is told of each
-/// finished record (progress). The first failure, in suite order, is returned.
-pub fn run_suite(
-    row: &Row,
-    members: &[SuiteMember],
-    scales: &[(f64, f64)],
-    done: &(dyn Fn(&RowSuiteRun) + Sync),
-) -> Result<Vec<RowSuiteRun>, RowSuiteError> {
-    over_levels(1, members.len(), RowCaches::default, |caches, _, j| {
-        let run = run_member(row, &members[j], scales[j], caches);
-        if let Ok(r) = &run {
-            done(r);
-        }
-        run
-    })
-    .into_iter()
-    .flatten()
-    .collect()
-}
-
 impl BuildingDemands {
     /// Every building's demands in `run` of `row` (a run of the row itself,
     /// or of [`Row::apart`], whose floor pairs are none: no impacts).
@@ -282,6 +247,8 @@ impl BuildingDemands {
                         largest(|f| f.absolute_acceleration) / STANDARD_GRAVITY,
                     ),
                     max_residual_drift_m: or_infinite(largest(|f| f.residual_drift.abs())),
+                    max_drift_m: largest(|f| f.drift),
+                    max_ductility: largest(|f| f.ductility),
                     impacts,
                     max_force_kn: force / 1e3,
                     collapsed,

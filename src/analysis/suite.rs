@@ -20,7 +20,6 @@
 //! parameters through [`Physical::under_record`] and run them through
 //! [`solve`].
 
-use rayon::prelude::*;
 use serde::Serialize;
 
 use super::demands::{DemandsSi, RunSi};
@@ -229,13 +228,6 @@ pub struct MemberPlan {
     pub params: Params,
 }
 
-/// Plans every member before any run (a zero record, Π-groups out of range
-/// fail here), so that a bad suite fails at once and names the record.
-pub fn plan(case: &SuiteCase, members: &[SuiteMember]) -> Result<Vec<MemberPlan>, SuiteRunError> {
-    let scales = scales(members, &case.scaling)?;
-    replan(case, members, &scales)
-}
-
 /// Each member's (scale, intensity) under `scaling`: they depend on the
 /// records only, so a study of many buildings measures each record once.
 pub fn scales(
@@ -245,29 +237,16 @@ pub fn scales(
     members.iter().map(|m| scale_of(m, scaling)).collect()
 }
 
-/// [`plan`] with the members' scales already measured ([`scales`]).
-pub fn replan(
-    case: &SuiteCase,
-    members: &[SuiteMember],
-    scales: &[(f64, f64)],
-) -> Result<Vec<MemberPlan>, SuiteRunError> {
-    members
-        .iter()
-        .zip(scales)
-        .map(|(m, &(scale, intensity))| {
-            Ok(MemberPlan {
-                scale,
-                intensity,
-                params: member_params(case, m, scale)?,
-            })
-        })
-        .collect()
+/// Runs one planned member: its pounding run, and its run without contact
+/// for Π_d,min ([`runs_of`]).
+pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> SuiteRun {
+    let (result, free) = runs_of(&plan.params);
+    member_run(case, member, plan, result, free)
 }
 
-/// Runs one planned member: its pounding run, and its run without contact
-/// for Π_d,min unless the pounding run had no impact (then it is its own).
-pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> SuiteRun {
-    let params = &plan.params;
+/// The pounding run of `params`, and its run without contact unless the
+/// pounding run had no impact (then it is its own).
+pub fn runs_of(params: &Params) -> (RunResult, RunResult) {
     let result = solve(params, &mut ());
     // The same buildings without contact (gap = ∞), by the exact method:
     // their demands are the no-pounding baseline of every comparison, their
@@ -279,7 +258,7 @@ pub fn run_member(case: &SuiteCase, member: &SuiteMember, plan: &MemberPlan) -> 
     } else {
         result.clone()
     };
-    member_run(case, member, plan, result, free)
+    (result, free)
 }
 
 /// A member's row from its two runs (see [`run_member`]): the runs of a
@@ -315,25 +294,6 @@ pub fn member_run(
         free_si,
         min_gap,
     }
-}
-
-/// Runs every planned member in parallel, in suite order; `done` is told of
-/// each finished record (progress).
-pub fn run_suite(
-    case: &SuiteCase,
-    members: &[SuiteMember],
-    plans: &[MemberPlan],
-    done: &(dyn Fn(&SuiteRun) + Sync),
-) -> Vec<SuiteRun> {
-    members
-        .par_iter()
-        .zip(plans)
-        .map(|(m, p)| {
-            let run = run_member(case, m, p);
-            done(&run);
-            run
-        })
-        .collect()
 }
 
 /// One demand's statistics over a suite.

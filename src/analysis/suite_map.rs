@@ -18,7 +18,8 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::statistics::quantile;
-use super::suite::{MemberPlan, SuiteCase, SuiteRun, SuiteRunError, replan, run_member, scales};
+use super::subject::Subject;
+use super::suite::{MemberPlan, SuiteCase, SuiteRun, SuiteRunError, run_member, scales};
 use crate::model::params::echo;
 use crate::model::physical::Physical;
 use crate::model::suite::SuiteMember;
@@ -195,7 +196,14 @@ pub fn plan_cells(
     let scales = scales(members, &first.scaling).map_err(|e| (*x0, *y0, e))?;
     cells
         .iter()
-        .map(|(x, y, case)| replan(case, members, &scales).map_err(|e| (*x, *y, e)))
+        .map(|(x, y, case)| {
+            members
+                .iter()
+                .zip(&scales)
+                .map(|(m, &(scale, intensity))| case.plan_at(m, scale, intensity))
+                .collect::<Result<_, _>>()
+                .map_err(|e| (*x, *y, e))
+        })
         .collect()
 }
 

@@ -16,9 +16,9 @@ use super::row_ida::{RowIdaArgs, RowLimitArgs, limit_states};
 use super::row_suite::{self, RowStudyArgs};
 use super::shard::ShardArgs;
 use super::suite::{SuiteArgs, case_of, parse_level, work_of};
-use crate::analysis::ida::{parse_levels, plan_levels};
+use crate::analysis::ida::parse_levels;
 use crate::analysis::separation::parse_probabilities;
-use crate::analysis::suite::plan;
+use crate::analysis::subject::runs::{plan, plan_levels};
 use crate::figure::{FigureName, RiskStudy, RowSuiteStudy, SuiteStudy};
 
 #[derive(Debug, Clone, Default, Args)]
@@ -210,10 +210,9 @@ fn row_study(
     let (case, members) = row_suite::case_of(&study)?;
     let states = limit_states(&ida, &case.row)?;
     if separation {
-        crate::analysis::row_suite::plan(&case, &members).map_err(row_suite::failed)?;
+        plan(&case, &members).map_err(row_suite::failed)?;
     } else {
-        crate::analysis::row_ida::plan_levels(&case, &members, &levels)
-            .map_err(row_suite::failed)?;
+        plan_levels(&case, &members, &levels).map_err(row_suite::failed)?;
     }
     row_suite::work_of(&case.row, &members, levels.len().max(1)).check(
         &format!("figure {name}"),

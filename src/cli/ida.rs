@@ -17,10 +17,9 @@ use super::records::members;
 use super::row_ida::{RowIdaArgs, RowLimitArgs};
 use super::study_tables::closing_tables;
 use super::suite::{SuiteArgs, SuiteRow, case_of, record_steps, work_of};
-use crate::analysis::ida::{
-    LimitStateFragility, fragilities, parse_levels, plan_levels, run_levels,
-};
+use crate::analysis::ida::{LimitStateFragility, fragilities, parse_levels};
 use crate::analysis::limit_state::{LimitState, parse_acceleration, parse_ductility, parse_force};
+use crate::analysis::subject::runs::{plan_levels, run_levels};
 use crate::analysis::suite::{SuiteRun, SuiteStatistics};
 use crate::model::Method;
 use crate::model::params::echo::g4;
@@ -124,21 +123,26 @@ pub fn report_with(
     work.check("ida", args.suite.long.allow_long, false)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
-    let pairs: Vec<_> = plans
-        .iter()
-        .flat_map(|at| members.iter().zip(at).map(|(m, p)| (&case, m, p)))
-        .collect();
+    let units: Vec<_> = plans.iter().flat_map(|at| at.iter().enumerate()).collect();
+    let failed = |e: crate::analysis::suite::SuiteRunError| usage(e.to_string());
     let whole = || {
         let done = |r: &SuiteRun| progress.add(record_steps(&r.params));
-        run_levels(&case, &members, &plans, &done)
-            .into_iter()
-            .flatten()
-            .collect()
+        let runs = run_levels(&case, &members, &plans, &done).map_err(failed)?;
+        Ok(runs.into_iter().flatten().collect())
     };
     let extra = (&levels, &states);
     let shard = &args.suite.shard;
-    let Some((runs, merged_ms)) =
-        super::shard::suite::runs(shard, "ida", &preset.name, &pairs, &members, &extra, whole)?
+    let Some((runs, merged_ms)) = super::shard::suite::runs(
+        shard,
+        "ida",
+        &preset.name,
+        &case,
+        &members,
+        &units,
+        &extra,
+        failed,
+        whole,
+    )?
     else {
         return Ok(());
     };

@@ -1,7 +1,7 @@
 //! `pounding ida --buildings PRESET`: a row of buildings under every record
 //! at every intensity level, the statistics per level, and the lognormal
 //! fragility of each limit state with and without pounding (SPEC §12,
-//! §13). The study is [`crate::analysis::row_ida`]; this module parses,
+//! §13). The study is [`crate::analysis::subject::runs`] with [`crate::analysis::row_limit_state`]; this module parses,
 //! runs and prints.
 
 use std::fmt::Write as _;
@@ -19,10 +19,9 @@ use super::row_suite::{
 use super::study_tables::closing_tables;
 use crate::analysis::ida::{LimitStateFragility, parse_levels};
 use crate::analysis::limit_state::LimitStateError;
-use crate::analysis::row_ida::{fragilities, plan_levels, run_levels};
-use crate::analysis::row_limit_state::{RowLimitParser, RowLimitState};
+use crate::analysis::row_limit_state::{RowLimitParser, RowLimitState, fragilities};
 use crate::analysis::row_suite::{RowSuiteRun, statistics};
-use crate::analysis::shard::row_suite::RowUnit;
+use crate::analysis::subject::runs::{plan_levels, run_levels};
 use crate::analysis::suite::SuiteStatistics;
 use crate::model::buildings::Row;
 use crate::model::params::echo::g4;
@@ -141,11 +140,11 @@ pub fn report_with(
     let progress = Progress::start(&work);
     let start = Instant::now();
     // The units level by level, each in suite order.
-    let units: Vec<RowUnit> = plans
+    let units: Vec<_> = plans
         .iter()
-        .flat_map(|level| level.iter().copied().enumerate())
+        .flat_map(|level| level.iter().enumerate())
         .collect();
-    let Some((flat, merged_ms)) = super::shard::row_suite::runs(
+    let Some((flat, merged_ms)) = super::shard::suite::runs(
         args.study.shard,
         "ida",
         args.study.buildings,

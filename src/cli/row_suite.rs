@@ -21,10 +21,10 @@ use super::records::members;
 use super::shard::ShardArgs;
 use super::study_tables::{clip, over_suite_table};
 use crate::analysis::row_suite::{
-    RowDemands, RowSuiteCase, RowSuiteError, RowSuiteRun, plan, row_intensity, run_suite,
-    statistics,
+    RowDemands, RowSuiteCase, RowSuiteError, RowSuiteRun, row_intensity, statistics,
 };
-use crate::analysis::shard::row_suite::{RowUnit, record_seconds};
+use crate::analysis::subject::row::record_seconds;
+use crate::analysis::subject::runs::{plan, run_suite};
 use crate::analysis::suite::{Scaling, SuiteStatistics};
 use crate::model::buildings::Row;
 use crate::model::buildings::matrices::periods;
@@ -173,8 +173,8 @@ pub fn run(args: &RowStudyArgs, command: &str) -> Result<Option<RowRan>, CliErro
     work.check(&format!("{command} --buildings"), args.allow_long, true)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
-    let units: Vec<RowUnit> = scales.iter().copied().enumerate().collect();
-    let Some((runs, merged_ms)) = super::shard::row_suite::runs(
+    let units: Vec<_> = scales.iter().enumerate().collect();
+    let Some((runs, merged_ms)) = super::shard::suite::runs(
         args.shard,
         command,
         args.buildings,
@@ -185,7 +185,7 @@ pub fn run(args: &RowStudyArgs, command: &str) -> Result<Option<RowRan>, CliErro
         failed,
         || {
             let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
-            run_suite(&case.row, &members, &scales, &done).map_err(failed)
+            run_suite(&case, &members, &scales, &done).map_err(failed)
         },
     )?
     else {

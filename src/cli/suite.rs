@@ -19,9 +19,8 @@ use super::records::members;
 use super::row_suite::RowStudyArgs;
 use super::study_tables::{clip, over_suite_table};
 use crate::analysis::demands::{DemandsSi, Scales};
-use crate::analysis::suite::{
-    MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteStatistics, plan, run_suite,
-};
+use crate::analysis::subject::runs::{plan, run_suite};
+use crate::analysis::suite::{MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteStatistics};
 use crate::model::intensity::IntensityMeasure;
 use crate::model::physical::G;
 use crate::model::{Method, Params};
@@ -273,22 +272,22 @@ pub fn run_or_shard(args: &SuiteArgs, what: &str) -> Result<Option<Ran>, CliErro
     work.check(what, args.long.allow_long, false)?;
     let progress = Progress::start(&work);
     let start = Instant::now();
-    let pairs: Vec<_> = members
-        .iter()
-        .zip(&plans)
-        .map(|(m, p)| (&case, m, p))
-        .collect();
+    let units: Vec<_> = plans.iter().enumerate().collect();
+    let failed = |e: crate::analysis::suite::SuiteRunError| usage(e.to_string());
     let Some((runs, merged_ms)) = super::shard::suite::runs(
         &args.shard,
         what,
         &preset.name,
-        &pairs,
+        &case,
         &members,
+        &units,
         &(),
+        failed,
         || {
             run_suite(&case, &members, &plans, &|r: &SuiteRun| {
                 progress.add(record_steps(&r.params))
             })
+            .map_err(failed)
         },
     )?
     else {

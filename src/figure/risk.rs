@@ -16,11 +16,12 @@
 //!   preset's gap and the code rules on the median peaks.
 
 use crate::analysis::fragility::{self, Fragility, LevelCount, describe};
-use crate::analysis::ida::{LimitStateFragility, fragilities, plan_levels, run_levels};
+use crate::analysis::ida::{LimitStateFragility, fragilities};
 use crate::analysis::limit_state::LimitState;
 use crate::analysis::separation::{self, RecordGap, SeparationStudy, probability_of_pounding};
 use crate::analysis::statistics::Summary;
-use crate::analysis::suite::{SuiteCase, SuiteRun, plan, run_suite};
+use crate::analysis::subject::runs::{plan, plan_levels, run_levels, run_suite};
+use crate::analysis::suite::{SuiteCase, SuiteRun};
 use crate::model::intensity::IntensityMeasure;
 use crate::model::params::echo::g4;
 use crate::model::suite::SuiteMember;
@@ -79,7 +80,8 @@ fn ida_runs(study: &SuiteStudy) -> Result<Vec<Vec<SuiteRun>>, FigureError> {
     }
     let plans = plan_levels(&study.case, &study.members, &study.levels)
         .map_err(|e| FigureError::Input(e.to_string()))?;
-    let runs = run_levels(&study.case, &study.members, &plans, &|_: &SuiteRun| {});
+    let runs = run_levels(&study.case, &study.members, &plans, &|_: &SuiteRun| {})
+        .map_err(|e| FigureError::Input(e.to_string()))?;
     match runs.iter().flatten().find_map(run_error) {
         Some(e) => Err(e),
         None => Ok(runs),
@@ -421,7 +423,8 @@ fn step_curve(gaps: &[f64], x_max: f64) -> Vec<(f64, f64)> {
 /// rules on the median peaks.
 pub fn separation_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
     let plans = plan(&study.case, &study.members).map_err(|e| FigureError::Input(e.to_string()))?;
-    let runs = run_suite(&study.case, &study.members, &plans, &|_: &SuiteRun| {});
+    let runs = run_suite(&study.case, &study.members, &plans, &|_: &SuiteRun| {})
+        .map_err(|e| FigureError::Input(e.to_string()))?;
     if let Some(e) = runs.iter().find_map(run_error) {
         return Err(e);
     }

@@ -1,7 +1,7 @@
 //! Figures of a suite study on a row of buildings (SPEC §12, §13): the IDA
 //! curves of each building's storey drift ratio, the fragility curves of
 //! the row's limit states and each joint's separation. The runs and the
-//! fits are [`crate::analysis::row_ida`]'s and
+//! fits are [`crate::analysis::subject::runs`]' and
 //! [`crate::analysis::row_separation`]'s, the drawing [`super::risk`]'s, so
 //! a row's figures read as the pair's do.
 //!
@@ -17,10 +17,10 @@
 //!   curve with its lognormal fit, the gap at each probability, the
 //!   joint's gap and the code rules on the median peaks of its paired floors.
 
-use crate::analysis::row_ida::{fragilities, plan_levels, run_levels};
-use crate::analysis::row_limit_state::RowLimitState;
+use crate::analysis::row_limit_state::{RowLimitState, fragilities};
 use crate::analysis::row_separation::joint_separations;
-use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun, plan, run_suite};
+use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun};
+use crate::analysis::subject::runs::{plan, plan_levels, run_levels, run_suite};
 use crate::model::buildings::matrices::periods;
 use crate::model::params::echo::g4;
 use crate::model::suite::SuiteMember;
@@ -166,7 +166,7 @@ pub fn row_separation_figure(study: &RowSuiteStudy) -> Result<Figure, FigureErro
     let row = &study.case.row;
     let scales =
         plan(&study.case, &study.members).map_err(|e| FigureError::Input(e.to_string()))?;
-    let runs = run_suite(row, &study.members, &scales, &|_: &RowSuiteRun| {})
+    let runs = run_suite(&study.case, &study.members, &scales, &|_: &RowSuiteRun| {})
         .map_err(|e| FigureError::Run(e.to_string()))?;
     let joints = joint_separations(row, &runs, &study.probabilities);
     let panels = joints

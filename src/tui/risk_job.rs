@@ -10,8 +10,7 @@ use std::cell::RefCell;
 
 use super::physical::Base;
 use crate::analysis::fragility::bridging_levels;
-use crate::analysis::risk::{RiskPicture, risk};
-use crate::analysis::row_risk::{self, RowRiskCase};
+use crate::analysis::risk::{RiskPicture, RowRiskCase, risk, row_risk};
 use crate::analysis::suite::{Scaling, SuiteCase};
 use crate::model::buildings::Row;
 use crate::model::buildings::matrices::periods;
@@ -219,7 +218,7 @@ pub fn run_risk(spec: &RiskSpec, current: &dyn Fn() -> bool, send: &dyn Fn(RiskO
             let design = spec.design_level;
             match &spec.row {
                 Some(row) => {
-                    row_risk::risk(row, members, design, levels, current).map_err(|e| e.to_string())
+                    row_risk(row, members, design, levels, current).map_err(|e| e.to_string())
                 }
                 None => risk(&case, members, design, levels, current).map_err(|e| e.to_string()),
             }

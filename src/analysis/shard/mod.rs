@@ -27,7 +27,6 @@ pub mod map;
 pub mod merge;
 pub mod part;
 pub mod partition;
-pub mod row_suite;
 pub mod spec;
 pub mod spectrum;
 pub mod suite;

@@ -1,58 +1,39 @@
-//! Suites as shards (`suite`, `ida`, `map --suite`): their units are runs
-//! of one record under one plan (a record, a (level, record) pair) or, for
-//! a suite map, cells of every record. A part carries each record's two
-//! runs (with and without contact), from which the row is rebuilt as the
-//! unsharded suite builds it.
+//! Suites as shards (`suite`, `ida`, `map --suite`), for the pair and for a
+//! row alike ([`Subject`]): a unit is one record's runs under one plan (a
+//! record, a (level, record) pair) or, for a suite map, cells of every
+//! record. A part carries each unit's runs with contact and with every
+//! joint open ([`Subject::runs`]), from which the record's result is
+//! rebuilt as the unsharded suite builds it ([`Subject::record`]).
 //!
-//! The fingerprint of a suite study covers the records themselves: each
-//! one's name, scale, sample interval and every sample, so that a record
-//! file edited between the shards and the merge is caught.
+//! The fingerprint of a suite study covers the subject as resolved, the
+//! records themselves (each one's name, scale, sample interval and every
+//! sample, so that a record file edited between the shards and the merge is
+//! caught) and every unit's plan.
 
 use rayon::prelude::*;
-use serde::{Deserialize, Serialize};
 
 use super::fingerprint::Fingerprint;
-use crate::analysis::gap::free_params;
-use crate::analysis::suite::{MemberPlan, SuiteCase, SuiteRun, member_run, run_member};
-use crate::analysis::work;
+use crate::analysis::subject::Subject;
 use crate::model::suite::SuiteMember;
-use crate::solver::RunResult;
 
-/// What a part carries of one record's run.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct MemberRuns {
-    pub result: RunResult,
-    pub free: RunResult,
-}
+/// One unit: a record (an index into the suite) and its plan.
+pub type Unit<'a, P> = (usize, &'a P);
 
-/// Estimated work of one planned record: its run, and its run without
-/// contact (exact method) where it has a finite gap.
-pub fn member_work(plan: &MemberPlan) -> f64 {
-    let p = &plan.params;
-    let free = if p.pounding() {
-        work::free_run(&free_params(p))
-    } else {
-        0.0
-    };
-    work::pounding_run(p).max(work::free_run(p)) + free
-}
-
-/// The fingerprint of a suite study `command`: the preset, the case, every
-/// record's samples, every plan and whatever else the command reports
-/// from its request (`extra`: axes, levels, limit states).
-pub fn fingerprint(
+/// The fingerprint of a suite study `command` on the subject named `name`:
+/// the subject, every record's samples, every unit and whatever else the
+/// command reports from its request (`extra`: axes, levels, limit states).
+pub fn fingerprint<S: Subject>(
     command: &str,
-    preset: &str,
-    case: &SuiteCase,
+    name: &str,
+    subject: &S,
     members: &[SuiteMember],
-    plans: &[&MemberPlan],
+    units: &[Unit<S::Plan>],
     extra: &impl std::fmt::Debug,
 ) -> Fingerprint {
     let mut f = Fingerprint::new(command);
-    f.add_str(preset);
-    f.add_debug(case);
+    subject.describe(&mut f, name);
     add_records(&mut f, members);
-    f.add_debug(&plans);
+    f.add_debug(&units);
     f.add_debug(extra);
     f
 }
@@ -67,28 +48,47 @@ pub fn add_records(f: &mut Fingerprint, members: &[SuiteMember]) {
     }
 }
 
-/// One record to run: the case (a suite map's cell), the record, its plan.
-pub type Pair<'a> = (&'a SuiteCase, &'a SuiteMember, &'a MemberPlan);
-
-/// The runs of the pairs `mine` (indices into `pairs`), in parallel, in that order.
-pub fn compute(pairs: &[Pair], mine: &[usize]) -> Vec<MemberRuns> {
-    mine.par_iter()
-        .map(|&i| {
-            let (case, member, plan) = pairs[i];
-            let run = run_member(case, member, plan);
-            MemberRuns {
-                result: run.result,
-                free: run.free,
-            }
-        })
+/// The work of each unit, for the partition.
+pub fn unit_work<S: Subject>(
+    subject: &S,
+    members: &[SuiteMember],
+    units: &[Unit<S::Plan>],
+) -> Vec<f64> {
+    units
+        .iter()
+        .map(|&(j, plan)| subject.work(&members[j], plan))
         .collect()
 }
 
-/// Every pair's row from its runs, in order.
-pub fn rebuild(pairs: &[Pair], runs: Vec<MemberRuns>) -> Vec<SuiteRun> {
-    pairs
+/// The runs of the units `mine` (indices into `units`), in parallel with
+/// one set of caches per worker, in that order; the first failure in that
+/// order.
+pub fn compute<S: Subject>(
+    subject: &S,
+    members: &[SuiteMember],
+    units: &[Unit<S::Plan>],
+    mine: &[usize],
+) -> Result<Vec<S::Runs>, S::Error> {
+    let runs: Vec<_> = mine
+        .par_iter()
+        .map_init(S::Caches::default, |caches, &i| {
+            let (j, plan) = units[i];
+            subject.runs(&members[j], plan, caches)
+        })
+        .collect();
+    runs.into_iter().collect()
+}
+
+/// Every unit's record from its runs, in order.
+pub fn rebuild<S: Subject>(
+    subject: &S,
+    members: &[SuiteMember],
+    units: &[Unit<S::Plan>],
+    runs: Vec<S::Runs>,
+) -> Vec<S::Run> {
+    units
         .iter()
         .zip(runs)
-        .map(|(&(case, member, plan), r)| member_run(case, member, plan, r.result, r.free))
+        .map(|(&(j, plan), r)| subject.record(&members[j], plan, r))
         .collect()
 }

@@ -8,7 +8,6 @@
 
 pub mod gap;
 pub mod map;
-pub mod row_suite;
 pub mod spectrum;
 pub mod suite;
 

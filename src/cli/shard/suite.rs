@@ -1,40 +1,46 @@
-//! `suite`, `ida` and `map --suite` with `--shard`: their sweeps through
-//! [`super::ShardArgs::sweep`].
+//! `suite`, `ida` and `map --suite` with `--shard`, on the pair or a row:
+//! their sweeps through [`super::ShardArgs::try_sweep`].
 
 use super::{Results, ShardArgs, Sweep};
-use crate::analysis::shard::suite::{Pair, compute, fingerprint, member_work, rebuild};
-use crate::analysis::suite::{MemberPlan, SuiteCase, SuiteRun};
+use crate::analysis::shard::Fingerprint;
+use crate::analysis::shard::suite::{Unit, add_records, compute, fingerprint, rebuild, unit_work};
+use crate::analysis::subject::Subject;
+use crate::analysis::subject::pair::member_work;
+use crate::analysis::suite::{MemberPlan, SuiteCase};
 use crate::analysis::suite_map::{SuiteMapCell, compute_listed};
 use crate::cli::CliError;
 use crate::model::suite::SuiteMember;
 
-/// Every pair's row, with the merged parts' time in ms when they come from
-/// parts; `None` when a shard's part was written. `extra` is what else the
-/// command reports from its request (levels, limit states).
-pub fn runs(
+/// Every unit's record, with the merged parts' time in ms when they come
+/// from parts; `None` when a shard's part was written. `name` names the
+/// subject (the preset or the row), `extra` is what else the command
+/// reports from its request (levels, limit states); `failed` turns a run's
+/// failure into the command's error.
+#[allow(clippy::too_many_arguments)]
+pub fn runs<S: Subject>(
     shard: &ShardArgs,
     command: &str,
-    preset: &str,
-    pairs: &[Pair],
+    name: &str,
+    subject: &S,
     members: &[SuiteMember],
+    units: &[Unit<S::Plan>],
     extra: &impl std::fmt::Debug,
-    whole: impl FnOnce() -> Vec<SuiteRun>,
-) -> Results<Vec<SuiteRun>> {
+    failed: impl Fn(S::Error) -> CliError,
+    whole: impl FnOnce() -> Result<Vec<S::Run>, CliError>,
+) -> Results<Vec<S::Run>> {
     shard.check()?;
     if !shard.active() {
-        return Ok(Some((whole(), None)));
+        return Ok(Some((whole()?, None)));
     }
-    let Some(&(case, _, _)) = pairs.first() else {
-        return Ok(Some((whole(), None)));
-    };
-    let plans: Vec<&MemberPlan> = pairs.iter().map(|p| p.2).collect();
-    let fp = fingerprint(command, preset, case, members, &plans, extra);
-    let work: Vec<f64> = plans.iter().map(|p| member_work(p)).collect();
+    let fp = fingerprint(command, name, subject, members, units, extra);
+    let work = unit_work(subject, members, units);
     Ok(
-        match shard.sweep(command, fp, &work, |mine| compute(pairs, mine))? {
-            Sweep::Whole => Some((whole(), None)),
+        match shard.try_sweep(command, fp, &work, |mine| {
+            compute(subject, members, units, mine).map_err(&failed)
+        })? {
+            Sweep::Whole => Some((whole()?, None)),
             Sweep::Done => None,
-            Sweep::Merged(runs, ms) => Some((rebuild(pairs, runs), Some(ms))),
+            Sweep::Merged(runs, ms) => Some((rebuild(subject, members, units, runs), Some(ms))),
         },
     )
 }
@@ -55,7 +61,11 @@ pub fn map_cells(
         return Ok(Sweep::Whole);
     }
     let all: Vec<&MemberPlan> = plans.iter().flatten().collect();
-    let fp = fingerprint("map-suite", preset, case, members, &all, &(extra, cells));
+    let mut fp = Fingerprint::new("map-suite");
+    case.describe(&mut fp, preset);
+    add_records(&mut fp, members);
+    fp.add_debug(&all);
+    fp.add_debug(&(extra, cells));
     let work: Vec<f64> = plans
         .iter()
         .map(|cell| cell.iter().map(member_work).sum())
