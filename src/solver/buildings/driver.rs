@@ -24,6 +24,7 @@
 //! peak, so its end is all that is recorded.
 
 use std::collections::HashSet;
+use std::time::Instant;
 
 use crate::model::buildings::contact::pair_law;
 use crate::model::buildings::ground::Piece;
@@ -38,6 +39,7 @@ use super::hermite::range;
 use super::layout::Layout;
 use super::peaks::{Envelope, raise};
 use super::poly;
+use super::profile::{Cause, RowProfile};
 use super::propagator::{Propagator, apply};
 use super::result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
@@ -59,6 +61,9 @@ pub struct RowOptions {
     /// Keep every floor pair's contact force over time
     /// ([`super::result::ForceHistory`]), for drawing the impacts.
     pub forces: bool,
+    /// Measure the time in map steps, series steps and matrix exponentials
+    /// ([`super::profile::RowProfile`]); the counts are always kept.
+    pub profile: bool,
 }
 
 impl RowOptions {
@@ -70,6 +75,7 @@ impl RowOptions {
             energy: false,
             trace: false,
             forces: false,
+            profile: false,
         }
     }
 }
@@ -151,8 +157,9 @@ struct Run<'a> {
     envelope: Envelope,
     pairs: Vec<PairResult>,
     propagator: &'a mut Propagator,
-    /// Maps made and used before this run (a cache kept across runs).
-    counts_before: (usize, usize),
+    /// Maps made and used before this run (a cache kept across runs), and
+    /// the seconds spent making them.
+    counts_before: (usize, usize, f64),
     series_steps: usize,
     configurations: HashSet<Vec<u8>>,
     /// The branches of the current sub-step ([`Config::key_into`]), and the
@@ -173,6 +180,9 @@ struct Run<'a> {
     forces: Option<ForceHistory>,
     /// Set at a collapse, where the run stops.
     collapse: Option<Collapse>,
+    profile: RowProfile,
+    /// Whether to measure times into `profile`.
+    timed: bool,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -211,7 +221,7 @@ pub fn run_row_cached(
     cache: &mut MapCache,
 ) -> Result<RowRun, RowError> {
     let propagator = cache.of(row);
-    let counts_before = (propagator.made, propagator.used);
+    let counts_before = (propagator.made, propagator.used, propagator.seconds);
     let layout = Layout::of(row);
     let n = layout.dofs;
     let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
@@ -262,6 +272,8 @@ pub fn run_row_cached(
             pairs: vec![Vec::new(); n_pairs],
         }),
         collapse: None,
+        profile: RowProfile::default(),
+        timed: options.profile,
     };
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
@@ -278,8 +290,27 @@ pub fn run_row_cached(
             } else {
                 piece.t0 + (j + 1) as f64 * h
             };
-            if run.energy.is_some() || run.config.any_contact() || !run.quiet_step(&piece, h) {
+            let clock = run.timed.then(Instant::now);
+            let cause = if run.energy.is_some() {
+                Some(Cause::Energy)
+            } else if run.config.any_contact() {
+                Some(Cause::Contact)
+            } else {
+                run.quiet_step(&piece, h).err()
+            };
+            let mapped = run.timed.then(Instant::now);
+            if let Some(cause) = cause {
+                let before = run.series_steps;
                 run.careful(&piece, tb)?;
+                run.profile.careful.add(cause, 1);
+                run.profile.series.add(cause, run.series_steps - before);
+            } else {
+                run.profile.map_steps += 1;
+            }
+            if let (Some(c), Some(m)) = (clock, mapped) {
+                let p = &mut run.profile;
+                p.map_seconds += (m - c).as_secs_f64();
+                p.series_seconds += m.elapsed().as_secs_f64();
             }
             if run.collapse.is_some() {
                 if let Some(trace) = trace.as_mut() {
@@ -305,7 +336,7 @@ impl Run<'_> {
     /// bound), no storey reaches yield or unloads, no floor pair closes,
     /// and no quantity can pass its running peak inside unless it is
     /// monotone there (then its extremes are the ends, which are recorded).
-    fn quiet_step(&mut self, piece: &Piece, h: f64) -> bool {
+    fn quiet_step(&mut self, piece: &Piece, h: f64) -> Result<(), Cause> {
         let n = self.layout.dofs;
         let (a0, r0) = ground_at(piece, self.t);
         let (a1, r1) = ground_at(piece, self.t + h);
@@ -361,19 +392,12 @@ impl Run<'_> {
         let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
         for (k, &d) in self.layout.gaps.iter().enumerate() {
             if values(base + k, ends(base + k)).1 >= d {
-                return false;
+                return Err(Cause::Onset);
             }
         }
         let env = &self.envelope;
-        for i in 0..n {
-            if !clear(i, env.displacement[i])
-                || !clear(n + i, env.velocity[i])
-                || !clear(2 * n + i, env.acceleration[i])
-            {
-                return false;
-            }
-        }
         let base = 3 * n;
+        let mut peak = false;
         for (k, s) in self.layout.storeys.iter().enumerate() {
             let q = ends(base + k);
             let (lo, hi) = values(base + k, q);
@@ -382,34 +406,47 @@ impl Run<'_> {
                 let (rlo, rhi) = range(q.0[1], q.0[2], q.1[1], q.1[2], h);
                 (rlo - er, rhi + er)
             };
-            let quiet = match self.config.branch[k] {
+            let (quiet, cause) = match self.config.branch[k] {
                 Branch::Elastic => {
                     let p = self.config.plastic[k];
-                    (lo - p).abs().max((hi - p).abs()) < s.yield_drift
+                    let clear = (lo - p).abs().max((hi - p).abs()) < s.yield_drift;
+                    (clear, Cause::Yield)
                 }
-                Branch::Plus => rate().0 > 0.0,
-                Branch::Minus => rate().1 < 0.0,
+                Branch::Plus => (rate().0 > 0.0, Cause::Unload),
+                Branch::Minus => (rate().1 < 0.0, Cause::Unload),
             };
+            if !quiet {
+                return Err(cause);
+            }
             let extreme = lo.abs().max(hi.abs());
-            if !quiet
-                || extreme >= s.collapse_drift
-                || (extreme > env.drift[k] && !monotone(base + k, q))
+            if extreme >= s.collapse_drift {
+                return Err(Cause::Collapse);
+            }
+            peak = peak || (extreme > env.drift[k] && !monotone(base + k, q));
+        }
+        if peak {
+            return Err(Cause::Peak);
+        }
+        for i in 0..n {
+            if !clear(i, env.displacement[i])
+                || !clear(n + i, env.velocity[i])
+                || !clear(2 * n + i, env.acceleration[i])
             {
-                return false;
+                return Err(Cause::Peak);
             }
         }
         let base = base + self.layout.storeys.len();
         for k in 0..self.layout.facing.len() {
             let q = ends(base + k);
             if values(base + k, q).1 > env.relative[k] && !monotone(base + k, q) {
-                return false;
+                return Err(Cause::Peak);
             }
         }
         self.u = u1;
         self.v = v1;
         self.record_point(&end.rates[2], a1);
         self.stack = Some(((a1, r1, sigma), end));
-        true
+        Ok(())
     }
 
     /// Peaks at the start: the floors' initial velocity, and the
@@ -766,6 +803,15 @@ impl Run<'_> {
     }
 
     fn apply(&mut self, event: Event) {
+        let events = &mut self.profile.events;
+        match &event {
+            Event::Yield(..) => events.yields += 1,
+            Event::Unload(_) => events.unloads += 1,
+            Event::Onset(_) => events.onsets += 1,
+            Event::Separation(_) => events.separations += 1,
+            Event::Turn => events.turns += 1,
+            Event::Collapse(_) => events.collapses += 1,
+        }
         match event {
             Event::Yield(k, branch) => self.config.branch[k] = branch,
             Event::Unload(k) => {
@@ -818,7 +864,11 @@ impl Run<'_> {
         self.system = System::of(&self.layout, &self.config);
     }
 
-    fn finish(self, duration: f64) -> RowRun {
+    fn finish(mut self, duration: f64) -> RowRun {
+        self.profile.maps_made = self.propagator.made - self.counts_before.0;
+        if self.timed {
+            self.profile.exponential_seconds = self.propagator.seconds - self.counts_before.2;
+        }
         let mut floors = Vec::new();
         let mut k = 0;
         for (b, &o) in self.row.buildings.iter().zip(&self.row.offsets()) {
@@ -867,6 +917,7 @@ impl Run<'_> {
             trace: None,
             forces: self.forces,
             collapse: self.collapse,
+            profile: self.profile,
         }
     }
 }
