@@ -45,6 +45,9 @@ use super::result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, 
 use super::system::System;
 use super::taylor::{ORDER, Series};
 
+#[cfg(test)]
+mod quiet_check;
+
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RowOptions {
@@ -442,6 +445,8 @@ impl Run<'_> {
                 return Err(Cause::Peak);
             }
         }
+        #[cfg(test)]
+        self.check_quiet(piece, h, (&u1, &v1));
         self.u = u1;
         self.v = v1;
         self.record_point(&end.rates[2], a1);
