@@ -304,7 +304,8 @@ pub fn run_row_cached(
             let mapped = run.timed.then(Instant::now);
             if let Some(cause) = cause {
                 let before = run.series_steps;
-                run.careful(&piece, tb)?;
+                // Only a peak may rise: the bounds cleared every event.
+                run.careful(&piece, tb, cause != Cause::Peak)?;
                 run.profile.careful.add(cause, 1);
                 run.profile.series.add(cause, run.series_steps - before);
             } else {
@@ -479,8 +480,10 @@ impl Run<'_> {
         }
     }
 
-    /// The sub-step to `tb` by Taylor steps from event to event.
-    fn careful(&mut self, piece: &Piece, tb: f64) -> Result<(), RowError> {
+    /// The sub-step to `tb` by Taylor steps from event to event; with
+    /// `events` false, the quiet test has cleared every event function over
+    /// it, and the steps only locate peaks.
+    fn careful(&mut self, piece: &Piece, tb: f64, events: bool) -> Result<(), RowError> {
         self.stack = None;
         let n = self.layout.dofs;
         let mut un = vec![0.0; n];
@@ -505,7 +508,9 @@ impl Run<'_> {
             };
             let mut end = rem.min(series.radius);
             let mut event = None;
-            self.find_events(&series, &mut end, &mut event);
+            if events {
+                self.find_events(&series, &mut end, &mut event);
+            }
             if let (Some((y0, f0, step)), Some((_, g))) = (&mut rk, &event)
                 && end < step.h
             {
