@@ -85,27 +85,39 @@ impl Stack {
         (u, v): (&[f64], &[f64]),
         (a, rate, sigma): (f64, f64, f64),
     ) -> Stack {
+        let mut stack = Stack::default();
+        stack.set(system, (u, v), (a, rate, sigma));
+        stack
+    }
+
+    /// [`Stack::at`] written over this stack, its vectors reused.
+    pub fn set(
+        &mut self,
+        system: &System,
+        (u, v): (&[f64], &[f64]),
+        (a, rate, sigma): (f64, f64, f64),
+    ) {
         let n = u.len();
-        let ground = [a, rate, sigma * a];
+        self.ground = [a, rate, sigma * a];
         // On the nonzeros of M⁻¹K and M⁻¹C ([`System::row`]).
-        let next = |x: &[f64], y: &[f64], g: f64, load: bool| -> Vec<f64> {
-            (0..n)
-                .map(|i| {
-                    let mut s = if load { system.load[i] - g } else { -g };
-                    for &(j, kij, cij) in system.row(i) {
-                        s -= kij * x[j] + cij * y[j];
-                    }
-                    s
-                })
-                .collect()
+        let next = |x: &[f64], y: &[f64], g: f64, load: bool, out: &mut Vec<f64>| {
+            out.clear();
+            out.extend((0..n).map(|i| {
+                let mut s = if load { system.load[i] - g } else { -g };
+                for &(j, kij, cij) in system.row(i) {
+                    s -= kij * x[j] + cij * y[j];
+                }
+                s
+            }));
         };
-        let acc = next(u, v, a, true);
-        let jerk = next(v, &acc, rate, false);
-        let snap = next(&acc, &jerk, sigma * a, false);
-        Stack {
-            rates: [u.to_vec(), v.to_vec(), acc, jerk, snap],
-            ground,
-        }
+        let [x, y, acc, jerk, snap] = &mut self.rates;
+        x.clear();
+        x.extend_from_slice(u);
+        y.clear();
+        y.extend_from_slice(v);
+        next(u, v, a, true, acc);
+        next(v, acc, rate, false, jerk);
+        next(acc, jerk, sigma * a, false, snap);
     }
 
     /// q, q̇, q̈ of `w`.

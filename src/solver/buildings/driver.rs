@@ -186,6 +186,9 @@ struct Run<'a> {
     profile: RowProfile,
     /// Whether to measure times into `profile`.
     timed: bool,
+    /// Buffers of the map steps, reused: the next (u, u̇) and spare stacks.
+    next: (Vec<f64>, Vec<f64>),
+    spare: Vec<Stack>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -277,6 +280,8 @@ pub fn run_row_cached(
         collapse: None,
         profile: RowProfile::default(),
         timed: options.profile,
+        next: (Vec::new(), Vec::new()),
+        spare: Vec::new(),
     };
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
@@ -356,8 +361,9 @@ impl Run<'_> {
             self.layout.rate,
             &self.watch,
         );
-        let mut u1 = vec![0.0; n];
-        let mut v1 = vec![0.0; n];
+        let (mut u1, mut v1) = std::mem::take(&mut self.next);
+        u1.resize(n, 0.0);
+        v1.resize(n, 0.0);
         apply(
             map,
             (&self.u, &self.v),
@@ -370,9 +376,15 @@ impl Run<'_> {
         // stack is kept while the state, ground and σ are the same.
         let start = match self.stack.take() {
             Some((g, stack)) if g == (a0, r0, sigma) => stack,
-            _ => Stack::at(&self.system, (&self.u, &self.v), (a0, r0, sigma)),
+            other => {
+                let mut stack = other.map(|(_, s)| s).or_else(|| self.spare.pop());
+                let stack = stack.get_or_insert_default();
+                stack.set(&self.system, (&self.u, &self.v), (a0, r0, sigma));
+                std::mem::take(stack)
+            }
         };
-        let end = Stack::at(&self.system, (&u1, &v1), (a1, r1, sigma));
+        let mut end = self.spare.pop().unwrap_or_default();
+        end.set(&self.system, (&u1, &v1), (a1, r1, sigma));
         let size = bounds.size((&self.u, &self.v), (a0, r0), &self.system.load);
         let ends = |k: usize| (start.of(&self.watch[k]), end.of(&self.watch[k]));
         // The rigorous range of q of quantity k over the sub-step.
@@ -393,63 +405,74 @@ impl Run<'_> {
             let (lo, hi) = values(k, q);
             lo.abs().max(hi.abs()) <= peak || monotone(k, q)
         };
-        let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
-        for (k, &d) in self.layout.gaps.iter().enumerate() {
-            if values(base + k, ends(base + k)).1 >= d {
-                return Err(Cause::Onset);
-            }
-        }
-        let env = &self.envelope;
-        let base = 3 * n;
-        let mut peak = false;
-        for (k, s) in self.layout.storeys.iter().enumerate() {
-            let q = ends(base + k);
-            let (lo, hi) = values(base + k, q);
-            let rate = || {
-                let er = bounds.errors(base + k, size).1;
-                let (rlo, rhi) = range(q.0[1], q.0[2], q.1[1], q.1[2], h);
-                (rlo - er, rhi + er)
-            };
-            let (quiet, cause) = match self.config.branch[k] {
-                Branch::Elastic => {
-                    let p = self.config.plastic[k];
-                    let clear = (lo - p).abs().max((hi - p).abs()) < s.yield_drift;
-                    (clear, Cause::Yield)
+        let verdict = (|| {
+            let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
+            for (k, &d) in self.layout.gaps.iter().enumerate() {
+                if values(base + k, ends(base + k)).1 >= d {
+                    return Err(Cause::Onset);
                 }
-                Branch::Plus => (rate().0 > 0.0, Cause::Unload),
-                Branch::Minus => (rate().1 < 0.0, Cause::Unload),
-            };
-            if !quiet {
-                return Err(cause);
             }
-            let extreme = lo.abs().max(hi.abs());
-            if extreme >= s.collapse_drift {
-                return Err(Cause::Collapse);
+            let env = &self.envelope;
+            let base = 3 * n;
+            let mut peak = false;
+            for (k, s) in self.layout.storeys.iter().enumerate() {
+                let q = ends(base + k);
+                let (lo, hi) = values(base + k, q);
+                let rate = || {
+                    let er = bounds.errors(base + k, size).1;
+                    let (rlo, rhi) = range(q.0[1], q.0[2], q.1[1], q.1[2], h);
+                    (rlo - er, rhi + er)
+                };
+                let (quiet, cause) = match self.config.branch[k] {
+                    Branch::Elastic => {
+                        let p = self.config.plastic[k];
+                        let clear = (lo - p).abs().max((hi - p).abs()) < s.yield_drift;
+                        (clear, Cause::Yield)
+                    }
+                    Branch::Plus => (rate().0 > 0.0, Cause::Unload),
+                    Branch::Minus => (rate().1 < 0.0, Cause::Unload),
+                };
+                if !quiet {
+                    return Err(cause);
+                }
+                let extreme = lo.abs().max(hi.abs());
+                if extreme >= s.collapse_drift {
+                    return Err(Cause::Collapse);
+                }
+                peak = peak || (extreme > env.drift[k] && !monotone(base + k, q));
             }
-            peak = peak || (extreme > env.drift[k] && !monotone(base + k, q));
-        }
-        if peak {
-            return Err(Cause::Peak);
-        }
-        for i in 0..n {
-            if !clear(i, env.displacement[i])
-                || !clear(n + i, env.velocity[i])
-                || !clear(2 * n + i, env.acceleration[i])
-            {
+            if peak {
                 return Err(Cause::Peak);
             }
-        }
-        let base = base + self.layout.storeys.len();
-        for k in 0..self.layout.facing.len() {
-            let q = ends(base + k);
-            if values(base + k, q).1 > env.relative[k] && !monotone(base + k, q) {
-                return Err(Cause::Peak);
+            for i in 0..n {
+                if !clear(i, env.displacement[i])
+                    || !clear(n + i, env.velocity[i])
+                    || !clear(2 * n + i, env.acceleration[i])
+                {
+                    return Err(Cause::Peak);
+                }
             }
+            let base = base + self.layout.storeys.len();
+            for k in 0..self.layout.facing.len() {
+                let q = ends(base + k);
+                if values(base + k, q).1 > env.relative[k] && !monotone(base + k, q) {
+                    return Err(Cause::Peak);
+                }
+            }
+            Ok(())
+        })();
+        if let Err(cause) = verdict {
+            self.spare.extend([start, end]);
+            self.next = (u1, v1);
+            return Err(cause);
         }
         #[cfg(test)]
         self.check_quiet(piece, h, (&u1, &v1));
-        self.u = u1;
-        self.v = v1;
+        self.spare.push(start);
+        self.next = (
+            std::mem::replace(&mut self.u, u1),
+            std::mem::replace(&mut self.v, v1),
+        );
         self.record_point(&end.rates[2], a1);
         self.stack = Some(((a1, r1, sigma), end));
         Ok(())
@@ -484,7 +507,9 @@ impl Run<'_> {
     /// `events` false, the quiet test has cleared every event function over
     /// it, and the steps only locate peaks.
     fn careful(&mut self, piece: &Piece, tb: f64, events: bool) -> Result<(), RowError> {
-        self.stack = None;
+        if let Some((_, stack)) = self.stack.take() {
+            self.spare.push(stack);
+        }
         let n = self.layout.dofs;
         let mut un = vec![0.0; n];
         let mut vn = vec![0.0; n];
