@@ -5,6 +5,7 @@
 //! contact. `cargo bench --bench row_speed`; medians of repeated runs
 //! after a warm-up.
 
+use pounding::accuracy::row_floor::RowFloor;
 use pounding::accuracy::row_speed::row_speed;
 use pounding::model::ContactModel;
 use pounding::model::buildings::matrices::default_tail;
@@ -16,8 +17,11 @@ fn main() {
     let record = Simulation::synthetic("synthetic:2000", 2000).expect("a record");
     let base = buildings::load("block-and-frame").expect("a shipped row");
     let duration = Ground::from_record(&record, 1.0).end() + default_tail(&base);
+    let floor = RowFloor::new(&base, &Ground::from_record(&record, 1.0), duration);
     println!(
-        "block-and-frame synthetic:2000, {duration:.3} s; causes: {}",
+        "block-and-frame synthetic:2000, {duration:.3} s; floor: {} intervals of {} states; causes: {}",
+        floor.intervals(),
+        floor.states(),
         CAUSES.join(", ")
     );
     println!(

@@ -16,10 +16,14 @@
 //! ```
 //!
 //! A piece of another length or with σ ≠ 0 (a sine, a record's last short
-//! interval) takes its own map, made before the pass is timed.
+//! interval) takes its own map, made before the pass is timed. A line
+//! longer than the record's interval (the free tail after a record) is cut
+//! into equal parts no longer than it, as [`super::floor`]'s pass takes
+//! its tail at the record's own interval.
 
 use nalgebra::DMatrix;
 
+use crate::model::buildings::ground::Piece;
 use crate::model::buildings::{Ground, Row};
 use crate::solver::buildings::config::Config;
 use crate::solver::buildings::layout::Layout;
@@ -55,7 +59,29 @@ impl RowFloor {
         let system = System::of(&layout, &Config::at_rest(layout.storeys.len(), 0));
         let mut maps: Vec<DenseMap> = Vec::new();
         let mut pieces = Vec::new();
-        for piece in ground.pieces(duration) {
+        let all = ground.pieces(duration);
+        // The record's interval: the shortest piece but the last.
+        let interval = all[..all.len().saturating_sub(1)]
+            .iter()
+            .map(|p| p.length)
+            .fold(f64::INFINITY, f64::min);
+        let cut = all.into_iter().flat_map(|p| {
+            let parts = if p.sigma == 0.0 && p.length > interval {
+                (p.length / interval).ceil() as usize
+            } else {
+                1
+            };
+            let length = p.length / parts as f64;
+            (0..parts).map(move |k| {
+                let s = k as f64 * length;
+                Piece {
+                    length: if parts == 1 { p.length } else { length },
+                    a: p.a + p.rate * s,
+                    ..p
+                }
+            })
+        });
+        for piece in cut {
             if piece.length <= 0.0 {
                 continue;
             }
