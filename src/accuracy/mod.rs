@@ -10,7 +10,9 @@
 //!   invariants each must keep;
 //! - [`random`]: a small seeded generator for the random cases;
 //! - [`floor`] and [`record_speed`]: the exact method under a record against
-//!   the plain Nigam–Jennings pass over its samples (`bench --excitation`).
+//!   the plain Nigam–Jennings pass over its samples (`bench --excitation`);
+//! - [`row_floor`] and [`row_speed`]: a row run against the dense pass of
+//!   its elastic state map over the same pieces, with the run's profile.
 
 pub mod figure_spectra;
 pub mod floor;
@@ -19,6 +21,8 @@ pub mod plot;
 pub mod random;
 pub mod record_speed;
 pub mod row_bench;
+pub mod row_floor;
+pub mod row_speed;
 pub mod stress;
 pub mod timing;
 pub mod work_precision;

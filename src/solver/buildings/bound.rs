@@ -31,6 +31,12 @@
 //! own end values are small), which is what the Hermite estimate alone
 //! cannot see. B is widened by a relative 1e-6 for the round-off of the
 //! exponential and the norms, far above it.
+//!
+//! The rows cᵀ𝒜⁴ and cᵀ𝒜⁵ come from the powers 𝒜⁴, 𝒜⁵ and 𝒜⁶ (four
+//! products), since each c is a unit row or a row of 𝒜 beside one; and the
+//! map itself is the sweep's step to the N-th power, e^{𝒜h} =
+//! D⁻¹(e^{𝒜̃h/N})ᴺD, one product more, so that a configuration costs one
+//! matrix exponential (of the scaled matrix over h/N, of small norm).
 
 use nalgebra::DMatrix;
 
@@ -79,27 +85,39 @@ impl Stack {
         (u, v): (&[f64], &[f64]),
         (a, rate, sigma): (f64, f64, f64),
     ) -> Stack {
+        let mut stack = Stack::default();
+        stack.set(system, (u, v), (a, rate, sigma));
+        stack
+    }
+
+    /// [`Stack::at`] written over this stack, its vectors reused.
+    pub fn set(
+        &mut self,
+        system: &System,
+        (u, v): (&[f64], &[f64]),
+        (a, rate, sigma): (f64, f64, f64),
+    ) {
         let n = u.len();
-        let ground = [a, rate, sigma * a];
+        self.ground = [a, rate, sigma * a];
         // On the nonzeros of M⁻¹K and M⁻¹C ([`System::row`]).
-        let next = |x: &[f64], y: &[f64], g: f64, load: bool| -> Vec<f64> {
-            (0..n)
-                .map(|i| {
-                    let mut s = if load { system.load[i] - g } else { -g };
-                    for &(j, kij, cij) in system.row(i) {
-                        s -= kij * x[j] + cij * y[j];
-                    }
-                    s
-                })
-                .collect()
+        let next = |x: &[f64], y: &[f64], g: f64, load: bool, out: &mut Vec<f64>| {
+            out.clear();
+            out.extend((0..n).map(|i| {
+                let mut s = if load { system.load[i] - g } else { -g };
+                for &(j, kij, cij) in system.row(i) {
+                    s -= kij * x[j] + cij * y[j];
+                }
+                s
+            }));
         };
-        let acc = next(u, v, a, true);
-        let jerk = next(v, &acc, rate, false);
-        let snap = next(&acc, &jerk, sigma * a, false);
-        Stack {
-            rates: [u.to_vec(), v.to_vec(), acc, jerk, snap],
-            ground,
-        }
+        let [x, y, acc, jerk, snap] = &mut self.rates;
+        x.clear();
+        x.extend_from_slice(u);
+        y.clear();
+        y.extend_from_slice(v);
+        next(u, v, a, true, acc);
+        next(v, acc, rate, false, jerk);
+        next(acc, jerk, sigma * a, false, snap);
     }
 
     /// q, q̇, q̈ of `w`.
@@ -118,12 +136,6 @@ impl Stack {
     }
 }
 
-fn row_times(r: &[f64], a: &DMatrix<f64>) -> Vec<f64> {
-    (0..a.ncols())
-        .map(|j| r.iter().enumerate().map(|(i, &x)| x * a[(i, j)]).sum())
-        .collect()
-}
-
 fn inf_norm(a: &DMatrix<f64>) -> f64 {
     a.row_iter()
         .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
@@ -133,7 +145,16 @@ fn inf_norm(a: &DMatrix<f64>) -> f64 {
 impl Bounds {
     /// For the augmented matrix `a` (dofs `n`), over length `h`, with the
     /// scaling rate `s`.
-    pub fn new(a: &DMatrix<f64>, n: usize, h: f64, s: f64, watch: &[Watch]) -> Bounds {
+    ///
+    /// Returns them with the map's rows of (u, u̇), e^{𝒜h} = D⁻¹e^{𝒜̃h}D,
+    /// e^{𝒜̃h} being the N-th power of the sweep's step.
+    pub fn with_map(
+        a: &DMatrix<f64>,
+        n: usize,
+        h: f64,
+        s: f64,
+        watch: &[Watch],
+    ) -> (Bounds, DMatrix<f64>) {
         let d = a.nrows();
         let mut scale = vec![1.0; d];
         for i in 0..n {
@@ -150,6 +171,9 @@ impl Bounds {
             power = &step * &power;
             sweep = sweep.max(inf_norm(&power));
         }
+        // e^{𝒜h} = D⁻¹ (e^{𝒜̃h/N})^N D: the sweep's last power, one product on.
+        let whole = &step * &power;
+        let map = DMatrix::from_fn(2 * n, d, |i, j| whole[(i, j)] * scale[j] / scale[i]);
         let sweep = sweep * (inf_norm(&scaled) * h / GRID as f64).exp() * (1.0 + ROUNDING);
         let factor = h.powi(4) / 384.0 * sweep;
         let scaled_norm = |r: &[f64]| {
@@ -158,36 +182,48 @@ impl Bounds {
                 .map(|(x, s)| (x / s).abs())
                 .sum::<f64>()
         };
+        // cᵀ𝒜⁴ and cᵀ𝒜⁵ of each quantity as rows of 𝒜⁴, 𝒜⁵ and 𝒜⁶: c is a
+        // few unit rows (u_i, u̇_i) or, for ü_i + a_g, row n + i of 𝒜 and the
+        // unit row of a_g, so cᵀ𝒜ᵏ = row n + i of 𝒜ᵏ⁺¹ + row 2n of 𝒜ᵏ.
+        let a2 = a * a;
+        let a4 = &a2 * &a2;
+        let a5 = &a4 * a;
+        let a6 = &a4 * &a2;
         let mut value_error = Vec::with_capacity(watch.len());
         let mut rate_error = Vec::with_capacity(watch.len());
+        let (mut r4, mut r5) = (vec![0.0; d], vec![0.0; d]);
+        let add = |r: &mut [f64], m: &DMatrix<f64>, row: usize, x: f64| {
+            for (j, r) in r.iter_mut().enumerate() {
+                *r += x * m[(row, j)];
+            }
+        };
         for w in watch {
-            let mut c = vec![0.0; d];
+            r4.fill(0.0);
+            r5.fill(0.0);
             for &(i, x) in &w.terms {
                 match w.order {
-                    0 => c[i] += x,
-                    1 => c[n + i] += x,
+                    0 | 1 => {
+                        let row = w.order * n + i;
+                        add(&mut r4, &a4, row, x);
+                        add(&mut r5, &a5, row, x);
+                    }
                     _ => {
-                        // ü_i + a_g = (row n + i of 𝒜)·w + a_g.
-                        for (j, c) in c.iter_mut().enumerate() {
-                            *c += x * a[(n + i, j)];
-                        }
-                        c[2 * n] += x;
+                        add(&mut r4, &a5, n + i, x);
+                        add(&mut r4, &a4, 2 * n, x);
+                        add(&mut r5, &a6, n + i, x);
+                        add(&mut r5, &a5, 2 * n, x);
                     }
                 }
             }
-            let r1 = row_times(&c, a);
-            let r2 = row_times(&r1, a);
-            let r3 = row_times(&r2, a);
-            let r4 = row_times(&r3, a);
-            let r5 = row_times(&r4, a);
             value_error.push(factor * scaled_norm(&r4));
             rate_error.push(factor * scaled_norm(&r5));
         }
-        Bounds {
+        let bounds = Bounds {
             value_error,
             rate_error,
             scale,
-        }
+        };
+        (bounds, map)
     }
 
     /// ‖D w‖∞ of the augmented state at (u, u̇) under ground (a, ȧ) with

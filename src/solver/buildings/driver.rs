@@ -24,6 +24,7 @@
 //! peak, so its end is all that is recorded.
 
 use std::collections::HashSet;
+use std::time::Instant;
 
 use crate::model::buildings::contact::pair_law;
 use crate::model::buildings::ground::Piece;
@@ -38,10 +39,14 @@ use super::hermite::range;
 use super::layout::Layout;
 use super::peaks::{Envelope, raise};
 use super::poly;
+use super::profile::{Cause, RowProfile};
 use super::propagator::{Propagator, apply};
 use super::result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
 use super::taylor::{ORDER, Series};
+
+#[cfg(test)]
+mod quiet_check;
 
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -59,6 +64,9 @@ pub struct RowOptions {
     /// Keep every floor pair's contact force over time
     /// ([`super::result::ForceHistory`]), for drawing the impacts.
     pub forces: bool,
+    /// Measure the time in map steps, series steps and matrix exponentials
+    /// ([`super::profile::RowProfile`]); the counts are always kept.
+    pub profile: bool,
 }
 
 impl RowOptions {
@@ -70,6 +78,7 @@ impl RowOptions {
             energy: false,
             trace: false,
             forces: false,
+            profile: false,
         }
     }
 }
@@ -151,8 +160,9 @@ struct Run<'a> {
     envelope: Envelope,
     pairs: Vec<PairResult>,
     propagator: &'a mut Propagator,
-    /// Maps made and used before this run (a cache kept across runs).
-    counts_before: (usize, usize),
+    /// Maps made and used before this run (a cache kept across runs), and
+    /// the seconds spent making them.
+    counts_before: (usize, usize, f64),
     series_steps: usize,
     configurations: HashSet<Vec<u8>>,
     /// The branches of the current sub-step ([`Config::key_into`]), and the
@@ -173,6 +183,12 @@ struct Run<'a> {
     forces: Option<ForceHistory>,
     /// Set at a collapse, where the run stops.
     collapse: Option<Collapse>,
+    profile: RowProfile,
+    /// Whether to measure times into `profile`.
+    timed: bool,
+    /// Buffers of the map steps, reused: the next (u, u̇) and spare stacks.
+    next: (Vec<f64>, Vec<f64>),
+    spare: Vec<Stack>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -211,7 +227,7 @@ pub fn run_row_cached(
     cache: &mut MapCache,
 ) -> Result<RowRun, RowError> {
     let propagator = cache.of(row);
-    let counts_before = (propagator.made, propagator.used);
+    let counts_before = (propagator.made, propagator.used, propagator.seconds);
     let layout = Layout::of(row);
     let n = layout.dofs;
     let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
@@ -262,6 +278,10 @@ pub fn run_row_cached(
             pairs: vec![Vec::new(); n_pairs],
         }),
         collapse: None,
+        profile: RowProfile::default(),
+        timed: options.profile,
+        next: (Vec::new(), Vec::new()),
+        spare: Vec::new(),
     };
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
@@ -278,8 +298,28 @@ pub fn run_row_cached(
             } else {
                 piece.t0 + (j + 1) as f64 * h
             };
-            if run.energy.is_some() || run.config.any_contact() || !run.quiet_step(&piece, h) {
-                run.careful(&piece, tb)?;
+            let clock = run.timed.then(Instant::now);
+            let cause = if run.energy.is_some() {
+                Some(Cause::Energy)
+            } else if run.config.any_contact() {
+                Some(Cause::Contact)
+            } else {
+                run.quiet_step(&piece, h).err()
+            };
+            let mapped = run.timed.then(Instant::now);
+            if let Some(cause) = cause {
+                let before = run.series_steps;
+                // Only a peak may rise: the bounds cleared every event.
+                run.careful(&piece, tb, cause != Cause::Peak)?;
+                run.profile.careful.add(cause, 1);
+                run.profile.series.add(cause, run.series_steps - before);
+            } else {
+                run.profile.map_steps += 1;
+            }
+            if let (Some(c), Some(m)) = (clock, mapped) {
+                let p = &mut run.profile;
+                p.map_seconds += (m - c).as_secs_f64();
+                p.series_seconds += m.elapsed().as_secs_f64();
             }
             if run.collapse.is_some() {
                 if let Some(trace) = trace.as_mut() {
@@ -305,7 +345,7 @@ impl Run<'_> {
     /// bound), no storey reaches yield or unloads, no floor pair closes,
     /// and no quantity can pass its running peak inside unless it is
     /// monotone there (then its extremes are the ends, which are recorded).
-    fn quiet_step(&mut self, piece: &Piece, h: f64) -> bool {
+    fn quiet_step(&mut self, piece: &Piece, h: f64) -> Result<(), Cause> {
         let n = self.layout.dofs;
         let (a0, r0) = ground_at(piece, self.t);
         let (a1, r1) = ground_at(piece, self.t + h);
@@ -321,8 +361,9 @@ impl Run<'_> {
             self.layout.rate,
             &self.watch,
         );
-        let mut u1 = vec![0.0; n];
-        let mut v1 = vec![0.0; n];
+        let (mut u1, mut v1) = std::mem::take(&mut self.next);
+        u1.resize(n, 0.0);
+        v1.resize(n, 0.0);
         apply(
             map,
             (&self.u, &self.v),
@@ -335,9 +376,15 @@ impl Run<'_> {
         // stack is kept while the state, ground and σ are the same.
         let start = match self.stack.take() {
             Some((g, stack)) if g == (a0, r0, sigma) => stack,
-            _ => Stack::at(&self.system, (&self.u, &self.v), (a0, r0, sigma)),
+            other => {
+                let mut stack = other.map(|(_, s)| s).or_else(|| self.spare.pop());
+                let stack = stack.get_or_insert_default();
+                stack.set(&self.system, (&self.u, &self.v), (a0, r0, sigma));
+                std::mem::take(stack)
+            }
         };
-        let end = Stack::at(&self.system, (&u1, &v1), (a1, r1, sigma));
+        let mut end = self.spare.pop().unwrap_or_default();
+        end.set(&self.system, (&u1, &v1), (a1, r1, sigma));
         let size = bounds.size((&self.u, &self.v), (a0, r0), &self.system.load);
         let ends = |k: usize| (start.of(&self.watch[k]), end.of(&self.watch[k]));
         // The rigorous range of q of quantity k over the sub-step.
@@ -358,58 +405,77 @@ impl Run<'_> {
             let (lo, hi) = values(k, q);
             lo.abs().max(hi.abs()) <= peak || monotone(k, q)
         };
-        let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
-        for (k, &d) in self.layout.gaps.iter().enumerate() {
-            if values(base + k, ends(base + k)).1 >= d {
-                return false;
-            }
-        }
-        let env = &self.envelope;
-        for i in 0..n {
-            if !clear(i, env.displacement[i])
-                || !clear(n + i, env.velocity[i])
-                || !clear(2 * n + i, env.acceleration[i])
-            {
-                return false;
-            }
-        }
-        let base = 3 * n;
-        for (k, s) in self.layout.storeys.iter().enumerate() {
-            let q = ends(base + k);
-            let (lo, hi) = values(base + k, q);
-            let rate = || {
-                let er = bounds.errors(base + k, size).1;
-                let (rlo, rhi) = range(q.0[1], q.0[2], q.1[1], q.1[2], h);
-                (rlo - er, rhi + er)
-            };
-            let quiet = match self.config.branch[k] {
-                Branch::Elastic => {
-                    let p = self.config.plastic[k];
-                    (lo - p).abs().max((hi - p).abs()) < s.yield_drift
+        let verdict = (|| {
+            let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
+            for (k, &d) in self.layout.gaps.iter().enumerate() {
+                if values(base + k, ends(base + k)).1 >= d {
+                    return Err(Cause::Onset);
                 }
-                Branch::Plus => rate().0 > 0.0,
-                Branch::Minus => rate().1 < 0.0,
-            };
-            let extreme = lo.abs().max(hi.abs());
-            if !quiet
-                || extreme >= s.collapse_drift
-                || (extreme > env.drift[k] && !monotone(base + k, q))
-            {
-                return false;
             }
-        }
-        let base = base + self.layout.storeys.len();
-        for k in 0..self.layout.facing.len() {
-            let q = ends(base + k);
-            if values(base + k, q).1 > env.relative[k] && !monotone(base + k, q) {
-                return false;
+            let env = &self.envelope;
+            let base = 3 * n;
+            let mut peak = false;
+            for (k, s) in self.layout.storeys.iter().enumerate() {
+                let q = ends(base + k);
+                let (lo, hi) = values(base + k, q);
+                let rate = || {
+                    let er = bounds.errors(base + k, size).1;
+                    let (rlo, rhi) = range(q.0[1], q.0[2], q.1[1], q.1[2], h);
+                    (rlo - er, rhi + er)
+                };
+                let (quiet, cause) = match self.config.branch[k] {
+                    Branch::Elastic => {
+                        let p = self.config.plastic[k];
+                        let clear = (lo - p).abs().max((hi - p).abs()) < s.yield_drift;
+                        (clear, Cause::Yield)
+                    }
+                    Branch::Plus => (rate().0 > 0.0, Cause::Unload),
+                    Branch::Minus => (rate().1 < 0.0, Cause::Unload),
+                };
+                if !quiet {
+                    return Err(cause);
+                }
+                let extreme = lo.abs().max(hi.abs());
+                if extreme >= s.collapse_drift {
+                    return Err(Cause::Collapse);
+                }
+                peak = peak || (extreme > env.drift[k] && !monotone(base + k, q));
             }
+            if peak {
+                return Err(Cause::Peak);
+            }
+            for i in 0..n {
+                if !clear(i, env.displacement[i])
+                    || !clear(n + i, env.velocity[i])
+                    || !clear(2 * n + i, env.acceleration[i])
+                {
+                    return Err(Cause::Peak);
+                }
+            }
+            let base = base + self.layout.storeys.len();
+            for k in 0..self.layout.facing.len() {
+                let q = ends(base + k);
+                if values(base + k, q).1 > env.relative[k] && !monotone(base + k, q) {
+                    return Err(Cause::Peak);
+                }
+            }
+            Ok(())
+        })();
+        if let Err(cause) = verdict {
+            self.spare.extend([start, end]);
+            self.next = (u1, v1);
+            return Err(cause);
         }
-        self.u = u1;
-        self.v = v1;
+        #[cfg(test)]
+        self.check_quiet(piece, h, (&u1, &v1));
+        self.spare.push(start);
+        self.next = (
+            std::mem::replace(&mut self.u, u1),
+            std::mem::replace(&mut self.v, v1),
+        );
         self.record_point(&end.rates[2], a1);
         self.stack = Some(((a1, r1, sigma), end));
-        true
+        Ok(())
     }
 
     /// Peaks at the start: the floors' initial velocity, and the
@@ -437,9 +503,13 @@ impl Run<'_> {
         }
     }
 
-    /// The sub-step to `tb` by Taylor steps from event to event.
-    fn careful(&mut self, piece: &Piece, tb: f64) -> Result<(), RowError> {
-        self.stack = None;
+    /// The sub-step to `tb` by Taylor steps from event to event; with
+    /// `events` false, the quiet test has cleared every event function over
+    /// it, and the steps only locate peaks.
+    fn careful(&mut self, piece: &Piece, tb: f64, events: bool) -> Result<(), RowError> {
+        if let Some((_, stack)) = self.stack.take() {
+            self.spare.push(stack);
+        }
         let n = self.layout.dofs;
         let mut un = vec![0.0; n];
         let mut vn = vec![0.0; n];
@@ -463,7 +533,9 @@ impl Run<'_> {
             };
             let mut end = rem.min(series.radius);
             let mut event = None;
-            self.find_events(&series, &mut end, &mut event);
+            if events {
+                self.find_events(&series, &mut end, &mut event);
+            }
             if let (Some((y0, f0, step)), Some((_, g))) = (&mut rk, &event)
                 && end < step.h
             {
@@ -766,6 +838,15 @@ impl Run<'_> {
     }
 
     fn apply(&mut self, event: Event) {
+        let events = &mut self.profile.events;
+        match &event {
+            Event::Yield(..) => events.yields += 1,
+            Event::Unload(_) => events.unloads += 1,
+            Event::Onset(_) => events.onsets += 1,
+            Event::Separation(_) => events.separations += 1,
+            Event::Turn => events.turns += 1,
+            Event::Collapse(_) => events.collapses += 1,
+        }
         match event {
             Event::Yield(k, branch) => self.config.branch[k] = branch,
             Event::Unload(k) => {
@@ -818,7 +899,11 @@ impl Run<'_> {
         self.system = System::of(&self.layout, &self.config);
     }
 
-    fn finish(self, duration: f64) -> RowRun {
+    fn finish(mut self, duration: f64) -> RowRun {
+        self.profile.maps_made = self.propagator.made - self.counts_before.0;
+        if self.timed {
+            self.profile.exponential_seconds = self.propagator.seconds - self.counts_before.2;
+        }
         let mut floors = Vec::new();
         let mut k = 0;
         for (b, &o) in self.row.buildings.iter().zip(&self.row.offsets()) {
@@ -867,6 +952,7 @@ impl Run<'_> {
             trace: None,
             forces: self.forces,
             collapse: self.collapse,
+            profile: self.profile,
         }
     }
 }

@@ -28,6 +28,7 @@
 //! - [`peaks`]: the envelopes a run reports;
 //! - [`energy`]: the energy balance, by quadrature on the Taylor steps;
 //! - [`result`]: what a run returns;
+//! - [`profile`]: why sub-steps took the series, and where the time went;
 //! - [`driver`]: the loop over sub-steps and events;
 //! - [`newmark`]: Newmark-β on the row, the second method.
 
@@ -42,6 +43,7 @@ pub mod layout;
 pub mod newmark;
 pub mod peaks;
 pub mod poly;
+pub mod profile;
 pub mod propagator;
 pub mod result;
 pub mod system;
@@ -50,4 +52,5 @@ pub mod taylor;
 pub use driver::{MapCache, RowError, RowOptions, run_row, run_row_cached};
 pub use energy::RowEnergy;
 pub use newmark::{default_step, max_step, run_newmark};
+pub use profile::{Cause, RowProfile};
 pub use result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};

@@ -470,5 +470,6 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         trace: None,
         forces: None,
         collapse,
+        profile: Default::default(),
     })
 }

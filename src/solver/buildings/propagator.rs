@@ -11,12 +11,14 @@
 //!     [ 0      0      0   0  0 ],
 //! ```
 //!
-//! so w(h) = e^{𝒜h} w(0) exactly; the map keeps the rows of (u, u̇). The
+//! so w(h) = e^{𝒜h} w(0) exactly; the map keeps the rows of (u, u̇), made
+//! with the bounds of the quiet test ([`Bounds::with_map`]). The
 //! plastic offsets only enter through M⁻¹q, a part of the state, so one map
 //! serves every configuration with the same branches. The bounds of the
 //! quiet test ([`super::bound`]) depend on the same data and are cached with it.
 
 use std::collections::HashMap;
+use std::time::Instant;
 
 use nalgebra::DMatrix;
 
@@ -40,6 +42,8 @@ pub struct Propagator {
     pub made: usize,
     /// Sub-steps taken with a cached map.
     pub used: usize,
+    /// Seconds spent making maps and their bounds.
+    pub seconds: f64,
 }
 
 /// The augmented matrix 𝒜 of `system` (no contact) on a piece with σ.
@@ -84,9 +88,10 @@ impl Propagator {
                     Some(&at) => at,
                     None => {
                         self.made += 1;
+                        let clock = Instant::now();
                         let a = augmented(system, sigma);
-                        let bounds = Bounds::new(&a, n, h, rate, watch);
-                        let map = (a * h).exp().rows(0, 2 * n).into_owned();
+                        let (bounds, map) = Bounds::with_map(&a, n, h, rate, watch);
+                        self.seconds += clock.elapsed().as_secs_f64();
                         self.entries.push((map, bounds));
                         self.index.insert(key.clone(), self.entries.len() - 1);
                         self.entries.len() - 1

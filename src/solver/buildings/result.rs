@@ -86,6 +86,10 @@ pub struct RowRun {
     /// stops there, and every peak is the peak up to that instant.
     #[serde(default)]
     pub collapse: Option<Collapse>,
+    /// Why sub-steps took the series, and where the time went
+    /// ([`super::profile`]); not part of a run's output.
+    #[serde(skip)]
+    pub profile: super::profile::RowProfile,
 }
 
 /// A collapse (SPEC §15): the first instant a storey's |Δ_i|/h_i reaches

@@ -1,0 +1,82 @@
+//! Where a row run's time goes (SPEC §13): why each sub-step left the
+//! cached linear map for the series, how many series steps each reason
+//! cost, which events changed the configuration, and, when asked for
+//! ([`super::RowOptions::profile`]), the time in map steps, series steps
+//! and matrix exponentials.
+//!
+//! The counts are a function of the run alone (the same for every run of
+//! the same row and ground); the times are measured, so they are zero
+//! unless asked for, and two runs of the same inputs compare equal.
+
+/// Why a sub-step went by the series instead of the map.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cause {
+    /// A floor pair may close inside it (its gap's range reaches d).
+    Onset,
+    /// An elastic storey may reach its yield drift.
+    Yield,
+    /// A yielding storey's drift rate may change sign.
+    Unload,
+    /// A storey of a building with P-Δ may reach its collapse drift.
+    Collapse,
+    /// A floor's |u|, |u̇|, |ü + ü_g|, a drift or a relative displacement
+    /// may pass its running peak inside, not monotone there.
+    Peak,
+    /// A floor pair is in contact (a contact phase).
+    Contact,
+    /// The energy balance is asked for: every sub-step by the series.
+    Energy,
+}
+
+/// Counts per [`Cause`], in its order.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct PerCause(pub [usize; 7]);
+
+impl PerCause {
+    pub fn add(&mut self, cause: Cause, count: usize) {
+        self.0[cause as usize] += count;
+    }
+    pub fn of(&self, cause: Cause) -> usize {
+        self.0[cause as usize]
+    }
+    pub fn total(&self) -> usize {
+        self.0.iter().sum()
+    }
+}
+
+/// Events applied, by kind: each changes the configuration (the collapse
+/// stops the run; a Jankowski turn changes only the damping's sign).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Events {
+    pub yields: usize,
+    pub unloads: usize,
+    pub onsets: usize,
+    pub separations: usize,
+    pub turns: usize,
+    pub collapses: usize,
+}
+
+/// The profile of one run.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct RowProfile {
+    /// Sub-steps taken by the cached map.
+    pub map_steps: usize,
+    /// Sub-steps that went by the series, by cause.
+    pub careful: PerCause,
+    /// Series (or Runge–Kutta) steps, by the cause of their sub-step.
+    pub series: PerCause,
+    pub events: Events,
+    /// Linear maps made (each a matrix exponential and its bounds).
+    pub maps_made: usize,
+    /// Seconds in map steps (every quiet test, passed or not, and the maps
+    /// made there), in series sub-steps, and in making maps (a part of the
+    /// first); 0 unless asked for.
+    pub map_seconds: f64,
+    pub series_seconds: f64,
+    pub exponential_seconds: f64,
+}
+
+/// Names of the causes, in [`Cause`]'s order, for tables.
+pub const CAUSES: [&str; 7] = [
+    "onset", "yield", "unload", "collapse", "peak", "contact", "energy",
+];
