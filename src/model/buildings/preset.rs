@@ -10,6 +10,7 @@ use std::path::Path;
 use crate::model::ContactModel;
 use crate::model::params::echo::number as number_text;
 
+use super::retrofit_preset;
 use super::row::{Building, Joint, PDelta, Row};
 
 /// Most buildings in a row.
@@ -40,6 +41,7 @@ const TOP_KEYS: &[&str] = &[
     "min_impact_velocity",
     "building",
     "joint",
+    "link",
 ];
 const BUILDING_KEYS: &[&str] = &[
     "name",
@@ -54,7 +56,7 @@ const BUILDING_KEYS: &[&str] = &[
     "gravity_mass",
     "collapse_drift_ratio",
 ];
-const JOINT_KEYS: &[&str] = &["gap", "stiffness"];
+const JOINT_KEYS: &[&str] = &["gap", "stiffness", "bumper"];
 
 /// Parses and checks a preset's text; `file` names it in messages.
 pub fn parse(file: &str, text: &str) -> Result<Row, BuildingsError> {
@@ -149,18 +151,21 @@ pub fn parse(file: &str, text: &str) -> Result<Row, BuildingsError> {
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default(),
     };
-    let row = Row {
+    let mut row = Row {
         name,
         buildings,
         joints,
         model,
         restitution,
         min_impact_velocity,
+        links: Vec::new(),
     };
     for b in &row.buildings {
         periods_in_range(b).map_err(fail)?;
     }
     contact_in_range(&row).map_err(fail)?;
+    row.links = retrofit_preset::links(&table, &row).map_err(fail)?;
+    retrofit_preset::check_bumpers(&row).map_err(fail)?;
     Ok(row)
 }
 
@@ -243,7 +248,7 @@ fn contact_in_range(row: &Row) -> Result<(), String> {
     Ok(())
 }
 
-fn unknown_keys(t: &toml::Table, allowed: &[&str], whose: &str) -> Result<(), String> {
+pub(super) fn unknown_keys(t: &toml::Table, allowed: &[&str], whose: &str) -> Result<(), String> {
     match t.keys().find(|k| !allowed.contains(&k.as_str())) {
         Some(k) => Err(format!(
             "{whose}unknown key `{k}`: allowed are {}",
@@ -253,7 +258,7 @@ fn unknown_keys(t: &toml::Table, allowed: &[&str], whose: &str) -> Result<(), St
     }
 }
 
-fn tables<'a>(t: &'a toml::Table, key: &str) -> Result<Vec<&'a toml::Table>, String> {
+pub(super) fn tables<'a>(t: &'a toml::Table, key: &str) -> Result<Vec<&'a toml::Table>, String> {
     match t.get(key) {
         None => Ok(Vec::new()),
         Some(toml::Value::Array(items)) => items
@@ -277,7 +282,12 @@ fn as_f64(v: &toml::Value) -> Option<f64> {
     }
 }
 
-fn number(t: &toml::Table, key: &str, whose: &str, default: Option<f64>) -> Result<f64, String> {
+pub(super) fn number(
+    t: &toml::Table,
+    key: &str,
+    whose: &str,
+    default: Option<f64>,
+) -> Result<f64, String> {
     match (t.get(key), default) {
         (None, Some(d)) => Ok(d),
         (None, None) => Err(format!("{whose}missing key `{key}`")),
@@ -506,7 +516,12 @@ fn joint(index: usize, t: &toml::Table) -> Result<Joint, String> {
             number_text(stiffness)
         ));
     }
-    Ok(Joint { gap, stiffness })
+    let bumper = retrofit_preset::bumper(t, &whose, gap)?;
+    Ok(Joint {
+        gap,
+        stiffness,
+        bumper,
+    })
 }
 
 #[cfg(test)]

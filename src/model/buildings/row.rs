@@ -4,6 +4,8 @@
 use crate::model::ContactModel;
 use crate::model::record::STANDARD_GRAVITY;
 
+use super::retrofit::{Bumper, Link};
+
 /// Floors of neighbours pair up when their elevations differ by at most this (m).
 pub const ELEVATION_TOLERANCE: f64 = 1e-3;
 
@@ -81,12 +83,14 @@ impl Building {
 }
 
 /// The joint between two neighbours: gap at rest and contact stiffness.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Joint {
     /// d, m at rest (may be infinite: no pounding).
     pub gap: f64,
     /// k̄ (N/m) of the Kelvin family; β (N/m^{3/2}) of the Hertz-type laws.
     pub stiffness: f64,
+    /// A bumper in the gap (SPEC §14).
+    pub bumper: Option<Bumper>,
 }
 
 /// Floor `left_floor` of building `left` and floor `right_floor` of its right
@@ -115,6 +119,8 @@ pub struct Row {
     pub restitution: f64,
     /// v₀ floor of the laws that divide by it (m/s).
     pub min_impact_velocity: f64,
+    /// Links across the joints (SPEC §14), in file order.
+    pub links: Vec<Link>,
 }
 
 impl Row {
@@ -211,6 +217,7 @@ impl Row {
         let mut r = self.clone();
         r.buildings.reverse();
         r.joints.reverse();
+        self.mirror_retrofits(&mut r);
         r
     }
 }

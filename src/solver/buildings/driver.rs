@@ -25,7 +25,7 @@
 
 use std::collections::HashSet;
 
-use crate::model::buildings::contact::pair_law;
+use crate::model::buildings::contact::element_law;
 use crate::model::buildings::ground::Piece;
 use crate::model::buildings::{Ground, Row};
 
@@ -36,6 +36,7 @@ use super::energy::{NODES, RowEnergy, gauss_legendre};
 use super::event_function::EventFunction;
 use super::hermite::range;
 use super::layout::Layout;
+use super::link::{self, LinkResult};
 use super::peaks::{Envelope, raise};
 use super::poly;
 use super::propagator::{Propagator, apply};
@@ -103,7 +104,7 @@ fn ground_at(piece: &Piece, t: f64) -> (f64, f64) {
 /// state (u, u̇, a_g, ȧ_g, M⁻¹q) of [`super::propagator`], in this order:
 /// u_i, u̇_i and ü_i + a_g of every floor, every storey's drift, the
 /// relative displacement u_A − u_B of every facing pair, then of every
-/// pounding pair.
+/// contact element, then Δu and Δv of every link (SPEC §14).
 fn watched(layout: &Layout) -> Vec<Watch> {
     let n = layout.dofs;
     let mut w = Vec::new();
@@ -125,6 +126,14 @@ fn watched(layout: &Layout) -> Vec<Watch> {
             terms: vec![(p.left_dof, 1.0), (p.right_dof, -1.0)],
             order: 0,
         });
+    }
+    for l in &layout.links {
+        for order in 0..2 {
+            w.push(Watch {
+                terms: vec![(l.pair.left_dof, 1.0), (l.pair.right_dof, -1.0)],
+                order,
+            });
+        }
     }
     w
 }
@@ -173,6 +182,8 @@ struct Run<'a> {
     forces: Option<ForceHistory>,
     /// Set at a collapse, where the run stops.
     collapse: Option<Collapse>,
+    /// Every link's peaks and energy (SPEC §14).
+    links: Vec<LinkResult>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -222,6 +233,7 @@ pub fn run_row_cached(
     // ground starts moving (SPEC §9, type B pulse): u̇_i(0) = −u̇_g(0).
     let v0 = vec![-ground.initial_velocity(); n];
     let n_pairs = layout.pairs.len();
+    let layout_links = layout.links.len();
     let initial_kinetic = 0.5
         * layout
             .mass
@@ -260,8 +272,10 @@ pub fn run_row_cached(
         next_contact_step: 0.0,
         forces: options.forces.then(|| ForceHistory {
             pairs: vec![Vec::new(); n_pairs],
+            ..ForceHistory::default()
         }),
         collapse: None,
+        links: vec![LinkResult::new(); layout_links],
     };
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
@@ -405,6 +419,16 @@ impl Run<'_> {
                 return false;
             }
         }
+        let base = base + self.layout.facing.len() + self.layout.pairs.len();
+        for (l, (link, peaks)) in self.layout.links.iter().zip(&self.links).enumerate() {
+            let (du, dv) = (base + 2 * l, base + 2 * l + 1);
+            let (qu, qv) = (ends(du), ends(dv));
+            let stroke = (values(du, qu), monotone(du, qu));
+            let rate = (values(dv, qv), monotone(dv, qv));
+            if !link::quiet(link, peaks, stroke, rate) {
+                return false;
+            }
+        }
         self.u = u1;
         self.v = v1;
         self.record_point(&end.rates[2], a1);
@@ -434,6 +458,17 @@ impl Run<'_> {
         }
         for (k, p) in self.layout.facing.iter().enumerate() {
             env.relative[k] = env.relative[k].max(self.u[p.left_dof] - self.u[p.right_dof]);
+        }
+        link::record_point(&self.layout.links, &self.u, &self.v, &mut self.links);
+        if let Some(history) = self.forces.as_mut() {
+            history.links.resize(self.layout.links.len(), Vec::new());
+            for (l, h) in self.layout.links.iter().zip(&mut history.links) {
+                let (a, b) = (l.pair.left_dof, l.pair.right_dof);
+                h.push((
+                    self.t,
+                    l.force(self.u[a] - self.u[b], self.v[a] - self.v[b]),
+                ));
+            }
         }
     }
 
@@ -662,6 +697,13 @@ impl Run<'_> {
                 }
             }
         }
+        link::peaks_on(
+            &self.layout.links,
+            series,
+            end,
+            &mut self.links,
+            (&mut c, &mut self.buf2),
+        );
         let c = &mut c;
         let env = &mut self.envelope;
         for (k, s) in self.layout.storeys.iter().enumerate() {
@@ -748,18 +790,27 @@ impl Run<'_> {
                     - st.geometric * d)
                     * rate;
             }
-            let mut contact = 0.0;
+            // The joints' own elements, then the bumpers' (SPEC §14).
+            let mut contact = [0.0; 2];
             for (pi, p) in self.layout.pairs.iter().enumerate() {
                 if let Some(closed) = &self.config.contact[pi] {
                     let delta = u[p.left_dof] - u[p.right_dof] - self.layout.gaps[pi];
                     let rate = v[p.left_dof] - v[p.right_dof];
-                    contact += closed.law.force(delta, rate).force * rate;
+                    contact[usize::from(pi >= self.layout.hard)] +=
+                        closed.law.force(delta, rate).force * rate;
                 }
+            }
+            for (l, r) in self.layout.links.iter().zip(&mut self.links) {
+                let (a, b) = (l.pair.left_dof, l.pair.right_dof);
+                let rate = v[a] - v[b];
+                e.link += weight * l.force(u[a] - u[b], rate) * rate;
+                r.energy = r.energy.max(0.0) + weight * l.dissipation(rate);
             }
             e.damping += weight * damping;
             e.input += weight * input;
             e.spring += weight * spring;
-            e.contact += weight * contact;
+            e.contact += weight * contact[0];
+            e.bumper += weight * contact[1];
         }
         e.max_input = e.max_input.max(e.input.abs());
         self.energy = Some((e, x, w));
@@ -778,7 +829,7 @@ impl Run<'_> {
                 let p = self.layout.pairs[pi];
                 let v0 = self.v[p.left_dof] - self.v[p.right_dof];
                 self.config.contact[pi] = Some(Closed {
-                    law: pair_law(self.row, &p, v0),
+                    law: element_law(self.row, &self.layout.elements[pi], v0),
                     approach_velocity: v0,
                 });
                 if let Some(history) = self.forces.as_mut() {
@@ -852,11 +903,18 @@ impl Run<'_> {
                     .sum::<f64>(),
             ..*e
         });
+        let (mut pairs, mut forces) = (self.pairs, self.forces);
+        let bumpers = pairs.split_off(self.layout.hard);
+        if let Some(f) = forces.as_mut() {
+            f.bumpers = f.pairs.split_off(self.layout.hard);
+        }
         RowRun {
             energy,
             max_relative: self.envelope.relative.clone(),
             floors,
-            pairs: self.pairs,
+            pairs,
+            bumpers,
+            links: self.links,
             duration,
             final_displacement: self.u,
             final_velocity: self.v,
@@ -865,7 +923,7 @@ impl Run<'_> {
             series_steps: self.series_steps,
             configurations: self.configurations.len(),
             trace: None,
-            forces: self.forces,
+            forces,
             collapse: self.collapse,
         }
     }
