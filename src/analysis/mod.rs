@@ -52,6 +52,7 @@ pub mod limit_state;
 pub mod map;
 pub mod record_scaling;
 pub mod record_selection;
+pub mod retrofit_report;
 pub mod risk;
 pub mod row_gap;
 pub mod row_ida;

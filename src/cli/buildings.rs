@@ -293,9 +293,13 @@ pub fn run(
             energy: true,
             ..options
         };
-        result.energy = run_row(&row, &ground, &with_energy)
-            .map_err(|e| CliError::Failed(e.to_string()))?
-            .energy;
+        let balance =
+            run_row(&row, &ground, &with_energy).map_err(|e| CliError::Failed(e.to_string()))?;
+        result.energy = balance.energy;
+        // Each link's dissipated energy is a quadrature on the same steps.
+        for (link, from) in result.links.iter_mut().zip(&balance.links) {
+            link.energy = from.energy;
+        }
     }
     let report = RowReport::new(&row, &result, (&ground, &name), method, median(times));
     emit(&report)
