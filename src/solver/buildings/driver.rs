@@ -80,6 +80,27 @@ impl RowOptions {
 pub enum RowError {
     #[error("the run stopped at t = {0} s: more than 10⁸ events or series steps")]
     Runaway(f64),
+    /// A link with α < 1 (SPEC §14), which neither method solves yet.
+    #[error(
+        "link{link}: `exponent` = {exponent}: fluid viscous dampers (exponent < 1) are not solved yet; the methods take exponent = 1, a linear dashpot"
+    )]
+    Damper { link: usize, exponent: f64 },
+}
+
+impl RowError {
+    /// The first link of `row` that is a fluid viscous damper (α < 1),
+    /// refused: near Δv = 0 its damping c_l α |Δv|^(α−1) has no bound, and
+    /// from rest, where Δv stays near 0, neither the Runge–Kutta steps nor
+    /// Newton's iterations get through it.
+    pub fn unsolved_damper(row: &Row) -> Result<(), RowError> {
+        match row.links.iter().position(|l| l.exponent < 1.0) {
+            Some(i) => Err(RowError::Damper {
+                link: i + 1,
+                exponent: row.links[i].exponent,
+            }),
+            None => Ok(()),
+        }
+    }
 }
 
 /// Most series steps in one run.
@@ -221,6 +242,7 @@ pub fn run_row_cached(
     options: &RowOptions,
     cache: &mut MapCache,
 ) -> Result<RowRun, RowError> {
+    RowError::unsolved_damper(row)?;
     let propagator = cache.of(row);
     let counts_before = (propagator.made, propagator.used);
     let layout = Layout::of(row);

@@ -345,6 +345,7 @@ pub fn max_step(row: &Row, ground: &Ground) -> (f64, String) {
 
 /// Runs Newmark with step `dt` on `row` under `ground` for `duration` seconds.
 pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result<RowRun, RowError> {
+    RowError::unsolved_damper(row)?;
     let layout = Layout::of(row);
     let m = RowMatrices::of(row);
     let n = layout.dofs;
