@@ -25,8 +25,10 @@ use crate::solver::buildings::{
 #[derive(Debug, Clone, Default, Args)]
 pub struct BuildingsArgs {
     /// A row of shear buildings (SPEC §13): a built-in row (two-buildings,
-    /// block-and-frame, three-in-series, block-and-frame-pdelta) or a path to a row preset. `--set
-    /// NAME.KEY=V` edits one building, `--set jointN.KEY=V` one joint.
+    /// block-and-frame, three-in-series, block-and-frame-pdelta,
+    /// block-and-frame-retrofit) or a path to a row preset. `--set
+    /// NAME.KEY=V` edits one building, `--set jointN.KEY=V` one joint
+    /// (`jointN.bumper.KEY=V` its bumper), `--set linkN.KEY=V` one link.
     #[arg(long, value_name = "NAME|PATH")]
     pub buildings: Option<String>,
     /// Scale factor on the ground motion (rows).

@@ -14,6 +14,7 @@ use ratatui::style::{Color, Style};
 
 use super::chart;
 use super::raster::Raster;
+use super::row_retrofit::Mark;
 use crate::model::buildings::Row;
 use crate::solver::buildings::{RowRun, RowTrace};
 use crate::tui::look::{Look, palette};
@@ -60,6 +61,8 @@ pub struct Drawing {
     pub y: [f64; 2],
     /// Each joint's gap at rest (m) and the middle of its opening.
     pub joints: Vec<(f64, f64)>,
+    /// The bumpers and links (SPEC §14, [`super::row_retrofit`]).
+    pub retrofits: Vec<super::row_retrofit::Segment>,
 }
 
 impl Drawing {
@@ -158,14 +161,17 @@ pub fn geometry(row: &Row, run: &RowRun, trace: &RowTrace, t: f64, exaggeration:
         }
     }
     let margin = 0.45 * width;
-    Drawing {
+    let mut drawing = Drawing {
         frames,
         width,
         exaggeration,
         x: [-margin, left + margin],
         y: [0.0, 1.05 * tallest(row)],
         joints,
-    }
+        retrofits: Vec::new(),
+    };
+    drawing.retrofits = super::row_retrofit::segments(row, trace, t, &drawing);
+    drawing
 }
 
 /// The plot's cells in `area`: all but the title row and the name row.
@@ -179,7 +185,8 @@ pub fn plot_area(area: Rect) -> Rect {
 }
 
 /// The raster of `drawing` over `plot`: series k is building k; the
-/// contact colour is series `frames.len()`.
+/// contact colour is series `frames.len()`, and the retrofits' marks the
+/// series after it, in the order of [`Mark::ALL`].
 pub fn raster(drawing: &Drawing, plot: Rect, braille: bool) -> Raster {
     let mut r = Raster::new(plot, braille, drawing.x, drawing.y);
     let contact = drawing.frames.len();
@@ -193,6 +200,10 @@ pub fn raster(drawing: &Drawing, plot: Rect, braille: bool) -> Raster {
             let series = if f.contact[i] { contact } else { k };
             r.segment((x1, y1), (x1 + w, y1), series);
         }
+    }
+    for &(a, b, mark) in &drawing.retrofits {
+        let k = Mark::ALL.iter().position(|&m| m == mark).unwrap_or(0);
+        r.segment(a, b, contact + 1 + k);
     }
     r
 }
@@ -228,6 +239,8 @@ pub fn render(buf: &mut Buffer, area: Rect, look: Look, drawing: &Drawing, title
             };
             let color = if owner == contact {
                 palette::FORCE
+            } else if owner > contact {
+                Mark::ALL[(owner - contact - 1).min(Mark::ALL.len() - 1)].color()
             } else {
                 COLORS[owner % COLORS.len()]
             };
