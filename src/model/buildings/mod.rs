@@ -6,6 +6,8 @@
 //! - [`load`]: a preset by built-in name or path, with `--set` edits;
 //! - [`builtin`]: the presets shipped under `presets/buildings/`;
 //! - [`matrices`]: mass, initial stiffness and Rayleigh damping, and the modes;
+//! - [`keys`]: reading a preset's tables and numbers;
+//! - [`limits`]: the bounds of the contact elements;
 //! - [`edit`]: `--set` edits of a preset, checked as the file is;
 //! - [`contact`]: the contact law of one floor pair in physical form;
 //! - [`retrofit`]: bumpers and links (SPEC §14), as contact elements and links;
@@ -16,6 +18,8 @@ pub mod builtin;
 pub mod contact;
 pub mod edit;
 pub mod ground;
+pub mod keys;
+pub mod limits;
 pub mod load;
 pub mod matrices;
 pub mod preset;

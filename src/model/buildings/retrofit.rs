@@ -16,35 +16,8 @@
 //! one list of contact elements (hard pairs first, in [`Row::pairs`]' order,
 //! then bumpers), one list of links with their degrees of freedom.
 
+pub use super::row::{Bumper, Link};
 use super::row::{FloorPair, Row};
-
-/// A bumper fixed to the left building's face at a joint (SPEC §14).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Bumper {
-    /// t, m: 0 < t ≤ the joint's gap.
-    pub thickness: f64,
-    /// k_b (N/m; β in N/m^1.5 under a Hertz-type law).
-    pub stiffness: f64,
-    /// e_b in [1e-3, 1].
-    pub restitution: f64,
-    /// The left building's floors (1-based) that carry it; None: every pair.
-    pub floors: Option<Vec<usize>>,
-}
-
-/// A link across a joint (SPEC §14), in file order link1, link2, ….
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Link {
-    /// Index of the joint it spans (0-based: 0 joins buildings 1 and 2).
-    pub joint: usize,
-    /// The left building's floor, 1-based.
-    pub floor: usize,
-    /// k_l ≥ 0, N/m.
-    pub stiffness: f64,
-    /// c_l ≥ 0, N·(s/m)^α.
-    pub damping: f64,
-    /// α in (0, 1].
-    pub exponent: f64,
-}
 
 /// One contact element between two floors: a joint's own, or a bumper's.
 #[derive(Debug, Clone, Copy, PartialEq)]

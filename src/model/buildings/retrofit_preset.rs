@@ -18,9 +18,9 @@
 
 use crate::model::params::echo::number as number_text;
 
-use super::preset::{
-    MAX_CONTACT_STIFFNESS_PER_MASS, MAX_HERTZ_STIFFNESS_PER_MASS, MIN_RESTITUTION, number, tables,
-    unknown_keys,
+use super::keys::{number, tables, unknown_keys};
+use super::limits::{
+    MAX_CONTACT_STIFFNESS_PER_MASS, MAX_HERTZ_STIFFNESS_PER_MASS, MIN_RESTITUTION,
 };
 use super::retrofit::{Bumper, Link};
 use super::row::Row;

@@ -4,8 +4,6 @@
 use crate::model::ContactModel;
 use crate::model::record::STANDARD_GRAVITY;
 
-use super::retrofit::{Bumper, Link};
-
 /// Floors of neighbours pair up when their elevations differ by at most this (m).
 pub const ELEVATION_TOLERANCE: f64 = 1e-3;
 
@@ -80,6 +78,34 @@ impl Building {
     pub fn elevation(&self, floor: usize) -> f64 {
         self.height[..floor].iter().sum()
     }
+}
+
+/// A bumper fixed to the left building's face at a joint (SPEC §14).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Bumper {
+    /// t, m: 0 < t ≤ the joint's gap.
+    pub thickness: f64,
+    /// k_b (N/m; β in N/m^1.5 under a Hertz-type law).
+    pub stiffness: f64,
+    /// e_b in [1e-3, 1].
+    pub restitution: f64,
+    /// The left building's floors (1-based) that carry it; None: every pair.
+    pub floors: Option<Vec<usize>>,
+}
+
+/// A link across a joint (SPEC §14), in file order link1, link2, ….
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Link {
+    /// Index of the joint it spans (0-based: 0 joins buildings 1 and 2).
+    pub joint: usize,
+    /// The left building's floor, 1-based.
+    pub floor: usize,
+    /// k_l ≥ 0, N/m.
+    pub stiffness: f64,
+    /// c_l ≥ 0, N·(s/m)^α.
+    pub damping: f64,
+    /// α in (0, 1].
+    pub exponent: f64,
 }
 
 /// The joint between two neighbours: gap at rest and contact stiffness.

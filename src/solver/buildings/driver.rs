@@ -37,6 +37,7 @@ use super::event_function::EventFunction;
 use super::hermite::range;
 use super::layout::Layout;
 use super::link::{self, LinkResult};
+use super::link_peaks;
 use super::peaks::{Envelope, raise};
 use super::poly;
 use super::propagator::{Propagator, apply};
@@ -719,7 +720,7 @@ impl Run<'_> {
                 }
             }
         }
-        link::peaks_on(
+        link_peaks::peaks_on(
             &self.layout.links,
             series,
             end,

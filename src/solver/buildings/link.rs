@@ -4,22 +4,17 @@
 //! - The spring k_l is linear always, and so is the dashpot when α = 1: both
 //!   enter K and C of every configuration ([`add_linear`]), so that the
 //!   cached maps and the Taylor series carry them exactly.
-//! - A fluid viscous damper (α < 1) is the one nonlinear element that is
-//!   always on: its force c_l|Δv|^α sgn Δv is added to the motion by the
-//!   Runge–Kutta steps of [`super::contact_rk`], and the instants where Δv
-//!   changes sign, where it is not smooth, are events.
+//! - A fluid viscous damper (α < 1) is refused for now
+//!   ([`super::RowError::Damper`]): near Δv = 0 its damping has no bound.
 //!
 //! Per link a run reports peak |F|, peak |Δu| (the stroke), peak |Δv|, and
-//! the energy its dashpot dissipated, E_l = ∫ c_l |Δv|^(α+1) dt.
+//! the energy its dashpot dissipated, E_l = ∫ c_l |Δv|^(α+1) dt; the peaks
+//! inside a series step are [`super::link_peaks`]'.
 
 use nalgebra::DMatrix;
 use serde::{Deserialize, Serialize};
 
 use crate::model::buildings::LinkElement;
-use crate::solver::exact::contact_rk::equispaced_quintic;
-
-use super::poly;
-use super::taylor::Series;
 
 /// Adds every link's spring to `stiffness` (K, N/m) and every linear
 /// dashpot's c_l to `damping`, which holds M⁻¹C (each row divided by its
@@ -44,23 +39,6 @@ pub fn add_linear(
             damping[(b, b)] += c / mass[b];
             damping[(b, a)] -= c / mass[b];
         }
-    }
-}
-
-/// Whether any link is a fluid viscous damper (α < 1).
-pub fn any_damper(links: &[LinkElement]) -> bool {
-    links.iter().any(|l| !l.is_linear())
-}
-
-/// Adds the fluid viscous dampers' forces (α < 1) to the accelerations
-/// `acc` at (u, u̇): −F/m_A on A, +F/m_B on B, F = c_l|Δv|^α sgn Δv.
-pub fn add_damper_forces(links: &[LinkElement], mass: &[f64], v: &[f64], acc: &mut [f64]) {
-    for l in links.iter().filter(|l| !l.is_linear()) {
-        let (a, b) = (l.pair.left_dof, l.pair.right_dof);
-        let dv = v[a] - v[b];
-        let f = l.link.damping * dv.abs().powf(l.link.exponent) * dv.signum();
-        acc[a] -= f / mass[a];
-        acc[b] += f / mass[b];
     }
 }
 
@@ -95,45 +73,6 @@ pub fn record_point(links: &[LinkElement], u: &[f64], v: &[f64], out: &mut [Link
         r.stroke = r.stroke.max(du.abs());
         r.max_rate = r.max_rate.max(dv.abs());
         r.max_force = r.max_force.max(l.force(du, dv).abs());
-    }
-}
-
-/// Raises each link's peaks over [0, end] of a step written as `series`:
-/// |Δu| and |Δv| on their polynomials; |F| on its polynomial for a linear
-/// link, and on the quintic through six equally spaced values of F for a
-/// damper (α < 1), as the Hertz-type contact forces are taken.
-pub fn peaks_on(
-    links: &[LinkElement],
-    series: &Series,
-    end: f64,
-    out: &mut [LinkResult],
-    (du, dv): (&mut Vec<f64>, &mut Vec<f64>),
-) {
-    for (l, r) in links.iter().zip(out) {
-        let (a, b) = (l.pair.left_dof, l.pair.right_dof);
-        series.combine(&[(a, 1.0), (b, -1.0)], &[], du);
-        series.combine(&[], &[(a, 1.0), (b, -1.0)], dv);
-        if poly::magnitude_bound(du, end) > r.stroke {
-            r.stroke = r.stroke.max(poly::max_abs(du, end));
-        }
-        if poly::magnitude_bound(dv, end) > r.max_rate {
-            r.max_rate = r.max_rate.max(poly::max_abs(dv, end));
-        }
-        let force: Vec<f64> = if l.is_linear() {
-            du.iter()
-                .zip(dv.iter())
-                .map(|(x, y)| l.link.stiffness * x + l.link.damping * y)
-                .collect()
-        } else {
-            let values = std::array::from_fn(|j| {
-                let s = end * j as f64 / 5.0;
-                l.force(poly::eval(du, s), poly::eval(dv, s))
-            });
-            equispaced_quintic(&values, end).c[..=5].to_vec()
-        };
-        if poly::magnitude_bound(&force, end) > r.max_force {
-            r.max_force = r.max_force.max(poly::max_abs(&force, end));
-        }
     }
 }
 

@@ -41,6 +41,7 @@ pub mod event_function;
 pub mod hermite;
 pub mod layout;
 pub mod link;
+pub mod link_peaks;
 pub mod newmark;
 pub mod peaks;
 pub mod poly;

@@ -170,7 +170,13 @@ pub fn geometry(row: &Row, run: &RowRun, trace: &RowTrace, t: f64, exaggeration:
         joints,
         retrofits: Vec::new(),
     };
-    drawing.retrofits = super::row_retrofit::segments(row, trace, t, &drawing);
+    let frames = super::row_retrofit::Frames {
+        floor: &|b, floor| drawing.floor(b, floor),
+        width: drawing.width,
+        exaggeration,
+        height: drawing.y[1] - drawing.y[0],
+    };
+    drawing.retrofits = super::row_retrofit::segments(row, trace, t, &frames);
     drawing
 }
 
@@ -303,5 +309,52 @@ mod tests {
         assert_eq!(round_125(0.9), 1.0);
         assert_eq!(round_125(1000.0), 1000.0);
         assert_eq!(round_125(f64::INFINITY), 1.0);
+    }
+}
+
+#[cfg(test)]
+mod retrofit_tests {
+    use super::*;
+    use crate::model::buildings::{Ground, load};
+    use crate::solver::buildings::{RowOptions, run_row};
+    use crate::tui::views::row_retrofit::{Mark, velocities};
+
+    /// Three lines a bumper floor, one a link, the link's colour the sign
+    /// of k_l Δu + c_l Δv from the trace; a bare row draws none.
+    #[test]
+    fn draws_each_bumper_face_and_each_link_by_its_force() {
+        let row = load("block-and-frame-retrofit").unwrap();
+        let ground = Ground::sine(3.0, 6.0, 2.0);
+        let options = RowOptions {
+            trace: true,
+            ..RowOptions::lasting(2.0)
+        };
+        let run = run_row(&row, &ground, &options).unwrap();
+        let trace = run.trace.as_ref().unwrap();
+        let mut signs = Vec::new();
+        for t in [0.3, 0.6, 0.9, 1.2, 1.5] {
+            let d = geometry(&row, &run, trace, t, 50.0);
+            let bumpers = d.retrofits.iter().filter(|s| s.2 == Mark::Bumper).count();
+            assert_eq!(bumpers, 9);
+            let link = d.retrofits.last().unwrap();
+            assert_ne!(link.2, Mark::Bumper);
+            // The link runs from the block's roof edge to the frame's third floor.
+            let (xa, ya) = d.floor(0, 3);
+            assert_eq!(link.0, (xa + d.width, ya));
+            assert_eq!(link.1, d.floor(1, 3));
+            let v = velocities(trace, t);
+            let f = 4.0e6 * (v[2] - v[5]);
+            let want = if f > 0.0 {
+                Mark::Compression
+            } else {
+                Mark::Tension
+            };
+            assert_eq!(link.2, want, "t = {t}");
+            signs.push(link.2);
+        }
+        assert!(signs.contains(&Mark::Compression) && signs.contains(&Mark::Tension));
+        let bare = load("block-and-frame").unwrap();
+        let d = geometry(&bare, &run, trace, 1.0, 50.0);
+        assert!(d.retrofits.is_empty());
     }
 }
