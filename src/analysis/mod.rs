@@ -55,6 +55,7 @@ pub mod limit_state;
 pub mod map;
 pub mod record_scaling;
 pub mod record_selection;
+pub mod retrofit_report;
 pub mod risk;
 pub mod row_gap;
 pub mod row_limit_state;

@@ -13,6 +13,8 @@ use crate::output::Num;
 use crate::output::report::{Report, float_or_inf};
 use crate::solver::buildings::RowRun;
 
+use super::retrofit_report::{self, BumperReport, LinkReport};
+
 #[derive(Debug, Clone, Serialize)]
 pub struct FloorReport {
     pub floor: usize,
@@ -70,6 +72,12 @@ pub struct EnergyReport {
     pub damping: f64,
     pub spring: f64,
     pub contact: f64,
+    /// Work of the bumpers and of the links (SPEC §14), for a row with a
+    /// retrofit only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bumper: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub link: Option<f64>,
     pub residual: f64,
 }
 
@@ -81,6 +89,8 @@ impl EnergyReport {
             damping: e.damping / 1e3,
             spring: e.spring / 1e3,
             contact: e.contact / 1e3,
+            bumper: None,
+            link: None,
             residual: e.residual(),
         }
     }
@@ -108,6 +118,11 @@ pub struct RowReport {
     pub duration: f64,
     pub buildings: Vec<BuildingReport>,
     pub pairs: Vec<PairReport>,
+    /// Each bumper element and each link (SPEC §14); absent without them.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub bumpers: Vec<BumperReport>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub links: Vec<LinkReport>,
     pub impacts: usize,
     pub elapsed_ms: f64,
     pub cache: CacheReport,
@@ -177,6 +192,13 @@ impl RowReport {
                 max_penetration: r.max_penetration(),
             })
             .collect();
+        let (bumpers, links) = retrofit_report::of(row, run);
+        let retrofitted = row.is_retrofitted();
+        let energy = run.energy.as_ref().map(|e| EnergyReport {
+            bumper: retrofitted.then_some(e.bumper / 1e3),
+            link: retrofitted.then_some(e.link / 1e3),
+            ..EnergyReport::of(e)
+        });
         let note = (pairs.is_empty() && row.buildings.len() > 1).then(|| {
             "no floors pair up (none at the same elevation within 1 mm, or every gap is inf): the buildings cannot pound".to_string()
         });
@@ -188,6 +210,8 @@ impl RowReport {
             duration: run.duration,
             buildings,
             pairs,
+            bumpers,
+            links,
             impacts: run.impacts(),
             elapsed_ms,
             cache: CacheReport {
@@ -196,7 +220,7 @@ impl RowReport {
                 map_steps: run.map_steps,
                 series_steps: run.series_steps,
             },
-            energy: run.energy.as_ref().map(EnergyReport::of),
+            energy,
             collapsed: row.can_collapse().then(|| {
                 run.collapse.map(|c| CollapseReport {
                     building: row.buildings[c.building].name.clone(),
@@ -207,6 +231,13 @@ impl RowReport {
             note,
             excitation_note: ground.note(),
         }
+    }
+}
+
+impl RowReport {
+    /// Whether the row reported any bumper or link (SPEC §14).
+    fn is_retrofitted(&self) -> bool {
+        !self.bumpers.is_empty() || !self.links.is_empty()
     }
 }
 
@@ -271,10 +302,15 @@ impl Report for RowReport {
                 );
             }
         }
+        s.push_str(&retrofit_report::table(&self.bumpers, &self.links));
         if let Some(e) = &self.energy {
+            let retrofit = match (e.bumper, e.link) {
+                (Some(b), Some(l)) => format!(", bumper {b:.3}, link {l:.3}"),
+                _ => String::new(),
+            };
             let _ = writeln!(
                 s,
-                "\nenergy kJ: input {:.3}, kinetic {:.3}, damping {:.3}, spring {:.3}, contact {:.3}; residual {:.1e}",
+                "\nenergy kJ: input {:.3}, kinetic {:.3}, damping {:.3}, spring {:.3}, contact {:.3}{retrofit}; residual {:.1e}",
                 e.input, e.kinetic, e.damping, e.spring, e.contact, e.residual
             );
         }
@@ -308,7 +344,7 @@ impl Report for RowReport {
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
+        let mut header = vec![
             "building",
             "floor",
             "peak_displacement",
@@ -318,7 +354,11 @@ impl Report for RowReport {
             "drift_ratio",
             "ductility",
             "residual_drift",
-        ]
+        ];
+        if self.is_retrofitted() {
+            header.extend(retrofit_report::CSV_COLUMNS);
+        }
+        header
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
@@ -339,6 +379,13 @@ impl Report for RowReport {
                     ]
                 })
             })
+            .map(|mut r| {
+                if self.is_retrofitted() {
+                    r.resize(r.len() + retrofit_report::CSV_COLUMNS.len(), String::new());
+                }
+                r
+            })
+            .chain(retrofit_report::csv_rows(&self.bumpers, &self.links, 8))
             .collect()
     }
 }

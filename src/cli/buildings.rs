@@ -12,6 +12,7 @@ use super::params::ParamArgs;
 use crate::accuracy::timing::median;
 use crate::analysis::row_report::RowReport;
 use crate::analysis::work;
+use crate::model::buildings::load::text_of;
 use crate::model::buildings::matrices::default_tail;
 use crate::model::buildings::{Ground, Row, load_with};
 use crate::model::excitation::Excitation;
@@ -24,8 +25,10 @@ use crate::solver::buildings::{
 #[derive(Debug, Clone, Default, Args)]
 pub struct BuildingsArgs {
     /// A row of shear buildings (SPEC §13): a built-in row (two-buildings,
-    /// block-and-frame, three-in-series, block-and-frame-pdelta) or a path to a row preset. `--set
-    /// NAME.KEY=V` edits one building, `--set jointN.KEY=V` one joint.
+    /// block-and-frame, three-in-series, block-and-frame-pdelta,
+    /// block-and-frame-retrofit) or a path to a row preset. `--set
+    /// NAME.KEY=V` edits one building, `--set jointN.KEY=V` one joint
+    /// (`jointN.bumper.KEY=V` its bumper), `--set linkN.KEY=V` one link.
     #[arg(long, value_name = "NAME|PATH")]
     pub buildings: Option<String>,
     /// Scale factor on the ground motion (rows).
@@ -65,7 +68,13 @@ impl BuildingsArgs {
         if let Some(m) = model {
             sets.push(format!("model=\"{m}\""));
         }
-        load_with(name, &sets).map_err(|e| CliError::Usage(e.to_string()))
+        let row = load_with(name, &sets).map_err(|e| CliError::Usage(e.to_string()))?;
+        // A fluid viscous damper is a valid preset (SPEC §14), but no method solves it yet.
+        RowError::unsolved_damper(&row).map_err(|e| {
+            let file = text_of(name).map_or_else(|_| name.to_string(), |(file, _)| file);
+            CliError::Usage(format!("{file}: {e}"))
+        })?;
+        Ok(row)
     }
 
     /// The first of `--amplitude` and `--period` given, as (key, value):
@@ -282,6 +291,7 @@ pub fn run(
         };
         result = Some(run.map_err(|e| match e {
             RowError::Runaway(_) => CliError::Failed(e.to_string()),
+            RowError::Damper { .. } => CliError::Usage(e.to_string()),
         })?);
         times.push(t.elapsed().as_secs_f64() * 1e3);
     }
@@ -293,9 +303,13 @@ pub fn run(
             energy: true,
             ..options
         };
-        result.energy = run_row(&row, &ground, &with_energy)
-            .map_err(|e| CliError::Failed(e.to_string()))?
-            .energy;
+        let balance =
+            run_row(&row, &ground, &with_energy).map_err(|e| CliError::Failed(e.to_string()))?;
+        result.energy = balance.energy;
+        // Each link's dissipated energy is a quadrature on the same steps.
+        for (link, from) in result.links.iter_mut().zip(&balance.links) {
+            link.energy = from.energy;
+        }
     }
     let report = RowReport::new(&row, &result, (&ground, &name), method, median(times));
     emit(&report)

@@ -31,8 +31,8 @@ pub struct TuiArgs {
     #[arg(long, value_name = "DIR")]
     pub presets: Option<PathBuf>,
     /// Open the buildings scene on this row of shear buildings (SPEC §13):
-    /// a built-in row (two-buildings, block-and-frame, three-in-series, block-and-frame-pdelta) or
-    /// a path to a row preset.
+    /// a built-in row (two-buildings, block-and-frame, three-in-series, block-and-frame-pdelta,
+    /// block-and-frame-retrofit) or a path to a row preset.
     #[arg(long, value_name = "NAME|PATH")]
     pub buildings: Option<String>,
     /// The row's ground: synthetic:N, record:PATH, sine, pulse-a, pulse-b, pulse-c1 or pulse-c2 [default: synthetic:2000].

@@ -18,6 +18,10 @@ pub static BUILTIN: &[(&str, &str)] = &[
         "block-and-frame-pdelta",
         include_str!("../../../presets/buildings/block-and-frame-pdelta.toml"),
     ),
+    (
+        "block-and-frame-retrofit",
+        include_str!("../../../presets/buildings/block-and-frame-retrofit.toml"),
+    ),
 ];
 
 /// The text of the built-in row `name`.

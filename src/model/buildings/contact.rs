@@ -10,6 +10,7 @@
 use crate::model::ContactModel;
 use crate::model::contact::{ContactLaw, kelvin_damping_ratio};
 
+use super::retrofit::ContactElement;
 use super::row::{FloorPair, Row};
 
 /// m̄ of a floor pair.
@@ -21,9 +22,39 @@ pub fn reduced_mass(row: &Row, pair: &FloorPair) -> f64 {
 
 /// The law of a contact at `pair` that began with approach velocity `v0` (m/s).
 pub fn pair_law(row: &Row, pair: &FloorPair, approach_velocity: f64) -> ContactLaw {
-    let k = row.joints[pair.joint].stiffness;
-    let m_bar = reduced_mass(row, pair);
-    let e = row.restitution;
+    law_of(
+        row,
+        pair,
+        (row.joints[pair.joint].stiffness, row.restitution),
+        approach_velocity,
+    )
+}
+
+/// The law of a contact at `element` (a joint's own or a bumper's, SPEC §14)
+/// that began with approach velocity `v0` (m/s): the row's law with the
+/// element's stiffness and restitution.
+pub fn element_law(row: &Row, element: &ContactElement, approach_velocity: f64) -> ContactLaw {
+    law_of(
+        row,
+        &element.pair,
+        (element.stiffness, element.restitution),
+        approach_velocity,
+    )
+}
+
+fn law_of(row: &Row, pair: &FloorPair, (k, e): (f64, f64), approach_velocity: f64) -> ContactLaw {
+    kelvin_or_hertz(row, k, e, reduced_mass(row, pair), approach_velocity)
+}
+
+/// The row's law (`model`) with stiffness `k`, restitution `e` and reduced
+/// mass `m_bar`, begun at approach velocity v0 (floored at `min_impact_velocity`).
+pub fn kelvin_or_hertz(
+    row: &Row,
+    k: f64,
+    e: f64,
+    m_bar: f64,
+    approach_velocity: f64,
+) -> ContactLaw {
     let v0 = approach_velocity.max(row.min_impact_velocity);
     let kelvin = |linear_damping, hertz_damping| ContactLaw {
         stiffness: k,

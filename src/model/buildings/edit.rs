@@ -30,10 +30,24 @@ pub fn parse_with(file: &str, text: &str, sets: &[String]) -> Result<super::Row,
             Some((owner, key)) => {
                 let slot = find(&mut table, owner).ok_or_else(|| {
                     fail(format!(
-                        "--set `{set}`: no building named `{owner}` and no joint `{owner}` (joints are joint1, joint2, …)"
+                        "--set `{set}`: no building named `{owner}`, no joint and no link `{owner}` (joints are joint1, joint2, …; links link1, link2, …)"
                     ))
                 })?;
-                slot.insert(key.to_string(), value);
+                // `jointN.bumper.KEY`: a key of the joint's bumper table.
+                match key.split_once('.') {
+                    Some((inner, leaf)) => {
+                        let sub = slot
+                            .entry(inner.to_string())
+                            .or_insert_with(|| toml::Value::Table(toml::Table::new()));
+                        let sub = sub.as_table_mut().ok_or_else(|| {
+                            fail(format!("--set `{set}`: `{owner}.{inner}` is not a table"))
+                        })?;
+                        sub.insert(leaf.to_string(), value);
+                    }
+                    None => {
+                        slot.insert(key.to_string(), value);
+                    }
+                }
                 continue;
             }
         };
@@ -54,17 +68,20 @@ fn value_of(text: &str) -> toml::Value {
         .unwrap_or_else(|| toml::Value::String(text.to_string()))
 }
 
-/// The `[[building]]` named `owner`, or the `[[joint]]` `jointN`.
+/// The `[[building]]` named `owner`, the `[[joint]]` `jointN` or the
+/// `[[link]]` `linkN`.
 fn find<'a>(table: &'a mut toml::Table, owner: &str) -> Option<&'a mut toml::Table> {
-    if let Some(n) = owner
-        .strip_prefix("joint")
-        .and_then(|n| n.parse::<usize>().ok())
-    {
-        return table
-            .get_mut("joint")?
-            .as_array_mut()?
-            .get_mut(n.checked_sub(1)?)?
-            .as_table_mut();
+    for list in ["joint", "link"] {
+        if let Some(n) = owner
+            .strip_prefix(list)
+            .and_then(|n| n.parse::<usize>().ok())
+        {
+            return table
+                .get_mut(list)?
+                .as_array_mut()?
+                .get_mut(n.checked_sub(1)?)?
+                .as_table_mut();
+        }
     }
     table
         .get_mut("building")?

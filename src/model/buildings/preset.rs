@@ -10,6 +10,11 @@ use std::path::Path;
 use crate::model::ContactModel;
 use crate::model::params::echo::number as number_text;
 
+use super::keys::{as_f64, number, tables, unknown_keys};
+pub use super::limits::{
+    MAX_CONTACT_STIFFNESS_PER_MASS, MAX_HERTZ_STIFFNESS_PER_MASS, MIN_RESTITUTION,
+};
+use super::retrofit_preset;
 use super::row::{Building, Joint, PDelta, Row};
 
 /// Most buildings in a row.
@@ -40,6 +45,7 @@ const TOP_KEYS: &[&str] = &[
     "min_impact_velocity",
     "building",
     "joint",
+    "link",
 ];
 const BUILDING_KEYS: &[&str] = &[
     "name",
@@ -54,7 +60,7 @@ const BUILDING_KEYS: &[&str] = &[
     "gravity_mass",
     "collapse_drift_ratio",
 ];
-const JOINT_KEYS: &[&str] = &["gap", "stiffness"];
+const JOINT_KEYS: &[&str] = &["gap", "stiffness", "bumper"];
 
 /// Parses and checks a preset's text; `file` names it in messages.
 pub fn parse(file: &str, text: &str) -> Result<Row, BuildingsError> {
@@ -149,18 +155,21 @@ pub fn parse(file: &str, text: &str) -> Result<Row, BuildingsError> {
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default(),
     };
-    let row = Row {
+    let mut row = Row {
         name,
         buildings,
         joints,
         model,
         restitution,
         min_impact_velocity,
+        links: Vec::new(),
     };
     for b in &row.buildings {
         periods_in_range(b).map_err(fail)?;
     }
     contact_in_range(&row).map_err(fail)?;
+    row.links = retrofit_preset::links(&table, &row).map_err(fail)?;
+    retrofit_preset::check_bumpers(&row).map_err(fail)?;
     Ok(row)
 }
 
@@ -173,26 +182,8 @@ pub fn parse(file: &str, text: &str) -> Result<Row, BuildingsError> {
 /// grows without bound.
 pub const PERIOD_RANGE: (f64, f64) = (1e-3, 100.0);
 
-/// Least coefficient of restitution (as the pair's `restitution`).
-pub const MIN_RESTITUTION: f64 = 1e-3;
-
 /// Range of the v₀ floor `min_impact_velocity` (m/s).
 pub const MIN_IMPACT_VELOCITY: (f64, f64) = (1e-9, 1.0);
-
-/// Most a joint's stiffness k̄ (N/m, the Kelvin family) may be per
-/// kilogram of the reduced mass m̄ of any floor pair it joins (1/s²): the
-/// contact frequency √(k̄/m̄) ≤ 1e5 rad/s, a contact lasting π/ω̄ ≥ 31 μs.
-/// The block-and-frame row (m̄ = 1.7e5 to 1.9e5 kg) runs its sine in
-/// 0.05 s at k̄ = 1e13 N/m, in 38 s with 241 impacts and floor
-/// accelerations of 7e7 g at 1e17 N/m, and not at all at 1e19; 1e300 gives
-/// 300-digit accelerations and a NaN energy balance.
-pub const MAX_CONTACT_STIFFNESS_PER_MASS: f64 = 1e10;
-
-/// The same for β (N/m^1.5) of the Hertz-type laws, in 1/(s²·√m): their
-/// tangent stiffness 1.5β√δ grows with the penetration δ, and at δ = 1 mm
-/// this bound gives √(1.5β√δ/m̄) ≤ 2.2e5 rad/s. The block-and-frame row
-/// runs its sine at β = 1e17 N/m^1.5 in 0.8 s, and not at all at 1e19.
-pub const MAX_HERTZ_STIFFNESS_PER_MASS: f64 = 1e12;
 
 /// Every period of `b`'s modes within [`PERIOD_RANGE`].
 fn periods_in_range(b: &Building) -> Result<(), String> {
@@ -241,48 +232,6 @@ fn contact_in_range(row: &Row) -> Result<(), String> {
         }
     }
     Ok(())
-}
-
-fn unknown_keys(t: &toml::Table, allowed: &[&str], whose: &str) -> Result<(), String> {
-    match t.keys().find(|k| !allowed.contains(&k.as_str())) {
-        Some(k) => Err(format!(
-            "{whose}unknown key `{k}`: allowed are {}",
-            allowed.join(", ")
-        )),
-        None => Ok(()),
-    }
-}
-
-fn tables<'a>(t: &'a toml::Table, key: &str) -> Result<Vec<&'a toml::Table>, String> {
-    match t.get(key) {
-        None => Ok(Vec::new()),
-        Some(toml::Value::Array(items)) => items
-            .iter()
-            .map(|v| {
-                v.as_table()
-                    .ok_or_else(|| format!("`{key}` must be an array of tables ([[{key}]])"))
-            })
-            .collect(),
-        Some(_) => Err(format!("`{key}` must be an array of tables ([[{key}]])")),
-    }
-}
-
-/// A number, or `"inf"`, as f64.
-fn as_f64(v: &toml::Value) -> Option<f64> {
-    match v {
-        toml::Value::Float(x) => Some(*x),
-        toml::Value::Integer(i) => Some(*i as f64),
-        toml::Value::String(s) if s == "inf" => Some(f64::INFINITY),
-        _ => None,
-    }
-}
-
-fn number(t: &toml::Table, key: &str, whose: &str, default: Option<f64>) -> Result<f64, String> {
-    match (t.get(key), default) {
-        (None, Some(d)) => Ok(d),
-        (None, None) => Err(format!("{whose}missing key `{key}`")),
-        (Some(v), _) => as_f64(v).ok_or_else(|| format!("{whose}`{key}` = {v}: must be a number")),
-    }
 }
 
 /// A per-storey quantity: a number (every storey) or a list of `storeys`
@@ -506,7 +455,12 @@ fn joint(index: usize, t: &toml::Table) -> Result<Joint, String> {
             number_text(stiffness)
         ));
     }
-    Ok(Joint { gap, stiffness })
+    let bumper = retrofit_preset::bumper(t, &whose, gap)?;
+    Ok(Joint {
+        gap,
+        stiffness,
+        bumper,
+    })
 }
 
 #[cfg(test)]

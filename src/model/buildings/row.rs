@@ -80,13 +80,43 @@ impl Building {
     }
 }
 
-/// The joint between two neighbours: gap at rest and contact stiffness.
+/// A bumper fixed to the left building's face at a joint (SPEC §14).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Bumper {
+    /// t, m: 0 < t ≤ the joint's gap.
+    pub thickness: f64,
+    /// k_b (N/m; β in N/m^1.5 under a Hertz-type law).
+    pub stiffness: f64,
+    /// e_b in [1e-3, 1].
+    pub restitution: f64,
+    /// The left building's floors (1-based) that carry it; None: every pair.
+    pub floors: Option<Vec<usize>>,
+}
+
+/// A link across a joint (SPEC §14), in file order link1, link2, ….
 #[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Link {
+    /// Index of the joint it spans (0-based: 0 joins buildings 1 and 2).
+    pub joint: usize,
+    /// The left building's floor, 1-based.
+    pub floor: usize,
+    /// k_l ≥ 0, N/m.
+    pub stiffness: f64,
+    /// c_l ≥ 0, N·(s/m)^α.
+    pub damping: f64,
+    /// α in (0, 1].
+    pub exponent: f64,
+}
+
+/// The joint between two neighbours: gap at rest and contact stiffness.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Joint {
     /// d, m at rest (may be infinite: no pounding).
     pub gap: f64,
     /// k̄ (N/m) of the Kelvin family; β (N/m^{3/2}) of the Hertz-type laws.
     pub stiffness: f64,
+    /// A bumper in the gap (SPEC §14).
+    pub bumper: Option<Bumper>,
 }
 
 /// Floor `left_floor` of building `left` and floor `right_floor` of its right
@@ -115,6 +145,8 @@ pub struct Row {
     pub restitution: f64,
     /// v₀ floor of the laws that divide by it (m/s).
     pub min_impact_velocity: f64,
+    /// Links across the joints (SPEC §14), in file order.
+    pub links: Vec<Link>,
 }
 
 impl Row {
@@ -211,6 +243,7 @@ impl Row {
         let mut r = self.clone();
         r.buildings.reverse();
         r.joints.reverse();
+        self.mirror_retrofits(&mut r);
         r
     }
 }

@@ -11,7 +11,8 @@
 //! step in the mode of the step, so that a force that jumps where a mode
 //! switches (Kelvin's damping term at contact onset) counts on both sides.
 
-use crate::model::buildings::contact::pair_law;
+use crate::model::ContactLaw;
+use crate::model::buildings::contact::{kelvin_or_hertz, reduced_mass};
 use crate::model::buildings::{Ground, Row};
 
 use super::motion::{Mode, Motion};
@@ -28,6 +29,11 @@ pub struct RowReference {
     pub absolute_acceleration: Vec<Vec<f64>>,
     /// Impacts per floor pair (the row's pairs in order).
     pub impacts: Vec<usize>,
+    /// Contacts per bumper element (SPEC §14), joint by joint, bottom to top.
+    pub bumper_contacts: Vec<usize>,
+    /// Per link (file order): max |F| (N) and E_l = ∫ c_l|Δv|^(α+1) dt (J).
+    pub link_force: Vec<f64>,
+    pub link_energy: Vec<f64>,
     /// Accepted steps.
     pub steps: usize,
     /// (building, 1-based storey, time in s) of a collapse (SPEC §15), where
@@ -47,15 +53,18 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
         branch: vec![0; motion.storeys.len()],
         plastic: vec![0.0; motion.storeys.len()],
         laws: vec![None; motion.pairs.len()],
+        turn: vec![0.0; motion.links.len()],
     };
+    let size = 2 * n + motion.links.len();
     // u = 0, and u̇ = −u̇_g(0): the floors stand still while the ground,
     // under a type B pulse, starts moving (SPEC §9).
-    let mut y = vec![0.0; 2 * n];
-    for v in &mut y[n..] {
+    let mut y = vec![0.0; size];
+    for v in &mut y[n..2 * n] {
         *v = -ground.initial_velocity();
     }
     let mut peak_u = vec![0.0f64; n];
-    let mut peak_v: Vec<f64> = y[n..].iter().map(|v| v.abs()).collect();
+    let mut peak_v: Vec<f64> = y[n..2 * n].iter().map(|v| v.abs()).collect();
+    let mut peak_f = vec![0.0f64; motion.links.len()];
     let mut peak_d = vec![0.0f64; motion.storeys.len()];
     let mut peak_a = vec![0.0f64; n];
     let mut impacts = vec![0; motion.pairs.len()];
@@ -68,14 +77,14 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
             let f = |tt: f64, yy: &[f64], out: &mut [f64]| motion.rhs(&mode, tt, yy, out);
             let hh = h.min(piece.t1 - t).min(MAX_STEP);
             let (y1, err) = step(&f, t, &y, hh);
-            let norm = (0..2 * n)
+            let norm = (0..size)
                 .map(|i| {
                     let s = tolerance * (1.0 + y[i].abs().max(y1[i].abs()));
                     (err[i] / s).powi(2)
                 })
                 .sum::<f64>()
                 .sqrt()
-                / ((2 * n) as f64).sqrt();
+                / (size as f64).sqrt();
             if norm > 1.0 {
                 h = hh * (0.9 * norm.powf(-0.2)).max(0.2);
                 continue;
@@ -109,8 +118,8 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
                 y_end = step(&f, t, &y, hi).0;
             }
             // Turning points inside [t, t + end].
-            let mut f0 = vec![0.0; 2 * n];
-            let mut f1 = vec![0.0; 2 * n];
+            let mut f0 = vec![0.0; size];
+            let mut f1 = vec![0.0; size];
             f(t, &y, &mut f0);
             f(t + end, &y_end, &mut f1);
             let locate = |rate: &dyn Fn(&[f64], &[f64]) -> f64, value: &dyn Fn(&[f64]) -> f64| {
@@ -119,7 +128,7 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
                     return 0.0;
                 }
                 let (mut lo, mut hi) = (0.0, end);
-                let mut fy = vec![0.0; 2 * n];
+                let mut fy = vec![0.0; size];
                 for _ in 0..60 {
                     let mid = 0.5 * (lo + hi);
                     if mid <= lo || mid >= hi {
@@ -155,19 +164,32 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
             }
             for (k, s) in motion.storeys.iter().enumerate() {
                 let d = |yy: &[f64]| motion.drift(s, &yy[..n]);
-                let r = |yy: &[f64], _: &[f64]| motion.drift(s, &yy[n..]);
+                let r = |yy: &[f64], _: &[f64]| motion.drift(s, &yy[n..2 * n]);
                 peak_d[k] = peak_d[k].max(d(&y_end).abs()).max(locate(&r, &d));
+            }
+            for (k, l) in motion.links.iter().enumerate() {
+                let force = |yy: &[f64]| {
+                    l.force(yy[l.left] - yy[l.right], yy[n + l.left] - yy[n + l.right])
+                };
+                let rate = |yy: &[f64], ff: &[f64]| motion.link_rate(l, yy, ff);
+                peak_f[k] = peak_f[k]
+                    .max(force(&y).abs())
+                    .max(force(&y_end).abs())
+                    .max(locate(&rate, &force));
             }
             // Switch the mode where an event fired.
             if end < hh {
                 let g = events(&motion, &mode, &y_end);
                 let ns = motion.storeys.len();
                 let np = motion.pairs.len();
+                let nc = ns + np + motion.storeys.len();
                 for (j, (&gj, &a)) in g.iter().zip(&armed).enumerate() {
                     if !(a && gj > 0.0) {
                         continue;
                     }
-                    if j >= ns + np {
+                    if j >= nc {
+                        mode.turn[j - nc] = -mode.turn[j - nc];
+                    } else if j >= ns + np {
                         let s = &motion.storeys[j - ns - np];
                         collapse = Some((s.building, s.storey, t + end));
                     } else if j < ns {
@@ -187,10 +209,18 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
                             mode.laws[pi] = None;
                         } else {
                             let v0 = y_end[n + p.left_dof] - y_end[n + p.right_dof];
-                            mode.laws[pi] = Some(pair_law(row, p, v0));
+                            mode.laws[pi] = Some(law(row, &motion, pi, v0));
                             impacts[pi] += 1;
                         }
                     }
+                }
+            }
+            // A damper's sign, once its Δv has one: the kink where Δv
+            // next changes sign is an event.
+            for (turn, l) in mode.turn.iter_mut().zip(&motion.links) {
+                let dv = y_end[n + l.left] - y_end[n + l.right];
+                if *turn == 0.0 && l.exponent < 1.0 && dv != 0.0 {
+                    *turn = dv.signum();
                 }
             }
             t = if end >= piece.t1 - t {
@@ -214,7 +244,11 @@ pub fn reference_row(row: &Row, ground: &Ground, duration: f64, tolerance: f64) 
             .map(|(b, &o)| v[o..o + b.storeys()].to_vec())
             .collect()
     };
+    let bumper_contacts = impacts.split_off(motion.hard);
     RowReference {
+        bumper_contacts,
+        link_force: peak_f,
+        link_energy: y[2 * n..].to_vec(),
         displacement: split(&peak_u),
         velocity: split(&peak_v),
         drift: split(&peak_d),
@@ -245,5 +279,16 @@ fn events(motion: &Motion, mode: &Mode, y: &[f64]) -> Vec<f64> {
     for s in &motion.storeys {
         g.push(motion.drift(s, &y[..n]).abs() - s.collapse_drift);
     }
+    for (l, &turn) in motion.links.iter().zip(&mode.turn) {
+        g.push(-turn * (y[n + l.left] - y[n + l.right]));
+    }
     g
+}
+
+/// The law of contact element `pi` (a joint's own or a bumper's) begun at
+/// approach velocity v0, from its own stiffness and restitution.
+fn law(row: &Row, motion: &Motion, pi: usize, v0: f64) -> ContactLaw {
+    let (k, e) = motion.laws[pi];
+    let m_bar = reduced_mass(row, &motion.pairs[pi]);
+    kelvin_or_hertz(row, k, e, m_bar, v0)
 }

@@ -26,7 +26,7 @@
 use std::collections::HashSet;
 use std::time::Instant;
 
-use crate::model::buildings::contact::pair_law;
+use crate::model::buildings::contact::element_law;
 use crate::model::buildings::ground::Piece;
 use crate::model::buildings::{Ground, Row};
 
@@ -37,6 +37,8 @@ use super::energy::{NODES, RowEnergy, gauss_legendre};
 use super::event_function::EventFunction;
 use super::hermite::range;
 use super::layout::Layout;
+use super::link::{self, LinkResult};
+use super::link_peaks;
 use super::peaks::{Envelope, raise};
 use super::poly;
 use super::profile::{Cause, RowProfile};
@@ -88,6 +90,27 @@ impl RowOptions {
 pub enum RowError {
     #[error("the run stopped at t = {0} s: more than 10⁸ events or series steps")]
     Runaway(f64),
+    /// A link with α < 1 (SPEC §14), which neither method solves yet.
+    #[error(
+        "link{link}: `exponent` = {exponent}: fluid viscous dampers (exponent < 1) are not solved yet; the methods take exponent = 1, a linear dashpot"
+    )]
+    Damper { link: usize, exponent: f64 },
+}
+
+impl RowError {
+    /// The first link of `row` that is a fluid viscous damper (α < 1),
+    /// refused: near Δv = 0 its damping c_l α |Δv|^(α−1) has no bound, and
+    /// from rest, where Δv stays near 0, neither the Runge–Kutta steps nor
+    /// Newton's iterations get through it.
+    pub fn unsolved_damper(row: &Row) -> Result<(), RowError> {
+        match row.links.iter().position(|l| l.exponent < 1.0) {
+            Some(i) => Err(RowError::Damper {
+                link: i + 1,
+                exponent: row.links[i].exponent,
+            }),
+            None => Ok(()),
+        }
+    }
 }
 
 /// Most series steps in one run.
@@ -112,7 +135,7 @@ fn ground_at(piece: &Piece, t: f64) -> (f64, f64) {
 /// state (u, u̇, a_g, ȧ_g, M⁻¹q) of [`super::propagator`], in this order:
 /// u_i, u̇_i and ü_i + a_g of every floor, every storey's drift, the
 /// relative displacement u_A − u_B of every facing pair, then of every
-/// pounding pair.
+/// contact element, then Δu and Δv of every link (SPEC §14).
 fn watched(layout: &Layout) -> Vec<Watch> {
     let n = layout.dofs;
     let mut w = Vec::new();
@@ -134,6 +157,14 @@ fn watched(layout: &Layout) -> Vec<Watch> {
             terms: vec![(p.left_dof, 1.0), (p.right_dof, -1.0)],
             order: 0,
         });
+    }
+    for l in &layout.links {
+        for order in 0..2 {
+            w.push(Watch {
+                terms: vec![(l.pair.left_dof, 1.0), (l.pair.right_dof, -1.0)],
+                order,
+            });
+        }
     }
     w
 }
@@ -189,6 +220,8 @@ struct Run<'a> {
     /// Buffers of the map steps, reused: the next (u, u̇) and spare stacks.
     next: (Vec<f64>, Vec<f64>),
     spare: Vec<Stack>,
+    /// Every link's peaks and energy (SPEC §14).
+    links: Vec<LinkResult>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -226,6 +259,7 @@ pub fn run_row_cached(
     options: &RowOptions,
     cache: &mut MapCache,
 ) -> Result<RowRun, RowError> {
+    RowError::unsolved_damper(row)?;
     let propagator = cache.of(row);
     let counts_before = (propagator.made, propagator.used, propagator.seconds);
     let layout = Layout::of(row);
@@ -238,6 +272,7 @@ pub fn run_row_cached(
     // ground starts moving (SPEC §9, type B pulse): u̇_i(0) = −u̇_g(0).
     let v0 = vec![-ground.initial_velocity(); n];
     let n_pairs = layout.pairs.len();
+    let layout_links = layout.links.len();
     let initial_kinetic = 0.5
         * layout
             .mass
@@ -276,12 +311,14 @@ pub fn run_row_cached(
         next_contact_step: 0.0,
         forces: options.forces.then(|| ForceHistory {
             pairs: vec![Vec::new(); n_pairs],
+            ..ForceHistory::default()
         }),
         collapse: None,
         profile: RowProfile::default(),
         timed: options.profile,
         next: (Vec::new(), Vec::new()),
         spare: Vec::new(),
+        links: vec![LinkResult::new(); layout_links],
     };
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
@@ -459,6 +496,16 @@ impl Run<'_> {
                     return Err(Cause::Peak);
                 }
             }
+            let base = base + self.layout.facing.len() + self.layout.pairs.len();
+            for (l, (link, peaks)) in self.layout.links.iter().zip(&self.links).enumerate() {
+                let (du, dv) = (base + 2 * l, base + 2 * l + 1);
+                let (qu, qv) = (ends(du), ends(dv));
+                let stroke = (values(du, qu), monotone(du, qu));
+                let rate = (values(dv, qv), monotone(dv, qv));
+                if !link::quiet(link, peaks, stroke, rate) {
+                    return Err(Cause::Peak);
+                }
+            }
             Ok(())
         })();
         if let Err(cause) = verdict {
@@ -500,6 +547,17 @@ impl Run<'_> {
         }
         for (k, p) in self.layout.facing.iter().enumerate() {
             env.relative[k] = env.relative[k].max(self.u[p.left_dof] - self.u[p.right_dof]);
+        }
+        link::record_point(&self.layout.links, &self.u, &self.v, &mut self.links);
+        if let Some(history) = self.forces.as_mut() {
+            history.links.resize(self.layout.links.len(), Vec::new());
+            for (l, h) in self.layout.links.iter().zip(&mut history.links) {
+                let (a, b) = (l.pair.left_dof, l.pair.right_dof);
+                h.push((
+                    self.t,
+                    l.force(self.u[a] - self.u[b], self.v[a] - self.v[b]),
+                ));
+            }
         }
     }
 
@@ -734,6 +792,13 @@ impl Run<'_> {
                 }
             }
         }
+        link_peaks::peaks_on(
+            &self.layout.links,
+            series,
+            end,
+            &mut self.links,
+            (&mut c, &mut self.buf2),
+        );
         let c = &mut c;
         let env = &mut self.envelope;
         for (k, s) in self.layout.storeys.iter().enumerate() {
@@ -820,18 +885,27 @@ impl Run<'_> {
                     - st.geometric * d)
                     * rate;
             }
-            let mut contact = 0.0;
+            // The joints' own elements, then the bumpers' (SPEC §14).
+            let mut contact = [0.0; 2];
             for (pi, p) in self.layout.pairs.iter().enumerate() {
                 if let Some(closed) = &self.config.contact[pi] {
                     let delta = u[p.left_dof] - u[p.right_dof] - self.layout.gaps[pi];
                     let rate = v[p.left_dof] - v[p.right_dof];
-                    contact += closed.law.force(delta, rate).force * rate;
+                    contact[usize::from(pi >= self.layout.hard)] +=
+                        closed.law.force(delta, rate).force * rate;
                 }
+            }
+            for (l, r) in self.layout.links.iter().zip(&mut self.links) {
+                let (a, b) = (l.pair.left_dof, l.pair.right_dof);
+                let rate = v[a] - v[b];
+                e.link += weight * l.force(u[a] - u[b], rate) * rate;
+                r.energy = r.energy.max(0.0) + weight * l.dissipation(rate);
             }
             e.damping += weight * damping;
             e.input += weight * input;
             e.spring += weight * spring;
-            e.contact += weight * contact;
+            e.contact += weight * contact[0];
+            e.bumper += weight * contact[1];
         }
         e.max_input = e.max_input.max(e.input.abs());
         self.energy = Some((e, x, w));
@@ -859,7 +933,7 @@ impl Run<'_> {
                 let p = self.layout.pairs[pi];
                 let v0 = self.v[p.left_dof] - self.v[p.right_dof];
                 self.config.contact[pi] = Some(Closed {
-                    law: pair_law(self.row, &p, v0),
+                    law: element_law(self.row, &self.layout.elements[pi], v0),
                     approach_velocity: v0,
                 });
                 if let Some(history) = self.forces.as_mut() {
@@ -937,11 +1011,18 @@ impl Run<'_> {
                     .sum::<f64>(),
             ..*e
         });
+        let (mut pairs, mut forces) = (self.pairs, self.forces);
+        let bumpers = pairs.split_off(self.layout.hard);
+        if let Some(f) = forces.as_mut() {
+            f.bumpers = f.pairs.split_off(self.layout.hard);
+        }
         RowRun {
             energy,
             max_relative: self.envelope.relative.clone(),
             floors,
-            pairs: self.pairs,
+            pairs,
+            bumpers,
+            links: self.links,
             duration,
             final_displacement: self.u,
             final_velocity: self.v,
@@ -950,7 +1031,7 @@ impl Run<'_> {
             series_steps: self.series_steps,
             configurations: self.configurations.len(),
             trace: None,
-            forces: self.forces,
+            forces,
             collapse: self.collapse,
             profile: self.profile,
         }

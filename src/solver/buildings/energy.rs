@@ -3,7 +3,8 @@
 //! ```text
 //! E_in = −∫ Σ m_i u̇_i ü_g dt,   E_kin = ½ Σ m_i u̇_i²,
 //! E_damp = ∫ u̇ᵀC u̇ dt,   E_spring = ∫ Σ V_j Δ̇_j dt,   E_contact = ∫ Σ f_p δ̇ dt,
-//! residual = |E_kin + E_damp + E_spring + E_contact − E_in − E_kin(0)|
+//! E_bumper = ∫ Σ f_b ċ dt,   E_link = ∫ Σ F_l Δv dt   (SPEC §14),
+//! residual = |E_kin + E_damp + E_spring + E_contact + E_bumper + E_link − E_in − E_kin(0)|
 //!            / max(max |E_in|, E_kin(0)),
 //! ```
 //!
@@ -61,12 +62,18 @@ pub struct RowEnergy {
     pub max_input: f64,
     /// E_kin at t = 0.
     pub initial_kinetic: f64,
+    /// Work of the bumpers' contact forces and of the links' forces
+    /// (SPEC §14; 0 without them).
+    #[serde(default)]
+    pub bumper: f64,
+    #[serde(default)]
+    pub link: f64,
 }
 
 impl RowEnergy {
     /// The residual of the balance above.
     pub fn residual(&self) -> f64 {
-        (self.kinetic + self.damping + self.spring + self.contact
+        (self.kinetic + self.damping + self.spring + self.contact + self.bumper + self.link
             - self.input
             - self.initial_kinetic)
             .abs()

@@ -5,7 +5,7 @@
 use nalgebra::DMatrix;
 
 use crate::model::buildings::matrices::RowMatrices;
-use crate::model::buildings::{FloorPair, Row};
+use crate::model::buildings::{ContactElement, FloorPair, LinkElement, Row};
 
 /// One storey: it joins floor `lower` (None: the ground) and floor `upper`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,8 +31,16 @@ pub struct Layout {
     /// M⁻¹C (Rayleigh, SPEC §13).
     pub damping: DMatrix<f64>,
     pub storeys: Vec<Storey>,
+    /// The contact elements' floors and gaps: the joints' own at each floor
+    /// pair first, then the bumpers' (SPEC §14, [`Row::contact_elements`]).
     pub pairs: Vec<FloorPair>,
     pub gaps: Vec<f64>,
+    /// The contact elements themselves, in the order of `pairs`.
+    pub elements: Vec<ContactElement>,
+    /// How many of them are the joints' own (the rest are bumpers).
+    pub hard: usize,
+    /// The links across the joints (SPEC §14).
+    pub links: Vec<LinkElement>,
     /// Floors at the same elevation whatever the gap, whose largest
     /// u_A − u_B is tracked (the gap that prevents pounding).
     pub facing: Vec<FloorPair>,
@@ -69,13 +77,18 @@ impl Layout {
                 });
             }
         }
-        let pairs = row.pairs();
-        let gaps = pairs.iter().map(|p| row.joints[p.joint].gap).collect();
+        let elements = row.contact_elements();
+        let pairs = elements.iter().map(|e| e.pair).collect();
+        let gaps = elements.iter().map(|e| e.gap).collect();
+        let links = row.link_elements();
+        // The links' springs and linear dashpots join K₀ and C in the bound.
+        let (mut k_all, mut c_all) = (m.stiffness.clone(), damping.clone());
+        super::link::add_linear(&links, &mass, &mut k_all, &mut c_all);
         let stiff = (0..n)
-            .map(|i| (0..n).map(|j| m.stiffness[(i, j)].abs()).sum::<f64>() / mass[i])
+            .map(|i| (0..n).map(|j| k_all[(i, j)].abs()).sum::<f64>() / mass[i])
             .fold(0.0, f64::max);
         let damp = (0..n)
-            .map(|i| (0..n).map(|j| damping[(i, j)].abs()).sum::<f64>())
+            .map(|i| (0..n).map(|j| c_all[(i, j)].abs()).sum::<f64>())
             .fold(0.0, f64::max);
         Layout {
             facing: row.facing_floors(),
@@ -85,6 +98,9 @@ impl Layout {
             storeys,
             pairs,
             gaps,
+            hard: row.pairs().len(),
+            elements,
+            links,
             rate: stiff.sqrt().max(damp),
         }
     }

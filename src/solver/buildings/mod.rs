@@ -25,6 +25,7 @@
 //! - [`config`]: the configuration (branches, contacts) and its cache key;
 //! - [`event_function`]: each event's function, linear in the state;
 //! - [`system`]: the linear system of one configuration;
+//! - [`link`]: links across the joints (SPEC §14), linear and fluid viscous;
 //! - [`peaks`]: the envelopes a run reports;
 //! - [`energy`]: the energy balance, by quadrature on the Taylor steps;
 //! - [`result`]: what a run returns;
@@ -40,6 +41,8 @@ pub mod energy;
 pub mod event_function;
 pub mod hermite;
 pub mod layout;
+pub mod link;
+pub mod link_peaks;
 pub mod newmark;
 pub mod peaks;
 pub mod poly;
@@ -51,6 +54,7 @@ pub mod taylor;
 
 pub use driver::{MapCache, RowError, RowOptions, run_row, run_row_cached};
 pub use energy::RowEnergy;
+pub use link::LinkResult;
 pub use newmark::{default_step, max_step, run_newmark};
 pub use profile::{Cause, RowProfile};
 pub use result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};

@@ -15,7 +15,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::model::buildings::contact::{pair_law, reduced_mass};
+use crate::model::buildings::contact::{element_law, reduced_mass};
 use crate::model::buildings::matrices::{RowMatrices, periods};
 use crate::model::buildings::{Ground, Row};
 use crate::model::params::echo;
@@ -24,6 +24,7 @@ use crate::model::{Bilinear, ContactLaw, SpringState};
 
 use super::driver::RowError;
 use super::layout::Layout;
+use super::link::{self, LinkResult};
 use super::peaks::{Envelope, raise};
 use super::result::{Collapse, FloorPeaks, PairImpact, PairResult, RowRun};
 
@@ -84,6 +85,34 @@ impl Newmark<'_> {
         out
     }
 
+    /// The links' forces F = k_l Δu + c_l|Δv|^α sgn Δv on the floors (SPEC §14)
+    /// and their tangent k_l + γ/(βΔt) · c_l α|Δv|^(α−1) (the dashpot's
+    /// slope, finite at Δv = 0 only for α = 1: there a damper's is taken
+    /// at |Δv| = 1e-9 m/s, which Newton's step needs only as a slope).
+    fn links(
+        &self,
+        u: &DVector<f64>,
+        v: &DVector<f64>,
+        c2: f64,
+        f: &mut DVector<f64>,
+        k: &mut DMatrix<f64>,
+    ) {
+        for l in &self.layout.links {
+            let (i, j) = (l.pair.left_dof, l.pair.right_dof);
+            let dv = v[i] - v[j];
+            let force = l.force(u[i] - u[j], dv);
+            let alpha = l.link.exponent;
+            let slope = l.link.damping * alpha * dv.abs().max(1e-9).powf(alpha - 1.0);
+            let kt = l.link.stiffness + c2 * slope;
+            f[i] += force;
+            f[j] -= force;
+            k[(i, i)] += kt;
+            k[(j, j)] += kt;
+            k[(i, j)] -= kt;
+            k[(j, i)] -= kt;
+        }
+    }
+
     /// One step from `p` to p.t + dt with the current contact laws.
     fn step(&self, p: &Point, dt: f64) -> Result<Point, RowError> {
         let n = self.layout.dofs;
@@ -103,6 +132,7 @@ impl Newmark<'_> {
                 k[(i, i)] += c1 * self.mass[i];
             }
             self.storeys(p, &u, &mut f, &mut k);
+            self.links(&u, &v, c2, &mut f, &mut k);
             for ((pair, law), &gap) in self
                 .layout
                 .pairs
@@ -273,11 +303,25 @@ pub fn max_step(row: &Row, ground: &Ground) -> (f64, String) {
         shorter(t, &|| format!("building `{}`", b.name));
     }
     if !row.model.is_hertzian() {
-        for pair in row.pairs() {
-            let stiffness = row.joints[pair.joint].stiffness;
-            let t = std::f64::consts::TAU / (stiffness / reduced_mass(row, &pair)).sqrt();
-            shorter(t, &|| format!("the contact of {}", row.pair_name(&pair)));
+        for e in row.contact_elements() {
+            let pair = e.pair;
+            let t = std::f64::consts::TAU / (e.stiffness / reduced_mass(row, &pair)).sqrt();
+            let what = if e.thickness.is_some() {
+                "bumper"
+            } else {
+                "contact"
+            };
+            shorter(t, &|| format!("the {what} of {}", row.pair_name(&pair)));
         }
+    }
+    for l in row
+        .link_elements()
+        .iter()
+        .filter(|l| l.link.stiffness > 0.0)
+    {
+        let pair = l.pair;
+        let t = std::f64::consts::TAU / (l.link.stiffness / reduced_mass(row, &pair)).sqrt();
+        shorter(t, &|| format!("the link of {}", row.pair_name(&pair)));
     }
     if let Ground::Sine { omega, .. } = ground {
         shorter(std::f64::consts::TAU / omega, &|| "the motion".to_string());
@@ -301,6 +345,7 @@ pub fn max_step(row: &Row, ground: &Ground) -> (f64, String) {
 
 /// Runs Newmark with step `dt` on `row` under `ground` for `duration` seconds.
 pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result<RowRun, RowError> {
+    RowError::unsolved_damper(row)?;
     let layout = Layout::of(row);
     let m = RowMatrices::of(row);
     let n = layout.dofs;
@@ -335,10 +380,21 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
     };
     let mut env = Envelope::new(n, nm.layout.storeys.len(), nm.layout.facing.len());
     let mut pairs = vec![PairResult::default(); nm.layout.pairs.len()];
+    let mut links = vec![LinkResult::new(); nm.layout.links.len()];
+    // E_l by the trapezoidal rule on the steps (second order, as the method).
+    let mut power = vec![0.0; nm.layout.links.len()];
+    let mut last_t = 0.0;
     let steps = (duration / dt).ceil().max(1.0) as usize;
     let h = duration / steps as f64;
     let mut record = |p: &Point, nm: &Newmark, pairs: &mut [PairResult]| {
         let ag = ground.at(p.t);
+        link::record_point(&nm.layout.links, p.u.as_slice(), p.v.as_slice(), &mut links);
+        for ((l, r), w) in nm.layout.links.iter().zip(&mut links).zip(&mut power) {
+            let now = l.dissipation(p.v[l.pair.left_dof] - p.v[l.pair.right_dof]);
+            r.energy = r.energy.max(0.0) + 0.5 * (p.t - last_t) * (*w + now);
+            *w = now;
+        }
+        last_t = p.t;
         for i in 0..n {
             raise(&mut env.displacement[i], p.u[i]);
             raise(&mut env.velocity[i], p.v[i]);
@@ -420,7 +476,7 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
                             last.separation_velocity = -rate;
                         }
                     } else {
-                        nm.laws[i] = Some(pair_law(row, &nm.layout.pairs[i], rate));
+                        nm.laws[i] = Some(element_law(row, &nm.layout.elements[i], rate));
                         pairs[i].impacts.push(PairImpact {
                             start: p.t,
                             end: f64::NAN,
@@ -455,9 +511,12 @@ pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result
         }
         floors.push(list);
     }
+    let bumpers = pairs.split_off(nm.layout.hard);
     Ok(RowRun {
         floors,
         pairs,
+        bumpers,
+        links,
         duration,
         final_displacement: p.u.iter().copied().collect(),
         final_velocity: p.v.iter().copied().collect(),

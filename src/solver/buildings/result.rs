@@ -90,6 +90,13 @@ pub struct RowRun {
     /// ([`super::profile`]); not part of a run's output.
     #[serde(skip)]
     pub profile: super::profile::RowProfile,
+    /// The contacts of every bumper element (SPEC §14), in the order of
+    /// [`crate::model::buildings::Row::bumper_elements`]; empty without bumpers.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub bumpers: Vec<PairResult>,
+    /// Every link's peaks and energy (SPEC §14), in file order; empty without links.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub links: Vec<super::link::LinkResult>,
 }
 
 /// A collapse (SPEC §15): the first instant a storey's |Δ_i|/h_i reaches
@@ -114,6 +121,13 @@ pub struct Collapse {
 pub struct ForceHistory {
     /// Per pair in the layout's order, (t in s, f_p in N), t increasing.
     pub pairs: Vec<Vec<(f64, f64)>>,
+    /// The same for every bumper element (SPEC §14); empty without bumpers.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub bumpers: Vec<Vec<(f64, f64)>>,
+    /// Every link's force F (N) at the end of every sub-step and step
+    /// (SPEC §14); empty without links.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub links: Vec<Vec<(f64, f64)>>,
 }
 
 impl ForceHistory {

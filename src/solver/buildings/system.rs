@@ -13,6 +13,8 @@
 //!   f = k̄δ + cδ̇ + hδδ̇ (SPEC §4) acts −f on A and +f on B; k̄ and c go into
 //!   K and C, k̄d into q, and the improved Kelvin law's hδδ̇ stays the one
 //!   nonlinear term (e_p = +1 at A, −1 at B).
+//! - A link (SPEC §14) adds its spring k_l to K in every configuration, and
+//!   its dashpot c_l to C when it is linear (α = 1) ([`super::link`]).
 
 use nalgebra::DMatrix;
 
@@ -106,6 +108,7 @@ impl System {
                 });
             }
         }
+        super::link::add_linear(&layout.links, &layout.mass, &mut k, &mut c);
         for i in 0..n {
             let m = layout.mass[i];
             for j in 0..n {

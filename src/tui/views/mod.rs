@@ -15,6 +15,7 @@ pub mod row;
 pub mod row_drawing;
 pub mod row_panel;
 pub mod row_params;
+pub mod row_retrofit;
 pub mod sets;
 pub mod spectrum;
 pub mod summary;

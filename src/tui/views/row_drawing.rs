@@ -14,6 +14,7 @@ use ratatui::style::{Color, Style};
 
 use super::chart;
 use super::raster::Raster;
+use super::row_retrofit::Mark;
 use crate::model::buildings::Row;
 use crate::solver::buildings::{RowRun, RowTrace};
 use crate::tui::look::{Look, palette};
@@ -60,6 +61,8 @@ pub struct Drawing {
     pub y: [f64; 2],
     /// Each joint's gap at rest (m) and the middle of its opening.
     pub joints: Vec<(f64, f64)>,
+    /// The bumpers and links (SPEC §14, [`super::row_retrofit`]).
+    pub retrofits: Vec<super::row_retrofit::Segment>,
 }
 
 impl Drawing {
@@ -158,14 +161,23 @@ pub fn geometry(row: &Row, run: &RowRun, trace: &RowTrace, t: f64, exaggeration:
         }
     }
     let margin = 0.45 * width;
-    Drawing {
+    let mut drawing = Drawing {
         frames,
         width,
         exaggeration,
         x: [-margin, left + margin],
         y: [0.0, 1.05 * tallest(row)],
         joints,
-    }
+        retrofits: Vec::new(),
+    };
+    let frames = super::row_retrofit::Frames {
+        floor: &|b, floor| drawing.floor(b, floor),
+        width: drawing.width,
+        exaggeration,
+        height: drawing.y[1] - drawing.y[0],
+    };
+    drawing.retrofits = super::row_retrofit::segments(row, trace, t, &frames);
+    drawing
 }
 
 /// The plot's cells in `area`: all but the title row and the name row.
@@ -179,7 +191,8 @@ pub fn plot_area(area: Rect) -> Rect {
 }
 
 /// The raster of `drawing` over `plot`: series k is building k; the
-/// contact colour is series `frames.len()`.
+/// contact colour is series `frames.len()`, and the retrofits' marks the
+/// series after it, in the order of [`Mark::ALL`].
 pub fn raster(drawing: &Drawing, plot: Rect, braille: bool) -> Raster {
     let mut r = Raster::new(plot, braille, drawing.x, drawing.y);
     let contact = drawing.frames.len();
@@ -193,6 +206,10 @@ pub fn raster(drawing: &Drawing, plot: Rect, braille: bool) -> Raster {
             let series = if f.contact[i] { contact } else { k };
             r.segment((x1, y1), (x1 + w, y1), series);
         }
+    }
+    for &(a, b, mark) in &drawing.retrofits {
+        let k = Mark::ALL.iter().position(|&m| m == mark).unwrap_or(0);
+        r.segment(a, b, contact + 1 + k);
     }
     r
 }
@@ -228,6 +245,8 @@ pub fn render(buf: &mut Buffer, area: Rect, look: Look, drawing: &Drawing, title
             };
             let color = if owner == contact {
                 palette::FORCE
+            } else if owner > contact {
+                Mark::ALL[(owner - contact - 1).min(Mark::ALL.len() - 1)].color()
             } else {
                 COLORS[owner % COLORS.len()]
             };
@@ -290,5 +309,52 @@ mod tests {
         assert_eq!(round_125(0.9), 1.0);
         assert_eq!(round_125(1000.0), 1000.0);
         assert_eq!(round_125(f64::INFINITY), 1.0);
+    }
+}
+
+#[cfg(test)]
+mod retrofit_tests {
+    use super::*;
+    use crate::model::buildings::{Ground, load};
+    use crate::solver::buildings::{RowOptions, run_row};
+    use crate::tui::views::row_retrofit::{Mark, velocities};
+
+    /// Three lines a bumper floor, one a link, the link's colour the sign
+    /// of k_l Δu + c_l Δv from the trace; a bare row draws none.
+    #[test]
+    fn draws_each_bumper_face_and_each_link_by_its_force() {
+        let row = load("block-and-frame-retrofit").unwrap();
+        let ground = Ground::sine(3.0, 6.0, 2.0);
+        let options = RowOptions {
+            trace: true,
+            ..RowOptions::lasting(2.0)
+        };
+        let run = run_row(&row, &ground, &options).unwrap();
+        let trace = run.trace.as_ref().unwrap();
+        let mut signs = Vec::new();
+        for t in [0.3, 0.6, 0.9, 1.2, 1.5] {
+            let d = geometry(&row, &run, trace, t, 50.0);
+            let bumpers = d.retrofits.iter().filter(|s| s.2 == Mark::Bumper).count();
+            assert_eq!(bumpers, 9);
+            let link = d.retrofits.last().unwrap();
+            assert_ne!(link.2, Mark::Bumper);
+            // The link runs from the block's roof edge to the frame's third floor.
+            let (xa, ya) = d.floor(0, 3);
+            assert_eq!(link.0, (xa + d.width, ya));
+            assert_eq!(link.1, d.floor(1, 3));
+            let v = velocities(trace, t);
+            let f = 4.0e6 * (v[2] - v[5]);
+            let want = if f > 0.0 {
+                Mark::Compression
+            } else {
+                Mark::Tension
+            };
+            assert_eq!(link.2, want, "t = {t}");
+            signs.push(link.2);
+        }
+        assert!(signs.contains(&Mark::Compression) && signs.contains(&Mark::Tension));
+        let bare = load("block-and-frame").unwrap();
+        let d = geometry(&bare, &run, trace, 1.0, 50.0);
+        assert!(d.retrofits.is_empty());
     }
 }
