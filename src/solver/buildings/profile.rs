@@ -61,6 +61,9 @@ pub struct Events {
 pub struct RowProfile {
     /// Sub-steps taken by the cached map.
     pub map_steps: usize,
+    /// Of those, sub-steps whose rising peaks were located on their closed
+    /// form (a series from their start) instead of a series walk.
+    pub located: usize,
     /// Sub-steps that went by the series, by cause.
     pub careful: PerCause,
     /// Series (or Runge–Kutta) steps, by the cause of their sub-step.

@@ -12,6 +12,7 @@ use std::cell::Cell;
 use crate::model::buildings::ground::Piece;
 
 use super::super::config::Branch;
+use super::super::peaks::Envelope;
 use super::super::taylor::Series;
 use super::{Run, ground_at};
 
@@ -23,6 +24,8 @@ const SLACK: f64 = 1e-9;
 thread_local! {
     /// Quiet sub-steps checked on this thread.
     pub(super) static CHECKED: Cell<usize> = const { Cell::new(0) };
+    /// Sub-steps whose located peaks were checked on this thread.
+    pub(super) static LOCATED: Cell<usize> = const { Cell::new(0) };
 }
 
 impl Run<'_> {
@@ -110,11 +113,98 @@ impl Run<'_> {
         }
         CHECKED.set(CHECKED.get() + 1);
     }
+
+    /// Checks the peaks [`Run::locate_rising`] raised over the quiet
+    /// sub-step of length h from the current state, against `before`: each
+    /// raised value is the largest of its quantity on a dense walk of the
+    /// series from the start (64 points, then the best one refined by
+    /// golden sections on its neighbours), with ü from the equation of
+    /// motion at each point, not from the series' own polynomial.
+    pub(super) fn check_located(&self, piece: &Piece, h: f64, before: &Envelope) {
+        let n = self.layout.dofs;
+        let ground = ground_at(piece, self.t);
+        let size = |x: &[f64]| x.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
+        let series = Series::new(
+            &self.system,
+            &self.u,
+            &self.v,
+            (ground.0, ground.1, piece.sigma),
+            (size(&self.u), size(&self.v)),
+        );
+        assert!(series.radius >= h);
+        let (mut us, mut vs, mut acc) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        // Every watched quantity at s, in the order of `watched` (|·| but
+        // the signed relative displacements).
+        let mut at = |s: f64| {
+            series.state(s, &mut us, &mut vs);
+            let a = ground_at(piece, self.t + s).0;
+            self.system.acceleration(&us, &vs, a, &mut acc);
+            let mut q: Vec<f64> = us.iter().chain(&vs).map(|x| x.abs()).collect();
+            q.extend(acc.iter().map(|x| (x + a).abs()));
+            q.extend(
+                self.layout
+                    .storeys
+                    .iter()
+                    .map(|st| self.layout.drift(st, &us).abs()),
+            );
+            q.extend(
+                self.layout
+                    .facing
+                    .iter()
+                    .map(|p| us[p.left_dof] - us[p.right_dof]),
+            );
+            q
+        };
+        let grid: Vec<Vec<f64>> = (0..=POINTS)
+            .map(|p| at(h * p as f64 / POINTS as f64))
+            .collect();
+        let peaks = |e: &Envelope| {
+            let mut p: Vec<f64> = [&e.displacement, &e.velocity, &e.acceleration, &e.drift]
+                .into_iter()
+                .flatten()
+                .copied()
+                .collect();
+            p.extend(&e.relative);
+            p
+        };
+        let (old, new) = (peaks(before), peaks(&self.envelope));
+        for k in 0..old.len() {
+            if new[k] == old[k] {
+                continue;
+            }
+            let best = (0..=POINTS)
+                .max_by(|&a, &b| grid[a][k].total_cmp(&grid[b][k]))
+                .expect("points");
+            let step = h / POINTS as f64;
+            let (mut lo, mut hi) = (
+                (best as f64 - 1.0).max(0.0) * step,
+                ((best + 1) as f64 * step).min(h),
+            );
+            let g = 0.5 * (5f64.sqrt() - 1.0);
+            for _ in 0..80 {
+                let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+                if at(x1)[k] < at(x2)[k] {
+                    lo = x1;
+                } else {
+                    hi = x2;
+                }
+            }
+            let dense = grid[best][k].max(at(0.5 * (lo + hi))[k]);
+            // The scale of the other checks: at least 1e-6 of its unit.
+            let scale = new[k].abs().max(1e-6);
+            assert!(
+                (new[k] - dense).abs() <= SLACK * scale,
+                "located peak {} of quantity {k} against {dense} on the dense walk",
+                new[k]
+            );
+        }
+        LOCATED.set(LOCATED.get() + 1);
+    }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::CHECKED;
+    use super::{CHECKED, LOCATED};
     use crate::model::ContactModel;
     use crate::model::buildings::{self, Ground};
     use crate::model::simulated::Simulation;
@@ -127,6 +217,7 @@ mod tests {
     fn every_cleared_sub_step_holds_no_event_and_no_new_peak() {
         let base = buildings::load("block-and-frame").expect("shipped");
         let before = CHECKED.get();
+        let located = LOCATED.get();
         for (seed, scale) in [(1u64, 0.5), (2, 2.0), (3, 3.0)] {
             let record = Simulation {
                 dt: 0.005,
@@ -146,5 +237,10 @@ mod tests {
         }
         let checked = CHECKED.get() - before;
         assert!(checked > 1000, "{checked} sub-steps checked");
+        let located = LOCATED.get() - located;
+        assert!(
+            located > 10,
+            "{located} sub-steps with located peaks checked"
+        );
     }
 }
