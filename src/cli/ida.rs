@@ -11,14 +11,14 @@ use serde::Serialize;
 
 use super::CliError;
 use super::description::Provenance;
+use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
 use super::output::{Emit, printer};
 use super::progress::Progress;
 use super::records::members;
-use super::row_ida::{RowIdaArgs, RowLimitArgs};
+use super::row_ida::RowIdaArgs;
 use super::study_tables::closing_tables;
 use super::suite::{SuiteArgs, SuiteRow, case_of, record_steps, work_of};
 use crate::analysis::ida::{LimitStateFragility, fragilities, parse_levels};
-use crate::analysis::limit_state::{LimitState, parse_acceleration, parse_ductility, parse_force};
 use crate::analysis::subject::runs::{plan_levels, run_levels};
 use crate::analysis::suite::{SuiteRun, SuiteStatistics};
 use crate::model::Method;
@@ -40,42 +40,8 @@ pub struct IdaArgs {
     pub row_limits: RowLimitArgs,
 }
 
-/// The limit states beside pounding (SPEC §12), as `ida` and `figure
-/// fragility` take them.
-#[derive(Debug, Clone, Default, Args)]
-pub struct LimitStateArgs {
-    /// Ductility limit states, e.g. 2,4 or left:2,right:4 (either structure by default).
-    #[arg(long, value_name = "[SIDE:]MU,…")]
-    pub ductility: Option<String>,
-    /// Peak absolute acceleration limit states, e.g. 0.5g,1g (a bare number is m/s²);
-    /// with `ida --buildings` an item may name its building, frame:1g.
-    #[arg(long, value_name = "[SIDE:]A,…")]
-    pub acceleration: Option<String>,
-    /// Peak impact force limit states in kN, e.g. 500; with `ida --buildings`
-    /// an item may name its building, frame:500.
-    #[arg(long, value_name = "KN,…")]
-    pub force: Option<String>,
-}
-
 fn usage(message: String) -> CliError {
     CliError::Usage(message)
-}
-
-impl LimitStateArgs {
-    /// The limit states named, after the pounding limit state.
-    pub fn parse(&self) -> Result<Vec<LimitState>, CliError> {
-        let mut states = vec![LimitState::Pounding];
-        for (text, parse) in [
-            (&self.ductility, parse_ductility as fn(&str) -> _),
-            (&self.acceleration, parse_acceleration),
-            (&self.force, parse_force),
-        ] {
-            if let Some(t) = text {
-                states.extend(parse(t).map_err(|e| usage(e.to_string()))?);
-            }
-        }
-        Ok(states)
-    }
 }
 
 pub fn execute(args: &IdaArgs) -> Result<(), CliError> {
@@ -106,16 +72,14 @@ pub fn report_with(
         let row = RowIdaArgs {
             study,
             levels: &args.levels,
-            limits: &args.row_limits,
-            ductility: args.limits.ductility.as_deref(),
-            acceleration: args.limits.acceleration.as_deref(),
-            force: args.limits.force.as_deref(),
+            limits: &args.limits,
+            row_limits: &args.row_limits,
         };
         return super::row_ida::report_with(&row, emit);
     }
     args.row_limits.refuse_on_a_pair()?;
     let levels = parse_levels(&args.levels).map_err(usage)?;
-    let states = args.limits.parse()?;
+    let states = limit_states(&args.limits, &args.row_limits, None)?;
     let (preset, case) = case_of(&args.suite)?;
     let members = members(&args.suite.suite)?;
     let plans = plan_levels(&case, &members, &levels).map_err(|e| usage(e.to_string()))?;
@@ -150,7 +114,7 @@ pub fn report_with(
         .chunks(members.len().max(1))
         .map(<[_]>::to_vec)
         .collect();
-    let fragility = fragilities(&levels, &runs, &states);
+    let fragility = fragilities(&case, &levels, &runs, &states);
     drop(progress);
     let elapsed_ms = merged_ms.unwrap_or(start.elapsed().as_secs_f64() * 1e3);
 

@@ -21,6 +21,7 @@ pub mod figure_risk;
 pub mod gap;
 pub mod gap_suite;
 pub mod ida;
+pub mod limit_states;
 pub mod map;
 pub mod map_suite;
 #[cfg(feature = "app")]

@@ -1,77 +1,32 @@
 //! `pounding ida --buildings PRESET`: a row of buildings under every record
 //! at every intensity level, the statistics per level, and the lognormal
 //! fragility of each limit state with and without pounding (SPEC §12,
-//! §13). The study is [`crate::analysis::subject::runs`] with [`crate::analysis::row_limit_state`]; this module parses,
+//! §13). The study is [`crate::analysis::subject::runs`] with [`crate::analysis::limit_state`]; this module parses,
 //! runs and prints.
 
 use std::fmt::Write as _;
 use std::time::Instant;
 
-use clap::Args;
 use serde::Serialize;
 
 use super::CliError;
+use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
 use super::output::{Emit, num};
 use super::progress::Progress;
 use super::row_suite::{
     RowHeader, RowStudyArgs, RowSuiteRow, UNITS, case_of, failed, record_steps, work_of,
 };
 use super::study_tables::closing_tables;
-use crate::analysis::ida::{LimitStateFragility, parse_levels};
-use crate::analysis::limit_state::LimitStateError;
-use crate::analysis::row_limit_state::{RowLimitParser, RowLimitState, fragilities};
+use crate::analysis::ida::{LimitStateFragility, fragilities, parse_levels};
+use crate::analysis::limit_state::LimitState;
 use crate::analysis::row_suite::{RowSuiteRun, statistics};
 use crate::analysis::subject::runs::{plan_levels, run_levels};
 use crate::analysis::suite::SuiteStatistics;
-use crate::model::buildings::Row;
 use crate::model::params::echo::g4;
 use crate::output::report::Report;
 
 fn usage(message: String) -> CliError {
     CliError::Usage(message)
-}
-
-/// How one flag's items become limit states.
-type ParseLimits = fn(&RowLimitParser, &str) -> Result<Vec<RowLimitState>, LimitStateError>;
-
-/// The limit states of a row of buildings beside `--acceleration`,
-/// `--force` and pounding (SPEC §12, §13; [`crate::analysis::row_limit_state`]).
-#[derive(Debug, Clone, Default, Args)]
-pub struct RowLimitArgs {
-    /// With --buildings: storey drift ratio limit states, each in (0, 1),
-    /// e.g. 0.005,0.01,0.02 (FEMA's IO, LS, CP for frames) or frame:0.01.
-    #[arg(long, value_name = "[NAME:]RATIO,…")]
-    pub drift: Option<String>,
-    /// With --buildings: the building the limit states read when an item
-    /// names none, and the pounding limit state's: a building of the row
-    /// or `any` [default: any]. `--acceleration`, `--force` and `--drift`
-    /// items may name their own (`frame:0.5g`).
-    #[arg(long, value_name = "NAME|any")]
-    pub building: Option<String>,
-    /// With --buildings: the collapse limit state of every building with
-    /// P-Δ (SPEC §15), whose fragility's median is the collapse intensity
-    /// Ŝ_CT; a collapsed building exceeds every other limit state of its own.
-    #[arg(long)]
-    pub collapse: bool,
-}
-
-impl RowLimitArgs {
-    /// Refuses `--drift` and `--building` where the study is of the pair.
-    pub fn refuse_on_a_pair(&self) -> Result<(), CliError> {
-        for (flag, given) in [
-            ("--drift", self.drift.is_some()),
-            ("--building", self.building.is_some()),
-            ("--collapse", self.collapse),
-        ] {
-            if given {
-                return Err(usage(format!(
-                    "{flag}: applies to a row of buildings; give --buildings PRESET \
-                     (a pair's limit states are --ductility, --acceleration, --force)"
-                )));
-            }
-        }
-        Ok(())
-    }
 }
 
 /// `ida --buildings` as the command line asks for it.
@@ -80,50 +35,8 @@ pub struct RowIdaArgs<'a> {
     pub study: RowStudyArgs<'a>,
     /// `--levels`.
     pub levels: &'a str,
-    pub limits: &'a RowLimitArgs,
-    /// The pair's limit-state flags: `--ductility` (refused on a row),
-    /// `--acceleration` and `--force`.
-    pub ductility: Option<&'a str>,
-    pub acceleration: Option<&'a str>,
-    pub force: Option<&'a str>,
-}
-
-/// The limit states of `args` for `row`: pounding first, then with
-/// `--collapse` each P-Δ building's collapse, then `--drift`,
-/// `--acceleration` and `--force`, each item's building named or
-/// `--building`'s.
-pub fn limit_states(args: &RowIdaArgs, row: &Row) -> Result<Vec<RowLimitState>, CliError> {
-    if let Some(d) = args.ductility {
-        return Err(usage(format!(
-            "--ductility {}: a row's storeys take --drift (storey drift ratio, e.g. 0.01); drop --ductility",
-            crate::model::params::echo::text(d)
-        )));
-    }
-    let parser = RowLimitParser::new(row, args.limits.building.as_deref())
-        .map_err(|e| usage(e.to_string()))?;
-    let mut states = vec![parser.pounding()];
-    if args.limits.collapse {
-        let collapses = parser.collapses(row);
-        if collapses.is_empty() {
-            return Err(usage(format!(
-                "--collapse: no building of `{}` has P-Δ (`p_delta = true`): a building without it \
-                 keeps a restoring force after yielding (α ≥ 0) and cannot collapse",
-                row.name
-            )));
-        }
-        states.extend(collapses);
-    }
-    let flags: [(Option<&str>, ParseLimits); 3] = [
-        (args.limits.drift.as_deref(), RowLimitParser::drift),
-        (args.acceleration, RowLimitParser::acceleration),
-        (args.force, RowLimitParser::force),
-    ];
-    for (text, parse) in flags {
-        if let Some(t) = text {
-            states.extend(parse(&parser, t).map_err(|e| usage(e.to_string()))?);
-        }
-    }
-    Ok(states)
+    pub limits: &'a LimitStateArgs,
+    pub row_limits: &'a RowLimitArgs,
 }
 
 /// `pounding ida --buildings`: its typed report handed to `emit`.
@@ -133,7 +46,7 @@ pub fn report_with(
 ) -> Result<(), CliError> {
     let levels = parse_levels(args.levels).map_err(usage)?;
     let (case, members) = case_of(&args.study)?;
-    let states = limit_states(args, &case.row)?;
+    let states = limit_states(args.limits, args.row_limits, Some(&case.row))?;
     let plans = plan_levels(&case, &members, &levels).map_err(failed)?;
     let work = work_of(&case.row, &members, levels.len());
     work.check("ida --buildings", args.study.allow_long, true)?;
@@ -167,7 +80,7 @@ pub fn report_with(
         .iter()
         .map(|level| flat.by_ref().take(level.len()).collect())
         .collect();
-    let fragility = fragilities(&levels, &runs, &states);
+    let fragility = fragilities(&case, &levels, &runs, &states);
     drop(progress);
     let report = RowIdaReport {
         row: RowHeader::new(&case, args.study.suite),
@@ -209,7 +122,7 @@ struct RowIdaReport<'a> {
     records_per_level: usize,
     levels: Vec<LevelReport>,
     /// The limit states, in the order of `fragility`.
-    limit_states: Vec<RowLimitState>,
+    limit_states: Vec<LimitState>,
     /// Per limit state: counts at each level and the maximum-likelihood
     /// lognormal fragility (SPEC §12), with pounding and without.
     fragility: Vec<LimitStateFragility>,
