@@ -1,126 +1,48 @@
-//! `pounding ida --buildings PRESET`: a row of buildings under every record
-//! at every intensity level, the statistics per level, and the lognormal
-//! fragility of each limit state with and without pounding (SPEC §12,
-//! §13). The study is [`crate::analysis::subject::runs`] with [`crate::analysis::limit_state`]; this module parses,
-//! runs and prints.
+//! `pounding ida --buildings` of a row: its report in every format, the
+//! records of `pounding suite --buildings` at each level (SPEC §13).
 
 use std::fmt::Write as _;
-use std::time::Instant;
 
 use serde::Serialize;
 
-use super::CliError;
-use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
-use super::output::{Emit, num};
-use super::progress::Progress;
-use super::row_suite::{
-    RowHeader, RowStudyArgs, RowSuiteRow, UNITS, case_of, failed, record_steps, work_of,
-};
-use super::study_tables::closing_tables;
-use crate::analysis::ida::{LimitStateFragility, fragilities, parse_levels};
+use super::{IdaRan, LevelReport};
+use crate::analysis::ida::LimitStateFragility;
 use crate::analysis::limit_state::LimitState;
-use crate::analysis::row_suite::{RowSuiteRun, statistics};
-use crate::analysis::subject::runs::{plan_levels, run_levels};
+use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun, statistics};
 use crate::analysis::suite::SuiteStatistics;
+use crate::cli::output::num;
+use crate::cli::row_suite::{RowHeader, RowSuiteRow, UNITS};
+use crate::cli::study_tables::closing_tables;
 use crate::model::params::echo::g4;
 use crate::output::report::Report;
 
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
-}
-
-/// `ida --buildings` as the command line asks for it.
-#[derive(Debug, Clone, Copy)]
-pub struct RowIdaArgs<'a> {
-    pub study: RowStudyArgs<'a>,
-    /// `--levels`.
-    pub levels: &'a str,
-    pub limits: &'a LimitStateArgs,
-    pub row_limits: &'a RowLimitArgs,
-}
-
-/// `pounding ida --buildings`: its typed report handed to `emit`.
-pub fn report_with(
-    args: &RowIdaArgs,
-    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
-) -> Result<(), CliError> {
-    let levels = parse_levels(args.levels).map_err(usage)?;
-    let (case, members) = case_of(&args.study)?;
-    let states = limit_states(args.limits, args.row_limits, Some(&case.row))?;
-    let plans = plan_levels(&case, &members, &levels).map_err(failed)?;
-    let work = work_of(&case.row, &members, levels.len());
-    work.check("ida --buildings", args.study.allow_long, true)?;
-    let progress = Progress::start(&work);
-    let start = Instant::now();
-    // The units level by level, each in suite order.
-    let units: Vec<_> = plans
-        .iter()
-        .flat_map(|level| level.iter().enumerate())
-        .collect();
-    let Some((flat, merged_ms)) = super::shard::suite::runs(
-        args.study.shard,
-        "ida",
-        args.study.buildings,
-        &case,
-        &members,
-        &units,
-        &(&levels, &states),
-        failed,
-        || {
-            let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
-            let runs = run_levels(&case, &members, &plans, &done).map_err(failed)?;
-            Ok(runs.into_iter().flatten().collect())
-        },
-    )?
-    else {
-        return Ok(());
-    };
-    let mut flat = flat.into_iter();
-    let runs: Vec<Vec<RowSuiteRun>> = plans
-        .iter()
-        .map(|level| flat.by_ref().take(level.len()).collect())
-        .collect();
-    let fragility = fragilities(&case, &levels, &runs, &states);
-    drop(progress);
-    let report = RowIdaReport {
-        row: RowHeader::new(&case, args.study.suite),
+/// The report of the row's IDA `ran` of `case` (suite `suite`).
+pub(super) fn report<'a>(
+    case: &'a RowSuiteCase,
+    suite: &'a str,
+    ran: IdaRan<RowSuiteRun>,
+) -> RowIdaReport<'a> {
+    RowIdaReport {
+        row: RowHeader::new(case, suite),
         scaled_as_a_whole: case.scaling.as_a_whole(),
-        records_per_level: members.len(),
-        levels: levels
-            .iter()
-            .zip(&runs)
-            .map(|(&level, at)| LevelReport {
-                level_g: level,
-                statistics: statistics(at),
-                records: at.iter().map(RowSuiteRow::of).collect(),
-            })
-            .collect(),
-        limit_states: states,
-        fragility,
-        elapsed_ms: merged_ms.unwrap_or(start.elapsed().as_secs_f64() * 1e3),
-    };
-    emit(&report)
-}
-
-/// One intensity level: its statistics and its records (those of `pounding
-/// suite --buildings --level` at that level).
-#[derive(Debug, Serialize)]
-struct LevelReport {
-    level_g: f64,
-    statistics: SuiteStatistics,
-    records: Vec<RowSuiteRow>,
+        records_per_level: ran.records,
+        levels: ran.levels(statistics, RowSuiteRow::of),
+        limit_states: ran.states,
+        fragility: ran.fragility,
+        elapsed_ms: ran.elapsed_ms,
+    }
 }
 
 /// `pounding ida --buildings` in every format.
 #[derive(Debug, Serialize)]
-struct RowIdaReport<'a> {
+pub(super) struct RowIdaReport<'a> {
     #[serde(flatten)]
     row: RowHeader<'a>,
     /// Set when the levels scale the suite as a whole ([`crate::analysis::suite::Scaling::as_a_whole`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     scaled_as_a_whole: Option<String>,
     records_per_level: usize,
-    levels: Vec<LevelReport>,
+    levels: Vec<LevelReport<RowSuiteRow>>,
     /// The limit states, in the order of `fragility`.
     limit_states: Vec<LimitState>,
     /// Per limit state: counts at each level and the maximum-likelihood
