@@ -18,7 +18,7 @@ use super::params::ParamArgs;
 use super::records::members;
 use super::shard::ShardArgs;
 use super::study_tables::{clip, over_suite_table};
-use super::subject::run_levels_or_shard;
+use super::subject::{CliSubject, run_levels_or_shard};
 use crate::analysis::row_suite::{
     RowDemands, RowSuiteCase, RowSuiteError, RowSuiteRun, row_intensity, statistics,
 };
@@ -532,5 +532,23 @@ impl Report for RowSuiteReport<'_> {
         over_suite_table(&mut s, &self.statistics);
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
         s
+    }
+}
+
+impl CliSubject for RowSuiteCase {
+    fn work_of(&self, members: &[SuiteMember], plans: &[Vec<(f64, f64)>]) -> Work {
+        work_of(&self.row, members, plans.len())
+    }
+
+    fn check(&self, work: &Work, command: &str, allow_long: bool) -> Result<(), CliError> {
+        work.check(&format!("{command} --buildings"), allow_long, true)
+    }
+
+    fn steps(&self, run: &RowSuiteRun) -> f64 {
+        record_steps(&self.row, run.samples, run.dt)
+    }
+
+    fn failed(e: RowSuiteError) -> CliError {
+        failed(e)
     }
 }

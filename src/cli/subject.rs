@@ -1,6 +1,7 @@
 //! What the command line needs of a study's subject beside the study
 //! itself ([`crate::analysis::subject`]): what its records cost for the work
-//! bound and the progress bar, and how its failures are reported. One run of
+//! bound and the progress bar, and how its failures are reported (the
+//! pair's in [`super::suite`], a row's in [`super::row_suite`]). One run of
 //! a suite or of an IDA's levels, with `--shard` and under `merge`, is then
 //! written once for the pair and a row ([`run_levels_or_shard`]).
 
@@ -10,10 +11,8 @@ use super::CliError;
 use super::budget::Work;
 use super::progress::Progress;
 use super::shard::ShardArgs;
-use crate::analysis::row_suite::{RowSuiteCase, RowSuiteError, RowSuiteRun};
 use crate::analysis::subject::Subject;
 use crate::analysis::subject::runs::run_levels;
-use crate::analysis::suite::{MemberPlan, SuiteCase, SuiteRun, SuiteRunError};
 use crate::model::suite::SuiteMember;
 
 /// A subject as the command line runs it.
@@ -26,42 +25,6 @@ pub trait CliSubject: Subject {
     fn steps(&self, run: &Self::Run) -> f64;
     /// A failed record as the command line reports it.
     fn failed(e: Self::Error) -> CliError;
-}
-
-impl CliSubject for SuiteCase {
-    fn work_of(&self, _: &[SuiteMember], plans: &[Vec<MemberPlan>]) -> Work {
-        super::suite::work_of(plans.iter().flatten())
-    }
-
-    fn check(&self, work: &Work, command: &str, allow_long: bool) -> Result<(), CliError> {
-        work.check(command, allow_long, false)
-    }
-
-    fn steps(&self, run: &SuiteRun) -> f64 {
-        super::suite::record_steps(&run.params)
-    }
-
-    fn failed(e: SuiteRunError) -> CliError {
-        CliError::Usage(e.to_string())
-    }
-}
-
-impl CliSubject for RowSuiteCase {
-    fn work_of(&self, members: &[SuiteMember], plans: &[Vec<(f64, f64)>]) -> Work {
-        super::row_suite::work_of(&self.row, members, plans.len())
-    }
-
-    fn check(&self, work: &Work, command: &str, allow_long: bool) -> Result<(), CliError> {
-        work.check(&format!("{command} --buildings"), allow_long, true)
-    }
-
-    fn steps(&self, run: &RowSuiteRun) -> f64 {
-        super::row_suite::record_steps(&self.row, run.samples, run.dt)
-    }
-
-    fn failed(e: RowSuiteError) -> CliError {
-        super::row_suite::failed(e)
-    }
 }
 
 /// Each level's runs and the wall time in ms; `None` when a shard's part

@@ -16,7 +16,7 @@ use super::params::ParamArgs;
 use super::records::members;
 use super::row_suite::RowStudyArgs;
 use super::study_tables::{clip, over_suite_table};
-use super::subject::run_levels_or_shard;
+use super::subject::{CliSubject, run_levels_or_shard};
 use crate::analysis::demands::{DemandsSi, Scales};
 use crate::analysis::subject::runs::plan;
 use crate::analysis::suite::{MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteStatistics};
@@ -667,3 +667,21 @@ const SIDE_COLUMNS: [[&str; 11]; 2] = [
         "right_hysteretic_energy",
     ],
 ];
+
+impl CliSubject for SuiteCase {
+    fn work_of(&self, _: &[crate::model::suite::SuiteMember], plans: &[Vec<MemberPlan>]) -> Work {
+        work_of(plans.iter().flatten())
+    }
+
+    fn check(&self, work: &Work, command: &str, allow_long: bool) -> Result<(), CliError> {
+        work.check(command, allow_long, false)
+    }
+
+    fn steps(&self, run: &SuiteRun) -> f64 {
+        record_steps(&run.params)
+    }
+
+    fn failed(e: crate::analysis::suite::SuiteRunError) -> CliError {
+        CliError::Usage(e.to_string())
+    }
+}
