@@ -59,7 +59,8 @@
 //! statistics are those `pounding suite` prints:
 //!
 //! ```
-//! use pounding::analysis::suite::{Scaling, SuiteCase, SuiteStatistics, plan, run_suite};
+//! use pounding::analysis::subject::runs::{plan, run_suite};
+//! use pounding::analysis::suite::{Scaling, SuiteCase, SuiteStatistics};
 //! use pounding::model::{Method, Params, intensity::IntensityMeasure, physical::Physical};
 //! use pounding::model::{preset, suite::SuiteSpec};
 //!
@@ -75,7 +76,7 @@
 //! };
 //! let members = SuiteSpec::parse("synthetic:20").unwrap().load().unwrap();
 //! let plans = plan(&case, &members).unwrap();
-//! let runs = run_suite(&case, &members, &plans, &|_| {});
+//! let runs = run_suite(&case, &members, &plans, &|_| {}).unwrap();
 //! // Each record scaled to the level: its own Sa(0.95 s) is 0.3 g.
 //! assert!(runs.iter().all(|r| (r.intensity - 0.3).abs() < 1e-12));
 //! // At 0.3 g the 25 mm joint pounds under every record, and the gap that
