@@ -6,9 +6,10 @@
 //! bit for bit what `gap --buildings` measures for that record.
 
 use pounding::analysis::fragility::{self, LevelCount};
+use pounding::analysis::ida::fragilities;
 use pounding::analysis::ida::over_levels;
+use pounding::analysis::limit_state::LimitParser;
 use pounding::analysis::row_gap::row_gap;
-use pounding::analysis::row_limit_state::{RowLimitParser, fragilities};
 use pounding::analysis::row_separation::joint_separations;
 use pounding::analysis::row_suite::{
     RowCaches, RowSuiteCase, RowSuiteRun, row_intensity, statistics,
@@ -137,9 +138,9 @@ fn a_rows_fragility_is_the_maximum_likelihood_fit_of_its_counts() {
     for (a, b) in runs[2].iter().zip(&suite) {
         same_motion(&a.run, &b.run);
     }
-    let parser = RowLimitParser::new(&c.row, None).unwrap();
+    let parser = LimitParser::row(&c.row);
     let states = parser.drift("frame:0.005").unwrap();
-    let fits = fragilities(&levels, &runs, &states);
+    let fits = fragilities(&c, &levels, &runs, &states);
     let counts: Vec<LevelCount> = levels
         .iter()
         .zip(&runs)

@@ -8,7 +8,8 @@
 //! either subject.
 
 use pounding::analysis::fragility::LevelCount;
-use pounding::analysis::ida::counts;
+use pounding::analysis::ida::{counts, fragilities};
+use pounding::analysis::limit_state::{LimitParser, LimitState, Target};
 use pounding::analysis::risk::{Focus, picture};
 use pounding::analysis::row_suite::RowSuiteCase;
 use pounding::analysis::separation::gap_at_probability;
@@ -187,6 +188,117 @@ fn an_ida_its_limit_state_counts_and_the_separation_are_the_same_for_both() {
         );
         close("gap at a probability", a, b, 1.0);
     }
+}
+
+/// The limit states of the pair in its spelling and of its row in the
+/// row's, the same demands read: pounding, either's and the frame's
+/// acceleration, the impact force, the frame's ductility.
+fn same_limit_states() -> [(LimitState, LimitState); 6] {
+    let p = LimitParser::pair();
+    let r = LimitParser::row(&load("two-buildings").unwrap());
+    let one = |s: Vec<LimitState>| s.into_iter().next().unwrap();
+    let frame = |index| Target::Building {
+        index,
+        name: ["frame", "block"][index].into(),
+    };
+    let left = Target::Building {
+        index: 0,
+        name: "left".into(),
+    };
+    [
+        (p.pounding(), r.pounding()),
+        (
+            one(p.acceleration("0.3g").unwrap()),
+            one(r.acceleration("0.3g").unwrap()),
+        ),
+        (
+            one(p.acceleration("left:0.25g").unwrap()),
+            one(r.acceleration("frame:0.25g").unwrap()),
+        ),
+        (
+            one(p.acceleration("right:0.2g").unwrap()),
+            one(r.acceleration("block:0.2g").unwrap()),
+        ),
+        (one(p.force("200").unwrap()), one(r.force("200").unwrap())),
+        (
+            LimitState::Ductility {
+                building: left,
+                value: 0.1,
+            },
+            LimitState::Ductility {
+                building: frame(0),
+                value: 0.1,
+            },
+        ),
+    ]
+}
+
+#[test]
+fn the_limit_states_and_their_fragility_are_the_same_for_both() {
+    let m = members();
+    let levels = [0.1, 0.2, 0.4];
+    let (p, r) = (pair(None), row(None));
+    let pair_runs = run_levels(&p, &m, &plan_levels(&p, &m, &levels).unwrap(), &|_| {}).unwrap();
+    let row_runs = run_levels(&r, &m, &plan_levels(&r, &m, &levels).unwrap(), &|_| {}).unwrap();
+    let (ps, rs): (Vec<_>, Vec<_>) = same_limit_states().into_iter().unzip();
+    let pf = fragilities(&p, &levels, &pair_runs, &ps);
+    let rf = fragilities(&r, &levels, &row_runs, &rs);
+    // Each subject's own spelling.
+    let labels = |f: &[pounding::analysis::ida::LimitStateFragility]| -> Vec<String> {
+        f.iter().map(|f| f.limit_state.clone()).collect()
+    };
+    assert_eq!(
+        labels(&pf),
+        [
+            "pounding",
+            "acceleration>0.3g (either)",
+            "acceleration>0.25g (left)",
+            "acceleration>0.2g (right)",
+            "force>200kN",
+            "ductility>0.1 (left)"
+        ]
+    );
+    assert_eq!(
+        labels(&rf),
+        [
+            "pounding (any)",
+            "acceleration>0.3g (any)",
+            "acceleration>0.25g (frame)",
+            "acceleration>0.2g (block)",
+            "force>200kN (any)",
+            "ductility>0.1 (frame)"
+        ]
+    );
+    let mut between = 0;
+    for (a, b) in pf.iter().zip(&rf) {
+        assert_eq!(a.counts, b.counts, "{}", a.limit_state);
+        assert_eq!(
+            a.no_pounding_counts, b.no_pounding_counts,
+            "{}",
+            a.limit_state
+        );
+        assert_eq!(a.fragility, b.fragility, "{}", a.limit_state);
+        assert_eq!(a.no_pounding_fragility, b.no_pounding_fragility);
+        between += a
+            .counts
+            .iter()
+            .filter(|c| c.exceeded > 0 && c.exceeded < c.runs)
+            .count();
+    }
+    // The counts tell the records apart: some level of some limit state
+    // has records on either side.
+    assert!(between > 0, "{pf:?}");
+    // The counts are those of the demands read directly.
+    let pounded: Vec<usize> = row_runs
+        .iter()
+        .map(|at| {
+            at.iter()
+                .filter(|x| r.demands(x).joints[0].impacts > 0)
+                .count()
+        })
+        .collect();
+    let counted: Vec<usize> = rf[0].counts.iter().map(|c| c.exceeded).collect();
+    assert_eq!(counted, pounded);
 }
 
 #[test]

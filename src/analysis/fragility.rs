@@ -65,16 +65,22 @@
 //!
 //! ```
 //! use pounding::analysis::fragility::{self, Fragility, LevelCount};
-//! use pounding::analysis::limit_state::{self, Observed, ductility};
+//! use pounding::analysis::limit_state::LimitParser;
+//! use pounding::analysis::subject::demands::{BuildingDemand, JointDemand};
 //!
-//! let limit = limit_state::parse_ductility("left:2").unwrap()[0];
+//! let limit = &LimitParser::pair().ductility("left:2").unwrap()[0];
 //! // The suite runner's demands: one run per record at each level (two here).
-//! let run = |peak_left| Observed {
-//!     pounded: true,
-//!     ductility: [ductility(peak_left, 0.1), None], // the right one is elastic
-//!     acceleration_g: [0.4, 0.2],
-//!     max_force_kn: 120.0,
+//! let structure = |ductility, acceleration_g| BuildingDemand {
+//!     peak_drift_m: 0.0,
+//!     drift_ratio: None,
+//!     ductility,
+//!     acceleration_g,
+//!     collapsed: false,
+//!     cut_short: false,
 //! };
+//! let joint = JointDemand { impacts: 1, max_force_kn: 120.0, min_gap_m: 0.0 };
+//! // The right structure is elastic (μ = ∞), the left one yields at 0.1.
+//! let run = |peak_left: f64| ([structure(peak_left / 0.1, 0.4), structure(f64::INFINITY, 0.2)], [joint]);
 //! let suite = [
 //!     (0.2, [run(0.1), run(0.25)]),
 //!     (0.4, [run(0.15), run(0.3)]),
@@ -85,7 +91,7 @@
 //!     .map(|(level, runs)| LevelCount {
 //!         level: *level,
 //!         runs: runs.len(),
-//!         exceeded: runs.iter().filter(|o| limit.exceeded(o)).count(),
+//!         exceeded: runs.iter().filter(|(b, j)| limit.exceeded(b, j)).count(),
 //!     })
 //!     .collect();
 //! let Fragility::Fitted { theta, beta, .. } = fragility::fit(&counts) else {

@@ -4,7 +4,7 @@
 //! Every record of the suite runs at every intensity level x_1 < … < x_L,
 //! scaled so that its intensity measure equals the level. A level's runs are
 //! exactly those of [`suite`](super::suite) at that level: both plan them
-//! over the same [`Subject`](super::subject::Subject)
+//! over the same [`Subject`]
 //! ([`plan_levels`](super::subject::runs::plan_levels)) with the same
 //! scaling, so a level's rows are bit for bit the suite's, for the pair and
 //! for a row alike.
@@ -25,11 +25,9 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::fragility::{self, Fragility, LevelCount};
-use super::limit_state::{self, LimitState, Observed};
-use super::suite::SuiteRun;
-use crate::solver::RunResult;
-
-use super::demands::RunSi;
+use super::limit_state::LimitState;
+use super::subject::Subject;
+use super::subject::demands::Demands;
 
 /// `run(state, l, j)` for every level l < `levels` and record j <
 /// `records`, in parallel as one pool of work (so that the cores stay busy
@@ -65,23 +63,6 @@ pub fn over_levels<R: Send, S: Send>(
     out
 }
 
-/// What a limit state reads of one run (SPEC §12): whether it pounded, each
-/// structure's ductility (none for an elastic one), peak absolute
-/// acceleration (g) and the largest pounding force (kN).
-pub fn observed(result: &RunResult, si: &RunSi, yield_displacement: [f64; 2]) -> Observed {
-    Observed {
-        pounded: !result.impacts.is_empty(),
-        ductility: [0, 1].map(|i| {
-            limit_state::ductility(result.structure(i).peak_displacement, yield_displacement[i])
-        }),
-        acceleration_g: [
-            si.left.peak_absolute_acceleration_g,
-            si.right.peak_absolute_acceleration_g,
-        ],
-        max_force_kn: si.max_force_kn,
-    }
-}
-
 /// One limit state's counts over the levels and their fragility, with
 /// pounding and for the no-pounding pair.
 #[derive(Debug, Clone, Serialize)]
@@ -113,32 +94,29 @@ pub fn counts<R>(levels: &[f64], runs: &[Vec<R>], exceeds: impl Fn(&R) -> bool) 
         .collect()
 }
 
-/// The fragility of every limit state over an IDA's runs (`runs[l]` at
-/// `levels[l]`), with the pounding limit state first. The Π-groups of the
-/// yield displacements are each run's own (they follow its a_p and ω_p).
-pub fn fragilities(
+/// The fragility of every limit state over an IDA's runs of `subject`
+/// (`runs[l]` at `levels[l]`), in the order given (pounding first, as the
+/// parsers give it), with the buildings apart beside each but pounding
+/// (which they never reach).
+pub fn fragilities<S: Subject>(
+    subject: &S,
     levels: &[f64],
-    runs: &[Vec<SuiteRun>],
+    runs: &[Vec<S::Run>],
     states: &[LimitState],
 ) -> Vec<LimitStateFragility> {
-    let yields = |r: &SuiteRun| [r.params.yield1, r.params.yield2];
-    let mut all = vec![LimitState::Pounding];
-    all.extend(
-        states
-            .iter()
-            .copied()
-            .filter(|s| *s != LimitState::Pounding),
-    );
-    all.iter()
+    let demands: Vec<Vec<Demands>> = runs
+        .iter()
+        .map(|at| at.iter().map(|r| subject.demands(r)).collect())
+        .collect();
+    states
+        .iter()
         .map(|state| {
             fragility_of(
                 state.label(),
                 levels,
-                runs,
-                |r| state.exceeded(&observed(&r.result, &r.si, yields(r))),
-                (*state != LimitState::Pounding).then_some(|r: &SuiteRun| {
-                    state.exceeded(&observed(&r.free, &r.free_si, yields(r)))
-                }),
+                &demands,
+                |d| state.exceeded_by(d),
+                (!state.is_pounding()).then_some(|d: &Demands| state.exceeded_apart(d)),
             )
         })
         .collect()
@@ -173,7 +151,7 @@ mod tests {
     #[test]
     fn counts_are_per_level() {
         // Two levels of no runs: the counts still name their levels.
-        let c = counts::<SuiteRun>(&[0.1, 0.2], &[vec![], vec![]], |_| true);
+        let c = counts::<()>(&[0.1, 0.2], &[vec![], vec![]], |_| true);
         assert_eq!(c.len(), 2);
         assert_eq!((c[1].level, c[1].runs, c[1].exceeded), (0.2, 0, 0));
     }

@@ -15,7 +15,8 @@
 //! - [`gap`]: the gap that prevents pounding and the code rules (SPEC §11);
 //! - [`ida`]: every record at every intensity level, and the fragility of
 //!   each limit state fitted on it (SPEC §12);
-//! - [`limit_state`]: what a run must do to count as exceeding (SPEC §12);
+//! - [`limit_state`]: what a run of the pair or a row must do to count as
+//!   exceeding, per building or any (SPEC §12, §13, §15);
 //! - [`fragility`]: lognormal fragility by maximum likelihood (SPEC §12);
 //! - [`separation`]: the gap at a probability over a suite, and the code
 //!   rules on it (SPEC §12);
@@ -31,10 +32,8 @@
 //! - [`subject`]: what a study runs records on, the physical pair or a row
 //!   of buildings (SPEC §12, §13), and the suite and the IDA's levels
 //!   planned and run over either ([`subject::runs`]);
-//! - [`row_suite`], [`row_limit_state`], [`row_separation`]: a row's
-//!   demands per building and joint, its limit states (a building's drift,
-//!   acceleration, impact force or pounding, and their fragilities), and the
-//!   separation at a probability per joint;
+//! - [`row_suite`], [`row_separation`]: a row's demands per building and
+//!   joint, and the separation at a probability per joint;
 //! - [`suite_map`]: P(pounding) and the median amplification over two
 //!   physical quantities of the buildings, under a suite (SPEC §12);
 //! - [`shard`]: a sweep cut into shards balanced by estimated work, and
@@ -58,7 +57,6 @@ pub mod record_selection;
 pub mod retrofit_report;
 pub mod risk;
 pub mod row_gap;
-pub mod row_limit_state;
 pub mod row_report;
 pub mod row_separation;
 pub mod row_suite;

@@ -9,10 +9,9 @@ use clap::Args;
 use super::CliError;
 use super::budget::LongArg;
 use super::gap_suite::DEFAULT_PROBABILITIES;
-use super::ida::LimitStateArgs;
+use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
 use super::params::ParamArgs;
 use super::records::members;
-use super::row_ida::{RowIdaArgs, RowLimitArgs, limit_states};
 use super::row_suite::{self, RowStudyArgs};
 use super::shard::ShardArgs;
 use super::suite::{SuiteArgs, case_of, parse_level, work_of};
@@ -151,7 +150,7 @@ pub fn study(
         level: risk.level.clone(),
         ..SuiteArgs::default()
     };
-    let states = risk.limits.parse()?;
+    let states = limit_states(&risk.limits, &risk.row_limits, None)?;
     let (preset, case) = case_of(&suite_args)?;
     let members = members(&suite)?;
     let plans = match name {
@@ -199,16 +198,8 @@ fn row_study(
         shard: &shard,
         collective: false,
     };
-    let ida = RowIdaArgs {
-        study,
-        levels: risk.levels.as_deref().unwrap_or(""),
-        limits: &risk.row_limits,
-        ductility: risk.limits.ductility.as_deref(),
-        acceleration: risk.limits.acceleration.as_deref(),
-        force: risk.limits.force.as_deref(),
-    };
     let (case, members) = row_suite::case_of(&study)?;
-    let states = limit_states(&ida, &case.row)?;
+    let states = limit_states(&risk.limits, &risk.row_limits, Some(&case.row))?;
     if separation {
         plan(&case, &members).map_err(row_suite::failed)?;
     } else {

@@ -1,29 +1,27 @@
 //! `pounding ida`: incremental dynamic analysis of a suite (every record at
 //! every intensity level), the statistics per level, and the lognormal
 //! fragility of each limit state with and without pounding (SPEC §12). The
-//! study is [`crate::analysis::ida`]; this module parses, runs and prints.
-
-use std::fmt::Write as _;
-use std::time::Instant;
+//! study is [`crate::analysis::ida`], one path for the pair (`--preset`) and
+//! a row (`--buildings`, SPEC §13); this module parses and runs it, and
+//! each subject's writer (`pair`, `row`) prints it.
 
 use clap::Args;
 use serde::Serialize;
 
+mod pair;
+mod row;
+
 use super::CliError;
-use super::description::Provenance;
+use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
 use super::output::{Emit, printer};
-use super::progress::Progress;
 use super::records::members;
-use super::row_ida::{RowIdaArgs, RowLimitArgs};
-use super::study_tables::closing_tables;
-use super::suite::{SuiteArgs, SuiteRow, case_of, record_steps, work_of};
+use super::subject::{CliSubject, run_levels_or_shard};
+use super::suite::{SuiteArgs, case_of};
 use crate::analysis::ida::{LimitStateFragility, fragilities, parse_levels};
-use crate::analysis::limit_state::{LimitState, parse_acceleration, parse_ductility, parse_force};
-use crate::analysis::subject::runs::{plan_levels, run_levels};
-use crate::analysis::suite::{SuiteRun, SuiteStatistics};
-use crate::model::Method;
-use crate::model::params::echo::g4;
-use crate::output::report::Report;
+use crate::analysis::limit_state::LimitState;
+use crate::analysis::subject::runs::plan_levels;
+use crate::analysis::suite::SuiteStatistics;
+use crate::model::suite::SuiteMember;
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct IdaArgs {
@@ -40,42 +38,8 @@ pub struct IdaArgs {
     pub row_limits: RowLimitArgs,
 }
 
-/// The limit states beside pounding (SPEC §12), as `ida` and `figure
-/// fragility` take them.
-#[derive(Debug, Clone, Default, Args)]
-pub struct LimitStateArgs {
-    /// Ductility limit states, e.g. 2,4 or left:2,right:4 (either structure by default).
-    #[arg(long, value_name = "[SIDE:]MU,…")]
-    pub ductility: Option<String>,
-    /// Peak absolute acceleration limit states, e.g. 0.5g,1g (a bare number is m/s²);
-    /// with `ida --buildings` an item may name its building, frame:1g.
-    #[arg(long, value_name = "[SIDE:]A,…")]
-    pub acceleration: Option<String>,
-    /// Peak impact force limit states in kN, e.g. 500; with `ida --buildings`
-    /// an item may name its building, frame:500.
-    #[arg(long, value_name = "KN,…")]
-    pub force: Option<String>,
-}
-
 fn usage(message: String) -> CliError {
     CliError::Usage(message)
-}
-
-impl LimitStateArgs {
-    /// The limit states named, after the pounding limit state.
-    pub fn parse(&self) -> Result<Vec<LimitState>, CliError> {
-        let mut states = vec![LimitState::Pounding];
-        for (text, parse) in [
-            (&self.ductility, parse_ductility as fn(&str) -> _),
-            (&self.acceleration, parse_acceleration),
-            (&self.force, parse_force),
-        ] {
-            if let Some(t) = text {
-                states.extend(parse(t).map_err(|e| usage(e.to_string()))?);
-            }
-        }
-        Ok(states)
-    }
 }
 
 pub fn execute(args: &IdaArgs) -> Result<(), CliError> {
@@ -102,218 +66,115 @@ pub fn report_with(
         },
         ..args.clone()
     };
-    if let Some(study) = args.suite.row_study()? {
-        let row = RowIdaArgs {
-            study,
-            levels: &args.levels,
-            limits: &args.row_limits,
-            ductility: args.limits.ductility.as_deref(),
-            acceleration: args.limits.acceleration.as_deref(),
-            force: args.limits.force.as_deref(),
-        };
-        return super::row_ida::report_with(&row, emit);
+    let study = args.suite.row_study()?;
+    if study.is_none() {
+        args.row_limits.refuse_on_a_pair()?;
     }
-    args.row_limits.refuse_on_a_pair()?;
     let levels = parse_levels(&args.levels).map_err(usage)?;
-    let states = args.limits.parse()?;
+    if let Some(study) = study {
+        let (case, members) = super::row_suite::case_of(&study)?;
+        let states = limit_states(&args.limits, &args.row_limits, Some(&case.row))?;
+        let ran = ida(
+            &case,
+            study.buildings,
+            &members,
+            levels,
+            states,
+            &args.suite,
+        )?;
+        return ran.map_or(Ok(()), |ran| emit(&row::report(&case, study.suite, ran)));
+    }
+    let states = limit_states(&args.limits, &args.row_limits, None)?;
     let (preset, case) = case_of(&args.suite)?;
     let members = members(&args.suite.suite)?;
-    let plans = plan_levels(&case, &members, &levels).map_err(|e| usage(e.to_string()))?;
-    let work = work_of(plans.iter().flatten());
-    work.check("ida", args.suite.long.allow_long, false)?;
-    let progress = Progress::start(&work);
-    let start = Instant::now();
-    let units: Vec<_> = plans.iter().flat_map(|at| at.iter().enumerate()).collect();
-    let failed = |e: crate::analysis::suite::SuiteRunError| usage(e.to_string());
-    let whole = || {
-        let done = |r: &SuiteRun| progress.add(record_steps(&r.params));
-        let runs = run_levels(&case, &members, &plans, &done).map_err(failed)?;
-        Ok(runs.into_iter().flatten().collect())
-    };
-    let extra = (&levels, &states);
-    let shard = &args.suite.shard;
-    let Some((runs, merged_ms)) = super::shard::suite::runs(
-        shard,
-        "ida",
-        &preset.name,
-        &case,
-        &members,
-        &units,
-        &extra,
-        failed,
-        whole,
-    )?
-    else {
+    let Some(ran) = ida(&case, &preset.name, &members, levels, states, &args.suite)? else {
         return Ok(());
     };
-    let runs: Vec<Vec<SuiteRun>> = runs
-        .chunks(members.len().max(1))
-        .map(<[_]>::to_vec)
-        .collect();
-    let fragility = fragilities(&levels, &runs, &states);
-    drop(progress);
-    let elapsed_ms = merged_ms.unwrap_or(start.elapsed().as_secs_f64() * 1e3);
-
-    let report = IdaReport {
-        provenance: Provenance::new(&preset.name, UNITS),
-        suite: &args.suite.suite,
-        model: case.settings.model.name(),
-        method: case.settings.method,
-        measure: case.scaling.measure.to_string(),
-        scaled_as_a_whole: case.scaling.as_a_whole(),
-        records_per_level: members.len(),
-        levels: levels
-            .iter()
-            .zip(&runs)
-            .map(|(&level, at)| LevelReport {
-                level_g: level,
-                statistics: SuiteStatistics::of(at),
-                records: at.iter().map(SuiteRow::of).collect(),
-            })
-            .collect(),
-        fragility,
-        elapsed_ms,
-    };
-    emit(&report)?;
-    let unreliable = runs
+    let unreliable = ran
+        .runs
         .iter()
         .flatten()
         .filter(|r| r.result.unreliable().is_some())
         .count();
+    let total = ran.runs.iter().map(Vec::len).sum::<usize>();
+    emit(&pair::report(&preset.name, &args.suite.suite, &case, ran))?;
     if unreliable > 0 && !args.suite.allow_unreliable {
         return Err(CliError::Failed(format!(
-            "unreliable result for {unreliable} of {} runs (flagged in the output); \
-             pass --allow-unreliable to accept them",
-            runs.iter().map(Vec::len).sum::<usize>()
+            "unreliable result for {unreliable} of {total} runs (flagged in the output); \
+             pass --allow-unreliable to accept them"
         )));
     }
     Ok(())
 }
 
-const UNITS: &str = "SI (m, m/s, g, kN, kJ) for the demands, g for intensities; \
-                     Π-groups of SPEC §1 under `pi`";
-
-/// One intensity level: its statistics and its rows (those of `pounding
-/// suite --level` at that level).
-#[derive(Debug, Serialize)]
-struct LevelReport {
-    level_g: f64,
-    statistics: SuiteStatistics,
-    records: Vec<SuiteRow>,
-}
-
-/// `pounding ida` in every format.
-#[derive(Debug, Serialize)]
-struct IdaReport<'a> {
-    #[serde(flatten)]
-    provenance: Provenance<'a>,
-    suite: &'a str,
-    model: &'static str,
-    method: Method,
-    measure: String,
-    /// Set when the levels scale the suite as a whole ([`crate::analysis::suite::Scaling::as_a_whole`]).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    scaled_as_a_whole: Option<String>,
-    records_per_level: usize,
-    levels: Vec<LevelReport>,
-    /// Per limit state: counts at each level and the maximum-likelihood
-    /// lognormal fragility (SPEC §12), with pounding and without.
+/// An IDA that ran: its levels and limit states, each level's runs, the
+/// fragilities and the wall time.
+struct IdaRan<R> {
+    levels: Vec<f64>,
+    records: usize,
+    states: Vec<LimitState>,
+    runs: Vec<Vec<R>>,
     fragility: Vec<LimitStateFragility>,
     elapsed_ms: f64,
 }
 
-impl Report for IdaReport<'_> {
-    fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = vec!["version", "units", "level_g"];
-        h.extend(SuiteRow::csv_header());
-        h
-    }
-
-    fn csv_rows(&self) -> Vec<Vec<String>> {
-        let mut rows = Vec::new();
-        for l in &self.levels {
-            for r in &l.records {
-                let mut row = vec![
-                    env!("CARGO_PKG_VERSION").to_string(),
-                    UNITS.to_string(),
-                    super::output::num(l.level_g),
-                ];
-                row.extend(r.csv_cells(&self.measure));
-                rows.push(row);
-            }
-        }
-        rows
-    }
-
-    fn table(&self) -> String {
-        let mut s = String::new();
-        let _ = writeln!(
-            s,
-            "IDA of suite {} ({} records) at {} levels of {}, preset {}: {}, {} method",
-            self.suite,
-            self.records_per_level,
-            self.levels.len(),
-            self.measure,
-            self.provenance.preset,
-            self.model,
-            self.method.name()
-        );
-        if let Some(words) = &self.scaled_as_a_whole {
-            let _ = writeln!(s, "{words}");
-        }
-        let _ = writeln!(s);
-        // One line per level: the medians that matter, with the 16–84 % band of drift.
-        let _ = writeln!(
-            s,
-            "{:>8} {:>8} {:>22} {:>8} {:>8} {:>22} {:>8} {:>10}",
-            "level g",
-            "pounded",
-            "left u mm (16–84 %)",
-            "left μ",
-            "left A g",
-            "right u mm (16–84 %)",
-            "right μ",
-            "d_min mm"
-        );
-        for l in &self.levels {
-            let st = &l.statistics;
-            let get = |key: &str| {
-                st.demands
-                    .iter()
-                    .find(|d| d.demand == key)
-                    .map(|d| d.summary)
-            };
-            let band = |key: &str, unit: f64| {
-                get(key).map_or(String::new(), |d| {
-                    format!(
-                        "{} ({}–{})",
-                        g4(d.median * unit),
-                        g4(d.p16 * unit),
-                        g4(d.p84 * unit)
-                    )
-                })
-            };
-            let median =
-                |key: &str, unit: f64| get(key).map_or(String::new(), |d| g4(d.median * unit));
-            let _ = writeln!(
-                s,
-                "{:>8} {:>8} {:>22} {:>8} {:>8} {:>22} {:>8} {:>10}",
-                g4(l.level_g),
-                format!("{}/{}", st.pounded, st.records),
-                band("left.peak_displacement_m", 1e3),
-                median("left.ductility", 1.0),
-                median("left.peak_absolute_acceleration_g", 1.0),
-                band("right.peak_displacement_m", 1e3),
-                median("right.ductility", 1.0),
-                median("min_gap_m", 1e3)
-            );
-        }
-        let levels: Vec<(f64, &SuiteStatistics)> = self
-            .levels
+impl<R> IdaRan<R> {
+    /// Each level's statistics and rows, as a report writes them.
+    fn levels<T>(
+        &self,
+        statistics: impl Fn(&[R]) -> SuiteStatistics,
+        row: impl Fn(&R) -> T,
+    ) -> Vec<LevelReport<T>> {
+        self.levels
             .iter()
-            .map(|l| (l.level_g, &l.statistics))
-            .collect();
-        closing_tables(&mut s, &self.fragility, &levels, self.elapsed_ms);
-        s
+            .zip(&self.runs)
+            .map(|(&level, at)| LevelReport {
+                level_g: level,
+                statistics: statistics(at),
+                records: at.iter().map(&row).collect(),
+            })
+            .collect()
     }
+}
+
+/// The IDA of `subject` (named `name` in shards' parts) at `levels`: every
+/// record planned, run within the bound (or sharded, or merged) and the
+/// fragility of each limit state of `states` fitted; `None` when a shard's
+/// part was written.
+fn ida<S: CliSubject>(
+    subject: &S,
+    name: &str,
+    members: &[SuiteMember],
+    levels: Vec<f64>,
+    states: Vec<LimitState>,
+    args: &SuiteArgs,
+) -> Result<Option<IdaRan<S::Run>>, CliError> {
+    let plans = plan_levels(subject, members, &levels).map_err(S::failed)?;
+    let extra = (&levels, &states);
+    let shard = &args.shard;
+    let allow_long = args.long.allow_long;
+    let Some((runs, elapsed_ms)) = run_levels_or_shard(
+        subject, name, members, &plans, "ida", shard, allow_long, &extra,
+    )?
+    else {
+        return Ok(None);
+    };
+    let fragility = fragilities(subject, &levels, &runs, &states);
+    Ok(Some(IdaRan {
+        records: members.len(),
+        levels,
+        states,
+        runs,
+        fragility,
+        elapsed_ms,
+    }))
+}
+
+/// One intensity level: its statistics and its rows (those of `pounding
+/// suite --level` at that level).
+#[derive(Debug, Serialize)]
+struct LevelReport<T> {
+    level_g: f64,
+    statistics: SuiteStatistics,
+    records: Vec<T>,
 }

@@ -21,6 +21,7 @@ pub mod figure_risk;
 pub mod gap;
 pub mod gap_suite;
 pub mod ida;
+pub mod limit_states;
 pub mod map;
 pub mod map_suite;
 #[cfg(feature = "app")]
@@ -32,7 +33,6 @@ pub mod records;
 pub mod records_scale;
 pub mod records_select;
 pub mod row_gap_suite;
-pub mod row_ida;
 pub mod row_suite;
 pub mod run;
 pub mod shard;
@@ -40,6 +40,7 @@ pub mod similarity;
 pub mod spectrum;
 pub mod stress;
 pub mod study_tables;
+pub mod subject;
 pub mod suite;
 #[cfg(feature = "app")]
 pub mod tui;

@@ -5,7 +5,6 @@
 //! prints, and gives `ida` and `gap` on rows the same parsing and running.
 
 use std::fmt::Write as _;
-use std::time::Instant;
 
 use serde::Serialize;
 
@@ -16,15 +15,15 @@ use super::description::Provenance;
 use super::description::ScalingReport;
 use super::output::{Emit, num};
 use super::params::ParamArgs;
-use super::progress::Progress;
 use super::records::members;
 use super::shard::ShardArgs;
 use super::study_tables::{clip, over_suite_table};
+use super::subject::{CliSubject, run_levels_or_shard};
 use crate::analysis::row_suite::{
     RowDemands, RowSuiteCase, RowSuiteError, RowSuiteRun, row_intensity, statistics,
 };
 use crate::analysis::subject::row::record_seconds;
-use crate::analysis::subject::runs::{plan, run_suite};
+use crate::analysis::subject::runs::plan;
 use crate::analysis::suite::{Scaling, SuiteStatistics};
 use crate::model::buildings::Row;
 use crate::model::buildings::matrices::periods;
@@ -168,35 +167,26 @@ pub struct RowRan {
 /// request in the bound's message and in its parts.
 pub fn run(args: &RowStudyArgs, command: &str) -> Result<Option<RowRan>, CliError> {
     let (case, members) = case_of(args)?;
-    let scales = plan(&case, &members).map_err(failed)?;
-    let work = work_of(&case.row, &members, 1);
-    work.check(&format!("{command} --buildings"), args.allow_long, true)?;
-    let progress = Progress::start(&work);
-    let start = Instant::now();
-    let units: Vec<_> = scales.iter().enumerate().collect();
-    let Some((runs, merged_ms)) = super::shard::suite::runs(
-        args.shard,
-        command,
-        args.buildings,
+    let plans = [plan(&case, &members).map_err(failed)?];
+    let (name, shard) = (args.buildings, args.shard);
+    let Some((runs, elapsed_ms)) = run_levels_or_shard(
         &case,
+        name,
         &members,
-        &units,
+        &plans,
+        command,
+        shard,
+        args.allow_long,
         &(),
-        failed,
-        || {
-            let done = |r: &RowSuiteRun| progress.add(record_steps(&case.row, r.samples, r.dt));
-            run_suite(&case, &members, &scales, &done).map_err(failed)
-        },
     )?
     else {
         return Ok(None);
     };
-    drop(progress);
     Ok(Some(RowRan {
         case,
         members,
-        runs,
-        elapsed_ms: merged_ms.unwrap_or(start.elapsed().as_secs_f64() * 1e3),
+        runs: runs.into_iter().flatten().collect(),
+        elapsed_ms,
     }))
 }
 
@@ -542,5 +532,23 @@ impl Report for RowSuiteReport<'_> {
         over_suite_table(&mut s, &self.statistics);
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
         s
+    }
+}
+
+impl CliSubject for RowSuiteCase {
+    fn work_of(&self, members: &[SuiteMember], plans: &[Vec<(f64, f64)>]) -> Work {
+        work_of(&self.row, members, plans.len())
+    }
+
+    fn check(&self, work: &Work, command: &str, allow_long: bool) -> Result<(), CliError> {
+        work.check(&format!("{command} --buildings"), allow_long, true)
+    }
+
+    fn steps(&self, run: &RowSuiteRun) -> f64 {
+        record_steps(&self.row, run.samples, run.dt)
+    }
+
+    fn failed(e: RowSuiteError) -> CliError {
+        failed(e)
     }
 }

@@ -4,7 +4,6 @@
 //! is [`crate::analysis::suite`]; this module parses, runs and prints.
 
 use std::fmt::Write as _;
-use std::time::Instant;
 
 use clap::Args;
 use serde::Serialize;
@@ -14,12 +13,12 @@ use super::budget::{LongArg, Work, run_steps};
 use super::description::{Provenance, ScalingReport};
 use super::output::{Emit, FormatArg, num, printer};
 use super::params::ParamArgs;
-use super::progress::Progress;
 use super::records::members;
 use super::row_suite::RowStudyArgs;
 use super::study_tables::{clip, over_suite_table};
+use super::subject::{CliSubject, run_levels_or_shard};
 use crate::analysis::demands::{DemandsSi, Scales};
-use crate::analysis::subject::runs::{plan, run_suite};
+use crate::analysis::subject::runs::plan;
 use crate::analysis::suite::{MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteStatistics};
 use crate::model::intensity::IntensityMeasure;
 use crate::model::physical::G;
@@ -267,38 +266,26 @@ pub fn work_of<'a>(plans: impl IntoIterator<Item = &'a MemberPlan>) -> Work {
 pub fn run_or_shard(args: &SuiteArgs, what: &str) -> Result<Option<Ran>, CliError> {
     let (preset, case) = case_of(args)?;
     let members = members(&args.suite)?;
-    let plans = plan(&case, &members).map_err(|e| usage(e.to_string()))?;
-    let work = work_of(&plans);
-    work.check(what, args.long.allow_long, false)?;
-    let progress = Progress::start(&work);
-    let start = Instant::now();
-    let units: Vec<_> = plans.iter().enumerate().collect();
-    let failed = |e: crate::analysis::suite::SuiteRunError| usage(e.to_string());
-    let Some((runs, merged_ms)) = super::shard::suite::runs(
-        &args.shard,
-        what,
-        &preset.name,
+    let plans = [plan(&case, &members).map_err(|e| usage(e.to_string()))?];
+    let (shard, allow_long) = (&args.shard, args.long.allow_long);
+    let Some((runs, elapsed_ms)) = run_levels_or_shard(
         &case,
+        &preset.name,
         &members,
-        &units,
+        &plans,
+        what,
+        shard,
+        allow_long,
         &(),
-        failed,
-        || {
-            run_suite(&case, &members, &plans, &|r: &SuiteRun| {
-                progress.add(record_steps(&r.params))
-            })
-            .map_err(failed)
-        },
     )?
     else {
         return Ok(None);
     };
-    drop(progress);
     Ok(Some(Ran {
         preset,
         case,
-        runs,
-        elapsed_ms: merged_ms.unwrap_or(start.elapsed().as_secs_f64() * 1e3),
+        runs: runs.into_iter().flatten().collect(),
+        elapsed_ms,
     }))
 }
 
@@ -680,3 +667,21 @@ const SIDE_COLUMNS: [[&str; 11]; 2] = [
         "right_hysteretic_energy",
     ],
 ];
+
+impl CliSubject for SuiteCase {
+    fn work_of(&self, _: &[crate::model::suite::SuiteMember], plans: &[Vec<MemberPlan>]) -> Work {
+        work_of(plans.iter().flatten())
+    }
+
+    fn check(&self, work: &Work, command: &str, allow_long: bool) -> Result<(), CliError> {
+        work.check(command, allow_long, false)
+    }
+
+    fn steps(&self, run: &SuiteRun) -> f64 {
+        record_steps(&run.params)
+    }
+
+    fn failed(e: crate::analysis::suite::SuiteRunError) -> CliError {
+        CliError::Usage(e.to_string())
+    }
+}

@@ -340,7 +340,8 @@ fn fragility_series(
 /// with pounding (solid) and without (dashed).
 pub fn fragility_figure(study: &SuiteStudy) -> Result<Figure, FigureError> {
     let runs = ida_runs(study)?;
-    let curves: Vec<LimitStateFragility> = fragilities(&study.levels, &runs, &study.states);
+    let curves: Vec<LimitStateFragility> =
+        fragilities(&study.case, &study.levels, &runs, &study.states);
     let measure = study.case.scaling.measure;
     Ok(figure(
         "Fragility",

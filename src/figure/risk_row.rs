@@ -17,7 +17,8 @@
 //!   curve with its lognormal fit, the gap at each probability, the
 //!   joint's gap and the code rules on the median peaks of its paired floors.
 
-use crate::analysis::row_limit_state::{RowLimitState, fragilities};
+use crate::analysis::ida::fragilities;
+use crate::analysis::limit_state::LimitState;
 use crate::analysis::row_separation::joint_separations;
 use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun};
 use crate::analysis::subject::runs::{plan, plan_levels, run_levels, run_suite};
@@ -43,7 +44,7 @@ pub struct RowSuiteStudy {
     /// Intensity levels (g), ascending (ida, fragility).
     pub levels: Vec<f64>,
     /// The limit states, pounding first (as `ida --buildings` reads them).
-    pub states: Vec<RowLimitState>,
+    pub states: Vec<LimitState>,
     /// The probabilities of no pounding asked for (separation).
     pub probabilities: Vec<f64>,
 }
@@ -147,7 +148,7 @@ pub fn row_ida_figure(study: &RowSuiteStudy) -> Result<Figure, FigureError> {
 /// (solid) and with every joint open (dashed).
 pub fn row_fragility_figure(study: &RowSuiteStudy) -> Result<Figure, FigureError> {
     let runs = runs(study)?;
-    let curves = fragilities(&study.levels, &runs, &study.states);
+    let curves = fragilities(&study.case, &study.levels, &runs, &study.states);
     let measure = study.case.scaling.measure;
     Ok(Figure {
         title: title(

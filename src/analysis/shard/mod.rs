@@ -12,9 +12,9 @@
 //!   duplicate, no missing shard) and their results put back in order;
 //! - [`map`], [`spectrum`]: what a map's and a spectrum's units are, what
 //!   they cost, and the counters a merged sweep reports;
-//! - [`suite`]: the units of a suite study on any subject, the pair or a
-//!   row of buildings (a record at one plan), and how a record's result is
-//!   rebuilt from the runs a part carries.
+//! - [`suite`]: the units of suite studies on a pair or on a row of
+//!   buildings (a record at one plan), and how a record's row is rebuilt
+//!   from the runs a part carries.
 //!
 //! The results carried by a part are the typed results of the library (map
 //! cells, spectrum points, …), so a merge builds the same report from the

@@ -5,7 +5,9 @@
 //! the row. A study asks its subject, never its type, for:
 //!
 //! - each record's plan at a scale s and intensity IM·s ([`Subject::plan_at`]):
-//!   the pair's Π-groups under that record ([`Physical::under_record`](crate::model::physical::Physical::under_record)), the row's scale alone;
+//!   the pair's Π-groups under that record
+//!   ([`crate::model::physical::Physical::under_record`]), the row's scale
+//!   alone;
 //! - the runs of a planned record, with contact and with every joint open
 //!   ([`Subject::runs`]): what a shard's part carries;
 //! - that record's result rebuilt from its runs ([`Subject::record`]), the
