@@ -54,7 +54,8 @@ pub struct SuiteArgs {
     #[command(flatten)]
     pub shard: super::shard::ShardArgs,
     /// A row of shear buildings (SPEC §13) instead of the preset's pair: a
-    /// built-in row (two-buildings, block-and-frame, three-in-series, block-and-frame-pdelta) or a
+    /// built-in row (two-buildings, block-and-frame, three-in-series, block-and-frame-pdelta,
+    /// block-and-frame-retrofit) or a
     /// path to a row preset; `--im sa` is then Sa at the leftmost building's
     /// T₁ (to four significant digits).
     #[arg(long, value_name = "NAME|PATH")]
