@@ -38,6 +38,27 @@ pub struct IdaArgs {
     pub row_limits: RowLimitArgs,
 }
 
+/// An IDA's CSV rows, as both subjects write them: each of a level's
+/// record lines after the version, the units and the level (g).
+fn level_rows(
+    units: &str,
+    levels: impl IntoIterator<Item = (f64, Vec<Vec<String>>)>,
+) -> Vec<Vec<String>> {
+    let mut rows = Vec::new();
+    for (level_g, lines) in levels {
+        for line in lines {
+            let mut row = vec![
+                env!("CARGO_PKG_VERSION").to_string(),
+                units.to_string(),
+                super::output::num(level_g),
+            ];
+            row.extend(line);
+            rows.push(row);
+        }
+    }
+    rows
+}
+
 fn usage(message: String) -> CliError {
     CliError::Usage(message)
 }

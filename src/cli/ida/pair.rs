@@ -67,19 +67,11 @@ impl Report for IdaReport<'_> {
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        let mut rows = Vec::new();
-        for l in &self.levels {
-            for r in &l.records {
-                let mut row = vec![
-                    env!("CARGO_PKG_VERSION").to_string(),
-                    UNITS.to_string(),
-                    crate::cli::output::num(l.level_g),
-                ];
-                row.extend(r.csv_cells(&self.measure));
-                rows.push(row);
-            }
-        }
-        rows
+        let lines = |l: &LevelReport<SuiteRow>| {
+            let cells = l.records.iter().map(|r| r.csv_cells(&self.measure));
+            (l.level_g, cells.collect())
+        };
+        super::level_rows(UNITS, self.levels.iter().map(lines))
     }
 
     fn table(&self) -> String {

@@ -10,7 +10,6 @@ use crate::analysis::ida::LimitStateFragility;
 use crate::analysis::limit_state::LimitState;
 use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun, statistics};
 use crate::analysis::suite::SuiteStatistics;
-use crate::cli::output::num;
 use crate::cli::row_suite::{RowHeader, RowSuiteRow, UNITS};
 use crate::cli::study_tables::closing_tables;
 use crate::model::params::echo::g4;
@@ -59,21 +58,12 @@ impl Report for RowIdaReport<'_> {
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        let mut rows = Vec::new();
-        for l in &self.levels {
-            for r in &l.records {
-                for line in r.csv_lines(&self.row.scaling.measure) {
-                    let mut row = vec![
-                        env!("CARGO_PKG_VERSION").to_string(),
-                        UNITS.to_string(),
-                        num(l.level_g),
-                    ];
-                    row.extend(line);
-                    rows.push(row);
-                }
-            }
-        }
-        rows
+        let measure = &self.row.scaling.measure;
+        let lines = |l: &LevelReport<RowSuiteRow>| {
+            let lines = l.records.iter().flat_map(|r| r.csv_lines(measure));
+            (l.level_g, lines.collect())
+        };
+        super::level_rows(UNITS, self.levels.iter().map(lines))
     }
 
     fn table(&self) -> String {
