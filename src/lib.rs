@@ -60,7 +60,8 @@
 //!
 //! ```
 //! use pounding::analysis::subject::runs::{plan, run_suite};
-//! use pounding::analysis::suite::{Scaling, SuiteCase, SuiteStatistics};
+//! use pounding::analysis::suite_statistics::SuiteStatistics;
+//! use pounding::analysis::suite::{Scaling, SuiteCase};
 //! use pounding::model::{Method, Params, intensity::IntensityMeasure, physical::Physical};
 //! use pounding::model::{preset, suite::SuiteSpec};
 //!
@@ -82,7 +83,7 @@
 //! // At 0.3 g the 25 mm joint pounds under every record, and the gap that
 //! // would have kept them apart (SPEC §11) is wider than 25 mm in each.
 //! assert!(runs.iter().all(|r| r.pounded() && r.min_gap_m() > 0.025));
-//! let stats = SuiteStatistics::of(&runs);
+//! let stats = SuiteStatistics::of(&case, &runs);
 //! assert_eq!((stats.records, stats.pounded), (20, 20));
 //! ```
 //!

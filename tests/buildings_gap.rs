@@ -3,7 +3,7 @@
 //! with each joint's gap just above it never pounds there, just below it does.
 
 use pounding::analysis::gap::minimum_gap;
-use pounding::analysis::row_gap::row_gap;
+use pounding::analysis::gap::row_gap;
 use pounding::model::buildings::{self, Ground};
 use pounding::model::preset::builtin;
 use pounding::model::record::read;

@@ -4,7 +4,7 @@
 //! report marks as possibly infinite (an elastic storey's ductility, an
 //! open joint's gap) pass.
 
-use pounding::analysis::row_report::RowReport;
+use pounding::analysis::buildings_report::RowReport;
 use pounding::cli::CliError;
 use pounding::cli::output::{Format, render};
 use pounding::model::buildings::{Ground, load};

@@ -6,8 +6,8 @@
 //! impact, and the fragility is the maximum-likelihood fit of those counts.
 
 use pounding::analysis::fragility;
+use pounding::analysis::gap::row_gap;
 use pounding::analysis::risk::{RowRiskCase, row_risk as risk};
-use pounding::analysis::row_gap::row_gap;
 use pounding::analysis::statistics::Summary;
 use pounding::analysis::suite::raw_intensity;
 use pounding::model::buildings::matrices::default_tail;

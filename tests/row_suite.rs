@@ -6,18 +6,17 @@
 //! bit for bit what `gap --buildings` measures for that record.
 
 use pounding::analysis::fragility::{self, LevelCount};
+use pounding::analysis::gap::row_gap;
 use pounding::analysis::ida::fragilities;
 use pounding::analysis::ida::over_levels;
 use pounding::analysis::limit_state::LimitParser;
-use pounding::analysis::row_gap::row_gap;
-use pounding::analysis::row_separation::joint_separations;
-use pounding::analysis::row_suite::{
-    RowCaches, RowSuiteCase, RowSuiteRun, row_intensity, statistics,
-};
 use pounding::analysis::separation::gap_at_probability;
+use pounding::analysis::separation::joint_separations;
 use pounding::analysis::statistics::Summary;
+use pounding::analysis::subject::row::{RowCaches, RowSuiteCase, RowSuiteRun, row_intensity};
 use pounding::analysis::subject::runs::{plan, plan_levels, run_levels, run_one, run_suite};
 use pounding::analysis::suite::Scaling;
+use pounding::analysis::suite_statistics::SuiteStatistics;
 use pounding::model::buildings::matrices::{default_tail, periods};
 use pounding::model::buildings::{Ground, Row, load};
 use pounding::model::intensity::IntensityMeasure;
@@ -104,7 +103,7 @@ fn statistics_are_those_of_the_records_demands() {
     let c = case("three-in-series", 0.2);
     let m = members(5);
     let runs = run_suite(&c, &m, &plan(&c, &m).unwrap(), &|_| {}).unwrap();
-    let st = statistics(&runs);
+    let st = SuiteStatistics::of(&c, &runs);
     assert_eq!(st.records, 5);
     let tall: Vec<f64> = runs
         .iter()
@@ -183,7 +182,7 @@ fn the_separation_per_joint_is_the_order_statistic_of_each_records_gap() {
     let c = case("block-and-frame", 0.3);
     let m = members(7);
     let runs: Vec<RowSuiteRun> = run_suite(&c, &m, &plan(&c, &m).unwrap(), &|_| {}).unwrap();
-    let seps = joint_separations(&c.row, &runs, &[0.5, 0.9]);
+    let seps = joint_separations(&c, &runs, &[0.5, 0.9]);
     assert_eq!(seps.len(), 1);
     let gaps: Vec<f64> = runs
         .iter()

@@ -11,15 +11,16 @@ use pounding::analysis::fragility::LevelCount;
 use pounding::analysis::ida::{counts, fragilities};
 use pounding::analysis::limit_state::{LimitParser, LimitState, Target};
 use pounding::analysis::risk::{Focus, picture};
-use pounding::analysis::row_suite::RowSuiteCase;
-use pounding::analysis::separation::gap_at_probability;
+use pounding::analysis::separation::{JointSeparation, gap_at_probability, joint_separations};
 use pounding::analysis::shard::partition;
 use pounding::analysis::shard::partition::units_of;
 use pounding::analysis::shard::suite::{compute, rebuild, unit_work};
 use pounding::analysis::subject::Subject;
 use pounding::analysis::subject::demands::Demands;
+use pounding::analysis::subject::row::RowSuiteCase;
 use pounding::analysis::subject::runs::{plan, plan_levels, run_levels, run_suite};
 use pounding::analysis::suite::{Scaling, SuiteCase};
+use pounding::analysis::suite_statistics::SuiteStatistics;
 use pounding::model::buildings::load;
 use pounding::model::intensity::IntensityMeasure;
 use pounding::model::physical::Physical;
@@ -348,6 +349,24 @@ fn sharded_and_whole<S: Subject>(
 where
     S::Error: std::fmt::Debug,
 {
+    let (merged, whole) = sharded_runs(subject, m, levels, n);
+    (
+        merged.iter().map(&show).collect(),
+        whole.iter().map(&show).collect(),
+    )
+}
+
+/// The subject's runs cut into `n` shards, through the parts' encoding,
+/// merged; beside the whole study's runs (levels one after the other).
+fn sharded_runs<S: Subject>(
+    subject: &S,
+    m: &[SuiteMember],
+    levels: &[f64],
+    n: usize,
+) -> (Vec<S::Run>, Vec<S::Run>)
+where
+    S::Error: std::fmt::Debug,
+{
     let plans = plan_levels(subject, m, levels).unwrap();
     let units: Vec<_> = plans.iter().flat_map(|at| at.iter().enumerate()).collect();
     let shard_of = partition(&unit_work(subject, m, &units), n);
@@ -369,10 +388,7 @@ where
         slots.into_iter().map(Option::unwrap).collect(),
     );
     let whole = run_levels(subject, m, &plans, &|_| {}).unwrap();
-    (
-        merged.iter().map(&show).collect(),
-        whole.iter().flatten().map(&show).collect(),
-    )
+    (merged, whole.into_iter().flatten().collect())
 }
 
 #[test]
@@ -413,4 +429,116 @@ fn a_sharded_study_of_either_subject_merges_to_its_whole_run_bit_for_bit() {
     });
     assert!(whole.len() == 8);
     assert_eq!(sharded, whole, "block-and-frame");
+}
+
+/// The suite's statistics, through the one `SuiteStatistics::of`: the
+/// pair's joint demands (`impacts`, `max_force_kn`, `min_gap_m`) are the
+/// row's `joint1.…`, to 1e-9, and the same records pound.
+#[test]
+fn a_suite_s_statistics_are_the_same_for_the_pair_and_its_row() {
+    let m = members();
+    let (p, r) = (pair(Some(0.3)), row(Some(0.3)));
+    let pair_runs = run_suite(&p, &m, &plan(&p, &m).unwrap(), &|_| {}).unwrap();
+    let row_runs = run_suite(&r, &m, &plan(&r, &m).unwrap(), &|_| {}).unwrap();
+    let (a, b) = (
+        SuiteStatistics::of(&p, &pair_runs),
+        SuiteStatistics::of(&r, &row_runs),
+    );
+    assert_eq!((a.records, a.pounded), (b.records, b.pounded));
+    assert!(a.pounded > 0);
+    let of = |st: &SuiteStatistics, key: &str| {
+        st.demands
+            .iter()
+            .find(|d| d.demand == key)
+            .unwrap_or_else(|| panic!("{key}"))
+            .summary
+    };
+    for key in ["impacts", "max_force_kn", "min_gap_m"] {
+        let (x, y) = (of(&a, key), of(&b, &format!("joint1.{key}")));
+        assert_eq!((x.count, x.zeros), (y.count, y.zeros), "{key}");
+        for (what, u, v) in [
+            ("median", x.median, y.median),
+            ("p16", x.p16, y.p16),
+            ("p84", x.p84, y.p84),
+            ("dispersion", x.dispersion, y.dispersion),
+        ] {
+            close(&format!("{key} {what}"), u, v, v.abs());
+        }
+    }
+}
+
+/// Two separations' numbers, to 1e-9 (of their size above 1).
+fn same_separation(a: &JointSeparation, b: &JointSeparation) {
+    assert_eq!(a.gap_m, b.gap_m);
+    assert_eq!(a.pounding_probability_at_gap, b.pounding_probability_at_gap);
+    let (x, y) = (&a.study, &b.study);
+    assert_eq!((x.records, x.zero_gaps), (y.records, y.zero_gaps));
+    close("median gap", x.median_min_gap, y.median_min_gap, 1.0);
+    for (u, v) in x.at_probability.iter().zip(&y.at_probability) {
+        assert_eq!(u.probability, v.probability);
+        close("gap at p", u.empirical, v.empirical, 1.0);
+        close(
+            "lognormal gap at p",
+            u.lognormal.unwrap(),
+            v.lognormal.unwrap(),
+            1.0,
+        );
+    }
+    for k in 0..2 {
+        close("median peak", x.median_peaks[k], y.median_peaks[k], 1.0);
+    }
+    close("ρ", x.correlation, y.correlation, 1.0);
+    for (u, v) in x.rules.iter().zip(&y.rules) {
+        assert_eq!((u.rule, u.holds), (v.rule, v.holds));
+        close(u.rule, u.at_median_peaks, v.at_median_peaks, 1.0);
+        assert_eq!(u.sufficient_at, v.sufficient_at, "{}", u.rule);
+    }
+}
+
+/// The separation at a probability, through the one `joint_separations`:
+/// the pair's one joint and its row's joint1 give the same gaps, fit and
+/// code rules, to 1e-9.
+#[test]
+fn the_separation_at_a_probability_is_the_same_for_the_pair_and_its_row() {
+    let m = members();
+    let (p, r) = (pair(Some(0.3)), row(Some(0.3)));
+    let pair_runs = run_suite(&p, &m, &plan(&p, &m).unwrap(), &|_| {}).unwrap();
+    let row_runs = run_suite(&r, &m, &plan(&r, &m).unwrap(), &|_| {}).unwrap();
+    let probabilities = [0.1, 0.5, 0.9];
+    let a = joint_separations(&p, &pair_runs, &probabilities);
+    let b = joint_separations(&r, &row_runs, &probabilities);
+    assert_eq!((a.len(), b.len()), (1, 1));
+    assert!(a[0].study.records == 4 && a[0].study.median_min_gap > 0.025);
+    same_separation(&a[0], &b[0]);
+}
+
+/// A sharded suite's statistics and separation, of either subject, are
+/// its whole run's to the bit.
+#[test]
+fn a_sharded_suite_and_separation_merge_to_the_whole_study_bit_for_bit() {
+    let m = members();
+    let probabilities = [0.5, 0.9];
+    fn studies<S: Subject>(s: &S, runs: &[S::Run], probabilities: &[f64]) -> String {
+        format!(
+            "{:?} {:?}",
+            SuiteStatistics::of(s, runs),
+            joint_separations(s, runs, probabilities)
+        )
+    }
+    let p = pair(Some(0.3));
+    let (merged, whole) = sharded_runs(&p, &m, &[0.3], 3);
+    assert_eq!(
+        studies(&p, &merged, &probabilities),
+        studies(&p, &whole, &probabilities)
+    );
+    let block_and_frame = RowSuiteCase {
+        row: load("block-and-frame").unwrap(),
+        scaling: scaling(None),
+    };
+    let (merged, whole) = sharded_runs(&block_and_frame, &m, &[0.3], 3);
+    assert_eq!(merged.len(), 4);
+    assert_eq!(
+        studies(&block_and_frame, &merged, &probabilities),
+        studies(&block_and_frame, &whole, &probabilities)
+    );
 }

@@ -29,11 +29,11 @@ use rayon::prelude::*;
 
 use super::fragility::{self, Fragility, LevelCount};
 use super::ida;
-use super::row_suite::{RowSuiteCase, RowSuiteError};
 use super::separation;
 use super::statistics::Summary;
 use super::subject::Subject;
 use super::subject::demands::Demands;
+use super::subject::row::{RowSuiteCase, RowSuiteError};
 use super::subject::runs::{plan_levels, run_one};
 use super::suite::{Scaling, SuiteCase, SuiteRunError};
 use crate::model::buildings::Row;

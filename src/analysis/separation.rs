@@ -33,6 +33,8 @@
 use serde::Serialize;
 
 use super::gap::CodeRules;
+use super::subject::Subject;
+pub use super::subject::demands::JointRecord;
 use super::suite::SuiteRun;
 use crate::model::params::echo;
 use crate::numerics::normal;
@@ -285,32 +287,116 @@ pub fn median(values: impl Iterator<Item = f64>) -> f64 {
     super::statistics::quantile(&sorted(values), 0.5)
 }
 
+impl From<&RecordGap> for JointRecord {
+    fn from(r: &RecordGap) -> JointRecord {
+        JointRecord {
+            min_gap: r.min_gap,
+            rules: CodeRules::of(r.peak_left, r.peak_right, r.omega1, r.omega2, r.damping),
+            floors: vec![(r.peak_left, r.peak_right)],
+        }
+    }
+}
+
 /// The separation study of `records` at `probabilities` (module docs).
 ///
 /// # Panics
 /// If `records` is empty, a minimum gap is NaN or negative, or a
 /// probability is not in (0, 1).
 pub fn study(records: &[RecordGap], probabilities: &[f64]) -> SeparationStudy {
+    let records: Vec<JointRecord> = records.iter().map(JointRecord::from).collect();
+    joint_study(&records, probabilities)
+}
+
+/// The separation study of one joint over the records (module docs), the
+/// one path of the pair and of every joint of a row (SPEC §12, §13).
+///
+/// The double-difference rule's ρ on the median peaks is the median of the
+/// records' ρ (all equal where ω1/ω2 and ξ are the buildings'). The rules on
+/// the median peaks are, for each paired floor, the rules on that floor's
+/// median separate peaks over the records, the largest over the floors; the
+/// study's `median_peaks` are those of the floor where ABS on them is
+/// largest (the pair's one floor: its medians).
+///
+/// # Panics
+/// As [`study`].
+pub fn joint_study(records: &[JointRecord], probabilities: &[f64]) -> SeparationStudy {
     assert!(!records.is_empty(), "no records");
     let gaps: Vec<f64> = records.iter().map(|r| r.min_gap).collect();
-    let record_rules: Vec<CodeRules> = records
-        .iter()
-        .map(|r| CodeRules::of(r.peak_left, r.peak_right, r.omega1, r.omega2, r.damping))
-        .collect();
-    let median_peaks = [
-        median(records.iter().map(|r| r.peak_left)),
-        median(records.iter().map(|r| r.peak_right)),
-    ];
-    let correlation = median(record_rules.iter().map(|r| r.correlation));
-    let at_median = CodeRules::with_correlation(median_peaks[0], median_peaks[1], correlation);
+    let record_rules: Vec<CodeRules> = records.iter().map(|r| r.rules).collect();
+    let rho = median(record_rules.iter().map(|r| r.correlation));
+    let mut at_median = CodeRules::with_correlation(0.0, 0.0, rho);
+    let mut median_peaks = [0.0; 2];
+    for floor in 0..records[0].floors.len() {
+        let ua = median(records.iter().map(|r| r.floors[floor].0));
+        let ub = median(records.iter().map(|r| r.floors[floor].1));
+        let rules = CodeRules::with_correlation(ua, ub, rho);
+        if rules.absolute_sum > at_median.absolute_sum {
+            median_peaks = [ua, ub];
+        }
+        at_median = CodeRules {
+            absolute_sum: at_median.absolute_sum.max(rules.absolute_sum),
+            srss: at_median.srss.max(rules.srss),
+            double_difference: at_median.double_difference.max(rules.double_difference),
+            ..at_median
+        };
+    }
     study_of(&gaps, &record_rules, at_median, median_peaks, probabilities)
+}
+
+/// One joint's separation over a suite: the pair's one joint, or a joint
+/// of a row.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct JointSeparation {
+    pub left: String,
+    pub right: String,
+    /// The joint's gap at rest in the preset (m; may be infinite).
+    #[serde(serialize_with = "crate::output::report::float_or_inf")]
+    pub gap_m: f64,
+    /// The fraction of records whose minimum gap exceeds it.
+    pub pounding_probability_at_gap: f64,
+    pub study: SeparationStudy,
+}
+
+/// The separation at each of `probabilities` (each in (0, 1)) for every
+/// joint of `subject` over the suite's `runs` ([`joint_study`]), each
+/// record's gaps from [`Subject::joint_records`].
+///
+/// # Panics
+/// If `runs` is empty or a probability is not in (0, 1).
+pub fn joint_separations<S: Subject>(
+    subject: &S,
+    runs: &[S::Run],
+    probabilities: &[f64],
+) -> Vec<JointSeparation> {
+    let mut records: Vec<Vec<JointRecord>> = Vec::new();
+    for run in runs {
+        for (j, record) in subject.joint_records(run).into_iter().enumerate() {
+            if records.len() <= j {
+                records.push(Vec::with_capacity(runs.len()));
+            }
+            records[j].push(record);
+        }
+    }
+    subject
+        .joints()
+        .into_iter()
+        .zip(records)
+        .map(|(joint, records)| {
+            let gaps: Vec<f64> = records.iter().map(|r| r.min_gap).collect();
+            JointSeparation {
+                pounding_probability_at_gap: probability_of_pounding(&gaps, joint.gap_m),
+                study: joint_study(&records, probabilities),
+                left: joint.left,
+                right: joint.right,
+                gap_m: joint.gap_m,
+            }
+        })
+        .collect()
 }
 
 /// The separation study from each record's minimum gap `gaps[j]` and code
 /// rules `record_rules[j]`, with the rules `at_median` on the median peaks
-/// `median_peaks` (module docs): [`study`] for a pair, and for each joint of
-/// a row ([`super::row_separation`]), whose rules are the largest over its
-/// paired floors.
+/// `median_peaks` (module docs), as [`joint_study`] finds them.
 ///
 /// # Panics
 /// As [`study`]; and if the two lists differ in length.

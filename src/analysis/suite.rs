@@ -20,11 +20,8 @@
 //! parameters through [`Physical::under_record`] and run them through
 //! [`solve`].
 
-use serde::Serialize;
-
 use super::demands::{DemandsSi, RunSi};
 use super::gap::{free_run, from_max_relative};
-use super::statistics::Summary;
 use crate::model::excitation::RecordMotion;
 use crate::model::intensity::IntensityMeasure;
 use crate::model::physical::Physical;
@@ -293,78 +290,5 @@ pub fn member_run(
         free,
         free_si,
         min_gap,
-    }
-}
-
-/// One demand's statistics over a suite.
-#[derive(Debug, Clone, Serialize)]
-pub struct DemandSummary {
-    /// The demand's key (`left.peak_displacement_m`, `max_force_kn`, …).
-    pub demand: String,
-    pub unit: &'static str,
-    #[serde(flatten)]
-    pub summary: Summary,
-}
-
-/// The statistics of a suite (SPEC §12).
-#[derive(Debug, Clone, Serialize)]
-pub struct SuiteStatistics {
-    pub records: usize,
-    /// Records with at least one impact.
-    pub pounded: usize,
-    pub demands: Vec<DemandSummary>,
-}
-
-/// Each demand of SPEC §6 in SI, its key and unit, for statistics.
-type Demand = (&'static str, &'static str, fn(&DemandsSi) -> f64);
-
-/// A demand of a record's run as a whole (impacts, force, gap), for statistics.
-type RunDemand = fn(&SuiteRun) -> f64;
-
-const DEMANDS: [Demand; 6] = [
-    ("peak_displacement_m", "m", |d| d.peak_displacement_m),
-    ("peak_velocity_m_s", "m/s", |d| d.peak_velocity_m_s),
-    ("peak_absolute_acceleration_g", "g", |d| {
-        d.peak_absolute_acceleration_g
-    }),
-    ("ductility", "", |d| d.ductility),
-    // The size of the residual drift decides repair, not its side.
-    ("residual_displacement_m", "m, absolute", |d| {
-        d.residual_displacement_m.abs()
-    }),
-    ("hysteretic_energy_kj", "kJ", |d| d.hysteretic_energy_kj),
-];
-
-impl SuiteStatistics {
-    pub fn of(runs: &[SuiteRun]) -> SuiteStatistics {
-        let mut demands = Vec::new();
-        for (side, i) in [("left", 0), ("right", 1)] {
-            for (key, unit, get) in DEMANDS {
-                let values: Vec<f64> = runs.iter().map(|r| get(&r.demands(i))).collect();
-                demands.push(DemandSummary {
-                    demand: format!("{side}.{key}"),
-                    unit,
-                    summary: Summary::of(&values),
-                });
-            }
-        }
-        let pair: [(&str, &'static str, RunDemand); 3] = [
-            ("impacts", "", |r| r.result.impacts.len() as f64),
-            ("max_force_kn", "kN", SuiteRun::max_force_kn),
-            ("min_gap_m", "m", SuiteRun::min_gap_m),
-        ];
-        for (key, unit, get) in pair {
-            let values: Vec<f64> = runs.iter().map(get).collect();
-            demands.push(DemandSummary {
-                demand: key.to_string(),
-                unit,
-                summary: Summary::of(&values),
-            });
-        }
-        SuiteStatistics {
-            records: runs.len(),
-            pounded: runs.iter().filter(|r| r.pounded()).count(),
-            demands,
-        }
     }
 }

@@ -10,7 +10,7 @@ use super::budget::{SECONDS_PER_STEP, Work};
 use super::output::{Emit, FormatArg, print, render};
 use super::params::ParamArgs;
 use crate::accuracy::timing::median;
-use crate::analysis::row_report::RowReport;
+use crate::analysis::buildings_report::RowReport;
 use crate::analysis::work;
 use crate::model::buildings::load::text_of;
 use crate::model::buildings::matrices::default_tail;
@@ -203,7 +203,7 @@ pub fn bench(
     )?;
     let rows = crate::accuracy::row_bench::row_bench(&row, &ground, duration)
         .map_err(|e| CliError::Usage(e.to_string()))?;
-    let report = crate::analysis::row_report::RowBenchReport {
+    let report = crate::analysis::buildings_report::RowBenchReport {
         row: row.name.clone(),
         excitation: name,
         duration,
@@ -333,7 +333,7 @@ pub fn gap(
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
     let seconds = 2.0 * work::row_seconds(row.dofs(), duration, None);
     bounded("gap --buildings", seconds, allow_long)?;
-    let report = crate::analysis::row_gap::row_gap(&row, &ground, duration, &name)
+    let report = crate::analysis::gap::row_gap(&row, &ground, duration, &name)
         .map_err(|e| CliError::Failed(e.to_string()))?;
     emit(&report)
 }

@@ -12,8 +12,8 @@ use super::gap_suite::DEFAULT_PROBABILITIES;
 use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
 use super::params::ParamArgs;
 use super::records::members;
-use super::row_suite::{self, RowStudyArgs};
 use super::shard::ShardArgs;
+use super::subject::row::{self, RowStudyArgs};
 use super::suite::{SuiteArgs, case_of, parse_level, work_of};
 use crate::analysis::ida::parse_levels;
 use crate::analysis::separation::parse_probabilities;
@@ -198,14 +198,14 @@ fn row_study(
         shard: &shard,
         collective: false,
     };
-    let (case, members) = row_suite::case_of(&study)?;
+    let (case, members) = row::case_of(&study)?;
     let states = limit_states(&risk.limits, &risk.row_limits, Some(&case.row))?;
     if separation {
-        plan(&case, &members).map_err(row_suite::failed)?;
+        plan(&case, &members).map_err(row::failed)?;
     } else {
-        plan_levels(&case, &members, &levels).map_err(row_suite::failed)?;
+        plan_levels(&case, &members, &levels).map_err(row::failed)?;
     }
-    row_suite::work_of(&case.row, &members, levels.len().max(1)).check(
+    row::work_of(&case.row, &members, levels.len().max(1)).check(
         &format!("figure {name}"),
         risk.long.allow_long,
         false,

@@ -90,9 +90,7 @@ pub fn report_with(
         suite_args.shard = args.shard.clone();
         suite_args.period = args.row.period.map(|t| t.to_string());
         let suite_args = suite_args.at_design_level()?;
-        if let Some(study) = suite_args.row_study()? {
-            return super::row_gap_suite::report_with(&study, args.probability.as_deref(), emit);
-        }
+        return super::gap_suite::report_with(&suite_args, args.probability.as_deref(), emit);
     }
     if let Some(suite_args) = args
         .records

@@ -1,22 +1,27 @@
 //! `pounding gap --suite`: the separation that prevents pounding with a
 //! chosen probability over a suite of records, beside the code rules
-//! (SPEC §11, §12). Each record's Π_d,min (in m) comes from its run without
-//! contact ([`crate::analysis::suite`]); the study of those values is
-//! [`crate::analysis::separation`]. This module parses, runs and prints.
+//! (SPEC §11, §12), for the pair's joint (`--preset`) or each joint of a row
+//! (`--buildings`, SPEC §13). Each record's gap at a joint comes from its
+//! run without contact; the study of those values is
+//! [`crate::analysis::separation::joint_separations`], one path for both
+//! subjects. This module runs it, and each subject's writer (`pair`,
+//! `row`) prints it.
 
 use std::fmt::Write as _;
 
-use serde::Serialize;
+pub mod pair;
+pub mod row;
 
 use super::CliError;
-use super::description::Provenance;
 use super::output::{Emit, num};
-use super::suite::{Ran, SuiteArgs, run_or_shard};
+use super::subject::{CliSubject, Study};
+use super::suite::{Chosen, SuiteArgs};
 use crate::analysis::separation::{
-    RecordGap, SeparationStudy, parse_probabilities, probability_of_pounding, study,
+    JointSeparation, SeparationStudy, joint_separations, parse_probabilities,
 };
+use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
+use crate::analysis::suite::{SuiteCase, SuiteRun};
 use crate::model::params::echo::g4;
-use crate::output::report::Report;
 
 /// The probabilities reported when `--probability` is not given.
 pub const DEFAULT_PROBABILITIES: &str = "0.5,0.84,0.9";
@@ -35,7 +40,8 @@ pub fn probabilities(probability: Option<&str>) -> Result<Vec<f64>, CliError> {
     .map_err(|e| usage(e.to_string()))
 }
 
-/// Runs the suite of `suite_args` and reports the separation at each of
+/// Runs the suite of `suite_args` on the subject `--preset` or
+/// `--buildings` chooses and reports, per joint, the separation at each of
 /// `probability` (a list, [`DEFAULT_PROBABILITIES`] when `None`), its typed
 /// report handed to `emit`.
 pub fn report_with(
@@ -44,138 +50,73 @@ pub fn report_with(
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let probabilities = probabilities(probability)?;
-    let suite = suite_args.suite.as_str();
-    let Some(Ran {
-        preset,
-        case,
-        runs,
-        elapsed_ms,
-    }) = run_or_shard(suite_args, "gap")?
-    else {
+    match Chosen::of(suite_args)? {
+        Chosen::Pair(study) => separation(&study, suite_args, &probabilities, emit),
+        Chosen::Row(study) => separation(&study, suite_args, &probabilities, emit),
+    }
+}
+
+/// The separation of `study` at `probabilities`: its records run (or
+/// sharded, or merged), each joint's study, reported by the subject's writer.
+fn separation<S: SeparationWriter>(
+    study: &Study<S>,
+    args: &SuiteArgs,
+    probabilities: &[f64],
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
+    let Some((runs, elapsed_ms)) = study.run("gap", &args.shard, args.long.allow_long)? else {
         return Ok(());
     };
-    let records: Vec<RecordGap> = runs.iter().map(RecordGap::of).collect();
-    if let Some(r) = runs.iter().find(|r| !r.free.completed) {
+    let subject = &study.subject;
+    if let Some(r) = runs.iter().find(|r| subject.free_run_stopped(r)) {
         return Err(CliError::Failed(format!(
             "record `{}`: the run without contact stopped before its end; its minimum gap \
              covers only the part that was run",
-            r.name
+            S::record_name(r)
         )));
     }
-    let gaps: Vec<f64> = records.iter().map(|r| r.min_gap).collect();
-    let gap_m = case.physical.gap;
-    let report = SeparationReport {
-        provenance: Provenance::new(&preset.name, UNITS),
-        suite,
-        measure: case.scaling.measure.to_string(),
-        level_g: case.scaling.level,
-        gap_m,
-        pounding_probability_at_gap: probability_of_pounding(&gaps, gap_m),
-        records: runs
-            .iter()
-            .map(|r| RecordRow {
-                record: r.name.clone(),
-                scale: r.scale,
-                intensity_g: r.intensity,
-                min_gap_m: r.min_gap_m(),
-                free_peak_left_m: r.free_si.left.peak_displacement_m,
-                free_peak_right_m: r.free_si.right.peak_displacement_m,
-                impacts_at_gap: r.result.impacts.len(),
-            })
-            .collect(),
-        study: study(&records, &probabilities),
-        elapsed_ms,
-    };
-    emit(&report)
+    let joints = joint_separations(subject, &runs, probabilities);
+    emit(&*subject.separation_report(&study.name, &args.suite, &runs, joints, elapsed_ms))
 }
 
-const UNITS: &str = "m for gaps and peak drifts, g for intensities";
-
-/// One record: its scaling, Π_d,min and separate peaks (m).
-#[derive(Debug, Serialize)]
-struct RecordRow {
-    record: String,
-    scale: f64,
-    intensity_g: f64,
-    /// Π_d,min of SPEC §11 in m.
-    min_gap_m: f64,
-    /// Peak drifts of the separate buildings (the run without contact).
-    free_peak_left_m: f64,
-    free_peak_right_m: f64,
-    /// Impacts of the run at the preset's own gap.
-    impacts_at_gap: usize,
+/// How a subject writes the separation's report: the pair's ([`pair`]) and
+/// a row's ([`row`]) keep their own spellings of the same study.
+pub trait SeparationWriter: CliSubject {
+    /// `pounding gap --suite`'s report of `runs` and each joint's
+    /// separation (suite `suite`; `name` the preset's).
+    fn separation_report<'a>(
+        &'a self,
+        name: &'a str,
+        suite: &'a str,
+        runs: &[Self::Run],
+        joints: Vec<JointSeparation>,
+        elapsed_ms: f64,
+    ) -> Box<dyn Emit + 'a>;
 }
 
-/// `pounding gap --suite` in every format.
-#[derive(Debug, Serialize)]
-struct SeparationReport<'a> {
-    #[serde(flatten)]
-    provenance: Provenance<'a>,
-    suite: &'a str,
-    measure: String,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    level_g: Option<f64>,
-    /// The preset's own gap (m).
-    #[serde(serialize_with = "crate::output::report::float_or_inf")]
-    gap_m: f64,
-    /// The fraction of records whose Π_d,min exceeds it.
-    pounding_probability_at_gap: f64,
-    records: Vec<RecordRow>,
-    study: SeparationStudy,
-    elapsed_ms: f64,
-}
-
-impl Report for SeparationReport<'_> {
-    fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "version",
-            "units",
-            "record",
-            "scale",
-            "intensity_measure",
-            "intensity_g",
-            "min_gap_m",
-            "free_peak_left_m",
-            "free_peak_right_m",
-            "impacts_at_gap",
-        ]
+impl SeparationWriter for SuiteCase {
+    fn separation_report<'a>(
+        &'a self,
+        name: &'a str,
+        suite: &'a str,
+        runs: &[SuiteRun],
+        joints: Vec<JointSeparation>,
+        elapsed_ms: f64,
+    ) -> Box<dyn Emit + 'a> {
+        Box::new(pair::report(name, suite, self, runs, joints, elapsed_ms))
     }
+}
 
-    fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.records
-            .iter()
-            .map(|r| {
-                vec![
-                    env!("CARGO_PKG_VERSION").to_string(),
-                    UNITS.to_string(),
-                    r.record.clone(),
-                    num(r.scale),
-                    self.measure.clone(),
-                    num(r.intensity_g),
-                    num(r.min_gap_m),
-                    num(r.free_peak_left_m),
-                    num(r.free_peak_right_m),
-                    r.impacts_at_gap.to_string(),
-                ]
-            })
-            .collect()
-    }
-
-    fn table(&self) -> String {
-        let mut s = String::new();
-        let st = &self.study;
-        let scaling = match self.level_g {
-            Some(x) => format!("each record scaled to {} = {} g", self.measure, num(x)),
-            None => "records at their list's scale".to_string(),
-        };
-        let _ = writeln!(
-            s,
-            "separation over suite {} ({} records), preset {}; {scaling}",
-            self.suite, st.records, self.provenance.preset
-        );
-        study_table(&mut s, st, self.gap_m, self.pounding_probability_at_gap);
-        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
-        s
+impl SeparationWriter for RowSuiteCase {
+    fn separation_report<'a>(
+        &'a self,
+        _: &'a str,
+        suite: &'a str,
+        runs: &[RowSuiteRun],
+        joints: Vec<JointSeparation>,
+        elapsed_ms: f64,
+    ) -> Box<dyn Emit + 'a> {
+        Box::new(row::report(self, suite, runs, joints, elapsed_ms))
     }
 }
 

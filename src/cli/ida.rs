@@ -20,7 +20,7 @@ use super::suite::{SuiteArgs, case_of};
 use crate::analysis::ida::{LimitStateFragility, fragilities, parse_levels};
 use crate::analysis::limit_state::LimitState;
 use crate::analysis::subject::runs::plan_levels;
-use crate::analysis::suite::SuiteStatistics;
+use crate::analysis::suite_statistics::SuiteStatistics;
 use crate::model::suite::SuiteMember;
 
 #[derive(Debug, Clone, Default, Args)]
@@ -93,7 +93,7 @@ pub fn report_with(
     }
     let levels = parse_levels(&args.levels).map_err(usage)?;
     if let Some(study) = study {
-        let (case, members) = super::row_suite::case_of(&study)?;
+        let (case, members) = super::subject::row::case_of(&study)?;
         let states = limit_states(&args.limits, &args.row_limits, Some(&case.row))?;
         let ran = ida(
             &case,

@@ -32,8 +32,6 @@ pub mod progress;
 pub mod records;
 pub mod records_scale;
 pub mod records_select;
-pub mod row_gap_suite;
-pub mod row_suite;
 pub mod run;
 pub mod shard;
 pub mod similarity;

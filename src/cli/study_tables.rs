@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use crate::analysis::fragility::describe;
 use crate::analysis::ida::LimitStateFragility;
-use crate::analysis::suite::SuiteStatistics;
+use crate::analysis::suite_statistics::SuiteStatistics;
 use crate::model::params::echo::g4;
 
 /// The statistics over a suite's records (SPEC §12), with their heading.

@@ -1,9 +1,11 @@
 //! What the command line needs of a study's subject beside the study
 //! itself ([`crate::analysis::subject`]): what its records cost for the work
 //! bound and the progress bar, and how its failures are reported (the
-//! pair's in [`super::suite`], a row's in [`super::row_suite`]). One run of
-//! a suite or of an IDA's levels, with `--shard` and under `merge`, is then
-//! written once for the pair and a row ([`run_levels_or_shard`]).
+//! pair's in [`super::suite`], a row's in [`row`]). One run of a suite or
+//! of an IDA's levels, with `--shard` and under `merge`, is then written
+//! once for the pair and a row ([`run_levels_or_shard`], [`Study::run`]).
+
+pub mod row;
 
 use std::time::Instant;
 
@@ -12,7 +14,7 @@ use super::budget::Work;
 use super::progress::Progress;
 use super::shard::ShardArgs;
 use crate::analysis::subject::Subject;
-use crate::analysis::subject::runs::run_levels;
+use crate::analysis::subject::runs::{plan, run_levels};
 use crate::model::suite::SuiteMember;
 
 /// A subject as the command line runs it.
@@ -25,6 +27,52 @@ pub trait CliSubject: Subject {
     fn steps(&self, run: &Self::Run) -> f64;
     /// A failed record as the command line reports it.
     fn failed(e: Self::Error) -> CliError;
+    /// The record's name in its suite.
+    fn record_name(run: &Self::Run) -> &str;
+    /// Why the record's result is unreliable, if it is (the pair's solver
+    /// says so; a row's runs fail instead).
+    fn unreliable(&self, _run: &Self::Run) -> Option<String> {
+        None
+    }
+    /// The record's run without contact stopped before its end, so its
+    /// gaps cover only the part that was run.
+    fn free_run_stopped(&self, _run: &Self::Run) -> bool {
+        false
+    }
+}
+
+/// A suite's runs in suite order and the wall time in ms; `None` when a
+/// shard's part was written.
+pub type SuiteRuns<R> = Result<Option<(Vec<R>, f64)>, CliError>;
+
+/// A suite study's subject with its records: `name` is what names it in
+/// shards' parts and reports (the preset's name, or `--buildings` as given).
+pub struct Study<S> {
+    pub subject: S,
+    pub name: String,
+    pub members: Vec<SuiteMember>,
+}
+
+impl<S: CliSubject> Study<S> {
+    /// Plans every record before any run (a record that cannot be scaled,
+    /// or whose plan is out of range, fails at once and names it) and runs
+    /// them ([`run_levels_or_shard`] at one level): the runs in suite order
+    /// and the wall time in ms, or `None` when a shard's part was written.
+    /// `command` names the request in the work bound's message and in parts.
+    pub fn run(&self, command: &str, shard: &ShardArgs, allow_long: bool) -> SuiteRuns<S::Run> {
+        let plans = [plan(&self.subject, &self.members).map_err(S::failed)?];
+        let ran = run_levels_or_shard(
+            &self.subject,
+            &self.name,
+            &self.members,
+            &plans,
+            command,
+            shard,
+            allow_long,
+            &(),
+        )?;
+        Ok(ran.map(|(runs, elapsed_ms)| (runs.into_iter().flatten().collect(), elapsed_ms)))
+    }
 }
 
 /// Each level's runs and the wall time in ms; `None` when a shard's part

@@ -1,30 +1,29 @@
-//! `pounding suite`: one physical pair of buildings under every record of a
-//! suite, each scaled to an intensity, with the demands of SPEC §6 per
-//! record and their statistics over the suite (SPEC §12). The study itself
-//! is [`crate::analysis::suite`]; this module parses, runs and prints.
-
-use std::fmt::Write as _;
+//! `pounding suite`: the physical pair (`--preset`) or a row of buildings
+//! (`--buildings`, SPEC §13) under every record of a suite, each scaled to
+//! an intensity, with each record's demands and their statistics over the
+//! suite (SPEC §12). The study itself is [`crate::analysis::suite`] over a
+//! [`crate::analysis::subject::Subject`]; this module parses and runs it,
+//! one handler for both subjects, and each subject's writer (`pair`, `row`)
+//! prints it.
 
 use clap::Args;
-use serde::Serialize;
+
+pub mod pair;
+pub mod row;
+
+pub use pair::SuiteRow;
 
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
-use super::description::{Provenance, ScalingReport};
-use super::output::{Emit, FormatArg, num, printer};
+use super::output::{Emit, FormatArg, printer};
 use super::params::ParamArgs;
 use super::records::members;
-use super::row_suite::RowStudyArgs;
-use super::study_tables::{clip, over_suite_table};
-use super::subject::{CliSubject, run_levels_or_shard};
-use crate::analysis::demands::{DemandsSi, Scales};
-use crate::analysis::subject::runs::plan;
-use crate::analysis::suite::{MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteStatistics};
+use super::subject::row::RowStudyArgs;
+use super::subject::{CliSubject, Study};
+use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
+use crate::analysis::suite::{MemberPlan, Scaling, SuiteCase, SuiteRun};
+use crate::model::Params;
 use crate::model::intensity::IntensityMeasure;
-use crate::model::physical::G;
-use crate::model::{Method, Params};
-use crate::output::report::Report;
-use crate::solver::StructurePeaks;
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct SuiteArgs {
@@ -236,14 +235,6 @@ pub fn case_of(args: &SuiteArgs) -> Result<(crate::model::Preset, SuiteCase), Cl
     ))
 }
 
-/// A suite that ran: its preset, study, runs (in suite order) and wall time.
-pub struct Ran {
-    pub preset: crate::model::Preset,
-    pub case: SuiteCase,
-    pub runs: Vec<SuiteRun>,
-    pub elapsed_ms: f64,
-}
-
 /// The work of one planned record: a pounding run and at most one run
 /// without contact, each counted at its nominal steps.
 pub fn record_steps(params: &Params) -> f64 {
@@ -258,68 +249,44 @@ pub fn work_of<'a>(plans: impl IntoIterator<Item = &'a MemberPlan>) -> Work {
     }
 }
 
-/// Loads the suite of `args`, plans every record before any run (a zero
-/// record or Π-groups out of range fail at once, naming the record), and
-/// runs them in parallel with progress; or with `--shard` one shard of it
-/// (then `None`: its part was written), or under `pounding merge` the runs
-/// from the parts. `what` names the request in the work bound's message
-/// and in its parts.
-pub fn run_or_shard(args: &SuiteArgs, what: &str) -> Result<Option<Ran>, CliError> {
-    let (preset, case) = case_of(args)?;
-    let members = members(&args.suite)?;
-    let plans = [plan(&case, &members).map_err(|e| usage(e.to_string()))?];
-    let (shard, allow_long) = (&args.shard, args.long.allow_long);
-    let Some((runs, elapsed_ms)) = run_levels_or_shard(
-        &case,
-        &preset.name,
-        &members,
-        &plans,
-        what,
-        shard,
-        allow_long,
-        &(),
-    )?
-    else {
-        return Ok(None);
-    };
-    Ok(Some(Ran {
-        preset,
-        case,
-        runs: runs.into_iter().flatten().collect(),
-        elapsed_ms,
-    }))
-}
-
 pub fn execute(args: &SuiteArgs) -> Result<(), CliError> {
     report_with(args, printer(args.output.format))
 }
 
-/// The suite study of `args`, its typed report handed to `emit`.
+/// The suite study of `args`, on the subject `--preset` or `--buildings`
+/// chooses, its typed report handed to `emit`.
 pub fn report_with(
     args: &SuiteArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let args = &args.at_design_level()?;
-    if let Some(study) = args.row_study()? {
-        return super::row_suite::report_with(&study, emit);
+    match Chosen::of(args)? {
+        Chosen::Pair(study) => suite(&study, args, emit),
+        Chosen::Row(study) => suite(&study, args, emit),
     }
-    let Some(Ran {
-        preset,
-        case,
-        runs,
-        elapsed_ms,
-    }) = run_or_shard(args, "suite")?
-    else {
+}
+
+/// The suite of `study`: its records run (or sharded, or merged), reported
+/// by the subject's writer, and refused after the report where a record's
+/// result is unreliable unless `--allow-unreliable`.
+fn suite<S: Writer>(
+    study: &Study<S>,
+    args: &SuiteArgs,
+    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+) -> Result<(), CliError> {
+    let Some((runs, elapsed_ms)) = study.run("suite", &args.shard, args.long.allow_long)? else {
         return Ok(());
     };
-    let report = SuiteReport::new(&preset.name, &args.suite, &case, &runs, elapsed_ms);
-    emit(&report)?;
+    emit(
+        &*study
+            .subject
+            .suite_report(&study.name, &args.suite, &runs, elapsed_ms),
+    )?;
     let unreliable: Vec<String> = runs
         .iter()
         .filter_map(|r| {
-            r.result
-                .unreliable()
-                .map(|why| format!("{}: {why}", r.name))
+            let why = study.subject.unreliable(r)?;
+            Some(format!("{}: {why}", S::record_name(r)))
         })
         .collect();
     if !unreliable.is_empty() && !args.allow_unreliable {
@@ -333,341 +300,69 @@ pub fn report_with(
     Ok(())
 }
 
-/// One structure of one record, in SI and in Π (SPEC §6).
-#[derive(Debug, Serialize)]
-pub struct StructureRow {
-    #[serde(flatten)]
-    si: DemandsSi,
-    /// The same demands in Π form (units of SPEC §1).
-    pi: StructurePeaks,
+/// The subject `--preset` (the physical pair) or `--buildings` (a row)
+/// chooses, with its records.
+pub enum Chosen {
+    Pair(Study<SuiteCase>),
+    Row(Study<RowSuiteCase>),
 }
 
-/// One record of the suite.
-#[derive(Debug, Serialize)]
-pub struct SuiteRow {
-    record: String,
-    samples: usize,
-    /// Sample interval DT (s).
-    dt: f64,
-    scale: f64,
-    /// IM of the scaled record (g).
-    intensity_g: f64,
-    /// a_p (m/s²) and ω_p (rad/s) of the scaled record, and the scales from Π to SI.
-    #[serde(flatten)]
-    scales: Scales,
-    left: StructureRow,
-    right: StructureRow,
-    /// Both structures' demands (SI) in the run without contact (gap = ∞).
-    no_pounding: [DemandsSi; 2],
-    impacts: usize,
-    max_force_kn: f64,
-    /// Π_d,min of SPEC §11 (m): the gap at which this record would not pound.
-    min_gap_m: f64,
-    /// The same in Π form.
-    min_gap: f64,
-    /// The record's Π-groups and settings (`pounding run` of this set gives
-    /// this row).
-    params: Params,
-    reliable: bool,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    unreliable_reason: Option<String>,
-}
-
-impl SuiteRow {
-    pub fn of(r: &SuiteRun) -> SuiteRow {
-        let unreliable_reason = r.result.unreliable();
-        SuiteRow {
-            record: r.name.clone(),
-            samples: r.samples,
-            dt: r.dt,
-            scale: r.scale,
-            intensity_g: r.intensity,
-            scales: r.si.scales,
-            left: StructureRow {
-                si: r.si.left,
-                pi: r.result.left,
-            },
-            right: StructureRow {
-                si: r.si.right,
-                pi: r.result.right,
-            },
-            no_pounding: [r.free_si.left, r.free_si.right],
-            impacts: r.result.impacts.len(),
-            max_force_kn: r.max_force_kn(),
-            min_gap_m: r.min_gap_m(),
-            min_gap: r.min_gap,
-            params: r.params.clone(),
-            reliable: unreliable_reason.is_none(),
-            unreliable_reason,
+impl Chosen {
+    /// The subject and records of `args`, checked (`--level` read).
+    pub fn of(args: &SuiteArgs) -> Result<Chosen, CliError> {
+        if let Some(study) = args.row_study()? {
+            let (subject, members) = super::subject::row::case_of(&study)?;
+            return Ok(Chosen::Row(Study {
+                subject,
+                name: study.buildings.to_string(),
+                members,
+            }));
         }
-    }
-
-    /// The CSV columns of a row, after `version` and `units`.
-    pub fn csv_header() -> Vec<&'static str> {
-        let mut h = vec![
-            "record",
-            "samples",
-            "dt",
-            "scale",
-            "intensity_measure",
-            "intensity_g",
-            "ap",
-            "omega_p",
-        ];
-        for side in SIDE_COLUMNS {
-            h.extend(side);
-        }
-        h.extend([
-            "impacts",
-            "max_force_kn",
-            "min_gap_m",
-            "min_gap",
-            "reliable",
-        ]);
-        h
-    }
-
-    /// The cells of [`SuiteRow::csv_header`]; `measure` names the IM.
-    pub fn csv_cells(&self, measure: &str) -> Vec<String> {
-        let r = self;
-        let mut row = vec![
-            r.record.clone(),
-            r.samples.to_string(),
-            num(r.dt),
-            num(r.scale),
-            measure.to_string(),
-            num(r.intensity_g),
-            num(r.scales.ap),
-            num(r.scales.omega_p),
-        ];
-        for s in [&r.left, &r.right] {
-            row.extend(
-                [
-                    s.si.peak_displacement_m,
-                    s.si.peak_velocity_m_s,
-                    s.si.peak_absolute_acceleration_g,
-                    s.si.ductility,
-                    s.si.residual_displacement_m,
-                    s.si.hysteretic_energy_kj,
-                    s.pi.peak_displacement,
-                    s.pi.peak_velocity,
-                    s.pi.peak_absolute_acceleration,
-                    s.pi.residual_displacement,
-                    s.pi.hysteretic_energy,
-                ]
-                .map(num),
-            );
-        }
-        row.extend([
-            r.impacts.to_string(),
-            num(r.max_force_kn),
-            num(r.min_gap_m),
-            num(r.min_gap),
-            r.reliable.to_string(),
-        ]);
-        row
+        let (preset, subject) = case_of(args)?;
+        Ok(Chosen::Pair(Study {
+            subject,
+            name: preset.name,
+            members: members(&args.suite)?,
+        }))
     }
 }
 
-/// `pounding suite` in every format.
-#[derive(Debug, Serialize)]
-struct SuiteReport<'a> {
-    #[serde(flatten)]
-    provenance: Provenance<'a>,
-    suite: &'a str,
-    model: &'static str,
-    method: Method,
-    /// The buildings (SI), as the preset's [physical] table gives them.
-    period1_s: f64,
-    period2_s: f64,
-    mass1_kg: f64,
-    mass2_kg: f64,
-    #[serde(serialize_with = "crate::output::report::float_or_inf")]
-    yield1_m: f64,
-    #[serde(serialize_with = "crate::output::report::float_or_inf")]
-    yield2_m: f64,
-    #[serde(serialize_with = "crate::output::report::float_or_inf")]
-    gap_m: f64,
-    scaling: ScalingReport,
-    records: Vec<SuiteRow>,
-    statistics: SuiteStatistics,
-    elapsed_ms: f64,
-}
-
-/// SI for the demands, Π-groups beside them.
-const UNITS: &str = "SI (m, m/s, g, kN, kJ) for the demands; Π-groups of SPEC §1 under `pi`";
-
-impl<'a> SuiteReport<'a> {
-    fn new(
-        preset: &'a str,
+/// How a subject writes a suite's report: the pair's ([`pair`]) and a
+/// row's ([`row`]) keep their own spellings of the same demands.
+pub trait Writer: CliSubject {
+    /// `pounding suite`'s report of `runs` (suite `suite`); `name` the preset's.
+    fn suite_report<'a>(
+        &'a self,
+        name: &'a str,
         suite: &'a str,
-        case: &SuiteCase,
+        runs: &[Self::Run],
+        elapsed_ms: f64,
+    ) -> Box<dyn Emit + 'a>;
+}
+
+impl Writer for SuiteCase {
+    fn suite_report<'a>(
+        &'a self,
+        name: &'a str,
+        suite: &'a str,
         runs: &[SuiteRun],
         elapsed_ms: f64,
-    ) -> Self {
-        let phys = &case.physical;
-        let records = runs.iter().map(SuiteRow::of).collect();
-        SuiteReport {
-            provenance: Provenance::new(preset, UNITS),
-            suite,
-            model: case.settings.model.name(),
-            method: case.settings.method,
-            period1_s: std::f64::consts::TAU / phys.omega[0],
-            period2_s: std::f64::consts::TAU / phys.omega[1],
-            mass1_kg: phys.mass[0],
-            mass2_kg: phys.mass[1],
-            yield1_m: phys.yield_displacement[0],
-            yield2_m: phys.yield_displacement[1],
-            gap_m: phys.gap,
-            scaling: ScalingReport {
-                measure: case.scaling.measure.to_string(),
-                level_g: case.scaling.level,
-            },
-            records,
-            statistics: SuiteStatistics::of(runs),
-            elapsed_ms,
-        }
+    ) -> Box<dyn Emit + 'a> {
+        Box::new(pair::SuiteReport::new(name, suite, self, runs, elapsed_ms))
     }
 }
 
-/// A number for a table: four significant digits, `inf` for infinity.
-fn g4(v: f64) -> String {
-    crate::model::params::echo::g4(v)
-}
-
-impl Report for SuiteReport<'_> {
-    fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = vec!["version", "units"];
-        h.extend(SuiteRow::csv_header());
-        h
-    }
-
-    fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.records
-            .iter()
-            .map(|r| {
-                let mut row = vec![env!("CARGO_PKG_VERSION").to_string(), UNITS.to_string()];
-                row.extend(r.csv_cells(&self.scaling.measure));
-                row
-            })
-            .collect()
-    }
-
-    fn table(&self) -> String {
-        let mut s = String::new();
-        let level = self.scaling.words();
-        let _ = writeln!(
-            s,
-            "suite {} ({} records), preset {}: {}, {} method",
-            self.suite,
-            self.records.len(),
-            self.provenance.preset,
-            self.model,
-            self.method.name()
-        );
-        let _ = writeln!(
-            s,
-            "buildings: T1 = {} s, T2 = {} s, m1 = {} kg, m2 = {} kg, gap = {} mm; {level}",
-            g4(self.period1_s),
-            g4(self.period2_s),
-            g4(self.mass1_kg),
-            g4(self.mass2_kg),
-            g4(self.gap_m * 1e3)
-        );
-        let _ = writeln!(s);
-        let name_width = self
-            .records
-            .iter()
-            .map(|r| r.record.chars().count())
-            .max()
-            .unwrap_or(6)
-            .clamp(6, 40);
-        let _ = writeln!(
-            s,
-            "{:<name_width$} {:>7} {:>5} {:>8} {:>8} {:>8} {:>7} {:>9} {:>9}",
-            "record", "samples", "dt s", "scale", "IM g", "a_p g", "ω_p r/s", "impacts", "F_max kN"
-        );
-        for r in &self.records {
-            let _ = writeln!(
-                s,
-                "{:<name_width$} {:>7} {:>5} {:>8} {:>8} {:>8} {:>7} {:>9} {:>9}{}",
-                clip(&r.record, name_width),
-                r.samples,
-                g4(r.dt),
-                g4(r.scale),
-                g4(r.intensity_g),
-                g4(r.scales.ap / G),
-                g4(r.scales.omega_p),
-                r.impacts,
-                g4(r.max_force_kn),
-                if r.reliable { "" } else { "  unreliable" }
-            );
-        }
-        for (title, side) in [("left", 0), ("right", 1)] {
-            let _ = writeln!(s);
-            let _ = writeln!(
-                s,
-                "{:<name_width$} {:>9} {:>8} {:>7} {:>7} {:>10} {:>9} {:>9}",
-                format!("{title}"),
-                "u mm",
-                "v m/s",
-                "A g",
-                "μ",
-                "resid mm",
-                "E_h kJ",
-                "d_min mm"
-            );
-            for r in &self.records {
-                let d = if side == 0 { &r.left.si } else { &r.right.si };
-                let _ = writeln!(
-                    s,
-                    "{:<name_width$} {:>9} {:>8} {:>7} {:>7} {:>10} {:>9} {:>9}",
-                    clip(&r.record, name_width),
-                    g4(d.peak_displacement_m * 1e3),
-                    g4(d.peak_velocity_m_s),
-                    g4(d.peak_absolute_acceleration_g),
-                    g4(d.ductility),
-                    g4(d.residual_displacement_m * 1e3),
-                    g4(d.hysteretic_energy_kj),
-                    g4(r.min_gap_m * 1e3)
-                );
-            }
-        }
-        over_suite_table(&mut s, &self.statistics);
-        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
-        s
+impl Writer for RowSuiteCase {
+    fn suite_report<'a>(
+        &'a self,
+        _: &'a str,
+        suite: &'a str,
+        runs: &[RowSuiteRun],
+        elapsed_ms: f64,
+    ) -> Box<dyn Emit + 'a> {
+        Box::new(row::report(self, suite, runs, elapsed_ms))
     }
 }
-
-/// The per-structure CSV columns, left then right: SI, then Π.
-const SIDE_COLUMNS: [[&str; 11]; 2] = [
-    [
-        "left_peak_displacement_m",
-        "left_peak_velocity_m_s",
-        "left_peak_absolute_acceleration_g",
-        "left_ductility",
-        "left_residual_displacement_m",
-        "left_hysteretic_energy_kj",
-        "left_peak_displacement",
-        "left_peak_velocity",
-        "left_peak_absolute_acceleration",
-        "left_residual_displacement",
-        "left_hysteretic_energy",
-    ],
-    [
-        "right_peak_displacement_m",
-        "right_peak_velocity_m_s",
-        "right_peak_absolute_acceleration_g",
-        "right_ductility",
-        "right_residual_displacement_m",
-        "right_hysteretic_energy_kj",
-        "right_peak_displacement",
-        "right_peak_velocity",
-        "right_peak_absolute_acceleration",
-        "right_residual_displacement",
-        "right_hysteretic_energy",
-    ],
-];
 
 impl CliSubject for SuiteCase {
     fn work_of(&self, _: &[crate::model::suite::SuiteMember], plans: &[Vec<MemberPlan>]) -> Work {
@@ -684,5 +379,17 @@ impl CliSubject for SuiteCase {
 
     fn failed(e: crate::analysis::suite::SuiteRunError) -> CliError {
         CliError::Usage(e.to_string())
+    }
+
+    fn record_name(run: &SuiteRun) -> &str {
+        &run.name
+    }
+
+    fn unreliable(&self, run: &SuiteRun) -> Option<String> {
+        run.result.unreliable()
+    }
+
+    fn free_run_stopped(&self, run: &SuiteRun) -> bool {
+        !run.free.completed
     }
 }

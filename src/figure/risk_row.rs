@@ -2,7 +2,7 @@
 //! curves of each building's storey drift ratio, the fragility curves of
 //! the row's limit states and each joint's separation. The runs and the
 //! fits are [`crate::analysis::subject::runs`]' and
-//! [`crate::analysis::row_separation`]'s, the drawing [`super::risk`]'s, so
+//! [`crate::analysis::separation`]'s, the drawing [`super::risk`]'s, so
 //! a row's figures read as the pair's do.
 //!
 //! - [`row_ida_figure`]: one panel per building, IM against its largest
@@ -19,8 +19,8 @@
 
 use crate::analysis::ida::fragilities;
 use crate::analysis::limit_state::LimitState;
-use crate::analysis::row_separation::joint_separations;
-use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun};
+use crate::analysis::separation::joint_separations;
+use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
 use crate::analysis::subject::runs::{plan, plan_levels, run_levels, run_suite};
 use crate::model::buildings::matrices::periods;
 use crate::model::params::echo::g4;
@@ -169,7 +169,7 @@ pub fn row_separation_figure(study: &RowSuiteStudy) -> Result<Figure, FigureErro
         plan(&study.case, &study.members).map_err(|e| FigureError::Input(e.to_string()))?;
     let runs = run_suite(&study.case, &study.members, &scales, &|_: &RowSuiteRun| {})
         .map_err(|e| FigureError::Run(e.to_string()))?;
-    let joints = joint_separations(row, &runs, &study.probabilities);
+    let joints = joint_separations(&study.case, &runs, &study.probabilities);
     let panels = joints
         .iter()
         .enumerate()

@@ -7,7 +7,7 @@
 use std::path::Path;
 use std::sync::Arc;
 
-use crate::analysis::row_report::RowReport;
+use crate::analysis::buildings_report::RowReport;
 use crate::figure::buildings::{ROW_FIGURE_SIZE, row_figure_of};
 use crate::figure::{Format, encode};
 use crate::model::buildings::{Ground, Row};

@@ -1,7 +1,11 @@
 //! What a study reads of one record's run, the same for the pair and a row
 //! (SPEC §6, §13): per building its peak storey drift, drift ratio,
 //! ductility, floor acceleration and collapse; per joint its impacts,
-//! largest force and the gap that prevents pounding; all in SI.
+//! largest force and the gap that prevents pounding; all in SI. Beside
+//! them, what the suite's statistics ([`Column`]) and the separation at a
+//! probability ([`JointRecord`]) read of a record.
+
+use crate::analysis::gap::CodeRules;
 
 /// One building of a subject: its name and fundamental period T₁ (s).
 #[derive(Debug, Clone, PartialEq)]
@@ -58,4 +62,21 @@ pub struct Demands {
     pub buildings: Vec<BuildingDemand>,
     pub joints: Vec<JointDemand>,
     pub no_pounding: Vec<BuildingDemand>,
+}
+
+/// One demand over a suite, as a subject names it for its statistics: its
+/// key (`left.peak_displacement_m`, `joint1.max_force_kn`, …), its unit and
+/// one value per record.
+pub type Column = (String, &'static str, Vec<f64>);
+
+/// One record at one joint, from its run without contact: the gap that
+/// prevents pounding, the code rules on its separate peaks (the largest
+/// over the joint's paired floors) and each paired floor's separate peaks
+/// (m). The pair has one joint and one paired floor: its left and right
+/// roofs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct JointRecord {
+    pub min_gap: f64,
+    pub rules: CodeRules,
+    pub floors: Vec<(f64, f64)>,
 }

@@ -33,7 +33,7 @@ pub mod runs;
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 
-use self::demands::{Building, Demands, Joint};
+use self::demands::{Building, Column, Demands, Joint, JointRecord};
 use super::shard::Fingerprint;
 use super::suite::{Scaling, SuiteRunError};
 use crate::model::suite::SuiteMember;
@@ -94,6 +94,21 @@ pub trait Subject: Sync {
 
     /// A record's demands in SI, per building and per joint.
     fn demands(&self, run: &Self::Run) -> Demands;
+
+    /// The demands a suite's statistics summarise, each with its key, unit
+    /// and one value per record of `runs` (SPEC §12): the pair's `left.`,
+    /// `right.` and joint demands, a row's `NAME.`, `no_pounding.NAME.` and
+    /// `jointN.` ([`crate::analysis::suite_statistics::SuiteStatistics::of`]).
+    fn columns(&self, runs: &[Self::Run]) -> Vec<Column>;
+
+    /// Whether the record's run with contact had an impact.
+    fn pounded(&self, run: &Self::Run) -> bool;
+
+    /// Per joint, what the separation at a probability reads of a record
+    /// (SPEC §12): its gap that prevents pounding, the code rules and each
+    /// paired floor's separate peaks, from its run without contact
+    /// ([`crate::analysis::separation::joint_separations`]).
+    fn joint_records(&self, run: &Self::Run) -> Vec<JointRecord>;
 
     /// The estimated work of [`Subject::runs`], in the shards' units.
     fn work(&self, member: &SuiteMember, plan: &Self::Plan) -> f64;

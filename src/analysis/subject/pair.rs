@@ -7,9 +7,10 @@
 use serde::{Deserialize, Serialize};
 
 use super::Subject;
-use super::demands::{Building, BuildingDemand, Demands, Joint, JointDemand};
+use super::demands::{Building, BuildingDemand, Column, Demands, Joint, JointDemand, JointRecord};
 use crate::analysis::demands::DemandsSi;
 use crate::analysis::gap::free_params;
+use crate::analysis::separation::RecordGap;
 use crate::analysis::shard::Fingerprint;
 use crate::analysis::suite::{
     MemberPlan, Scaling, SuiteCase, SuiteRun, SuiteRunError, member_params, member_run, runs_of,
@@ -36,6 +37,32 @@ pub fn member_work(plan: &MemberPlan) -> f64 {
     };
     work::pounding_run(p).max(work::free_run(p)) + free
 }
+
+/// Each demand of SPEC §6 in SI, its key and unit, for statistics.
+type DemandColumn = (&'static str, &'static str, fn(&DemandsSi) -> f64);
+
+/// A demand of a record's run as a whole (impacts, force, gap), for statistics.
+type RunColumn = (&'static str, &'static str, fn(&SuiteRun) -> f64);
+
+const DEMANDS: [DemandColumn; 6] = [
+    ("peak_displacement_m", "m", |d| d.peak_displacement_m),
+    ("peak_velocity_m_s", "m/s", |d| d.peak_velocity_m_s),
+    ("peak_absolute_acceleration_g", "g", |d| {
+        d.peak_absolute_acceleration_g
+    }),
+    ("ductility", "", |d| d.ductility),
+    // The size of the residual drift decides repair, not its side.
+    ("residual_displacement_m", "m, absolute", |d| {
+        d.residual_displacement_m.abs()
+    }),
+    ("hysteretic_energy_kj", "kJ", |d| d.hysteretic_energy_kj),
+];
+
+const RUN_DEMANDS: [RunColumn; 3] = [
+    ("impacts", "", |r| r.result.impacts.len() as f64),
+    ("max_force_kn", "kN", SuiteRun::max_force_kn),
+    ("min_gap_m", "m", SuiteRun::min_gap_m),
+];
 
 impl Subject for SuiteCase {
     type Plan = MemberPlan;
@@ -113,6 +140,30 @@ impl Subject for SuiteCase {
             }],
             no_pounding: vec![building(&run.free_si.left), building(&run.free_si.right)],
         }
+    }
+
+    /// `left.…` and `right.…` of SPEC §6 in SI, then the joint's demands
+    /// without a prefix (`impacts`, `max_force_kn`, `min_gap_m`).
+    fn columns(&self, runs: &[SuiteRun]) -> Vec<Column> {
+        let mut columns = Vec::new();
+        for (side, i) in [("left", 0), ("right", 1)] {
+            for (key, unit, get) in DEMANDS {
+                let values = runs.iter().map(|r| get(&r.demands(i))).collect();
+                columns.push((format!("{side}.{key}"), unit, values));
+            }
+        }
+        for (key, unit, get) in RUN_DEMANDS {
+            columns.push((key.to_string(), unit, runs.iter().map(get).collect()));
+        }
+        columns
+    }
+
+    fn pounded(&self, run: &SuiteRun) -> bool {
+        run.pounded()
+    }
+
+    fn joint_records(&self, run: &SuiteRun) -> Vec<JointRecord> {
+        vec![JointRecord::from(&RecordGap::of(run))]
     }
 
     fn work(&self, _: &SuiteMember, plan: &MemberPlan) -> f64 {

@@ -7,7 +7,8 @@ use serde::Serialize;
 
 use super::{IdaRan, LevelReport};
 use crate::analysis::ida::LimitStateFragility;
-use crate::analysis::suite::{SuiteCase, SuiteRun, SuiteStatistics};
+use crate::analysis::suite::{SuiteCase, SuiteRun};
+use crate::analysis::suite_statistics::SuiteStatistics;
 use crate::cli::description::Provenance;
 use crate::cli::study_tables::closing_tables;
 use crate::cli::suite::SuiteRow;
@@ -30,7 +31,7 @@ pub(super) fn report<'a>(
         measure: case.scaling.measure.to_string(),
         scaled_as_a_whole: case.scaling.as_a_whole(),
         records_per_level: ran.records,
-        levels: ran.levels(SuiteStatistics::of, SuiteRow::of),
+        levels: ran.levels(|r| SuiteStatistics::of(case, r), SuiteRow::of),
         fragility: ran.fragility,
         elapsed_ms: ran.elapsed_ms,
     }

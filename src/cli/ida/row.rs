@@ -8,10 +8,10 @@ use serde::Serialize;
 use super::{IdaRan, LevelReport};
 use crate::analysis::ida::LimitStateFragility;
 use crate::analysis::limit_state::LimitState;
-use crate::analysis::row_suite::{RowSuiteCase, RowSuiteRun, statistics};
-use crate::analysis::suite::SuiteStatistics;
-use crate::cli::row_suite::{RowHeader, RowSuiteRow, UNITS};
+use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
+use crate::analysis::suite_statistics::SuiteStatistics;
 use crate::cli::study_tables::closing_tables;
+use crate::cli::suite::row::{RowHeader, RowSuiteRow, UNITS};
 use crate::model::params::echo::g4;
 use crate::output::report::Report;
 
@@ -25,7 +25,7 @@ pub(super) fn report<'a>(
         row: RowHeader::new(case, suite),
         scaled_as_a_whole: case.scaling.as_a_whole(),
         records_per_level: ran.records,
-        levels: ran.levels(statistics, RowSuiteRow::of),
+        levels: ran.levels(|r| SuiteStatistics::of(case, r), RowSuiteRow::of),
         limit_states: ran.states,
         fragility: ran.fragility,
         elapsed_ms: ran.elapsed_ms,

@@ -1,43 +1,31 @@
-//! `pounding gap --buildings PRESET --suite SUITE`: per joint of a row, the
-//! separation that prevents pounding with a chosen probability over a suite
-//! of records, beside the code rules (SPEC §11, §12, §13). Each record's
-//! per-joint gap comes from its run without contact
-//! ([`crate::analysis::row_suite`]); the study of those values is
-//! [`crate::analysis::row_separation`]. This module parses, runs and prints.
+//! `pounding gap --buildings --suite`: a row's separation report in every
+//! format, per joint the separation study and per record each joint's gap
+//! that prevents pounding and code rules (m) (SPEC §12, §13).
 
 use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::CliError;
-use super::gap_suite::{probabilities, study_table};
-use super::output::{Emit, num};
-use super::row_suite::{RowHeader, RowRan, RowStudyArgs, run};
-use crate::analysis::row_gap::JointGap;
-use crate::analysis::row_separation::{JointSeparation, joint_separations};
+use super::study_table;
+use crate::analysis::gap::JointGap;
+use crate::analysis::separation::JointSeparation;
+use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
+use crate::cli::output::num;
+use crate::cli::suite::row::RowHeader;
 use crate::model::params::echo::g4;
 use crate::output::report::Report;
 
-/// Runs the row suite of `study` and reports, per joint, the
-/// separation at each of `probability` ([`super::gap_suite::DEFAULT_PROBABILITIES`] when
-/// `None`), its typed report handed to `emit`.
-pub fn report_with(
-    study: &RowStudyArgs,
-    probability: Option<&str>,
-    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
-) -> Result<(), CliError> {
-    let probabilities = probabilities(probability)?;
-    let Some(RowRan {
-        case,
-        runs,
-        elapsed_ms,
-        ..
-    }) = run(study, "gap")?
-    else {
-        return Ok(());
-    };
-    let report = RowSeparationReport {
-        row: RowHeader::new(&case, study.suite),
+/// The report of a row's separation `joints` over the suite's `runs` of
+/// `case` (suite `suite`).
+pub fn report<'a>(
+    case: &'a RowSuiteCase,
+    suite: &'a str,
+    runs: &[RowSuiteRun],
+    joints: Vec<JointSeparation>,
+    elapsed_ms: f64,
+) -> RowSeparationReport<'a> {
+    RowSeparationReport {
+        row: RowHeader::new(case, suite),
         records: runs
             .iter()
             .map(|r| RecordRow {
@@ -55,10 +43,9 @@ pub fn report_with(
                     .collect(),
             })
             .collect(),
-        joints: joint_separations(&case.row, &runs, &probabilities),
+        joints,
         elapsed_ms,
-    };
-    emit(&report)
+    }
 }
 
 /// One record at one joint: its gap that prevents pounding and code rules
@@ -81,7 +68,7 @@ struct RecordRow {
 
 /// `pounding gap --buildings --suite` in every format.
 #[derive(Debug, Serialize)]
-struct RowSeparationReport<'a> {
+pub struct RowSeparationReport<'a> {
     #[serde(flatten)]
     row: RowHeader<'a>,
     records: Vec<RecordRow>,
@@ -117,7 +104,7 @@ impl Report for RowSeparationReport<'_> {
                 let g = &joint.gap;
                 rows.push(vec![
                     env!("CARGO_PKG_VERSION").to_string(),
-                    super::row_suite::UNITS.to_string(),
+                    crate::cli::suite::row::UNITS.to_string(),
                     r.record.clone(),
                     num(r.scale),
                     self.row.scaling.measure.clone(),

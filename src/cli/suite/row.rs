@@ -1,216 +1,33 @@
-//! `pounding suite --buildings PRESET`: a row of buildings under every
-//! record of a suite, each scaled to an intensity, with each building's and
-//! joint's demands per record and their statistics (SPEC §12, §13). The
-//! study is [`crate::analysis::row_suite`]; this module parses, runs and
-//! prints, and gives `ida` and `gap` on rows the same parsing and running.
+//! `pounding suite --buildings`: a row's suite report in every format, per
+//! record one line per building and per joint (SPEC §12, §13), and the
+//! opening lines every row study's report shares ([`RowHeader`]).
 
 use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::CliError;
-use super::budget::{SECONDS_PER_STEP, Work};
-use super::buildings::BuildingsArgs;
-use super::description::Provenance;
-use super::description::ScalingReport;
-use super::output::{Emit, num};
-use super::params::ParamArgs;
-use super::records::members;
-use super::shard::ShardArgs;
-use super::study_tables::{clip, over_suite_table};
-use super::subject::{CliSubject, run_levels_or_shard};
-use crate::analysis::row_suite::{
-    RowDemands, RowSuiteCase, RowSuiteError, RowSuiteRun, row_intensity, statistics,
-};
-use crate::analysis::subject::row::record_seconds;
-use crate::analysis::subject::runs::plan;
-use crate::analysis::suite::{Scaling, SuiteStatistics};
-use crate::model::buildings::Row;
+use crate::analysis::subject::row::{RowDemands, RowSuiteCase, RowSuiteRun};
+use crate::analysis::suite_statistics::SuiteStatistics;
+use crate::cli::description::{Provenance, ScalingReport};
+use crate::cli::output::num;
+use crate::cli::study_tables::{clip, over_suite_table};
 use crate::model::buildings::matrices::periods;
-use crate::model::intensity::IntensityMeasure;
 use crate::model::params::echo::g4;
-use crate::model::suite::SuiteMember;
 use crate::output::report::Report;
 
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
-}
-
-/// A study on a row as the command line asks for it (`--buildings`):
-/// what `suite`, `ida` and `gap` on a row share.
-#[derive(Debug, Clone, Copy)]
-pub struct RowStudyArgs<'a> {
-    /// `--buildings`: a built-in row or a path.
-    pub buildings: &'a str,
-    /// `--set`, `--model`, and the pair's flags a row refuses.
-    pub params: &'a ParamArgs,
-    pub suite: &'a str,
-    pub im: Option<&'a str>,
-    /// `--level` (g).
-    pub level: Option<f64>,
-    pub allow_long: bool,
-    /// `--shard`, `--part`, `--skip-done` (and a merge's parts).
-    pub shard: &'a ShardArgs,
-    /// An IDA's levels scale the suite as a whole ([`Scaling::collective`]).
-    pub collective: bool,
-}
-
-/// The row study of `args`, checked: the row with `--set` and `--model`
-/// applied, its scaling and its records.
-pub fn case_of(args: &RowStudyArgs) -> Result<(RowSuiteCase, Vec<SuiteMember>), CliError> {
-    let p = args.params;
-    let refused = [
-        ("--preset", p.preset.is_some(), "a row is its own preset"),
-        (
-            "--excitation",
-            p.excitation.is_some(),
-            "a suite runs the records of --suite",
-        ),
-        ("--dt", p.dt.is_some(), "a row suite runs the exact method"),
-        (
-            "--cycles",
-            p.cycles.is_some(),
-            "records have their own length",
-        ),
-        (
-            "--no-pounding",
-            p.no_pounding,
-            "each record also runs without contact; both are reported",
-        ),
-        (
-            "--presets",
-            p.presets.is_some(),
-            "rows are read by --buildings",
-        ),
-    ];
-    if let Some((flag, _, why)) = refused.iter().find(|(_, given, _)| *given) {
-        return Err(usage(format!(
-            "{flag}: not with --buildings ({why}); drop {flag}"
-        )));
-    }
-    if let Some(m) = p.method.as_deref().filter(|m| *m != "exact") {
-        return Err(usage(format!(
-            "--method {}: a row suite runs the exact method; drop --method or give exact",
-            crate::model::params::echo::text(m)
-        )));
-    }
-    let row = BuildingsArgs {
-        buildings: Some(args.buildings.to_string()),
-        ..BuildingsArgs::default()
-    }
-    .row(&p.overrides, p.model.as_deref())?;
-    let measure = match args.im.map(str::trim) {
-        None => IntensityMeasure::Pga,
-        Some(text) if text.eq_ignore_ascii_case("sa") => row_intensity(&row),
-        Some(text) => IntensityMeasure::parse(text).map_err(|e| {
-            usage(format!(
-                "--im {e}; or sa alone for a row: Sa(T₁) of its leftmost building"
-            ))
-        })?,
-    };
-    let level = args.level;
-    let members = members(args.suite)?;
-    Ok((
-        RowSuiteCase {
-            row,
-            scaling: Scaling {
-                measure,
-                level,
-                collective: args.collective,
-            },
-        },
-        members,
-    ))
-}
-
-/// The estimated work of one record's runs ([`record_seconds`]), in the
-/// commands' steps. `samples` at interval `dt` (s).
-pub fn record_steps(row: &Row, samples: usize, dt: f64) -> f64 {
-    record_seconds(row, samples, dt) / SECONDS_PER_STEP
-}
-
-/// The work of running every member `times` times (levels of an IDA).
-pub fn work_of(row: &Row, members: &[SuiteMember], times: usize) -> Work {
-    Work {
-        steps: times as f64
-            * members
-                .iter()
-                .map(|m| record_steps(row, m.record.acceleration.len(), m.record.dt))
-                .sum::<f64>(),
-        rows: 0.0,
-    }
-}
-
-/// A failed row study as the command line reports it: a record that cannot
-/// be scaled is bad input, a runaway run a failure.
-pub fn failed(e: RowSuiteError) -> CliError {
-    match &e {
-        RowSuiteError::Run {
-            error: crate::solver::buildings::RowError::Runaway(_),
-            ..
-        } => CliError::Failed(e.to_string()),
-        _ => usage(e.to_string()),
-    }
-}
-
-/// A row suite that ran: its study, records, runs (in suite order) and wall time.
-pub struct RowRan {
-    pub case: RowSuiteCase,
-    pub members: Vec<SuiteMember>,
-    pub runs: Vec<RowSuiteRun>,
-    pub elapsed_ms: f64,
-}
-
-/// Runs the row suite of `args` within the work bound, with progress, or
-/// with `--shard` one shard of it (then `None`: its part was written), or
-/// under `pounding merge` its runs from the parts. `command` names the
-/// request in the bound's message and in its parts.
-pub fn run(args: &RowStudyArgs, command: &str) -> Result<Option<RowRan>, CliError> {
-    let (case, members) = case_of(args)?;
-    let plans = [plan(&case, &members).map_err(failed)?];
-    let (name, shard) = (args.buildings, args.shard);
-    let Some((runs, elapsed_ms)) = run_levels_or_shard(
-        &case,
-        name,
-        &members,
-        &plans,
-        command,
-        shard,
-        args.allow_long,
-        &(),
-    )?
-    else {
-        return Ok(None);
-    };
-    Ok(Some(RowRan {
-        case,
-        members,
-        runs: runs.into_iter().flatten().collect(),
-        elapsed_ms,
-    }))
-}
-
-/// `pounding suite --buildings`: its typed report handed to `emit`.
-pub fn report_with(
-    args: &RowStudyArgs,
-    emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
-) -> Result<(), CliError> {
-    let Some(RowRan {
-        case,
-        runs,
-        elapsed_ms,
-        ..
-    }) = run(args, "suite")?
-    else {
-        return Ok(());
-    };
-    let report = RowSuiteReport {
-        row: RowHeader::new(&case, args.suite),
+/// The report of the row suite `runs` of `case` (suite `suite`).
+pub fn report<'a>(
+    case: &'a RowSuiteCase,
+    suite: &'a str,
+    runs: &[RowSuiteRun],
+    elapsed_ms: f64,
+) -> RowSuiteReport<'a> {
+    RowSuiteReport {
+        row: RowHeader::new(case, suite),
         records: runs.iter().map(RowSuiteRow::of).collect(),
-        statistics: statistics(&runs),
+        statistics: SuiteStatistics::of(case, runs),
         elapsed_ms,
-    };
-    emit(&report)
+    }
 }
 
 /// SI units of a row's suite reports.
@@ -497,7 +314,7 @@ pub fn records_table(s: &mut String, records: &[RowSuiteRow]) {
 
 /// `pounding suite --buildings` in every format.
 #[derive(Debug, Serialize)]
-struct RowSuiteReport<'a> {
+pub struct RowSuiteReport<'a> {
     #[serde(flatten)]
     row: RowHeader<'a>,
     records: Vec<RowSuiteRow>,
@@ -532,23 +349,5 @@ impl Report for RowSuiteReport<'_> {
         over_suite_table(&mut s, &self.statistics);
         let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
         s
-    }
-}
-
-impl CliSubject for RowSuiteCase {
-    fn work_of(&self, members: &[SuiteMember], plans: &[Vec<(f64, f64)>]) -> Work {
-        work_of(&self.row, members, plans.len())
-    }
-
-    fn check(&self, work: &Work, command: &str, allow_long: bool) -> Result<(), CliError> {
-        work.check(&format!("{command} --buildings"), allow_long, true)
-    }
-
-    fn steps(&self, run: &RowSuiteRun) -> f64 {
-        record_steps(&self.row, run.samples, run.dt)
-    }
-
-    fn failed(e: RowSuiteError) -> CliError {
-        failed(e)
     }
 }
