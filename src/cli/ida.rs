@@ -72,6 +72,11 @@ pub fn report_with(
     args: &IdaArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
+    if !args.suite.compare.is_empty() {
+        return Err(usage(
+            "--compare: `suite` compares rows side by side; run `ida` on each row".into(),
+        ));
+    }
     if args.suite.level.is_some() {
         return Err(usage(
             "--level: an IDA runs every level of --levels; use `pounding suite` for one".into(),

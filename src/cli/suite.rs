@@ -8,6 +8,7 @@
 
 use clap::Args;
 
+mod compare;
 pub mod pair;
 pub mod row;
 
@@ -67,6 +68,11 @@ pub struct SuiteArgs {
     /// `records scale`) instead of --level; the suite's name then says so.
     #[command(flatten)]
     pub design: super::design::TargetArgs,
+    /// With --buildings: run the same study on each of these rows too (a
+    /// retrofit, say: built-in names or paths), each with the first row's
+    /// buildings by name, and report them side by side.
+    #[arg(long, value_name = "NAME|PATH", num_args = 1.., value_delimiter = ',')]
+    pub compare: Vec<String>,
     /// With --target: T1 (s) [default: the pair's left T1, or the row's longest T1].
     #[arg(long, value_name = "T1")]
     pub period: Option<String>,
@@ -125,6 +131,7 @@ impl SuiteOptions {
             allow_unreliable: true,
             shard: Default::default(),
             buildings: None,
+            compare: Vec::new(),
             collective: false,
             design: self.design.clone(),
             period: None,
@@ -260,6 +267,9 @@ pub fn report_with(
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let args = &args.at_design_level()?;
+    if !args.compare.is_empty() {
+        return compare::suite(args, emit);
+    }
     match Chosen::of(args)? {
         Chosen::Pair(study) => suite(&study, args, emit),
         Chosen::Row(study) => suite(&study, args, emit),

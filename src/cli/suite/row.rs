@@ -316,9 +316,9 @@ pub fn records_table(s: &mut String, records: &[RowSuiteRow]) {
 #[derive(Debug, Serialize)]
 pub struct RowSuiteReport<'a> {
     #[serde(flatten)]
-    row: RowHeader<'a>,
+    pub(super) row: RowHeader<'a>,
     records: Vec<RowSuiteRow>,
-    statistics: SuiteStatistics,
+    pub(super) statistics: SuiteStatistics,
     elapsed_ms: f64,
 }
 
