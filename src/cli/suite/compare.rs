@@ -20,7 +20,7 @@ use serde::Serialize;
 
 use super::row::{RowSuiteReport, report};
 use super::{Chosen, SuiteArgs};
-use crate::analysis::statistics::quantile;
+use crate::analysis::separation::median;
 use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
 use crate::cli::CliError;
 use crate::cli::output::Emit;
@@ -126,13 +126,6 @@ struct BuildingSummary {
 struct Summary {
     joints: Vec<JointSummary>,
     buildings: Vec<BuildingSummary>,
-}
-
-/// The median of `values` (linear between order statistics, SPEC §12).
-fn median(values: impl Iterator<Item = f64>) -> f64 {
-    let mut v: Vec<f64> = values.collect();
-    v.sort_by(f64::total_cmp);
-    quantile(&v, 0.5)
 }
 
 impl Summary {
