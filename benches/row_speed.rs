@@ -51,7 +51,7 @@ fn main() {
             };
             let s = row_speed(&row, &ground, duration).expect("runs");
             let p = &s.profile;
-            let list = |c: &[usize; 7]| {
+            let list = |c: &[usize]| {
                 c.iter()
                     .map(|x| x.to_string())
                     .collect::<Vec<_>>()

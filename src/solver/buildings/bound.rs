@@ -32,14 +32,17 @@
 //! cannot see. B is widened by a relative 1e-6 for the round-off of the
 //! exponential and the norms, far above it.
 //!
-//! The rows cᵀ𝒜⁴ and cᵀ𝒜⁵ come from the powers 𝒜⁴, 𝒜⁵ and 𝒜⁶ (four
-//! products), since each c is a unit row or a row of 𝒜 beside one; and the
-//! map itself is the sweep's step to the N-th power, e^{𝒜h} =
-//! D⁻¹(e^{𝒜̃h/N})ᴺD, one product more, so that a configuration costs one
-//! matrix exponential (of the scaled matrix over h/N, of small norm).
+//! The rows cᵀ𝒜⁴ and cᵀ𝒜⁵ come from rows n … 2n of the powers 𝒜² … 𝒜⁶
+//! (five products of n + 1 rows), since each c is a unit row or a row of 𝒜
+//! beside one; and the map itself is the sweep's step to the N-th power,
+//! e^{𝒜h} = D⁻¹(e^{𝒜̃h/N})ᴺD, one product more, so that a configuration
+//! costs one matrix exponential (of the scaled matrix over h/N, of small
+//! norm). The sweep's powers are taken in blocks: nothing moves from
+//! (u, u̇) into the ground or the load, which halves each product.
 
 use nalgebra::DMatrix;
 
+use super::expm::exponential;
 use super::system::System;
 
 /// Grid of the sweep of ‖e^{𝒜̃t}‖ over the sub-step.
@@ -136,6 +139,22 @@ impl Stack {
     }
 }
 
+/// ‖[[X, Y], [0, Z]]‖∞ of a power of the step, from its blocks.
+fn block_norm(x: &DMatrix<f64>, y: &DMatrix<f64>, z: &DMatrix<f64>) -> f64 {
+    let row_sums = |m: &DMatrix<f64>| {
+        let mut sums = vec![0.0; m.nrows()];
+        for column in m.column_iter() {
+            for (s, e) in sums.iter_mut().zip(column.iter()) {
+                *s += e.abs();
+            }
+        }
+        sums
+    };
+    let (top, right) = (row_sums(x), row_sums(y));
+    let top = top.iter().zip(&right).map(|(a, b)| a + b);
+    top.chain(row_sums(z)).fold(0.0, f64::max)
+}
+
 fn inf_norm(a: &DMatrix<f64>) -> f64 {
     a.row_iter()
         .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
@@ -164,16 +183,29 @@ impl Bounds {
         scale[2 * n] = 1.0 / s;
         scale[2 * n + 1] = 1.0 / (s * s);
         let scaled = DMatrix::from_fn(d, d, |i, j| scale[i] * a[(i, j)] / scale[j]);
-        let step = (&scaled * (h / GRID as f64)).exp();
-        let mut power = DMatrix::<f64>::identity(d, d);
+        let step = exponential(&(&scaled * (h / GRID as f64)));
+        // The powers of the step in blocks: 𝒜 has no entry from (u, u̇) into
+        // the ground and the load, so neither has its exponential, and every
+        // power is [[X, Y], [0, Z]] with X the 2n × 2n block of (u, u̇):
+        // step·P = [[X₁X, X₁Y + Y₁Z], [0, Z₁Z]], half the work of whole products.
+        let t = 2 * n;
+        let b = d - t;
+        let x1 = step.view((0, 0), (t, t)).clone_owned();
+        let y1 = step.view((0, t), (t, b)).clone_owned();
+        let z1 = step.view((t, t), (b, b)).clone_owned();
+        let (mut x, mut y, mut z) = (x1.clone(), y1.clone(), z1.clone());
         let mut sweep = 1.0f64;
         for _ in 1..GRID {
-            power = &step * &power;
-            sweep = sweep.max(inf_norm(&power));
+            sweep = sweep.max(block_norm(&x, &y, &z));
+            y = &x1 * &y + &y1 * &z;
+            x = &x1 * &x;
+            z = &z1 * &z;
         }
-        // e^{𝒜h} = D⁻¹ (e^{𝒜̃h/N})^N D: the sweep's last power, one product on.
-        let whole = &step * &power;
-        let map = DMatrix::from_fn(2 * n, d, |i, j| whole[(i, j)] * scale[j] / scale[i]);
+        // e^{𝒜h} = D⁻¹ (e^{𝒜̃h/N})^N D: the top rows of the sweep's N-th power.
+        let map = DMatrix::from_fn(t, d, |i, j| {
+            let w = if j < t { x[(i, j)] } else { y[(i, j - t)] };
+            w * scale[j] / scale[i]
+        });
         let sweep = sweep * (inf_norm(&scaled) * h / GRID as f64).exp() * (1.0 + ROUNDING);
         let factor = h.powi(4) / 384.0 * sweep;
         let scaled_norm = |r: &[f64]| {
@@ -182,19 +214,30 @@ impl Bounds {
                 .map(|(x, s)| (x / s).abs())
                 .sum::<f64>()
         };
-        // cᵀ𝒜⁴ and cᵀ𝒜⁵ of each quantity as rows of 𝒜⁴, 𝒜⁵ and 𝒜⁶: c is a
+        // cᵀ𝒜⁴ and cᵀ𝒜⁵ of each quantity from rows of 𝒜⁴, 𝒜⁵ and 𝒜⁶: c is a
         // few unit rows (u_i, u̇_i) or, for ü_i + a_g, row n + i of 𝒜 and the
-        // unit row of a_g, so cᵀ𝒜ᵏ = row n + i of 𝒜ᵏ⁺¹ + row 2n of 𝒜ᵏ.
-        let a2 = a * a;
-        let a4 = &a2 * &a2;
-        let a5 = &a4 * a;
-        let a6 = &a4 * &a2;
+        // unit row of a_g, so cᵀ𝒜ᵏ = row n + i of 𝒜ᵏ⁺¹ + row 2n of 𝒜ᵏ. Only
+        // rows n … 2n of the powers are made, V_k = rows n … 2n of 𝒜ᵏ, by
+        // V_{k+1} = V_k 𝒜: the rows of u are 𝒜's rows of u̇ shifted, so row
+        // i < n of 𝒜ᵏ is row n + i of 𝒜ᵏ⁻¹, row i − n of V_{k−1}.
+        let mut v = vec![a.rows(n, n + 1).clone_owned()];
+        for _ in 1..6 {
+            let next = v.last().map(|m| m * a).expect("V_1");
+            v.push(next);
+        }
+        let power_row = |k: usize, row: usize| {
+            if row < n {
+                v[k - 2].row(row)
+            } else {
+                v[k - 1].row(row - n)
+            }
+        };
         let mut value_error = Vec::with_capacity(watch.len());
         let mut rate_error = Vec::with_capacity(watch.len());
         let (mut r4, mut r5) = (vec![0.0; d], vec![0.0; d]);
-        let add = |r: &mut [f64], m: &DMatrix<f64>, row: usize, x: f64| {
-            for (j, r) in r.iter_mut().enumerate() {
-                *r += x * m[(row, j)];
+        let add = |r: &mut [f64], k: usize, row: usize, x: f64| {
+            for (r, m) in r.iter_mut().zip(power_row(k, row).iter()) {
+                *r += x * m;
             }
         };
         for w in watch {
@@ -204,14 +247,14 @@ impl Bounds {
                 match w.order {
                     0 | 1 => {
                         let row = w.order * n + i;
-                        add(&mut r4, &a4, row, x);
-                        add(&mut r5, &a5, row, x);
+                        add(&mut r4, 4, row, x);
+                        add(&mut r5, 5, row, x);
                     }
                     _ => {
-                        add(&mut r4, &a5, n + i, x);
-                        add(&mut r4, &a4, 2 * n, x);
-                        add(&mut r5, &a6, n + i, x);
-                        add(&mut r5, &a5, 2 * n, x);
+                        add(&mut r4, 5, n + i, x);
+                        add(&mut r4, 4, 2 * n, x);
+                        add(&mut r5, 6, n + i, x);
+                        add(&mut r5, 5, 2 * n, x);
                     }
                 }
             }

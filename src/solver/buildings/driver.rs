@@ -23,7 +23,7 @@
 //! inside; a quiet sub-step's interior then holds no event and no new
 //! peak, so its end is all that is recorded.
 
-use std::collections::HashSet;
+use std::collections::HashMap;
 use std::time::Instant;
 
 use crate::model::buildings::contact::element_law;
@@ -47,6 +47,8 @@ use super::result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, 
 use super::system::System;
 use super::taylor::{ORDER, Series};
 
+#[cfg(test)]
+mod cache_check;
 #[cfg(test)]
 mod quiet_check;
 mod rising;
@@ -113,6 +115,13 @@ impl RowError {
         }
     }
 }
+
+/// Sub-steps a configuration takes by the series before its map is made
+/// (or taken from the cache): a map costs as much as 10 to 20 sub-steps
+/// by the series, and a yielding storey's configuration often lasts only a
+/// few. The count is of this run's requests alone, so that a run takes the
+/// same steps whatever maps earlier runs left in the cache.
+pub const FRESH: usize = 8;
 
 /// Most series steps in one run.
 const MAX_SERIES_STEPS: usize = 100_000_000;
@@ -196,11 +205,13 @@ struct Run<'a> {
     /// the seconds spent making them.
     counts_before: (usize, usize, f64),
     series_steps: usize,
-    configurations: HashSet<Vec<u8>>,
+    /// Each configuration met, with the quiet tests it asked for ([`FRESH`]).
+    configurations: HashMap<Vec<u8>, usize>,
     /// The branches of the current sub-step ([`Config::key_into`]), and the
-    /// last ones put into `configurations`.
+    /// last ones met, with their count of requests so far.
     key: Vec<u8>,
     seen: Option<Vec<u8>>,
+    requests: usize,
     buf: Vec<f64>,
     buf2: Vec<f64>,
     /// The quantities of the quiet test ([`watched`]).
@@ -294,9 +305,10 @@ pub fn run_row_cached(
         propagator,
         counts_before,
         series_steps: 0,
-        configurations: HashSet::new(),
+        configurations: HashMap::new(),
         key: Vec::new(),
         seen: None,
+        requests: 0,
         buf: Vec::new(),
         buf2: Vec::new(),
         watch,
@@ -389,8 +401,16 @@ impl Run<'_> {
         let (a1, r1) = ground_at(piece, self.t + h);
         self.config.key_into(&mut self.key);
         if self.seen.as_deref() != Some(&self.key[..]) {
-            self.configurations.insert(self.key.clone());
+            if let Some(seen) = self.seen.take() {
+                self.configurations.insert(seen, self.requests);
+            }
+            let met = self.configurations.entry(self.key.clone()).or_insert(0);
+            self.requests = *met;
             self.seen = Some(self.key.clone());
+        }
+        self.requests += 1;
+        if self.requests < FRESH {
+            return Err(Cause::Fresh);
         }
         let (map, bounds) = self.propagator.map(
             &self.key,

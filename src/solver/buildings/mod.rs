@@ -25,6 +25,7 @@
 //! - [`config`]: the configuration (branches, contacts) and its cache key;
 //! - [`event_function`]: each event's function, linear in the state;
 //! - [`system`]: the linear system of one configuration;
+//! - [`expm`]: the matrix exponential of its maps;
 //! - [`link`]: links across the joints (SPEC §14), linear and fluid viscous;
 //! - [`peaks`]: the envelopes a run reports;
 //! - [`energy`]: the energy balance, by quadrature on the Taylor steps;
@@ -39,6 +40,7 @@ pub mod contact_rk;
 pub mod driver;
 pub mod energy;
 pub mod event_function;
+pub mod expm;
 pub mod hermite;
 pub mod layout;
 pub mod link;

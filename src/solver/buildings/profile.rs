@@ -26,11 +26,15 @@ pub enum Cause {
     Contact,
     /// The energy balance is asked for: every sub-step by the series.
     Energy,
+    /// The configuration has been met fewer than
+    /// [`super::driver::FRESH`] times in this run: over so few sub-steps a
+    /// map costs more than the series.
+    Fresh,
 }
 
 /// Counts per [`Cause`], in its order.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct PerCause(pub [usize; 7]);
+pub struct PerCause(pub [usize; 8]);
 
 impl PerCause {
     pub fn add(&mut self, cause: Cause, count: usize) {
@@ -80,6 +84,6 @@ pub struct RowProfile {
 }
 
 /// Names of the causes, in [`Cause`]'s order, for tables.
-pub const CAUSES: [&str; 7] = [
-    "onset", "yield", "unload", "collapse", "peak", "contact", "energy",
+pub const CAUSES: [&str; 8] = [
+    "onset", "yield", "unload", "collapse", "peak", "contact", "energy", "fresh",
 ];
