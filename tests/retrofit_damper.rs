@@ -6,25 +6,13 @@
 
 mod common;
 
-use common::{fails, json};
-use pounding::model::buildings::{self, Ground, Row, parse};
+use common::{fails, json, linked};
+use pounding::model::buildings::{self, Ground, Row};
 use pounding::model::record::read;
 use pounding::solver::buildings::{RowRun, run_newmark};
 
 fn record_ground(scale: f64) -> Ground {
     Ground::from_record(&read("presets/synthetic.at2").unwrap(), scale)
-}
-
-/// Two one-storey buildings, elastic and apart, joined by `link`.
-fn linked(link: &str) -> Row {
-    let text = format!(
-        "model = \"kelvin\"\n\
-         [[building]]\nname = \"a\"\nstoreys = 1\nmass = 1e5\nstiffness = 4e6\nheight = 3\ndamping = 0.05\n\
-         [[building]]\nname = \"b\"\nstoreys = 1\nmass = 2e5\nstiffness = 2e7\nheight = 3\ndamping = 0.02\n\
-         [[joint]]\ngap = \"inf\"\nstiffness = 1e9\n\
-         [[link]]\njoint = 1\nfloor = 1\n{link}\n"
-    );
-    parse("linked.toml", &text).unwrap()
 }
 
 /// The shipped retrofit row with its dashpot a damper of exponent α.

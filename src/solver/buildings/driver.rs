@@ -94,7 +94,7 @@ pub enum RowError {
     /// A link with α < 1 (SPEC §14), which the exact method does not solve
     /// yet; Newmark does ([`super::newmark`]).
     #[error(
-        "link{link}: `exponent` = {exponent}: the exact method does not solve fluid viscous dampers (exponent < 1) yet; `--method newmark` does"
+        "link{link}: `exponent` = {exponent}: the exact method does not solve fluid viscous dampers (exponent < 1) yet; `run --method newmark` does"
     )]
     Damper { link: usize, exponent: f64 },
 }
