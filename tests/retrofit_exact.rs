@@ -3,24 +3,15 @@
 //! impact's restitution, the energy balance, the mirror image, and the
 //! independent reference.
 
+mod common;
+
+use common::linked;
 use nalgebra::{DMatrix, DVector};
 use pounding::model::buildings::matrices::RowMatrices;
 use pounding::model::buildings::{self, Ground, Row, parse};
 use pounding::model::record::read;
 use pounding::reference::row::reference_row;
 use pounding::solver::buildings::{RowOptions, RowRun, run_row};
-
-/// Two one-storey buildings, elastic and apart, joined by a link.
-fn linked(link: &str) -> Row {
-    let text = format!(
-        "model = \"kelvin\"\n\
-         [[building]]\nname = \"a\"\nstoreys = 1\nmass = 1e5\nstiffness = 4e6\nheight = 3\ndamping = 0.05\n\
-         [[building]]\nname = \"b\"\nstoreys = 1\nmass = 2e5\nstiffness = 2e7\nheight = 3\ndamping = 0.02\n\
-         [[joint]]\ngap = \"inf\"\nstiffness = 1e9\n\
-         [[link]]\njoint = 1\nfloor = 1\n{link}\n"
-    );
-    parse("linked.toml", &text).unwrap()
-}
 
 /// The state (u, u̇) at t of M ü + C u̇ + K u = −M 1 A sin ωt from rest, by
 /// the matrix exponential of the augmented first-order system

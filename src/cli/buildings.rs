@@ -61,15 +61,28 @@ impl BuildingsArgs {
         .collect()
     }
 
-    /// The row, with `--set` and `--model` applied.
+    /// The row, with `--set` and `--model` applied, for the exact method.
     pub fn row(&self, overrides: &[String], model: Option<&str>) -> Result<Row, CliError> {
+        self.row_for(overrides, model, false)
+    }
+
+    /// The row, with `--set` and `--model` applied; a fluid viscous damper
+    /// (SPEC §14) is refused unless the run is Newmark's, which alone solves it.
+    pub fn row_for(
+        &self,
+        overrides: &[String],
+        model: Option<&str>,
+        newmark: bool,
+    ) -> Result<Row, CliError> {
         let name = self.buildings.as_deref().unwrap_or("block-and-frame");
         let mut sets = overrides.to_vec();
         if let Some(m) = model {
             sets.push(format!("model=\"{m}\""));
         }
         let row = load_with(name, &sets).map_err(|e| CliError::Usage(e.to_string()))?;
-        // A fluid viscous damper is a valid preset (SPEC §14), but no method solves it yet.
+        if newmark {
+            return Ok(row);
+        }
         RowError::unsolved_damper(&row).map_err(|e| {
             let file = text_of(name).map_or_else(|_| name.to_string(), |(file, _)| file);
             CliError::Usage(format!("{file}: {e}"))
@@ -262,7 +275,9 @@ pub fn run(
     allow_long: bool,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let mut row = args.row(&params.overrides, params.model.as_deref())?;
+    let method = params.method.as_deref().unwrap_or("exact");
+    let newmark = method == "newmark";
+    let mut row = args.row_for(&params.overrides, params.model.as_deref(), newmark)?;
     if params.no_pounding {
         // The no-pounding baseline: every joint open for good.
         for joint in &mut row.joints {
@@ -271,7 +286,6 @@ pub fn run(
     }
     let (ground, name, duration) =
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
-    let method = params.method.as_deref().unwrap_or("exact");
     let step = match method {
         "newmark" => Some(newmark_step(params, duration, &row, &ground)?),
         _ => None,

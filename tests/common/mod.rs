@@ -160,3 +160,16 @@ pub fn knet_text(counts: &[i64]) -> String {
     }
     text
 }
+
+/// Two one-storey buildings, elastic and apart, joined by a link whose
+/// keys are `link` (SPEC §14).
+pub fn linked(link: &str) -> pounding::model::buildings::Row {
+    let text = format!(
+        "model = \"kelvin\"\n\
+         [[building]]\nname = \"a\"\nstoreys = 1\nmass = 1e5\nstiffness = 4e6\nheight = 3\ndamping = 0.05\n\
+         [[building]]\nname = \"b\"\nstoreys = 1\nmass = 2e5\nstiffness = 2e7\nheight = 3\ndamping = 0.02\n\
+         [[joint]]\ngap = \"inf\"\nstiffness = 1e9\n\
+         [[link]]\njoint = 1\nfloor = 1\n{link}\n"
+    );
+    pounding::model::buildings::parse("linked.toml", &text).unwrap()
+}

@@ -93,18 +93,22 @@ impl RowOptions {
 pub enum RowError {
     #[error("the run stopped at t = {0} s: more than 10⁸ events or series steps")]
     Runaway(f64),
-    /// A link with α < 1 (SPEC §14), which neither method solves yet.
+    /// A link with α < 1 (SPEC §14), which the exact method does not solve
+    /// yet; Newmark does ([`super::newmark`]).
     #[error(
-        "link{link}: `exponent` = {exponent}: fluid viscous dampers (exponent < 1) are not solved yet; the methods take exponent = 1, a linear dashpot"
+        "link{link}: `exponent` = {exponent}: the exact method does not solve fluid viscous dampers (exponent < 1) yet; `run --method newmark` does"
     )]
     Damper { link: usize, exponent: f64 },
 }
 
 impl RowError {
     /// The first link of `row` that is a fluid viscous damper (α < 1),
-    /// refused: near Δv = 0 its damping c_l α |Δv|^(α−1) has no bound, and
-    /// from rest, where Δv stays near 0, neither the Runge–Kutta steps nor
-    /// Newton's iterations get through it.
+    /// refused by the exact method: near Δv = 0 its damping
+    /// c_l α |Δv|^(α−1) has no bound, and from rest, where the relative
+    /// forcing is small, Δv stays near 0 with a relaxation time
+    /// m̄/(c_l α |Δv|^(α−1)) that shrinks without bound as t → 0: the
+    /// motion is stiff there, and explicit steps (the series, Runge–Kutta)
+    /// do not get through it. Newmark's implicit steps do.
     pub fn unsolved_damper(row: &Row) -> Result<(), RowError> {
         match row.links.iter().position(|l| l.exponent < 1.0) {
             Some(i) => Err(RowError::Damper {

@@ -85,10 +85,10 @@ impl Newmark<'_> {
         out
     }
 
-    /// The links' forces F = k_l Δu + c_l|Δv|^α sgn Δv on the floors (SPEC §14)
-    /// and their tangent k_l + γ/(βΔt) · c_l α|Δv|^(α−1) (the dashpot's
-    /// slope, finite at Δv = 0 only for α = 1: there a damper's is taken
-    /// at |Δv| = 1e-9 m/s, which Newton's step needs only as a slope).
+    /// The links' forces on the floors (SPEC §14) and their tangent: the
+    /// spring k_l Δu of every link, and the linear dashpot c_l Δv (tangent
+    /// γ/(βΔt) c_l). A fluid viscous damper's dashpot (α < 1) is not here:
+    /// [`Self::step`] carries its force as an unknown of its own.
     fn links(
         &self,
         u: &DVector<f64>,
@@ -99,11 +99,14 @@ impl Newmark<'_> {
     ) {
         for l in &self.layout.links {
             let (i, j) = (l.pair.left_dof, l.pair.right_dof);
-            let dv = v[i] - v[j];
-            let force = l.force(u[i] - u[j], dv);
-            let alpha = l.link.exponent;
-            let slope = l.link.damping * alpha * dv.abs().max(1e-9).powf(alpha - 1.0);
-            let kt = l.link.stiffness + c2 * slope;
+            let linear = l.is_linear();
+            let force = l.link.stiffness * (u[i] - u[j])
+                + if linear {
+                    l.link.damping * (v[i] - v[j])
+                } else {
+                    0.0
+                };
+            let kt = l.link.stiffness + if linear { c2 * l.link.damping } else { 0.0 };
             f[i] += force;
             f[j] -= force;
             k[(i, i)] += kt;
@@ -113,46 +116,127 @@ impl Newmark<'_> {
         }
     }
 
-    /// One step from `p` to p.t + dt with the current contact laws.
+    /// The residual f(u) of the step from `p` to p.t + dt at the trial
+    /// displacements `u` (Newmark's a and u̇ from u), its tangent, and u̇.
+    fn residual(
+        &self,
+        p: &Point,
+        u: &DVector<f64>,
+        dt: f64,
+    ) -> (DVector<f64>, DMatrix<f64>, DVector<f64>) {
+        let n = self.layout.dofs;
+        let ag = self.ground.at(p.t + dt);
+        let c1 = 1.0 / (BETA * dt * dt);
+        let c2 = GAMMA / (BETA * dt);
+        let a = c1 * (u - &p.u) - &p.v / (BETA * dt) - (0.5 / BETA - 1.0) * &p.a;
+        let v = &p.v + dt * ((1.0 - GAMMA) * &p.a + GAMMA * &a);
+        let mut f = self.mass.component_mul(&a) + &self.damping * &v;
+        let mut k = c2 * &self.damping;
+        for i in 0..n {
+            f[i] += self.mass[i] * ag;
+            k[(i, i)] += c1 * self.mass[i];
+        }
+        self.storeys(p, u, &mut f, &mut k);
+        self.links(u, &v, c2, &mut f, &mut k);
+        for ((pair, law), &gap) in self
+            .layout
+            .pairs
+            .iter()
+            .zip(&self.laws)
+            .zip(&self.layout.gaps)
+        {
+            let Some(law) = law else { continue };
+            let (i, j) = (pair.left_dof, pair.right_dof);
+            let c = law.force(u[i] - u[j] - gap, v[i] - v[j]);
+            let kt = c.d_penetration + c2 * c.d_rate;
+            f[i] += c.force;
+            f[j] -= c.force;
+            k[(i, i)] += kt;
+            k[(j, j)] += kt;
+            k[(i, j)] -= kt;
+            k[(j, i)] -= kt;
+        }
+        (f, k, v)
+    }
+
+    /// One step from `p` to p.t + dt with the current contact laws, by
+    /// Newton's method on [`Self::residual`].
+    ///
+    /// A fluid viscous damper (α < 1) would put its slope c_l α|Δv|^(α−1)
+    /// into the tangent, which has no bound as Δv → 0; and from rest Δv
+    /// starts at 0, where Newton's steps on u overshoot by orders of
+    /// magnitude. So each damper's force F_d is an unknown beside u, with
+    /// its law written the other way round,
+    ///
+    /// ```text
+    /// Δv(u) − sgn(F_d) |F_d/c_l|^(1/α) = 0,
+    /// ```
+    ///
+    /// whose slope (1/(c_l α)) |F_d/c_l|^(1/α − 1) is bounded and
+    /// continuous (1/α > 1): the tangent of the mixed system is a saddle
+    /// point matrix, regular also at F_d = 0, and neither the force nor
+    /// its slope is regularised. The law's row is scaled by m/(βΔt)·(β/γ)
+    /// to the size of the floors' rows.
     fn step(&self, p: &Point, dt: f64) -> Result<Point, RowError> {
         let n = self.layout.dofs;
         let t = p.t + dt;
-        let ag = self.ground.at(t);
         let c1 = 1.0 / (BETA * dt * dt);
         let c2 = GAMMA / (BETA * dt);
         let mut u = &p.u + dt * &p.v + 0.5 * dt * dt * &p.a;
         let scale = p.u.amax().max(1e-6);
-        for _ in 0..60 {
-            let a = c1 * (&u - &p.u) - &p.v / (BETA * dt) - (0.5 / BETA - 1.0) * &p.a;
-            let v = &p.v + dt * ((1.0 - GAMMA) * &p.a + GAMMA * &a);
-            let mut f = self.mass.component_mul(&a) + &self.damping * &v;
-            let mut k = c2 * &self.damping;
-            for i in 0..n {
-                f[i] += self.mass[i] * ag;
-                k[(i, i)] += c1 * self.mass[i];
-            }
-            self.storeys(p, &u, &mut f, &mut k);
-            self.links(&u, &v, c2, &mut f, &mut k);
-            for ((pair, law), &gap) in self
-                .layout
-                .pairs
-                .iter()
-                .zip(&self.laws)
-                .zip(&self.layout.gaps)
-            {
-                let Some(law) = law else { continue };
-                let (i, j) = (pair.left_dof, pair.right_dof);
-                let c = law.force(u[i] - u[j] - gap, v[i] - v[j]);
-                let kt = c.d_penetration + c2 * c.d_rate;
-                f[i] += c.force;
-                f[j] -= c.force;
-                k[(i, i)] += kt;
-                k[(j, j)] += kt;
-                k[(i, j)] -= kt;
-                k[(j, i)] -= kt;
-            }
-            let du = k.lu().solve(&(-&f)).ok_or(RowError::Runaway(t))?;
+        let dampers: Vec<_> = self
+            .layout
+            .links
+            .iter()
+            .filter(|l| !l.is_linear())
+            .collect();
+        let nd = dampers.len();
+        // Each damper's force at the start of the step.
+        let mut forces: Vec<f64> = dampers
+            .iter()
+            .map(|l| {
+                let (i, j) = (l.pair.left_dof, l.pair.right_dof);
+                let dv = p.v[i] - p.v[j];
+                l.link.damping * dv.abs().powf(l.link.exponent) * dv.signum()
+            })
+            .collect();
+        for _ in 0..100 {
+            let (mut f, k, v) = self.residual(p, &u, dt);
+            let (du, df) = if nd == 0 {
+                (
+                    k.lu().solve(&(-&f)).ok_or(RowError::Runaway(t))?,
+                    Vec::new(),
+                )
+            } else {
+                let mut big = DMatrix::<f64>::zeros(n + nd, n + nd);
+                big.view_mut((0, 0), (n, n)).copy_from(&k);
+                let mut r = DVector::<f64>::zeros(n + nd);
+                for (d, (l, &fd)) in dampers.iter().zip(&forces).enumerate() {
+                    let (i, j) = (l.pair.left_dof, l.pair.right_dof);
+                    let (c, alpha) = (l.link.damping, l.link.exponent);
+                    let row = n + d;
+                    let w = c1 * self.mass[i].max(self.mass[j]) / c2;
+                    f[i] += fd;
+                    f[j] -= fd;
+                    big[(i, row)] = 1.0;
+                    big[(j, row)] = -1.0;
+                    let x = (fd / c).abs();
+                    r[row] = w * ((v[i] - v[j]) - x.powf(1.0 / alpha) * fd.signum());
+                    big[(row, i)] = w * c2;
+                    big[(row, j)] = -w * c2;
+                    big[(row, row)] = -w * x.powf(1.0 / alpha - 1.0) / (c * alpha);
+                }
+                r.rows_mut(0, n).copy_from(&f);
+                let z = big.lu().solve(&(-r)).ok_or(RowError::Runaway(t))?;
+                (
+                    z.rows(0, n).into_owned(),
+                    z.iter().skip(n).copied().collect(),
+                )
+            };
             u += &du;
+            for (fd, d) in forces.iter_mut().zip(&df) {
+                *fd += d;
+            }
             if du.amax() <= 1e-13 * scale.max(u.amax()) {
                 let a = c1 * (&u - &p.u) - &p.v / (BETA * dt) - (0.5 / BETA - 1.0) * &p.a;
                 let v = &p.v + dt * ((1.0 - GAMMA) * &p.a + GAMMA * &a);
@@ -345,7 +429,6 @@ pub fn max_step(row: &Row, ground: &Ground) -> (f64, String) {
 
 /// Runs Newmark with step `dt` on `row` under `ground` for `duration` seconds.
 pub fn run_newmark(row: &Row, ground: &Ground, duration: f64, dt: f64) -> Result<RowRun, RowError> {
-    RowError::unsolved_damper(row)?;
     let layout = Layout::of(row);
     let m = RowMatrices::of(row);
     let n = layout.dofs;
