@@ -30,6 +30,18 @@ const COLUMNS: [&str; 9] = [
     "version", "units", "x", "y", "quantity", "of", "value", "records", "measure",
 ];
 
+/// A row's map as run: what its report and its figure show.
+pub struct RowMap {
+    pub names: Names,
+    pub measure: String,
+    pub level_g: Option<f64>,
+    pub records: usize,
+    pub x: MapAxis,
+    pub y: MapAxis,
+    pub cells: Vec<RowMapCell>,
+    pub elapsed_ms: f64,
+}
+
 /// Runs the row's suite map of `suite_args` (with `--buildings`) over
 /// `x` × `y` (texts of `--x`, `--y`), its typed report handed to `emit`
 /// (as CSV, streamed instead).
@@ -39,6 +51,34 @@ pub fn report_with(
     y_text: &str,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
+    let Some(map) = run(suite_args, x_text, y_text)? else {
+        return Ok(());
+    };
+    let buildings = suite_args.buildings.as_deref().unwrap_or_default();
+    let report = RowMapReport {
+        provenance: Provenance::new(buildings, UNITS),
+        suite: &suite_args.suite,
+        measure: map.measure.clone(),
+        level_g: map.level_g,
+        records: map.records,
+        buildings: map.names.buildings.clone(),
+        joints: map.names.joints.clone(),
+        links: map.names.links.clone(),
+        x: &map.x,
+        y: &map.y,
+        cells: map.cells,
+        elapsed_ms: map.elapsed_ms,
+    };
+    match suite_args.output.format {
+        Format::Csv => Ok(()),
+        Format::Json | Format::Table => emit(&report),
+    }
+}
+
+/// Plans, bounds and runs the row's map of `suite_args` over `x` × `y`
+/// (CSV streamed as it goes when that is the format); `None` when a
+/// shard's part was written.
+pub fn run(suite_args: &SuiteArgs, x_text: &str, y_text: &str) -> Result<Option<RowMap>, CliError> {
     let x = row_axis("--x", x_text).map_err(CliError::Usage)?;
     let y = row_axis("--y", y_text).map_err(CliError::Usage)?;
     if x.key == y.key {
@@ -120,26 +160,18 @@ pub fn report_with(
         csv_of,
     )?
     else {
-        return Ok(());
+        return Ok(None);
     };
-    let report = RowMapReport {
-        provenance: Provenance::new(study.buildings, UNITS),
-        suite: &suite_args.suite,
-        measure: measure.clone(),
+    Ok(Some(RowMap {
+        names,
+        measure,
         level_g: base.scaling.level,
         records: members.len(),
-        buildings: names.buildings.clone(),
-        joints: names.joints.clone(),
-        links: names.links.clone(),
-        x: &x,
-        y: &y,
+        x,
+        y,
         cells,
         elapsed_ms,
-    };
-    match suite_args.output.format {
-        Format::Csv => Ok(()),
-        Format::Json | Format::Table => emit(&report),
-    }
+    }))
 }
 
 fn echo(text: &str) -> String {
@@ -148,12 +180,12 @@ fn echo(text: &str) -> String {
 
 /// What the row's buildings, joints and links are called in the outputs.
 #[derive(Debug, Clone)]
-struct Names {
-    buildings: Vec<String>,
+pub struct Names {
+    pub buildings: Vec<String>,
     /// `joint1`, … (between buildings j and j + 1).
-    joints: Vec<String>,
+    pub joints: Vec<String>,
     /// `link1`, … in file order.
-    links: Vec<String>,
+    pub links: Vec<String>,
 }
 
 impl Names {
