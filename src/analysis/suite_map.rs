@@ -130,14 +130,14 @@ pub fn cells_of<S, E>(
     Ok(cells)
 }
 
+/// Every cell's plans, or the cell (x, y) whose record failed and why.
+pub type CellPlans<S> = Result<Vec<Vec<<S as Subject>::Plan>>, (f64, f64, <S as Subject>::Error)>;
+
 /// Plans every record in every cell before any run, so that a building
 /// out of range (a Δτ too coarse for a short period, …) fails at once and
 /// names the record and cell. Each record's scale is measured once for
 /// every cell of one scaling: it depends on the records alone.
-pub fn plan_cells<S: Subject>(
-    cells: &[(f64, f64, S)],
-    members: &[SuiteMember],
-) -> Result<Vec<Vec<S::Plan>>, (f64, f64, S::Error)> {
+pub fn plan_cells<S: Subject>(cells: &[(f64, f64, S)], members: &[SuiteMember]) -> CellPlans<S> {
     let mut measured: Option<(Scaling, Vec<(f64, f64)>)> = None;
     let mut plans = Vec::with_capacity(cells.len());
     for (x, y, subject) in cells {

@@ -31,6 +31,10 @@ pub struct CsvOf<'a, C> {
     pub lines: &'a dyn Fn(&C) -> Vec<Vec<String>>,
 }
 
+/// A map's cells and its wall time in ms; `None` when a shard's part was
+/// written.
+pub type MapRan<C> = Result<Option<(Vec<C>, f64)>, CliError>;
+
 /// `e` with `prefix` before its message (same exit code).
 fn prefixed(prefix: &str, e: CliError) -> CliError {
     match e {
@@ -53,7 +57,7 @@ pub fn run_cells<S: MapSubject + CliSubject>(
     members: &[SuiteMember],
     (x, y): (&MapAxis, &MapAxis),
     csv_of: CsvOf<S::Cell>,
-) -> Result<Option<(Vec<S::Cell>, f64)>, CliError> {
+) -> MapRan<S::Cell> {
     if cells.len() * members.len() > MAX_RUNS {
         return Err(CliError::Usage(format!(
             "--x, --y: {} cells × {} records is more than {MAX_RUNS} pairs of runs",

@@ -46,17 +46,14 @@ pub fn runs<S: Subject>(
 /// A suite map's cells from a shard or from parts: [`Sweep::Whole`] when
 /// neither is asked for (the caller computes row by row as it prints). A
 /// unit is one cell: its records' runs, reduced to the cell.
-pub fn map_cells<S: MapSubject>(
+pub fn map_cells<S: MapSubject + crate::cli::subject::CliSubject>(
     shard: &ShardArgs,
     name: &str,
     cells: &[(f64, f64, S)],
     plans: &[Vec<S::Plan>],
     members: &[SuiteMember],
     extra: &impl std::fmt::Debug,
-) -> Result<Sweep<S::Cell>, CliError>
-where
-    S: crate::cli::subject::CliSubject,
-{
+) -> Result<Sweep<S::Cell>, CliError> {
     shard.check()?;
     if !shard.active() {
         return Ok(Sweep::Whole);
