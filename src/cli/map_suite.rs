@@ -13,9 +13,14 @@ pub mod row;
 
 use std::time::Instant;
 
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
 use super::CliError;
 use super::budget::Work;
-use super::output::{Format, num, print};
+use super::description::Provenance;
+use super::output::{Emit, Format, num, print};
 use super::progress::Progress;
 use super::shard::Sweep;
 use super::subject::CliSubject;
@@ -23,7 +28,7 @@ use super::suite::SuiteArgs;
 use crate::analysis::suite_map::{MAX_RUNS, MapAxis, MapSubject, compute_cells, plan_cells};
 use crate::model::params::echo::g4;
 use crate::model::suite::SuiteMember;
-use crate::output::report::csv;
+use crate::output::report::{csv, json};
 
 /// How a map's cells go to CSV: the columns, and each cell's lines.
 pub struct CsvOf<'a, C> {
@@ -85,8 +90,15 @@ pub fn run_cells<S: MapSubject + CliSubject>(
         },
     );
     first.check(&work, "map --suite", args.long.allow_long)?;
-    let sharded =
-        super::shard::suite::map_cells(&args.shard, name, cells, &plans, members, &(x, y))?;
+    let sharded = super::shard::suite::map_cells(
+        &args.shard,
+        name,
+        cells,
+        &plans,
+        members,
+        &(x, y),
+        S::failed,
+    )?;
     if matches!(sharded, Sweep::Done) {
         return Ok(None);
     }
@@ -153,5 +165,61 @@ pub fn grid(
             let _ = write!(s, " {:>w$}", shown(*v));
         }
         let _ = writeln!(s);
+    }
+}
+
+/// A suite map as JSON or a table (its CSV is streamed as it is computed):
+/// what the pair's and a row's report alike, and `names`, flattened after
+/// `records`: the row's buildings, joints and links, nothing for the pair.
+#[derive(Debug, Serialize)]
+pub struct MapReport<'a, N, C> {
+    #[serde(flatten)]
+    pub provenance: Provenance<'a>,
+    pub suite: &'a str,
+    pub measure: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub level_g: Option<f64>,
+    pub records: usize,
+    #[serde(flatten)]
+    pub names: N,
+    pub x: &'a MapAxis,
+    pub y: &'a MapAxis,
+    /// Row after row (y), x along each row.
+    pub cells: Vec<C>,
+    pub elapsed_ms: f64,
+    /// What the heading calls the subject (`preset`, `row`).
+    #[serde(skip)]
+    pub subject: &'static str,
+    /// The table's grids, between its heading and its time.
+    #[serde(skip)]
+    pub grids: fn(&MapReport<'a, N, C>, &mut String),
+}
+
+impl<N: Serialize, C: Serialize> Emit for MapReport<'_, N, C> {
+    /// JSON or the table; its CSV is streamed as the map is computed.
+    fn render(&self, format: Format) -> Result<String, CliError> {
+        match format {
+            Format::Json => json(self).map_err(|e| CliError::Failed(format!("JSON: {e}"))),
+            Format::Table => {
+                let mut s = String::new();
+                let level = self.level_g.map_or(String::new(), |l| {
+                    format!(", each record scaled to {} = {} g", self.measure, num(l))
+                });
+                let _ = writeln!(
+                    s,
+                    "suite map of {} ({} records{level}), {} {}: {} × {}",
+                    self.suite,
+                    self.records,
+                    self.subject,
+                    self.provenance.preset,
+                    self.x.key,
+                    self.y.key
+                );
+                (self.grids)(self, &mut s);
+                let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
+                Ok(s)
+            }
+            Format::Csv => Ok(String::new()),
+        }
     }
 }

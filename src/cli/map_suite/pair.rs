@@ -3,18 +3,15 @@
 //! quantities of its `[physical]` table
 //! ([`crate::analysis::suite_map::pair`]).
 
-use std::fmt::Write as _;
-
 use serde::Serialize;
 
-use super::{CsvOf, run_cells};
-use crate::analysis::suite_map::{MapAxis, PhysicalAxis, SuiteMapCell, cell_cases};
+use super::{CsvOf, MapReport, run_cells};
+use crate::analysis::suite_map::{PhysicalAxis, SuiteMapCell, cell_cases};
 use crate::cli::CliError;
 use crate::cli::description::Provenance;
 use crate::cli::output::{Emit, Format, num};
 use crate::cli::records::members;
 use crate::cli::suite::{SuiteArgs, case_of};
-use crate::output::report::json;
 
 const UNITS: &str = "SI (the axes' units: kg, s, m, rad/s); gaps in m";
 
@@ -68,16 +65,19 @@ pub fn report_with(
     else {
         return Ok(());
     };
-    let report = SuiteMapReport {
+    let report = MapReport {
         provenance: Provenance::new(&preset.name, UNITS),
         suite: &suite_args.suite,
         measure: measure.clone(),
         level_g: case.scaling.level,
         records: members.len(),
+        names: NoNames {},
         x: &x,
         y: &y,
         cells,
         elapsed_ms,
+        subject: "preset",
+        grids,
     };
     match suite_args.output.format {
         Format::Csv => Ok(()),
@@ -85,67 +85,30 @@ pub fn report_with(
     }
 }
 
-impl Emit for SuiteMapReport<'_> {
-    /// JSON or the table; its CSV is streamed as the map is computed.
-    fn render(&self, format: Format) -> Result<String, CliError> {
-        match format {
-            Format::Json => json(self).map_err(|e| CliError::Failed(format!("JSON: {e}"))),
-            Format::Table => Ok(self.table()),
-            Format::Csv => Ok(String::new()),
-        }
-    }
-}
-
-/// `pounding map --suite` as JSON or a table.
+/// The pair's cells carry no per-building names.
 #[derive(Debug, Serialize)]
-struct SuiteMapReport<'a> {
-    #[serde(flatten)]
-    provenance: Provenance<'a>,
-    suite: &'a str,
-    measure: String,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    level_g: Option<f64>,
-    records: usize,
-    x: &'a MapAxis,
-    y: &'a MapAxis,
-    /// Row after row (y), x along each row.
-    cells: Vec<SuiteMapCell>,
-    elapsed_ms: f64,
-}
+pub struct NoNames {}
 
-impl SuiteMapReport<'_> {
-    /// Two grids, P(pounding) and the median amplification, y down the
-    /// rows from its largest value, x across.
-    fn table(&self) -> String {
-        let mut s = String::new();
-        let level = self.level_g.map_or(String::new(), |l| {
-            format!(", each record scaled to {} = {} g", self.measure, num(l))
-        });
-        let _ = writeln!(
+/// Two grids, P(pounding) and the median amplification, y down the rows
+/// from its largest value, x across.
+fn grids(report: &MapReport<NoNames, SuiteMapCell>, s: &mut String) {
+    type Get = fn(&SuiteMapCell) -> f64;
+    let grids: [(&str, Get); 2] = [
+        ("P(pounding)", |c| c.pounding_probability),
+        ("median amplification u1/u1,free", |c| {
+            c.median_amplification
+        }),
+    ];
+    for (title, get) in grids {
+        let values: Vec<f64> = report.cells.iter().map(get).collect();
+        super::grid(
             s,
-            "suite map of {} ({} records{level}), preset {}: {} × {}",
-            self.suite, self.records, self.provenance.preset, self.x.key, self.y.key
+            title,
+            report.x,
+            report.y,
+            &values,
+            &|v| format!("{v:.2}"),
+            (10, 6),
         );
-        type Get = fn(&SuiteMapCell) -> f64;
-        let grids: [(&str, Get); 2] = [
-            ("P(pounding)", |c| c.pounding_probability),
-            ("median amplification u1/u1,free", |c| {
-                c.median_amplification
-            }),
-        ];
-        for (title, get) in grids {
-            let values: Vec<f64> = self.cells.iter().map(get).collect();
-            super::grid(
-                &mut s,
-                title,
-                self.x,
-                self.y,
-                &values,
-                &|v| format!("{v:.2}"),
-                (10, 6),
-            );
-        }
-        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
-        s
     }
 }

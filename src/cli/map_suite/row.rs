@@ -5,11 +5,9 @@
 //! drift ratio (%) and floor acceleration (g) per building, and the median
 //! peak force (kN) per link.
 
-use std::fmt::Write as _;
-
 use serde::Serialize;
 
-use super::{CsvOf, grid, prefixed, run_cells};
+use super::{CsvOf, MapReport, grid, prefixed, run_cells};
 use crate::analysis::row_suite::{RowSuiteCase, row_intensity};
 use crate::analysis::suite_map::row::set_text;
 use crate::analysis::suite_map::{MapAxis, RowMapCell, cells_of, row_axis};
@@ -20,7 +18,6 @@ use crate::cli::output::{Emit, Format, num};
 use crate::cli::suite::SuiteArgs;
 use crate::model::buildings::Row;
 use crate::model::params::echo::g4;
-use crate::output::report::json;
 
 const UNITS: &str = "SI (the axes' keys' units as in the row preset); accelerations in g, \
      link forces in kN";
@@ -55,19 +52,19 @@ pub fn report_with(
         return Ok(());
     };
     let buildings = suite_args.buildings.as_deref().unwrap_or_default();
-    let report = RowMapReport {
+    let report = MapReport {
         provenance: Provenance::new(buildings, UNITS),
         suite: &suite_args.suite,
         measure: map.measure.clone(),
         level_g: map.level_g,
         records: map.records,
-        buildings: map.names.buildings.clone(),
-        joints: map.names.joints.clone(),
-        links: map.names.links.clone(),
+        names: map.names,
         x: &map.x,
         y: &map.y,
         cells: map.cells,
         elapsed_ms: map.elapsed_ms,
+        subject: "row",
+        grids,
     };
     match suite_args.output.format {
         Format::Csv => Ok(()),
@@ -179,7 +176,7 @@ fn echo(text: &str) -> String {
 }
 
 /// What the row's buildings, joints and links are called in the outputs.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Serialize)]
 pub struct Names {
     pub buildings: Vec<String>,
     /// `joint1`, … (between buildings j and j + 1).
@@ -223,87 +220,33 @@ impl Names {
     }
 }
 
-impl Emit for RowMapReport<'_> {
-    /// JSON or the table; its CSV is streamed as the map is computed.
-    fn render(&self, format: Format) -> Result<String, CliError> {
-        match format {
-            Format::Json => json(self).map_err(|e| CliError::Failed(format!("JSON: {e}"))),
-            Format::Table => Ok(self.table()),
-            Format::Csv => Ok(String::new()),
-        }
-    }
-}
-
-/// `pounding map --buildings … --suite` as JSON or a table.
-#[derive(Debug, Serialize)]
-struct RowMapReport<'a> {
-    #[serde(flatten)]
-    provenance: Provenance<'a>,
-    suite: &'a str,
-    measure: String,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    level_g: Option<f64>,
-    records: usize,
-    /// The names of the cells' per-building, per-joint and per-link values.
-    buildings: Vec<String>,
-    joints: Vec<String>,
-    links: Vec<String>,
-    x: &'a MapAxis,
-    y: &'a MapAxis,
-    /// Row after row (y), x along each row.
-    cells: Vec<RowMapCell>,
-    elapsed_ms: f64,
-}
-
-impl RowMapReport<'_> {
-    /// One grid per quantity, y down the rows from its largest value, x
-    /// across.
-    fn table(&self) -> String {
-        let mut s = String::new();
-        let level = self.level_g.map_or(String::new(), |l| {
-            format!(", each record scaled to {} = {} g", self.measure, num(l))
-        });
-        let _ = writeln!(
-            s,
-            "suite map of {} ({} records{level}), row {}: {} × {}",
-            self.suite, self.records, self.provenance.preset, self.x.key, self.y.key
-        );
-        let names = Names {
-            buildings: self.buildings.clone(),
-            joints: self.joints.clone(),
-            links: self.links.clone(),
+/// One grid per quantity, y down the rows from its largest value, x
+/// across.
+fn grids(report: &MapReport<Names, RowMapCell>, s: &mut String) {
+    let (names, x, y) = (&report.names, report.x, report.y);
+    let per_cell: Vec<_> = report.cells.iter().map(|c| names.quantities(c)).collect();
+    let first = format!("{}\\{}", y.key, x.key).len().max(10);
+    let labels = x.values.iter().chain(&y.values).map(|v| g4(*v).len());
+    let w = labels.max().unwrap_or(0).max(6);
+    for (k, &(quantity, of, _)) in per_cell
+        .first()
+        .map_or(&[][..], |q| &q[..])
+        .iter()
+        .enumerate()
+    {
+        let (title, shown): (String, &dyn Fn(f64) -> String) = match quantity {
+            "pounding_probability" => (format!("P(pounding) at {of}"), &|v| format!("{v:.2}")),
+            "median_drift_ratio" => (format!("{of}: median peak drift ratio (%)"), &|v| {
+                format!("{:.3}", 100.0 * v)
+            }),
+            "median_acceleration_g" => {
+                (format!("{of}: median peak floor acceleration (g)"), &|v| {
+                    format!("{v:.2}")
+                })
+            }
+            _ => (format!("{of}: median peak force (kN)"), &|v| g4(v)),
         };
-        let per_cell: Vec<_> = self.cells.iter().map(|c| names.quantities(c)).collect();
-        let first = format!("{}\\{}", self.y.key, self.x.key).len().max(10);
-        let labels = self
-            .x
-            .values
-            .iter()
-            .chain(&self.y.values)
-            .map(|v| g4(*v).len());
-        let w = labels.max().unwrap_or(0).max(6);
-        for (k, &(quantity, of, _)) in per_cell
-            .first()
-            .map_or(&[][..], |q| &q[..])
-            .iter()
-            .enumerate()
-        {
-            let (title, shown): (String, &dyn Fn(f64) -> String) = match quantity {
-                "pounding_probability" => (format!("P(pounding) at {of}"), &|v| format!("{v:.2}")),
-                "median_drift_ratio" => (format!("{of}: median peak drift ratio (%)"), &|v| {
-                    format!("{:.3}", 100.0 * v)
-                }),
-                "median_acceleration_g" => {
-                    (format!("{of}: median peak floor acceleration (g)"), &|v| {
-                        format!("{v:.2}")
-                    })
-                }
-                _ => (format!("{of}: median peak force (kN)"), &|v| g4(v)),
-            };
-            let values: Vec<f64> = per_cell.iter().map(|q| q[k].2).collect();
-            grid(&mut s, &title, self.x, self.y, &values, shown, (first, w));
-        }
-        let _ = writeln!(s, "elapsed {:.0} ms", self.elapsed_ms);
-        s
+        let values: Vec<f64> = per_cell.iter().map(|q| q[k].2).collect();
+        grid(s, &title, x, y, &values, shown, (first, w));
     }
 }

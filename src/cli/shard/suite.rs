@@ -45,14 +45,16 @@ pub fn runs<S: Subject>(
 
 /// A suite map's cells from a shard or from parts: [`Sweep::Whole`] when
 /// neither is asked for (the caller computes row by row as it prints). A
-/// unit is one cell: its records' runs, reduced to the cell.
-pub fn map_cells<S: MapSubject + crate::cli::subject::CliSubject>(
+/// unit is one cell: its records' runs, reduced to the cell. `failed`
+/// turns a run's failure into the command's error.
+pub fn map_cells<S: MapSubject>(
     shard: &ShardArgs,
     name: &str,
     cells: &[(f64, f64, S)],
     plans: &[Vec<S::Plan>],
     members: &[SuiteMember],
     extra: &impl std::fmt::Debug,
+    failed: impl Fn(S::Error) -> CliError,
 ) -> Result<Sweep<S::Cell>, CliError> {
     shard.check()?;
     if !shard.active() {
@@ -73,6 +75,6 @@ pub fn map_cells<S: MapSubject + crate::cli::subject::CliSubject>(
         .map(|((_, _, s), cell)| members.iter().zip(cell).map(|(m, p)| s.work(m, p)).sum())
         .collect();
     shard.try_sweep("map-suite", fp, &work, |mine| {
-        compute_listed(cells, plans, members, mine, &|| {}).map_err(S::failed)
+        compute_listed(cells, plans, members, mine, &|| {}).map_err(failed)
     })
 }
