@@ -139,3 +139,40 @@ fn unwritable_output_is_exit_1() {
         &["cannot write"],
     );
 }
+
+#[test]
+fn map_with_buildings_draws_the_retrofit_map() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("retrofit.svg");
+    let base = [
+        "figure",
+        "map",
+        "--buildings",
+        "block-and-frame-retrofit",
+        "--suite",
+        "synthetic:2",
+        "--level",
+        "0.3",
+    ];
+    let mut args = base.to_vec();
+    args.extend([
+        "--x",
+        "link1.damping=2e6:6e6:2e6",
+        "--y",
+        "joint1.bumper.thickness=0.002:0.004:0.002",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    succeeds(&args);
+    let svg = std::fs::read_to_string(&out).unwrap();
+    for text in [
+        "P(pounding)",
+        "median peak drift ratio",
+        "median peak floor acceleration",
+        "median peak link force",
+    ] {
+        assert!(svg.contains(text), "{text}");
+    }
+    // The axes are the map's: without them, one line and exit 2.
+    fails(&base, 2, &["--x"]);
+}

@@ -185,6 +185,28 @@ fn suite_map_merges_to_the_unsharded_suite_map() {
     );
 }
 
+/// A row's retrofit map: each unit is one cell's records, reduced to the
+/// cell; the merge of any number of shards is the whole map, bit for bit.
+#[test]
+fn retrofit_map_merges_to_the_unsharded_map() {
+    merges_equal(
+        &[
+            "map",
+            "--buildings",
+            "block-and-frame-retrofit",
+            "--suite",
+            "synthetic:2@2",
+            "--level",
+            "0.3",
+            "--x",
+            "link1.damping=2e6:6e6:4e6",
+            "--y",
+            "joint1.bumper.thickness=0.002:0.004:0.002",
+        ],
+        &["json", "csv", "table"],
+    );
+}
+
 /// A row's studies: each unit is one record's two row runs at one level,
 /// and the merge rebuilds every building's and joint's demands from them.
 #[test]

@@ -397,3 +397,54 @@ fn the_label_names_the_law_a_narrow_column_shortens() {
     let line = s.lines().find(|l| l.contains("IK")).expect("the law row");
     assert!(line.contains("improved Kelvin"), "{line}");
 }
+
+/// `b` on a retrofitted row: the bare row is run only then, its envelope
+/// drawn in grey where the row without pounding was, and its impacts in
+/// the summary; a row without retrofits says so.
+#[test]
+fn b_sets_the_retrofit_against_the_bare_row() {
+    let mut a = app((80, 24));
+    let ground = a.row.as_ref().unwrap().ground.clone();
+    a.row =
+        Some(RowPane::open("block-and-frame-retrofit", ground, "synthetic:2000", None).unwrap());
+    settle(&mut a);
+    assert!(a.jobs.shown_row().unwrap().bare.is_none(), "not asked for");
+    assert!(screen(&a).contains("grey: no pounding"));
+    key(&mut a, KeyCode::Char('b'));
+    settle(&mut a);
+    let out = a.jobs.shown_row().unwrap();
+    let bare = out.bare.as_ref().expect("run once b asks for it");
+    // The bare row is block-and-frame: its 46 impacts under this record.
+    assert_eq!(bare.impacts(), 46);
+    assert_eq!(out.runs[0].impacts(), 14);
+    let s = screen(&a);
+    assert!(s.contains("grey: no retrofit"), "{s}");
+    assert!(s.contains("no retrofit: 46 impacts"), "{s}");
+    insta::assert_snapshot!("buildings_bare_80x24", s);
+    key(&mut a, KeyCode::Char('b'));
+    settle(&mut a);
+    assert!(a.jobs.shown_row().unwrap().bare.is_none());
+    // The pane lists the retrofit's keys, each a --set key.
+    let keys: Vec<String> = a
+        .row
+        .as_ref()
+        .unwrap()
+        .fields()
+        .iter()
+        .map(|f| f.key.clone())
+        .collect();
+    for k in ["joint1.bumper.thickness", "link1.damping"] {
+        assert!(keys.iter().any(|x| x == k), "{k}");
+    }
+    let mut plain = app((80, 24));
+    settle(&mut plain);
+    key(&mut plain, KeyCode::Char('b'));
+    assert!(
+        plain
+            .status
+            .as_deref()
+            .is_some_and(|s| s.contains("no bumper or link")),
+        "{:?}",
+        plain.status
+    );
+}

@@ -52,6 +52,12 @@ pub struct FigureArgs {
     /// `separation` with `--buildings` (SPEC §13).
     #[command(flatten)]
     pub row: super::buildings::BuildingsArgs,
+    /// `figure map --buildings`: the retrofit map's axes, any two keys
+    /// `--set` takes, as `pounding map --buildings` takes them.
+    #[arg(long, value_name = "KEY=START:STOP:STEP", allow_hyphen_values = true)]
+    pub x: Option<String>,
+    #[arg(long, value_name = "KEY=START:STOP:STEP", allow_hyphen_values = true)]
+    pub y: Option<String>,
     /// `figure match`: the target spectrum and its rule (T1 is `--period`).
     #[command(flatten)]
     pub design: super::design::TargetArgs,
@@ -113,6 +119,15 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
     }
     if args.name.trim() == "match" {
         return match_figure(args);
+    }
+    if args.name.trim() == "map" && args.row.buildings.is_some() {
+        return retrofit_map(args);
+    }
+    if args.x.is_some() || args.y.is_some() {
+        return Err(usage(format!(
+            "--x and --y apply to figure map --buildings, not {}",
+            args.name
+        )));
     }
     if let Some(flag) = [
         ("--target", args.design.target.is_some()),
@@ -302,5 +317,72 @@ fn match_figure(args: &FigureArgs) -> Result<(), CliError> {
         .out
         .clone()
         .unwrap_or_else(|| PathBuf::from(format!("match.{}", format.extension())));
+    write(&out, &figure::encode(&fig, format, size)?)
+}
+
+/// `figure map --buildings ROW --suite S --level L --x … --y …`: the
+/// retrofit map ([`crate::figure::retrofit_map`]) of the cells `pounding
+/// map --buildings` computes.
+fn retrofit_map(args: &FigureArgs) -> Result<(), CliError> {
+    use super::output::{Format as Out, FormatArg};
+    let (Some(x), Some(y)) = (&args.x, &args.y) else {
+        return Err(usage(
+            "figure map --buildings: give --x KEY=START:STOP:STEP and --y KEY=START:STOP:STEP",
+        ));
+    };
+    let r = &args.risk;
+    let suite = r
+        .suite
+        .clone()
+        .ok_or_else(|| usage("figure map --buildings: give --suite SUITE (and --level X)"))?;
+    let suite_args = super::suite::SuiteArgs {
+        params: args.params.clone(),
+        suite,
+        im: r.im.clone(),
+        level: r.level.clone(),
+        output: FormatArg { format: Out::Json },
+        long: r.long,
+        allow_unreliable: true,
+        buildings: args.row.buildings.clone(),
+        ..Default::default()
+    };
+    let Some(map) = super::map_suite::row::run(&suite_args, x, y)? else {
+        return Ok(());
+    };
+    let level = map.level_g.map_or(String::new(), |l| {
+        format!(", each scaled to {} = {l} g", map.measure)
+    });
+    let fig = crate::figure::retrofit_map::retrofit_map_figure(
+        &crate::figure::retrofit_map::RetrofitMap {
+            row: suite_args.buildings.as_deref().unwrap_or_default(),
+            suite: format!("{} ({} records{level})", suite_args.suite, map.records),
+            joints: &map.names.joints,
+            buildings: &map.names.buildings,
+            links: &map.names.links,
+            x: &map.x,
+            y: &map.y,
+            cells: &map.cells,
+        },
+    );
+    let format = match &args.format {
+        Some(f) => parse_format(f)?,
+        None => match args
+            .out
+            .as_ref()
+            .and_then(|o| o.extension())
+            .and_then(|e| e.to_str())
+        {
+            Some(ext) if ext.eq_ignore_ascii_case("png") => Format::Png,
+            _ => Format::Svg,
+        },
+    };
+    let size = figure::check_size(
+        parse_side("--width", args.width.as_deref(), DEFAULT_SIZE.0)?,
+        parse_side("--height", args.height.as_deref(), DEFAULT_SIZE.1)?,
+    )?;
+    let out = args
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("map.{}", format.extension())));
     write(&out, &figure::encode(&fig, format, size)?)
 }

@@ -44,6 +44,15 @@ pub struct MapArgs {
     /// building's drift (SPEC §12).
     #[command(flatten)]
     pub records: super::suite::SuiteOptions,
+    /// With --suite: a row of shear buildings (SPEC §13) instead of the
+    /// preset's pair, a built-in row (block-and-frame-retrofit, …) or a path:
+    /// --x and --y are then any two keys --set takes (joint1.gap,
+    /// link1.damping, joint1.bumper.thickness, frame.damping, …), and each
+    /// cell gives P(pounding) per joint, the median peak drift ratio and
+    /// floor acceleration per building and the median peak force per link
+    /// (SPEC §14): what a retrofit buys.
+    #[arg(long, value_name = "NAME|PATH")]
+    pub buildings: Option<String>,
     #[command(flatten)]
     pub output: FormatArg,
     #[command(flatten)]
@@ -62,13 +71,18 @@ pub fn report_with(
     args: &MapArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    if let Some(mut suite_args) = args
-        .records
-        .request(&args.params, args.output, args.long, &[])?
+    let others = [("--buildings", args.buildings.is_some())];
+    if let Some(mut suite_args) =
+        args.records
+            .request(&args.params, args.output, args.long, &others)?
     {
         suite_args.shard = args.shard.clone();
+        suite_args.buildings = args.buildings.clone();
         let suite_args = suite_args.at_design_level()?;
-        return super::map_suite::report_with(&suite_args, &args.x, &args.y, emit);
+        return match suite_args.buildings {
+            Some(_) => super::map_suite::row::report_with(&suite_args, &args.x, &args.y, emit),
+            None => super::map_suite::pair::report_with(&suite_args, &args.x, &args.y, emit),
+        };
     }
     let (preset, p) = args.params.resolve_for_many()?;
     let usage = |e: crate::analysis::map::MapError| CliError::Usage(e.to_string());

@@ -26,6 +26,7 @@ pub mod history;
 pub mod map;
 pub mod matching;
 pub mod render;
+pub mod retrofit_map;
 pub mod risk;
 pub mod risk_row;
 pub mod runs;

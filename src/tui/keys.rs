@@ -32,7 +32,10 @@ pub const KEYS: [(&str, &str); 34] = [
         "x",
         "scene: risk over a suite ([ ] level, o PGA/Sa, y joint)",
     ),
-    ("d", "scene: a row of buildings (o panel, | both laws)"),
+    (
+        "d",
+        "scene: a row of buildings (o panel, | both laws, b no retrofit)",
+    ),
     ("space, ( / )", "row: play / pause, slower / faster"),
     ("< / >", "row: displacements drawn ÷2 / ×2"),
     ("u", "physical units (presets with [physical])"),

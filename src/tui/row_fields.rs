@@ -1,6 +1,8 @@
 //! The rows of the parameter pane in the buildings scene: the contact law
 //! and e, then per building its storeys, floor mass, storey stiffness, yield
-//! drift, α and ξ, then per joint its gap and contact stiffness (SPEC §13).
+//! drift, α and ξ, then per joint its gap and contact stiffness (SPEC §13)
+//! and its bumper's thickness, stiffness and restitution, then per link its
+//! stiffness and damping (SPEC §14).
 //! Each row is one `--set` key of the CLI, so an edit meets the checks, and
 //! the messages, of `pounding run --buildings --set KEY=V`.
 
@@ -21,6 +23,13 @@ pub enum Kind {
     Damping(usize),
     Gap(usize),
     JointStiffness(usize),
+    /// The bumper of joint j (SPEC §14): t (m), k_b, e_b.
+    BumperThickness(usize),
+    BumperStiffness(usize),
+    BumperRestitution(usize),
+    /// Link l: k_l (N/m), c_l (N·(s/m)^α).
+    LinkStiffness(usize),
+    LinkDamping(usize),
 }
 
 /// One pane row: its label, the `--set` key it edits and its value shown.
@@ -131,6 +140,47 @@ pub fn fields(row: &Row) -> Vec<RowField> {
             key: key("stiffness"),
             value: compact(joint.stiffness),
         });
+        if let Some(b) = &joint.bumper {
+            let bumper = |kind, what: &str, k: &str, value: f64| RowField {
+                kind,
+                label: format!("joint{} bumper {what}", j + 1),
+                key: key(&format!("bumper.{k}")),
+                value: compact(value),
+            };
+            out.push(bumper(
+                Kind::BumperThickness(j),
+                "t m",
+                "thickness",
+                b.thickness,
+            ));
+            out.push(bumper(
+                Kind::BumperStiffness(j),
+                "k",
+                "stiffness",
+                b.stiffness,
+            ));
+            out.push(bumper(
+                Kind::BumperRestitution(j),
+                "e",
+                "restitution",
+                b.restitution,
+            ));
+        }
+    }
+    for (l, link) in row.links.iter().enumerate() {
+        let field = |kind, what: &str, k: &str, value: f64| RowField {
+            kind,
+            label: format!("link{} {what}", l + 1),
+            key: format!("link{}.{k}", l + 1),
+            value: compact(value),
+        };
+        out.push(field(
+            Kind::LinkStiffness(l),
+            "k N/m",
+            "stiffness",
+            link.stiffness,
+        ));
+        out.push(field(Kind::LinkDamping(l), "c", "damping", link.damping));
     }
     out
 }
@@ -219,6 +269,16 @@ pub fn nudged(
             one(number(g * f))
         }
         Kind::JointStiffness(j) => one(number(row.joints[j].stiffness * f)),
+        Kind::BumperThickness(j) => one(number(row.joints[j].bumper.as_ref()?.thickness * f)),
+        Kind::BumperStiffness(j) => one(number(row.joints[j].bumper.as_ref()?.stiffness * f)),
+        Kind::BumperRestitution(j) => {
+            let e = row.joints[j].bumper.as_ref()?.restitution;
+            one(number(round(e + 0.05 * steps, 1e6)))
+        }
+        // A link at 0 is nudged from its scale's natural start: a factor
+        // cannot leave 0 (type a value instead).
+        Kind::LinkStiffness(l) => one(number(row.links[l].stiffness * f)),
+        Kind::LinkDamping(l) => one(number(row.links[l].damping * f)),
     }
 }
 
@@ -264,5 +324,47 @@ mod tests {
         let alpha = f.iter().find(|f| f.kind == Kind::Alpha(1)).unwrap();
         let a = apply(&nudged(&row, alpha, -1.0, StepSize::Normal).unwrap());
         assert_eq!(a.buildings[1].alpha, 0.04);
+    }
+
+    #[test]
+    fn a_retrofit_lists_its_bumper_and_link_keys() {
+        let row = load("block-and-frame-retrofit").unwrap();
+        let f = fields(&row);
+        assert_eq!(f.len(), 2 + 2 * 6 + 2 + 3 + 2);
+        let keys: Vec<&str> = f[16..].iter().map(|f| f.key.as_str()).collect();
+        assert_eq!(
+            keys,
+            [
+                "joint1.bumper.thickness",
+                "joint1.bumper.stiffness",
+                "joint1.bumper.restitution",
+                "link1.stiffness",
+                "link1.damping",
+            ]
+        );
+        let edit = |field: &RowField, d: f64| {
+            let sets: Vec<String> = nudged(&row, field, d, StepSize::Normal)
+                .unwrap()
+                .iter()
+                .map(|(k, v)| format!("{k}={v}"))
+                .collect();
+            load_with("block-and-frame-retrofit", &sets)
+        };
+        let thinner = edit(&f[16], -1.0).unwrap();
+        let t = thinner.joints[0].bumper.as_ref().unwrap().thickness;
+        assert!((t - 0.004 / 1.1).abs() < 1e-15);
+        let e = edit(&f[18], -1.0).unwrap();
+        assert_eq!(e.joints[0].bumper.as_ref().unwrap().restitution, 0.75);
+        let c = edit(&f[20], 1.0).unwrap();
+        assert!((c.links[0].damping - 4.4e6).abs() < 1e-6);
+        // A thicker bumper than the gap is the preset's own refusal.
+        let f5 = RowField {
+            value: String::new(),
+            ..f[16].clone()
+        };
+        let too_thick = nudged(&row, &f5, 1.0, StepSize::Coarse).unwrap();
+        let sets: Vec<String> = too_thick.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        let err = load_with("block-and-frame-retrofit", &sets).unwrap_err();
+        assert!(err.to_string().contains("thickness"), "{err}");
     }
 }

@@ -2,7 +2,9 @@
 //! pounding, under each contact law shown (its own, and the other of the
 //! Kelvin pair side by side), each with its trace for drawing, and once
 //! with every joint open (d = ∞), peaks only, for the envelopes without
-//! pounding (SPEC §13). The runs are independent and go in parallel.
+//! pounding (SPEC §13); and, only when the scene shows it, the row without
+//! its retrofits (SPEC §14), with pounding under its own law, peaks only.
+//! The runs are independent and go in parallel.
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -27,12 +29,15 @@ pub struct RowSpec {
     pub duration: f64,
     /// The contact laws run with pounding, the row's own first.
     pub laws: Vec<ContactModel>,
+    /// Also run the row without its bumpers and links ([`Row::bare`]).
+    pub bare: bool,
 }
 
 impl RowSpec {
     /// Estimated wall time of the whole job (s), by [`work::row_seconds`].
     pub fn seconds(&self) -> f64 {
-        (self.laws.len() + 1) as f64 * work::row_seconds(self.row.dofs(), self.duration, None)
+        (self.laws.len() + 1 + usize::from(self.bare)) as f64
+            * work::row_seconds(self.row.dofs(), self.duration, None)
     }
 }
 
@@ -44,6 +49,8 @@ pub struct RowOutput {
     pub runs: Vec<RowRun>,
     /// Every joint open: the response without pounding.
     pub free: RowRun,
+    /// The row without its retrofits, with pounding, when asked for.
+    pub bare: Option<RowRun>,
     /// Wall time of the job (ms).
     pub elapsed_ms: f64,
 }
@@ -74,6 +81,9 @@ pub fn run(spec: &RowSpec) -> Result<RowOutput, String> {
         })
         .collect();
     cases.push((open, false));
+    if spec.bare {
+        cases.push((spec.row.bare(), false));
+    }
     let runs: Result<Vec<RowRun>, String> = cases
         .par_iter()
         .map(|(row, trace)| {
@@ -85,11 +95,13 @@ pub fn run(spec: &RowSpec) -> Result<RowOutput, String> {
         })
         .collect();
     let mut runs = runs?;
+    let bare = if spec.bare { runs.pop() } else { None };
     let free = runs.pop().expect("the open row's run");
     Ok(RowOutput {
         spec: spec.clone(),
         runs,
         free,
+        bare,
         elapsed_ms: start.elapsed().as_secs_f64() * 1e3,
     })
 }

@@ -144,6 +144,14 @@ impl App {
                 pane.side_by_side = !pane.side_by_side;
                 Ok(())
             }
+            KeyCode::Char('b') if !pane.row.is_retrofitted() && !pane.bare => Err(
+                "b: this row has no bumper or link to take away (try block-and-frame-retrofit)"
+                    .to_string(),
+            ),
+            KeyCode::Char('b') => {
+                pane.bare = !pane.bare;
+                Ok(())
+            }
             KeyCode::Char('m') => {
                 let next = pane.row.model.toggled();
                 pane.apply(vec![("model".into(), format!("\"{}\"", next.name()))])

@@ -65,6 +65,9 @@ pub struct RowPane {
     pub exaggeration: Option<f64>,
     /// Kelvin and improved Kelvin drawn side by side.
     pub side_by_side: bool,
+    /// The envelopes' grey line is the row without its retrofits (SPEC
+    /// §14) rather than the row without pounding.
+    pub bare: bool,
     pub panel: Panel,
 }
 
@@ -92,6 +95,7 @@ impl RowPane {
             play: Playback::default(),
             exaggeration: None,
             side_by_side: false,
+            bare: false,
             panel: Panel::Displacement,
         };
         pane.check(&pane.row)?;
@@ -102,6 +106,7 @@ impl RowPane {
     pub fn reopen(&self, source: &str) -> Result<RowPane, String> {
         let mut next = RowPane::open(source, self.ground.clone(), &self.ground_name, self.tail)?;
         next.side_by_side = self.side_by_side;
+        next.bare = self.bare;
         next.panel = self.panel;
         next.play.speed = self.play.speed;
         Ok(next)
@@ -144,6 +149,7 @@ impl RowPane {
             ground: self.ground.clone(),
             duration: self.duration(),
             laws: self.laws(),
+            bare: self.bare && self.row.is_retrofitted(),
         }
     }
 
@@ -154,6 +160,7 @@ impl RowPane {
             ground: self.ground.clone(),
             duration: self.duration_of(row),
             laws: self.laws(),
+            bare: self.bare && row.is_retrofitted(),
         };
         let seconds = spec.seconds();
         if seconds > row_job::MAX_SECONDS {

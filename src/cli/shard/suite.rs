@@ -5,9 +5,7 @@ use super::{Results, ShardArgs, Sweep};
 use crate::analysis::shard::Fingerprint;
 use crate::analysis::shard::suite::{Unit, add_records, compute, fingerprint, rebuild, unit_work};
 use crate::analysis::subject::Subject;
-use crate::analysis::subject::pair::member_work;
-use crate::analysis::suite::{MemberPlan, SuiteCase};
-use crate::analysis::suite_map::{SuiteMapCell, compute_listed};
+use crate::analysis::suite_map::{MapSubject, compute_listed};
 use crate::cli::CliError;
 use crate::model::suite::SuiteMember;
 
@@ -46,31 +44,37 @@ pub fn runs<S: Subject>(
 }
 
 /// A suite map's cells from a shard or from parts: [`Sweep::Whole`] when
-/// neither is asked for (the caller computes row by row as it prints).
-pub fn map_cells(
+/// neither is asked for (the caller computes row by row as it prints). A
+/// unit is one cell: its records' runs, reduced to the cell. `failed`
+/// turns a run's failure into the command's error.
+pub fn map_cells<S: MapSubject>(
     shard: &ShardArgs,
-    preset: &str,
-    case: &SuiteCase,
-    cells: &[(f64, f64, SuiteCase)],
-    plans: &[Vec<MemberPlan>],
+    name: &str,
+    cells: &[(f64, f64, S)],
+    plans: &[Vec<S::Plan>],
     members: &[SuiteMember],
     extra: &impl std::fmt::Debug,
-) -> Result<Sweep<SuiteMapCell>, CliError> {
+    failed: impl Fn(S::Error) -> CliError,
+) -> Result<Sweep<S::Cell>, CliError> {
     shard.check()?;
     if !shard.active() {
         return Ok(Sweep::Whole);
     }
-    let all: Vec<&MemberPlan> = plans.iter().flatten().collect();
+    let Some((_, _, first)) = cells.first() else {
+        return Ok(Sweep::Whole);
+    };
+    let all: Vec<&S::Plan> = plans.iter().flatten().collect();
     let mut fp = Fingerprint::new("map-suite");
-    case.describe(&mut fp, preset);
+    first.describe(&mut fp, name);
     add_records(&mut fp, members);
     fp.add_debug(&all);
     fp.add_debug(&(extra, cells));
-    let work: Vec<f64> = plans
+    let work: Vec<f64> = cells
         .iter()
-        .map(|cell| cell.iter().map(member_work).sum())
+        .zip(plans)
+        .map(|((_, _, s), cell)| members.iter().zip(cell).map(|(m, p)| s.work(m, p)).sum())
         .collect();
-    shard.sweep("map-suite", fp, &work, |mine| {
-        compute_listed(cells, plans, members, mine, &|_| {})
+    shard.try_sweep("map-suite", fp, &work, |mine| {
+        compute_listed(cells, plans, members, mine, &|| {}).map_err(failed)
     })
 }

@@ -135,7 +135,10 @@ pub fn render(app: &App, frame: &mut Frame, area: Rect) {
             panel,
             app.look,
             row,
-            (&out.runs[0], &out.free),
+            match &out.bare {
+                Some(bare) => (&out.runs[0], bare, "no retrofit"),
+                None => (&out.runs[0], &out.free, "no pounding"),
+            },
             quantity,
         ),
     }
@@ -180,7 +183,20 @@ pub fn summary(app: &App, width: usize) -> Vec<String> {
         .filter(|(on, _)| **on)
         .map(|(_, p)| row_panel::floors(row, p))
         .collect();
-    let mut second = vec![format!(
+    // The row without its retrofits, when shown (`b`), leads the second line.
+    let mut second: Vec<String> = out
+        .bare
+        .iter()
+        .map(|bare| {
+            let force = bare.pairs.iter().map(|p| p.max_force()).fold(0.0, f64::max);
+            format!(
+                "no retrofit: {} impacts, {:.0} kN",
+                bare.impacts(),
+                force / 1e3
+            )
+        })
+        .collect();
+    second.push(format!(
         "t {:.3} s: {}",
         pane.cursor,
         if touching.is_empty() {
@@ -188,7 +204,7 @@ pub fn summary(app: &App, width: usize) -> Vec<String> {
         } else {
             format!("contact {}", touching.join(", "))
         }
-    )];
+    ));
     if let Some(trace) = run.trace.as_ref() {
         let u = trace.at(pane.cursor);
         let offsets = row.offsets();

@@ -31,13 +31,14 @@ fn quantity(panel: Panel) -> (&'static str, fn(&FloorPeaks) -> f64) {
 }
 
 /// The envelope of one quantity over floor elevation: per building, the
-/// run with pounding and (grey) the run without.
+/// run with pounding and (grey) the run it is set against, named `grey`:
+/// without pounding, or without the retrofits.
 pub fn envelope(
     buf: &mut Buffer,
     area: Rect,
     look: Look,
     row: &Row,
-    (with, without): (&RowRun, &RowRun),
+    (with, without, grey): (&RowRun, &RowRun, &str),
     panel: Panel,
 ) {
     let (title, value) = quantity(panel);
@@ -51,17 +52,17 @@ pub fn envelope(
                 .collect()
         };
         series.push(Series::line(b.name.clone(), COLORS[k % COLORS.len()], line(with)).unlisted());
-        series.push(Series::line("no pounding", palette::FREE, line(without)).unlisted());
+        series.push(Series::line(grey, palette::FREE, line(without)).unlisted());
     }
-    // Free runs drawn first, under the runs with pounding.
-    series.sort_by_key(|s| s.name != "no pounding");
+    // The grey runs drawn first, under the runs with pounding.
+    series.sort_by_key(|s| s.name != grey);
     let top = row
         .buildings
         .iter()
         .map(|b| b.elevation(b.storeys()))
         .fold(0.0, f64::max);
     let spec = ChartSpec {
-        title: format!("{title} (grey: no pounding)"),
+        title: format!("{title} (grey: {grey})"),
         x_title: String::new(),
         x_bounds: None,
         y_range: Some([0.0, top]),

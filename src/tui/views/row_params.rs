@@ -82,6 +82,8 @@ fn steps(f: &RowField) -> &'static str {
         Kind::Storeys(_) => "step 1; lists grow by the top value",
         Kind::Alpha(_) => "step 0.01",
         Kind::Damping(_) => "step 0.005 (Rayleigh, modes 1-2)",
+        Kind::BumperRestitution(_) => "step 0.05",
+        Kind::LinkStiffness(_) | Kind::LinkDamping(_) => "×1.1 a step; at 0 type a value",
         _ => "×1.1 a step (H/L ×2, ,/. ×1.02)",
     }
 }

@@ -1,10 +1,12 @@
 //! A row's retrofits drawn at one instant (SPEC §14): each bumper a thick
 //! face on the left building, t·X wide, at each floor it covers; each link
 //! a line from its left floor's right edge to its right floor's left edge,
-//! coloured by the sign of its force F = k_l Δu + c_l|Δv|^α sgn Δv at that
-//! instant (compression F > 0, tension F < 0). Δu is the trace's at t and
+//! coloured by the magnitude of its force F = k_l Δu + c_l|Δv|^α sgn Δv at
+//! that instant against the link's peak |F| over the run: grey below a
+//! tenth of it, yellow below half, red above. Δu is the trace's at t and
 //! Δv the slope of the trace's segment around t. Pure: a function of the
-//! row, its run's trace, the time and the drawing of the frames.
+//! row, its run's trace and link peaks, the time and the drawing of the
+//! frames.
 
 use ratatui::style::Color;
 
@@ -15,9 +17,9 @@ use crate::solver::buildings::RowTrace;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Mark {
     Bumper,
-    /// A link in compression (F > 0), in tension (F < 0), or unloaded.
-    Compression,
-    Tension,
+    /// A link carrying at least half its peak |F|, at least a tenth, or less.
+    Heavy,
+    Loaded,
     Unloaded,
 }
 
@@ -25,19 +27,26 @@ impl Mark {
     pub fn color(self) -> Color {
         match self {
             Mark::Bumper => Color::LightMagenta,
-            Mark::Compression => Color::LightRed,
-            Mark::Tension => Color::LightBlue,
+            Mark::Heavy => Color::LightRed,
+            Mark::Loaded => Color::Yellow,
             Mark::Unloaded => Color::Gray,
         }
     }
 
     /// All marks, in the order of their raster series after the frames'.
-    pub const ALL: [Mark; 4] = [
-        Mark::Bumper,
-        Mark::Compression,
-        Mark::Tension,
-        Mark::Unloaded,
-    ];
+    pub const ALL: [Mark; 4] = [Mark::Bumper, Mark::Heavy, Mark::Loaded, Mark::Unloaded];
+
+    /// A link's mark at |F| = `force` (N), against its peak `peak` (N).
+    pub fn of_link(force: f64, peak: f64) -> Mark {
+        let share = if peak > 0.0 { force.abs() / peak } else { 0.0 };
+        if share >= 0.5 {
+            Mark::Heavy
+        } else if share >= 0.1 {
+            Mark::Loaded
+        } else {
+            Mark::Unloaded
+        }
+    }
 }
 
 /// A segment in drawing coordinates, and what it is.
@@ -71,8 +80,15 @@ pub struct Frames<'a> {
     pub height: f64,
 }
 
-/// The bumpers' and links' segments of `row` at time t over the frames.
-pub fn segments(row: &Row, trace: &RowTrace, t: f64, drawing: &Frames) -> Vec<Segment> {
+/// The bumpers' and links' segments of `row` at time t over the frames;
+/// `peaks` is each link's peak |F| over the run (N).
+pub fn segments(
+    row: &Row,
+    trace: &RowTrace,
+    peaks: &[f64],
+    t: f64,
+    drawing: &Frames,
+) -> Vec<Segment> {
     let mut out = Vec::new();
     let x = drawing.exaggeration;
     let thick = 0.01 * drawing.height;
@@ -91,17 +107,11 @@ pub fn segments(row: &Row, trace: &RowTrace, t: f64, drawing: &Frames) -> Vec<Se
     }
     let u = trace.at(t);
     let v = velocities(trace, t);
-    for l in links {
+    for (k, l) in links.iter().enumerate() {
         let p = l.pair;
         let (a, b) = (p.left_dof, p.right_dof);
         let force = l.force(u[a] - u[b], v[a] - v[b]);
-        let mark = if force > 0.0 {
-            Mark::Compression
-        } else if force < 0.0 {
-            Mark::Tension
-        } else {
-            Mark::Unloaded
-        };
+        let mark = Mark::of_link(force, peaks.get(k).copied().unwrap_or(0.0));
         let (xa, ya) = (drawing.floor)(p.left, p.left_floor);
         let (xb, yb) = (drawing.floor)(p.right, p.right_floor);
         out.push(((xa + drawing.width, ya), (xb, yb), mark));
