@@ -19,10 +19,10 @@
 use serde::{Deserialize, Serialize};
 
 use super::{MapAxis, MapSubject};
-use crate::analysis::row_suite::{
+use crate::analysis::statistics::Summary;
+use crate::analysis::subject::row::{
     BuildingDemands, RowSuiteCase, RowSuiteError, ground_of, run_length,
 };
-use crate::analysis::statistics::Summary;
 use crate::model::suite::SuiteMember;
 use crate::solver::buildings::{MapCache, RowOptions, run_row_cached};
 

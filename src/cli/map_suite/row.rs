@@ -8,7 +8,7 @@
 use serde::Serialize;
 
 use super::{CsvOf, MapReport, grid, prefixed, run_cells};
-use crate::analysis::row_suite::{RowSuiteCase, row_intensity};
+use crate::analysis::subject::row::{RowSuiteCase, row_intensity};
 use crate::analysis::suite_map::row::set_text;
 use crate::analysis::suite_map::{MapAxis, RowMapCell, cells_of, row_axis};
 use crate::cli::CliError;
@@ -87,7 +87,7 @@ pub fn run(suite_args: &SuiteArgs, x_text: &str, y_text: &str) -> Result<Option<
     let Some(study) = suite_args.row_study()? else {
         return Err(CliError::Usage("--buildings: no row given".into()));
     };
-    let (base, members) = crate::cli::row_suite::case_of(&study)?;
+    let (base, members) = crate::cli::subject::row::case_of(&study)?;
     let buildings = BuildingsArgs {
         buildings: Some(study.buildings.to_string()),
         ..BuildingsArgs::default()
