@@ -130,3 +130,26 @@ fn under_each_pulse_newmark_converges_at_second_order() {
         assert!((1.8..2.2).contains(&order), "{pulse:?}: order {order}");
     }
 }
+
+/// A step beyond the contact's period (19 ms on block-and-frame; 5 ms is
+/// about a quarter of it, under the record's sample interval) leaves
+/// Newton unable to resolve an impact: the run stops with the time and
+/// a message that names the iteration and a smaller --dt, not "runaway".
+#[test]
+fn a_step_newton_cannot_resolve_says_newmark_did_not_converge() {
+    use pounding::solver::buildings::RowError;
+    let record = read("presets/synthetic.at2").unwrap();
+    let ground = Ground::from_record(&record, 1.0);
+    let row = buildings::load("block-and-frame").unwrap();
+    let e = run_newmark(&row, &ground, 5.0, 5e-3).unwrap_err();
+    let RowError::Unconverged(t) = e else {
+        panic!("expected Unconverged, got {e:?}");
+    };
+    // The first hard impacts come at about 1.52 s (the exact run's).
+    assert!((1.5..1.6).contains(&t), "t = {t}");
+    let text = e.to_string();
+    assert!(
+        text.contains("did not converge") && text.contains("--dt"),
+        "{text}"
+    );
+}

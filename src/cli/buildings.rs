@@ -304,7 +304,7 @@ pub fn run(
             None => run_row(&row, &ground, &options),
         };
         result = Some(run.map_err(|e| match e {
-            RowError::Runaway(_) => CliError::Failed(e.to_string()),
+            RowError::Runaway(_) | RowError::Unconverged(_) => CliError::Failed(e.to_string()),
             RowError::Damper { .. } => CliError::Usage(e.to_string()),
         })?);
         times.push(t.elapsed().as_secs_f64() * 1e3);

@@ -130,7 +130,9 @@ pub fn work_of(row: &Row, members: &[SuiteMember], times: usize) -> Work {
 pub fn failed(e: RowSuiteError) -> CliError {
     match &e {
         RowSuiteError::Run {
-            error: crate::solver::buildings::RowError::Runaway(_),
+            error:
+                crate::solver::buildings::RowError::Runaway(_)
+                | crate::solver::buildings::RowError::Unconverged(_),
             ..
         } => CliError::Failed(e.to_string()),
         _ => usage(e.to_string()),

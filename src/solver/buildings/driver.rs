@@ -93,6 +93,13 @@ impl RowOptions {
 pub enum RowError {
     #[error("the run stopped at t = {0} s: more than 10⁸ events or series steps")]
     Runaway(f64),
+    /// Newmark's Newton iteration (SPEC §13) found no displacement that
+    /// balances the step: a singular tangent, or no convergence within its
+    /// iteration limit.
+    #[error(
+        "Newmark's iteration did not converge at t = {0} s (singular tangent or no convergence in 100 iterations); try a smaller --dt"
+    )]
+    Unconverged(f64),
     /// A link with α < 1 (SPEC §14), which the exact method does not solve
     /// yet; Newmark does ([`super::newmark`]).
     #[error(
