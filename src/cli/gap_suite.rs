@@ -24,6 +24,36 @@ use crate::analysis::suite::{SuiteCase, SuiteRun};
 use crate::model::params::echo::g4;
 
 /// The probabilities reported when `--probability` is not given.
+/// The CSV columns every record's line of a separation study begins with,
+/// the pair's and a row's alike; [`record_cells`] fills them.
+pub const RECORD_COLUMNS: [&str; 6] = [
+    "version",
+    "units",
+    "record",
+    "scale",
+    "intensity_measure",
+    "intensity_g",
+];
+
+/// The cells of [`RECORD_COLUMNS`] for a record run at `scale`, where its
+/// intensity `measure` is `intensity_g`.
+pub fn record_cells(
+    units: &str,
+    record: &str,
+    scale: f64,
+    measure: &str,
+    intensity_g: f64,
+) -> Vec<String> {
+    vec![
+        env!("CARGO_PKG_VERSION").to_string(),
+        units.to_string(),
+        record.to_string(),
+        num(scale),
+        measure.to_string(),
+        num(intensity_g),
+    ]
+}
+
 pub const DEFAULT_PROBABILITIES: &str = "0.5,0.84,0.9";
 
 fn usage(message: String) -> CliError {

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::study_table;
+use super::{RECORD_COLUMNS, record_cells, study_table};
 use crate::analysis::separation::{JointSeparation, SeparationStudy};
 use crate::analysis::suite::{SuiteCase, SuiteRun};
 use crate::cli::description::Provenance;
@@ -86,36 +86,29 @@ pub struct SeparationReport<'a> {
 
 impl Report for SeparationReport<'_> {
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "version",
-            "units",
-            "record",
-            "scale",
-            "intensity_measure",
-            "intensity_g",
+        let mut h = RECORD_COLUMNS.to_vec();
+        h.extend([
             "min_gap_m",
             "free_peak_left_m",
             "free_peak_right_m",
             "impacts_at_gap",
-        ]
+        ]);
+        h
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
         self.records
             .iter()
             .map(|r| {
-                vec![
-                    env!("CARGO_PKG_VERSION").to_string(),
-                    UNITS.to_string(),
-                    r.record.clone(),
-                    num(r.scale),
-                    self.measure.clone(),
-                    num(r.intensity_g),
+                let mut cells =
+                    record_cells(UNITS, &r.record, r.scale, &self.measure, r.intensity_g);
+                cells.extend([
                     num(r.min_gap_m),
                     num(r.free_peak_left_m),
                     num(r.free_peak_right_m),
                     r.impacts_at_gap.to_string(),
-                ]
+                ]);
+                cells
             })
             .collect()
     }

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::study_table;
+use super::{RECORD_COLUMNS, record_cells, study_table};
 use crate::analysis::gap::JointGap;
 use crate::analysis::separation::JointSeparation;
 use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
@@ -79,13 +79,8 @@ pub struct RowSeparationReport<'a> {
 
 impl Report for RowSeparationReport<'_> {
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "version",
-            "units",
-            "record",
-            "scale",
-            "intensity_measure",
-            "intensity_g",
+        let mut h = RECORD_COLUMNS.to_vec();
+        h.extend([
             "joint",
             "left",
             "right",
@@ -94,7 +89,8 @@ impl Report for RowSeparationReport<'_> {
             "srss_m",
             "ddc_m",
             "impacts_at_gap",
-        ]
+        ]);
+        h
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
@@ -102,13 +98,14 @@ impl Report for RowSeparationReport<'_> {
         for r in &self.records {
             for (j, joint) in r.joints.iter().enumerate() {
                 let g = &joint.gap;
-                rows.push(vec![
-                    env!("CARGO_PKG_VERSION").to_string(),
-                    crate::cli::suite::row::UNITS.to_string(),
-                    r.record.clone(),
-                    num(r.scale),
-                    self.row.scaling.measure.clone(),
-                    num(r.intensity_g),
+                let mut cells = record_cells(
+                    crate::cli::suite::row::UNITS,
+                    &r.record,
+                    r.scale,
+                    &self.row.scaling.measure,
+                    r.intensity_g,
+                );
+                cells.extend([
                     format!("joint{}", j + 1),
                     g.left.clone(),
                     g.right.clone(),
@@ -118,6 +115,7 @@ impl Report for RowSeparationReport<'_> {
                     num(g.ddc),
                     joint.impacts_at_gap.to_string(),
                 ]);
+                rows.push(cells);
             }
         }
         rows
