@@ -33,7 +33,7 @@ pub type Key = (Vec<u8>, u64, u64);
 pub struct Propagator {
     /// Where each key's map is in `entries`.
     index: HashMap<Key, usize>,
-    entries: Vec<(DMatrix<f64>, Bounds)>,
+    entries: Vec<(Map, Bounds)>,
     /// The key asked for last and its entry: a run asks for the same map
     /// sub-step after sub-step, which then costs a comparison of a few
     /// bytes instead of hashing the key.
@@ -76,7 +76,7 @@ impl Propagator {
         (h, sigma): (f64, f64),
         rate: f64,
         watch: &[Watch],
-    ) -> (&DMatrix<f64>, &Bounds) {
+    ) -> (&Map, &Bounds) {
         let n = system.load.len();
         self.used += 1;
         let bits = (h.to_bits(), sigma.to_bits());
@@ -92,7 +92,7 @@ impl Propagator {
                         let a = augmented(system, sigma);
                         let (bounds, map) = Bounds::with_map(&a, n, h, rate, watch);
                         self.seconds += clock.elapsed().as_secs_f64();
-                        self.entries.push((map, bounds));
+                        self.entries.push((Map::of(&map), bounds));
                         self.index.insert(key.clone(), self.entries.len() - 1);
                         self.entries.len() - 1
                     }
@@ -115,19 +115,42 @@ impl Propagator {
     }
 }
 
+/// The rows of (u, u̇) of e^{𝒜h}, 2n × (3n + 2), stored row by row: a map
+/// step reads each row once, front to back.
+#[derive(Debug, Clone)]
+pub struct Map {
+    /// Columns per row: 3n + 2.
+    width: usize,
+    rows: Vec<f64>,
+}
+
+impl Map {
+    /// From the map as a matrix ([`Bounds::with_map`]).
+    pub fn of(map: &DMatrix<f64>) -> Map {
+        Map {
+            width: map.ncols(),
+            rows: map.transpose().as_slice().to_vec(),
+        }
+    }
+}
+
 /// (u, u̇) after the map from (u, u̇) under ground (a, ȧ) and load M⁻¹q.
 pub fn apply(
-    map: &DMatrix<f64>,
+    map: &Map,
     (u, v): (&[f64], &[f64]),
     (a, rate): (f64, f64),
     load: &[f64],
     (u1, v1): (&mut [f64], &mut [f64]),
 ) {
     let n = u.len();
-    for r in 0..2 * n {
-        let mut s = map[(r, 2 * n)] * a + map[(r, 2 * n + 1)] * rate;
+    let (v, load) = (&v[..n], &load[..n]);
+    for (r, row) in map.rows.chunks_exact(map.width).enumerate() {
+        let (x, rest) = row.split_at(n);
+        let (y, rest) = rest.split_at(n);
+        let (g, q) = rest.split_at(2);
+        let mut s = g[0] * a + g[1] * rate;
         for j in 0..n {
-            s += map[(r, j)] * u[j] + map[(r, n + j)] * v[j] + map[(r, 2 * n + 2 + j)] * load[j];
+            s += x[j] * u[j] + y[j] * v[j] + q[j] * load[j];
         }
         if r < n {
             u1[r] = s;
