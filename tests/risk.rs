@@ -4,7 +4,7 @@
 //! are those of the suite at the design level, also when the design level is
 //! not one of the IDA's levels; a `keep_going` that says no stops it.
 
-use pounding::analysis::risk::risk;
+use pounding::analysis::risk::{Kept, risk};
 use pounding::analysis::statistics::Summary;
 use pounding::analysis::subject::runs::{plan, run_suite};
 use pounding::analysis::suite::{Scaling, SuiteCase, SuiteRun};
@@ -50,7 +50,8 @@ fn the_picture_is_the_suites_at_each_level_and_at_the_design_level() {
     let (case, members) = case();
     let levels = [0.05, 0.1, 0.2];
     let design = 0.15;
-    let p = risk(&case, &members, design, &levels, &|| true)
+    let mut kept = Kept::default();
+    let p = risk(&case, &members, design, &levels, &|| true, &mut kept)
         .unwrap()
         .unwrap();
     assert_eq!((p.records, p.drift.len(), p.pounding.len()), (8, 3, 3));
@@ -79,9 +80,16 @@ fn the_picture_is_the_suites_at_each_level_and_at_the_design_level() {
         .collect();
     assert_eq!(p.min_gaps_m, gaps);
     // The design level among the levels: its runs are the IDA's.
-    let q = risk(&case, &members, 0.1, &levels, &|| true)
-        .unwrap()
-        .unwrap();
+    let q = risk(
+        &case,
+        &members,
+        0.1,
+        &levels,
+        &|| true,
+        &mut Kept::default(),
+    )
+    .unwrap()
+    .unwrap();
     let at = suite_at(&case, &members, 0.1);
     assert_eq!(
         q.min_gaps_m,
@@ -103,6 +111,7 @@ fn a_keep_going_that_says_no_stops_the_picture() {
         0.3,
         &[0.1, 0.2, 0.3, 0.4, 0.5],
         &stop_after_one,
+        &mut Kept::default(),
     )
     .unwrap();
     assert!(p.is_none());

@@ -7,7 +7,7 @@
 
 use pounding::analysis::fragility;
 use pounding::analysis::gap::row_gap;
-use pounding::analysis::risk::{RowRiskCase, row_risk as risk};
+use pounding::analysis::risk::{Kept, RowRiskCase, row_risk as risk};
 use pounding::analysis::statistics::Summary;
 use pounding::analysis::suite::raw_intensity;
 use pounding::model::buildings::matrices::default_tail;
@@ -30,7 +30,8 @@ fn the_row_picture_is_made_of_the_runs_one_by_one() {
     assert_eq!(case.building, 1);
     let levels = [0.2, 0.4, 0.6];
     let design = 0.3;
-    let p = risk(&case, &members, design, &levels, &|| true)
+    let mut kept = Kept::default();
+    let p = risk(&case, &members, design, &levels, &|| true, &mut kept)
         .unwrap()
         .unwrap();
     assert_eq!(p.records, 6);
@@ -73,7 +74,55 @@ fn the_row_picture_is_made_of_the_runs_one_by_one() {
     assert_eq!(p.fragility, fragility::fit(&p.pounding));
     // Stopped between levels: no picture.
     assert_eq!(
-        risk(&case, &members, design, &levels, &|| false).unwrap(),
+        risk(
+            &case,
+            &members,
+            design,
+            &levels,
+            &|| false,
+            &mut Kept::default()
+        )
+        .unwrap(),
         None
     );
+}
+
+/// The explorer's passes share their runs ([`Kept`]): a coarse picture on
+/// a few records and levels, then the full one and the full one with more
+/// levels, each given the runs of the passes before it, are the pictures
+/// made afresh, equal in every field, and the full ones run only the
+/// (level, record) pairs not run before.
+#[test]
+fn pictures_that_keep_earlier_runs_are_the_pictures_made_afresh() {
+    let members = SuiteSpec::parse("synthetic:4").unwrap().load().unwrap();
+    let row = load_with("block-and-frame", &["joint1.gap=0.02".into()]).unwrap();
+    let case = RowRiskCase {
+        joint: 0,
+        building: 1,
+        measure: IntensityMeasure::Pga,
+        row,
+    };
+    let design = 0.3;
+    let mut kept = Kept::default();
+    let picture = |members: &[_], levels: &[f64], kept: &mut Kept<_>| {
+        risk(&case, members, design, levels, &|| true, kept)
+            .unwrap()
+            .unwrap()
+    };
+    let coarse = picture(&members[..2], &[0.2, 0.5], &mut kept);
+    assert_eq!(
+        coarse,
+        picture(&members[..2], &[0.2, 0.5], &mut Kept::default())
+    );
+    // Two records at the two levels and the design level.
+    assert_eq!(kept.len(), 6);
+    let levels = [0.1, 0.2, 0.5];
+    let full = picture(&members, &levels, &mut kept);
+    assert_eq!(full, picture(&members, &levels, &mut Kept::default()));
+    assert_eq!(kept.len(), 4 * 4);
+    let more = [0.1, 0.2, 0.35, 0.5];
+    let bridged = picture(&members, &more, &mut kept);
+    assert_eq!(bridged, picture(&members, &more, &mut Kept::default()));
+    assert_eq!(kept.len(), 4 * 5);
+    assert_eq!(bridged.records, 4);
 }

@@ -24,6 +24,19 @@
 //! The runs are those of `pounding ida` and `pounding gap --suite` with the
 //! same buildings, settings and measure: all three plan them by
 //! [`plan_levels`] and run them by [`run_one`].
+//!
+//! **Runs kept from picture to picture** ([`Kept`]). The explorer draws a
+//! coarse picture (a few records at a few levels), then the full one, and
+//! the full one again with bridging levels when its fit needs them
+//! ([`crate::analysis::fragility::bridging_levels`]). With each record
+//! scaled on its own (s_j = x / IM_j, SPEC §12), a record's run at a level
+//! is the same in every pass, so each pass runs only the (level, record)
+//! pairs no earlier pass ran, and each worker keeps its linear maps from
+//! pass to pass (the runs are bit for bit those of fresh caches,
+//! [`crate::solver::buildings::MapCache`]).
+
+use std::collections::HashMap;
+use std::sync::Mutex;
 
 use rayon::prelude::*;
 
@@ -137,19 +150,52 @@ pub struct Focus {
     pub building: usize,
 }
 
-/// The risk picture of the pair (its left building, its one joint).
+/// What pictures of one subject under one suite and measure keep for the
+/// next (module docs): each record's demands at each level it ran, keyed
+/// by the level's bits, the record's place in the suite and its name, and
+/// each worker's caches. Give it only to pictures of the same subject and
+/// scaling whose member lists agree on their common records.
+pub struct Kept<C> {
+    demands: HashMap<(u64, usize, String), Demands>,
+    caches: Vec<Mutex<C>>,
+}
+
+impl<C> Default for Kept<C> {
+    fn default() -> Self {
+        Kept {
+            demands: HashMap::new(),
+            caches: Vec::new(),
+        }
+    }
+}
+
+impl<C> Kept<C> {
+    /// (level, record) runs held.
+    pub fn len(&self) -> usize {
+        self.demands.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.demands.is_empty()
+    }
+}
+
+/// The risk picture of the pair (its left building, its one joint), with
+/// the runs of earlier pictures ([`Kept`]).
 pub fn risk(
     case: &SuiteCase,
     members: &[SuiteMember],
     design_level: f64,
     levels: &[f64],
     keep_going: &dyn Fn() -> bool,
+    kept: &mut Kept<<SuiteCase as Subject>::Caches>,
 ) -> Result<Option<RiskPicture>, SuiteRunError> {
     let focus = Focus {
         joint: 0,
         building: 0,
     };
-    picture(case, focus, members, design_level, levels, keep_going)
+    let range = (design_level, levels);
+    picture_kept(case, focus, members, range, keep_going, kept)
 }
 
 /// What the picture of a row is of: the row, the joint whose pounding it
@@ -181,13 +227,15 @@ impl RowRiskCase {
     }
 }
 
-/// The risk picture of a row, at its joint and building.
+/// The risk picture of a row, at its joint and building, with the runs of
+/// earlier pictures ([`Kept`]).
 pub fn row_risk(
     case: &RowRiskCase,
     members: &[SuiteMember],
     design_level: f64,
     levels: &[f64],
     keep_going: &dyn Fn() -> bool,
+    kept: &mut Kept<<RowSuiteCase as Subject>::Caches>,
 ) -> Result<Option<RiskPicture>, RowSuiteError> {
     let suite = RowSuiteCase {
         row: case.row.clone(),
@@ -201,7 +249,8 @@ pub fn row_risk(
         joint: case.joint,
         building: case.building,
     };
-    picture(&suite, focus, members, design_level, levels, keep_going)
+    let range = (design_level, levels);
+    picture_kept(&suite, focus, members, range, keep_going, kept)
 }
 
 /// Runs every record at every level and at the design level, in parallel
@@ -219,34 +268,73 @@ pub fn picture<S: Subject>(
     levels: &[f64],
     keep_going: &dyn Fn() -> bool,
 ) -> Result<Option<RiskPicture>, S::Error> {
+    let range = (design_level, levels);
+    picture_kept(
+        subject,
+        focus,
+        members,
+        range,
+        keep_going,
+        &mut Kept::default(),
+    )
+}
+
+/// [`picture`] at (design level, levels), running only the (level, record)
+/// pairs that `kept` does not hold, and keeping them there. Where the
+/// records are scaled together (one factor for the suite, SPEC §12) a
+/// record's run depends on the others, and nothing is reused.
+pub fn picture_kept<S: Subject>(
+    subject: &S,
+    focus: Focus,
+    members: &[SuiteMember],
+    (design_level, levels): (f64, &[f64]),
+    keep_going: &dyn Fn() -> bool,
+    kept: &mut Kept<S::Caches>,
+) -> Result<Option<RiskPicture>, S::Error> {
     let (all, design) = with_design_level(levels, design_level);
     let plans = plan_levels(subject, members, &all)?;
+    if subject.scaling().collective {
+        kept.demands.clear();
+    }
+    let key = |l: usize, j: usize| (all[l].to_bits(), j, members[j].name.clone());
     let pairs: Vec<(usize, usize)> = (0..all.len())
         .flat_map(|l| (0..members.len()).map(move |j| (l, j)))
+        .filter(|&(l, j)| !kept.demands.contains_key(&key(l, j)))
         .collect();
+    let workers = rayon::current_num_threads().max(1);
+    if kept.caches.len() < workers {
+        kept.caches
+            .resize_with(workers, || Mutex::new(S::Caches::default()));
+    }
     // A chunk of runs at a time, so that `keep_going` is asked between two
     // chunks on the calling thread (a few milliseconds apart).
-    let chunk = 4 * rayon::current_num_threads().max(1);
-    let mut runs: Vec<Demands> = Vec::with_capacity(pairs.len());
+    let chunk = 4 * workers;
     for part in pairs.chunks(chunk) {
         if !keep_going() {
             return Ok(None);
         }
+        let caches = &kept.caches;
         let done: Vec<Result<Demands, S::Error>> = part
             .par_iter()
-            .map_init(S::Caches::default, |caches, &(l, j)| {
-                run_one(subject, &members[j], &plans[l][j], caches).map(|r| subject.demands(&r))
+            .map(|&(l, j)| {
+                // Only this worker takes its own caches: the lock is never contended.
+                let worker = rayon::current_thread_index().unwrap_or(0) % caches.len();
+                let mut caches = caches[worker].lock().unwrap_or_else(|e| e.into_inner());
+                run_one(subject, &members[j], &plans[l][j], &mut caches)
+                    .map(|r| subject.demands(&r))
             })
             .collect();
-        for run in done {
-            runs.push(run?);
+        for (&(l, j), run) in part.iter().zip(done) {
+            kept.demands.insert(key(l, j), run?);
         }
     }
-    let mut by_level: Vec<Vec<Demands>> = Vec::with_capacity(all.len());
-    for _ in 0..all.len() {
-        let rest = runs.split_off(members.len().min(runs.len()));
-        by_level.push(std::mem::replace(&mut runs, rest));
-    }
+    let by_level: Vec<Vec<Demands>> = (0..all.len())
+        .map(|l| {
+            (0..members.len())
+                .map(|j| kept.demands[&key(l, j)].clone())
+                .collect()
+        })
+        .collect();
     let at_design = &by_level[design];
     let ida_runs = &by_level[..levels.len()];
     let drift = levels

@@ -10,7 +10,7 @@ use std::cell::RefCell;
 
 use super::physical::Base;
 use crate::analysis::fragility::bridging_levels;
-use crate::analysis::risk::{RiskPicture, RowRiskCase, risk, row_risk};
+use crate::analysis::risk::{Kept, RiskPicture, RowRiskCase, risk, row_risk};
 use crate::analysis::suite::{Scaling, SuiteCase};
 use crate::model::buildings::Row;
 use crate::model::buildings::matrices::periods;
@@ -210,17 +210,19 @@ pub fn run_risk(spec: &RiskSpec, current: &dyn Fn() -> bool, send: &dyn Fn(RiskO
         }),
         Some((&members[..], spec.levels.clone(), true)),
     ];
+    // Each pass runs only what the passes before it did not ([`Kept`]).
+    let (mut row_kept, mut pair_kept) = (Kept::default(), Kept::default());
     for (members, levels, full) in passes.into_iter().flatten() {
         if !current() {
             return false;
         }
-        let pass = |levels: &[f64]| {
+        let mut pass = |levels: &[f64]| {
             let design = spec.design_level;
             match &spec.row {
-                Some(row) => {
-                    row_risk(row, members, design, levels, current).map_err(|e| e.to_string())
-                }
-                None => risk(&case, members, design, levels, current).map_err(|e| e.to_string()),
+                Some(row) => row_risk(row, members, design, levels, current, &mut row_kept)
+                    .map_err(|e| e.to_string()),
+                None => risk(&case, members, design, levels, current, &mut pair_kept)
+                    .map_err(|e| e.to_string()),
             }
         };
         let fit = match pass(&levels) {
