@@ -6,11 +6,12 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use crate::accuracy::row_bench::RowBenchRow;
 use crate::model::buildings::matrices::periods;
 use crate::model::buildings::{Ground, Row};
 use crate::model::record::STANDARD_GRAVITY;
 use crate::output::Num;
-use crate::output::report::{Report, float_or_inf};
+use crate::output::report::{Column, Report, column_header, column_rows, float_or_inf};
 use crate::solver::buildings::RowRun;
 
 use super::retrofit_report::{self, BumperReport, LinkReport};
@@ -344,17 +345,7 @@ impl Report for RowReport {
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        let mut header = vec![
-            "building",
-            "floor",
-            "peak_displacement",
-            "peak_velocity",
-            "peak_absolute_acceleration",
-            "peak_drift",
-            "drift_ratio",
-            "ductility",
-            "residual_drift",
-        ];
+        let mut header = column_header(&["building"], FLOOR_COLUMNS);
         if self.is_retrofitted() {
             header.extend(retrofit_report::CSV_COLUMNS);
         }
@@ -362,27 +353,12 @@ impl Report for RowReport {
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
+        let retrofit = retrofit_report::CSV_COLUMNS.len() * usize::from(self.is_retrofitted());
         self.buildings
             .iter()
-            .flat_map(|b| {
-                b.floors.iter().map(|f| {
-                    vec![
-                        b.name.clone(),
-                        f.floor.to_string(),
-                        Num(f.peak_displacement).to_string(),
-                        Num(f.peak_velocity).to_string(),
-                        Num(f.peak_absolute_acceleration).to_string(),
-                        Num(f.peak_drift).to_string(),
-                        Num(f.drift_ratio).to_string(),
-                        Num(f.ductility).to_string(),
-                        Num(f.residual_drift).to_string(),
-                    ]
-                })
-            })
+            .flat_map(|b| column_rows(std::slice::from_ref(&b.name), FLOOR_COLUMNS, &b.floors))
             .map(|mut r| {
-                if self.is_retrofitted() {
-                    r.resize(r.len() + retrofit_report::CSV_COLUMNS.len(), String::new());
-                }
+                r.resize(r.len() + retrofit, String::new());
                 r
             })
             .chain(retrofit_report::csv_rows(&self.bumpers, &self.links, 8))
@@ -390,13 +366,29 @@ impl Report for RowReport {
     }
 }
 
+/// The CSV columns of a floor, after its building's name.
+const FLOOR_COLUMNS: &[Column<FloorReport>] = &[
+    ("floor", |f| f.floor.to_string()),
+    ("peak_displacement", |f| {
+        Num(f.peak_displacement).to_string()
+    }),
+    ("peak_velocity", |f| Num(f.peak_velocity).to_string()),
+    ("peak_absolute_acceleration", |f| {
+        Num(f.peak_absolute_acceleration).to_string()
+    }),
+    ("peak_drift", |f| Num(f.peak_drift).to_string()),
+    ("drift_ratio", |f| Num(f.drift_ratio).to_string()),
+    ("ductility", |f| Num(f.ductility).to_string()),
+    ("residual_drift", |f| Num(f.residual_drift).to_string()),
+];
+
 /// `bench --buildings`: the work-precision rows of one row and ground motion.
 #[derive(Debug, Clone, Serialize)]
 pub struct RowBenchReport {
     pub row: String,
     pub excitation: String,
     pub duration: f64,
-    pub rows: Vec<crate::accuracy::row_bench::RowBenchRow>,
+    pub rows: Vec<RowBenchRow>,
 }
 
 impl Report for RowBenchReport {
@@ -427,31 +419,23 @@ impl Report for RowBenchReport {
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "method",
-            "setting",
-            "error",
-            "acceleration_error",
-            "ms",
-            "impacts",
-            "impacts_match",
-        ]
+        column_header(&[], BENCH_COLUMNS)
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.rows
-            .iter()
-            .map(|r| {
-                vec![
-                    r.method.clone(),
-                    Num(r.setting).to_string(),
-                    Num(r.error).to_string(),
-                    Num(r.acceleration_error).to_string(),
-                    Num(r.ms).to_string(),
-                    r.impacts.to_string(),
-                    r.impacts_match.to_string(),
-                ]
-            })
-            .collect()
+        column_rows(&[], BENCH_COLUMNS, &self.rows)
     }
 }
+
+/// The CSV columns of a row's work-precision row.
+const BENCH_COLUMNS: &[Column<RowBenchRow>] = &[
+    ("method", |r| r.method.clone()),
+    ("setting", |r| Num(r.setting).to_string()),
+    ("error", |r| Num(r.error).to_string()),
+    ("acceleration_error", |r| {
+        Num(r.acceleration_error).to_string()
+    }),
+    ("ms", |r| Num(r.ms).to_string()),
+    ("impacts", |r| r.impacts.to_string()),
+    ("impacts_match", |r| r.impacts_match.to_string()),
+];

@@ -6,7 +6,7 @@
 
 use clap::Args;
 
-use super::CliError;
+use super::{CliError, usage};
 use crate::analysis::record_scaling::{Code, Design, PeriodRange};
 use crate::model::target_spectrum::TargetSpectrum;
 
@@ -25,10 +25,6 @@ pub struct TargetArgs {
     /// With --target: the rule's periods as multiples of T1 [default: 0.2:2.0].
     #[arg(long, value_name = "LO:HI", allow_hyphen_values = true)]
     pub range: Option<String>,
-}
-
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
 }
 
 /// `--period T1`: a period in (0, 10] s.

@@ -11,10 +11,10 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 use serde::Serialize;
 
-use super::CliError;
 use super::design::{TargetArgs, parse_period};
 use super::design_suite::load as members;
 use super::output::{Emit, FormatArg, num, printer, refuse_non_file};
+use super::{CliError, usage};
 use crate::analysis::record_scaling::{
     Binding, Design, FACTOR_BAND, FRACTION, Matching, PeriodRange, RecordMatch, RuleCheck, check,
     scale,
@@ -46,10 +46,6 @@ pub struct ScaleArgs {
     pub output: FormatArg,
 }
 
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
-}
-
 pub fn execute(args: &ScaleArgs) -> Result<(), CliError> {
     report_with(args, printer(args.output.format))
 }
@@ -72,7 +68,7 @@ pub fn scaled(
     let design = args.target.required(parse_period(&args.period)?)?;
     if args.check && args.out.is_some() {
         return Err(usage(
-            "--out: --check writes nothing (the list is checked as it is); drop --out".into(),
+            "--out: --check writes nothing (the list is checked as it is); drop --out",
         ));
     }
     let spec = SuiteSpec::parse(&args.suite).map_err(|e| usage(e.to_string()))?;

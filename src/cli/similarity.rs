@@ -7,13 +7,13 @@ use std::time::Instant;
 
 use clap::Args;
 
-use super::CliError;
 use super::budget::{LongArg, Work};
 use super::description::Provenance;
 use super::output::{FormatArg, num, render};
 use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
 use super::spectrum::SpectrumPlan;
+use super::{CliError, usage};
 use crate::analysis::similarity::{Level, master_curve_spread, study};
 use crate::analysis::spectrum::at_omega;
 use crate::analysis::spectrum_spec::SpectrumSpec;
@@ -52,10 +52,6 @@ pub struct SimilarityArgs {
     pub output: FormatArg,
     #[command(flatten)]
     pub long: LongArg,
-}
-
-fn usage(msg: impl std::fmt::Display) -> CliError {
-    CliError::Usage(msg.to_string())
 }
 
 pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
@@ -132,10 +128,7 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
         (None, None) => physical.omega[1] / physical.omega[0],
         _ => plan.mu,
     };
-    let work = Work {
-        steps: levels.len() as f64 * plan.work()?.steps,
-        rows: 0.0,
-    };
+    let work = Work::steps(levels.len() as f64 * plan.work()?.steps);
     work.check("similarity", args.long.allow_long, true)?;
     let t = Instant::now();
     let result = study(

@@ -9,7 +9,7 @@ use serde::Serialize;
 use super::CliError;
 use super::output::{FormatArg, num, print, render};
 use crate::accuracy::stress::{Outcome, check, corner_cases, random_cases};
-use crate::output::report::Report;
+use crate::output::report::{Column, Report, column_header, column_rows};
 
 #[derive(Debug, Clone, Args)]
 pub struct StressArgs {
@@ -80,44 +80,29 @@ impl Report for StressReport<'_> {
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "case",
-            "passed",
-            "impacts",
-            "steps",
-            "step_retries",
-            "energy_residual",
-            "min_force",
-            "ms",
-            "exact_ms",
-            "exact_energy_residual",
-            "newmark_vs_exact",
-            "why",
-        ]
+        column_header(&[], COLUMNS)
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.cases
-            .iter()
-            .map(|o| {
-                vec![
-                    o.name.clone(),
-                    o.passed.to_string(),
-                    o.impacts.to_string(),
-                    o.steps.to_string(),
-                    o.step_retries.to_string(),
-                    num(o.energy_residual),
-                    num(o.min_force),
-                    num(o.ms),
-                    num(o.exact_ms),
-                    num(o.exact_energy_residual),
-                    num(o.methods_differ_by),
-                    why(o),
-                ]
-            })
-            .collect()
+        column_rows(&[], COLUMNS, self.cases)
     }
 }
+
+/// The CSV columns of a case's outcome.
+const COLUMNS: &[Column<Outcome>] = &[
+    ("case", |o| o.name.clone()),
+    ("passed", |o| o.passed.to_string()),
+    ("impacts", |o| o.impacts.to_string()),
+    ("steps", |o| o.steps.to_string()),
+    ("step_retries", |o| o.step_retries.to_string()),
+    ("energy_residual", |o| num(o.energy_residual)),
+    ("min_force", |o| num(o.min_force)),
+    ("ms", |o| num(o.ms)),
+    ("exact_ms", |o| num(o.exact_ms)),
+    ("exact_energy_residual", |o| num(o.exact_energy_residual)),
+    ("newmark_vs_exact", |o| num(o.methods_differ_by)),
+    ("why", why),
+];
 
 fn why(o: &Outcome) -> String {
     o.failures

@@ -62,6 +62,43 @@ pub fn csv(header: &[&str], rows: &[Vec<String>]) -> String {
     out
 }
 
+/// A CSV column of rows of type `R`: its name in the header, and the cell
+/// a row writes under it. A report lists its columns once, so that the
+/// header and every row come from the same list and cannot drift apart.
+pub type Column<R> = (&'static str, fn(&R) -> String);
+
+/// A CSV header: the columns `head` every row leads with, then the names
+/// of `columns`.
+pub fn column_header<R>(head: &[&'static str], columns: &[Column<R>]) -> Vec<&'static str> {
+    let mut header = head.to_vec();
+    header.extend(columns.iter().map(|(name, _)| *name));
+    header
+}
+
+/// The cells of `row` under `columns`, in order.
+pub fn column_cells<'a, R>(
+    columns: &'a [Column<R>],
+    row: &'a R,
+) -> impl Iterator<Item = String> + 'a {
+    columns.iter().map(move |(_, cell)| cell(row))
+}
+
+/// One CSV row per item of `rows`: the cells `head`, then its own under
+/// `columns` (the rows of [`column_header`]).
+pub fn column_rows<'a, R: 'a>(
+    head: &[String],
+    columns: &[Column<R>],
+    rows: impl IntoIterator<Item = &'a R>,
+) -> Vec<Vec<String>> {
+    let row = |r| {
+        head.iter()
+            .cloned()
+            .chain(column_cells(columns, r))
+            .collect()
+    };
+    rows.into_iter().map(row).collect()
+}
+
 /// A CSV cell: quoted, with quotes doubled, if it holds a comma, quote or line break.
 pub fn csv_cell(cell: &str) -> std::borrow::Cow<'_, str> {
     if cell.contains([',', '"', '\n', '\r']) {
