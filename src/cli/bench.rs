@@ -13,7 +13,7 @@ use crate::accuracy::plot::{Series, render as plot_render};
 use crate::accuracy::record_speed::RecordRow;
 use crate::accuracy::work_precision::{Row, TRUTH_TOLERANCE, meets_target, rows};
 use crate::model::{ContactModel, Preset};
-use crate::output::report::{Column, Report, column_header, column_rows};
+use crate::output::report::{Column, Report, TableColumn, aligned, column_header, column_rows};
 use serde::Serialize;
 
 #[derive(Debug, Clone, Default, Args)]
@@ -382,31 +382,29 @@ fn step_or_tolerance(r: &Row) -> String {
     }
 }
 
+/// The work-precision table's columns of a row, and whether it meets the
+/// target.
+const TABLE: &[TableColumn<Row>] = &[
+    ("preset", -6, |r| r.preset.clone()),
+    ("model", -16, |r| r.model.clone()),
+    ("method", -16, |r| r.method.to_string()),
+    ("dt|tol", 11, step_or_tolerance),
+    ("ms/run", 10, |r| format!("{:.3}", r.ms_per_run)),
+    ("max rel err", 13, |r| format!("{:.3e}", r.max_rel_error)),
+    ("order", 6, |r| opt(r.order, 2)),
+    (
+        " target (err ≤ 1e-5, set1 ≤ 2 ms)",
+        0,
+        |r| match meets_target(r) {
+            Some(true) => " meets".into(),
+            Some(false) => " misses".into(),
+            None => " ".into(),
+        },
+    ),
+];
+
 fn table(rows: &[&Row]) -> String {
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "{:<6} {:<16} {:<16} {:>11} {:>10} {:>13} {:>6}  target (err ≤ 1e-5, set1 ≤ 2 ms)",
-        "preset", "model", "method", "dt|tol", "ms/run", "max rel err", "order"
-    );
-    for r in rows {
-        let target = match meets_target(r) {
-            Some(true) => "meets",
-            Some(false) => "misses",
-            None => "",
-        };
-        let _ = writeln!(
-            s,
-            "{:<6} {:<16} {:<16} {:>11} {:>10.3} {:>13.3e} {:>6}  {target}",
-            r.preset,
-            r.model,
-            r.method,
-            step_or_tolerance(r),
-            r.ms_per_run,
-            r.max_rel_error,
-            opt(r.order, 2)
-        );
-    }
+    let mut s = aligned(TABLE, rows.iter().copied());
     let _ = writeln!(
         s,
         "errors: max over Π_u1, Π_v1, Π_u2, Π_v2 of |p − p_ref|/p_ref, reference = DOPRI5 at tol {:e}; \

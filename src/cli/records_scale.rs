@@ -14,6 +14,7 @@ use serde::Serialize;
 use super::design::{TargetArgs, parse_period};
 use super::design_suite::load as members;
 use super::output::{Emit, FormatArg, num, printer, refuse_non_file};
+use super::study_tables::{clip, name_width};
 use super::{CliError, usage};
 use crate::analysis::record_scaling::{
     Binding, Design, FACTOR_BAND, FRACTION, Matching, PeriodRange, RecordMatch, RuleCheck, check,
@@ -350,13 +351,7 @@ impl Report for ScaleReport<'_> {
             );
         }
         let _ = writeln!(s);
-        let width = self
-            .records
-            .iter()
-            .map(|r| r.matched.record.chars().count())
-            .max()
-            .unwrap_or(6)
-            .clamp(6, 40);
+        let width = name_width(self.records.iter().map(|r| r.matched.record.as_str()));
         let events = self.records.iter().any(|r| r.event.is_some());
         let _ = writeln!(
             s,
@@ -373,7 +368,7 @@ impl Report for ScaleReport<'_> {
             let _ = writeln!(
                 s,
                 "{:<width$} {:>9} {:>10} {:>10} {:>16}{}{}",
-                super::study_tables::clip(&m.record, width),
+                clip(&m.record, width),
                 g4(m.factor),
                 g4(m.least_squares_factor),
                 g4(m.ln_misfit),

@@ -22,7 +22,7 @@ use crate::analysis::spectrum_spec::{SpectrumSpec, check_sweep};
 use crate::analysis::sweep::{Curve, CurveSpec, curve_specs, sweep};
 use crate::model::params::echo;
 use crate::model::{Params, Preset};
-use crate::output::report::Report;
+use crate::output::report::{Report, TableColumn, aligned};
 use serde::Serialize;
 
 #[derive(Debug, Clone, Default, Args)]
@@ -269,6 +269,30 @@ impl<'a> SpectrumReport<'a> {
     }
 }
 
+/// The table's columns of a point: Π_ω1, each peak with pounding beside
+/// the same without (free), the impacts and the left structure's region.
+const POINT_TABLE: &[TableColumn<SpectrumPoint>] = &[
+    ("Π_ω1", 7, |pt| format!("{:.3}", pt.omega1)),
+    ("Π_u1", 9, |pt| format!("{:.4}", pt.left.peak_displacement)),
+    ("free", 9, |pt| {
+        format!("{:.4}", pt.free_left.peak_displacement)
+    }),
+    ("Π_v1", 9, |pt| format!("{:.4}", pt.left.peak_velocity)),
+    ("free", 9, |pt| format!("{:.4}", pt.free_left.peak_velocity)),
+    ("Π_u2", 9, |pt| {
+        format!("{:.4}", pt.right.peak_displacement)
+    }),
+    ("free", 9, |pt| {
+        format!("{:.4}", pt.free_right.peak_displacement)
+    }),
+    ("Π_v2", 9, |pt| format!("{:.4}", pt.right.peak_velocity)),
+    ("free", 9, |pt| {
+        format!("{:.4}", pt.free_right.peak_velocity)
+    }),
+    ("impacts", 7, |pt| pt.impacts.to_string()),
+    (" region", 0, |pt| format!(" {}", pt.region.name())),
+];
+
 impl Report for SpectrumReport<'_> {
     /// Every row is self-contained: the curve's family member (`key=value`,
     /// empty without a family), the Π_ω1 grid, μ and the point's whole
@@ -329,28 +353,7 @@ impl Report for SpectrumReport<'_> {
                 .as_ref()
                 .map_or_else(String::new, |m| format!("{m}, "));
             let _ = writeln!(s, "\n{label}μ = {}   (free = no pounding)", num(c.mu));
-            let _ = writeln!(
-                s,
-                "{:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7}  region",
-                "Π_ω1", "Π_u1", "free", "Π_v1", "free", "Π_u2", "free", "Π_v2", "free", "impacts"
-            );
-            for pt in c.points {
-                let _ = writeln!(
-                    s,
-                    "{:>7.3} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>7}  {}",
-                    pt.omega1,
-                    pt.left.peak_displacement,
-                    pt.free_left.peak_displacement,
-                    pt.left.peak_velocity,
-                    pt.free_left.peak_velocity,
-                    pt.right.peak_displacement,
-                    pt.free_right.peak_displacement,
-                    pt.right.peak_velocity,
-                    pt.free_right.peak_velocity,
-                    pt.impacts,
-                    pt.region.name()
-                );
-            }
+            s.push_str(&aligned(POINT_TABLE, c.points));
             let ranges: Vec<String> = c
                 .regions
                 .iter()

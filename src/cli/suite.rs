@@ -129,12 +129,8 @@ impl SuiteOptions {
             output,
             long,
             allow_unreliable: true,
-            shard: Default::default(),
-            buildings: None,
-            compare: Vec::new(),
-            collective: false,
             design: self.design.clone(),
-            period: None,
+            ..SuiteArgs::default()
         }))
     }
 }

@@ -2,6 +2,8 @@
 //! prints it in the format asked for: JSON from its `Serialize`, a table and
 //! CSV rows from [`Report`]; the CSV and JSON encodings live here only.
 
+use std::fmt::Write as _;
+
 use serde::Serialize;
 
 /// What a command reports, in every format.
@@ -97,6 +99,38 @@ pub fn column_rows<'a, R: 'a>(
             .collect()
     };
     rows.into_iter().map(row).collect()
+}
+
+/// A column of an aligned table of rows of type `R`: its heading, its
+/// width in characters (right-aligned; a negative width left-aligns), and
+/// the cell a row writes. Text after the last column (a verdict, a note)
+/// is a column of width 0 whose heading and cells begin with a space.
+pub type TableColumn<R> = (&'static str, isize, fn(&R) -> String);
+
+/// The line of headings of `columns`, then one line per item of `rows`:
+/// each cell padded to its column's width, one space between columns.
+pub fn aligned<'a, R: 'a>(
+    columns: &[TableColumn<R>],
+    rows: impl IntoIterator<Item = &'a R>,
+) -> String {
+    let mut s = String::new();
+    let mut line = |cell: &dyn Fn(&TableColumn<R>) -> String| {
+        for (i, column) in columns.iter().enumerate() {
+            let (text, width) = (cell(column), column.1.unsigned_abs());
+            let gap = if i > 0 { " " } else { "" };
+            let _ = if column.1 < 0 {
+                write!(s, "{gap}{text:<width$}")
+            } else {
+                write!(s, "{gap}{text:>width$}")
+            };
+        }
+        s.push('\n');
+    };
+    line(&|column| column.0.to_string());
+    for row in rows {
+        line(&|column| (column.2)(row));
+    }
+    s
 }
 
 /// A CSV cell: quoted, with quotes doubled, if it holds a comma, quote or line break.
