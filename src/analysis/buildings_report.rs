@@ -11,7 +11,9 @@ use crate::model::buildings::matrices::periods;
 use crate::model::buildings::{Ground, Row};
 use crate::model::record::STANDARD_GRAVITY;
 use crate::output::Num;
-use crate::output::report::{Column, Report, column_header, column_rows, float_or_inf};
+use crate::output::report::{
+    Column, Report, TableColumn, aligned, column_header, column_rows, float_or_inf,
+};
 use crate::solver::buildings::RowRun;
 
 use super::retrofit_report::{self, BumperReport, LinkReport};
@@ -242,6 +244,34 @@ impl RowReport {
     }
 }
 
+/// The table's columns of a floor, top floor first: peaks in mm, m/s and
+/// g, the drift ratio in %.
+const FLOOR_TABLE: &[TableColumn<FloorReport>] = &[
+    ("floor", 5, |f| f.floor.to_string()),
+    ("u mm", 9, |f| format!("{:.2}", f.peak_displacement * 1e3)),
+    ("v m/s", 8, |f| format!("{:.3}", f.peak_velocity)),
+    ("A g", 8, |f| format!("{:.3}", f.peak_absolute_acceleration)),
+    ("drift mm", 9, |f| format!("{:.2}", f.peak_drift * 1e3)),
+    ("drift %", 9, |f| format!("{:.3}", f.drift_ratio * 100.0)),
+    ("μ", 8, |f| format!("{:.3}", f.ductility)),
+    ("resid mm", 9, |f| format!("{:.2}", f.residual_drift * 1e3)),
+];
+
+/// The table's columns of a floor pair.
+const PAIR_TABLE: &[TableColumn<PairReport>] = &[
+    ("pair", -28, |p| {
+        format!(
+            "{} {} – {} {}",
+            p.left, p.left_floor, p.right, p.right_floor
+        )
+    }),
+    ("impacts", 7, |p| p.impacts.to_string()),
+    ("max force kN", 13, |p| format!("{:.0}", p.max_force)),
+    ("penetration mm", 15, |p| {
+        format!("{:.3}", p.max_penetration * 1e3)
+    }),
+];
+
 impl Report for RowReport {
     fn table(&self) -> String {
         let mut s = String::new();
@@ -265,43 +295,11 @@ impl Report for RowReport {
                 let list: Vec<String> = theta.iter().map(|x| format!("{x:.3}")).collect();
                 let _ = writeln!(s, "P-Δ: θ = P/(k h) by storey {}", list.join(", "));
             }
-            let _ = writeln!(
-                s,
-                "floor      u mm    v m/s      A g  drift mm   drift %        μ  resid mm"
-            );
-            for f in b.floors.iter().rev() {
-                let _ = writeln!(
-                    s,
-                    "{:5} {:9.2} {:8.3} {:8.3} {:9.2} {:9.3} {:8.3} {:9.2}",
-                    f.floor,
-                    f.peak_displacement * 1e3,
-                    f.peak_velocity,
-                    f.peak_absolute_acceleration,
-                    f.peak_drift * 1e3,
-                    f.drift_ratio * 100.0,
-                    f.ductility,
-                    f.residual_drift * 1e3
-                );
-            }
+            s.push_str(&aligned(FLOOR_TABLE, b.floors.iter().rev()));
         }
         if !self.pairs.is_empty() {
-            let _ = writeln!(
-                s,
-                "\npair                         impacts  max force kN  penetration mm"
-            );
-            for p in &self.pairs {
-                let name = format!(
-                    "{} {} – {} {}",
-                    p.left, p.left_floor, p.right, p.right_floor
-                );
-                let _ = writeln!(
-                    s,
-                    "{name:28} {:7} {:13.0} {:15.3}",
-                    p.impacts,
-                    p.max_force,
-                    p.max_penetration * 1e3
-                );
-            }
+            s.push('\n');
+            s.push_str(&aligned(PAIR_TABLE, &self.pairs));
         }
         s.push_str(&retrofit_report::table(&self.bumpers, &self.links));
         if let Some(e) = &self.energy {
@@ -393,29 +391,11 @@ pub struct RowBenchReport {
 
 impl Report for RowBenchReport {
     fn table(&self) -> String {
-        let mut s = format!(
+        let s = format!(
             "{}: {} excitation, {:.3} s; error = largest peak difference (|u|, |u̇|, |Δ|) from the reference, relative per building; accel = the same for |ü + ü_g|\n",
             self.row, self.excitation, self.duration
         );
-        s += "method        setting       error       accel        ms  impacts  counts match\n";
-        for r in &self.rows {
-            let _ = writeln!(
-                s,
-                "{:10} {:>10} {:11.3e} {:11.3e} {:9.3} {:8}  {}",
-                r.method,
-                if r.setting > 0.0 {
-                    format!("{:e}", r.setting)
-                } else {
-                    "-".into()
-                },
-                r.error,
-                r.acceleration_error,
-                r.ms,
-                r.impacts,
-                if r.impacts_match { "yes" } else { "no" }
-            );
-        }
-        s
+        s + &aligned(BENCH_TABLE, &self.rows)
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
@@ -426,6 +406,28 @@ impl Report for RowBenchReport {
         column_rows(&[], BENCH_COLUMNS, &self.rows)
     }
 }
+
+/// A flag as the text after a table's last column: ` yes` or ` no`.
+pub fn yes_no(flag: bool) -> String {
+    if flag { " yes" } else { " no" }.into()
+}
+
+/// The table's columns of a row's work-precision row.
+const BENCH_TABLE: &[TableColumn<RowBenchRow>] = &[
+    ("method", -10, |r| r.method.clone()),
+    ("setting", 10, |r| {
+        if r.setting > 0.0 {
+            format!("{:e}", r.setting)
+        } else {
+            "-".into()
+        }
+    }),
+    ("error", 11, |r| format!("{:.3e}", r.error)),
+    ("accel", 11, |r| format!("{:.3e}", r.acceleration_error)),
+    ("ms", 9, |r| format!("{:.3}", r.ms)),
+    ("impacts", 8, |r| r.impacts.to_string()),
+    (" counts match", 0, |r| yes_no(r.impacts_match)),
+];
 
 /// The CSV columns of a row's work-precision row.
 const BENCH_COLUMNS: &[Column<RowBenchRow>] = &[

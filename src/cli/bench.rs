@@ -199,39 +199,16 @@ struct RecordSpeedReport {
 
 impl Report for RecordSpeedReport {
     fn table(&self) -> String {
-        let mut s = format!(
-            "{} under {} ({} intervals): exact method against the Nigam–Jennings floor ({} ms)\n\
-             {:<24} {:<6} {:>10} {:>10} {:>9} {:>7} {:>8} {:>11}\n",
+        let s = format!(
+            "{} under {} ({} intervals): exact method against the Nigam–Jennings floor ({} ms)\n",
             self.preset,
             self.excitation,
             self.rows.first().map_or(0, |r| r.intervals),
             self.rows
                 .first()
                 .map_or(String::new(), |r| format!("{:.4}", r.floor_ms)),
-            "case",
-            "run",
-            "series ms",
-            "ms",
-            "ns/intvl",
-            "×floor",
-            "impacts",
-            "Δpeaks",
         );
-        for r in &self.rows {
-            let _ = writeln!(
-                s,
-                "{:<24} {:<6} {:>10.4} {:>10.4} {:>9.1} {:>7.2} {:>8} {:>11.1e}",
-                r.case,
-                r.run,
-                r.series_ms,
-                r.ms,
-                r.ns_per_interval,
-                r.ratio,
-                r.impacts,
-                r.peak_difference
-            );
-        }
-        s
+        s + &aligned(RECORD_TABLE, &self.rows)
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
@@ -243,6 +220,18 @@ impl Report for RecordSpeedReport {
         column_rows(&head, RECORD_COLUMNS, &self.rows)
     }
 }
+
+/// The table's columns of a case of `bench --excitation`.
+const RECORD_TABLE: &[TableColumn<RecordRow>] = &[
+    ("case", -24, |r| r.case.to_string()),
+    ("run", -6, |r| r.run.to_string()),
+    ("series ms", 10, |r| format!("{:.4}", r.series_ms)),
+    ("ms", 10, |r| format!("{:.4}", r.ms)),
+    ("ns/intvl", 9, |r| format!("{:.1}", r.ns_per_interval)),
+    ("×floor", 7, |r| format!("{:.2}", r.ratio)),
+    ("impacts", 8, |r| r.impacts.to_string()),
+    ("Δpeaks", 11, |r| format!("{:.1e}", r.peak_difference)),
+];
 
 /// The CSV columns of a case of `bench --excitation`, after the preset and
 /// the excitation.
