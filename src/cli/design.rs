@@ -91,11 +91,11 @@ impl TargetArgs {
         };
         let range = match &self.range {
             None => PeriodRange::default(),
-            Some(r) => PeriodRange::parse(r).map_err(|e| usage(e.to_string()))?,
+            Some(r) => PeriodRange::parse(r).map_err(usage)?,
         };
         Design::new(target, code, period, range)
             .map(Some)
-            .map_err(|e| usage(e.to_string()))
+            .map_err(usage)
     }
 
     /// [`TargetArgs::design`] with `--target` required.

@@ -92,11 +92,11 @@ pub fn load(suite: &str) -> Result<Vec<SuiteMember>, CliError> {
     let Some(scaled) = ScaledSuite::parse(suite) else {
         return SuiteSpec::parse(suite)
             .and_then(|s| s.load())
-            .map_err(|e| usage(e.to_string()));
+            .map_err(usage);
     };
     let design = scaled.design()?;
     let members = load(&scaled.base)?;
-    let matching = scale(&design, &members).map_err(|e| usage(e.to_string()))?;
+    let matching = scale(&design, &members).map_err(usage)?;
     if !matching.check.holds {
         // The study runs, as asked; what the rule misses is said once.
         eprintln!(

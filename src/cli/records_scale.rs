@@ -72,7 +72,7 @@ pub fn scaled(
             "--out: --check writes nothing (the list is checked as it is); drop --out",
         ));
     }
-    let spec = SuiteSpec::parse(&args.suite).map_err(|e| usage(e.to_string()))?;
+    let spec = SuiteSpec::parse(&args.suite).map_err(usage)?;
     if let (Some(out), SuiteSpec::Synthetic { count, seed }) = (&args.out, &spec) {
         return Err(usage(format!(
             "--out {}: the records of synthetic:{count}@{seed} are made in memory, a list cannot \
@@ -87,7 +87,7 @@ pub fn scaled(
     } else {
         scale(&design, &members)
     }
-    .map_err(|e| usage(e.to_string()))?;
+    .map_err(usage)?;
     if let Some(out) = &args.out {
         let text = list_text(
             out,

@@ -108,7 +108,7 @@ pub fn report_with(
         max_scale,
         per_event,
     };
-    let selection = select(&design, &candidates, limits).map_err(|e| usage(e.to_string()))?;
+    let selection = select(&design, &candidates, limits).map_err(usage)?;
     if let Some(out) = &args.out {
         let text = list_text(
             out,
