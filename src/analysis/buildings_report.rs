@@ -12,7 +12,7 @@ use crate::model::buildings::{Ground, Row};
 use crate::model::record::STANDARD_GRAVITY;
 use crate::output::Num;
 use crate::output::report::{
-    Column, Report, TableColumn, aligned, column_header, column_rows, float_or_inf,
+    Column, Report, TableColumn, aligned, column_header, column_rows, float_or_inf, yes_no,
 };
 use crate::solver::buildings::RowRun;
 
@@ -405,11 +405,6 @@ impl Report for RowBenchReport {
     fn csv_rows(&self) -> Vec<Vec<String>> {
         column_rows(&[], BENCH_COLUMNS, &self.rows)
     }
-}
-
-/// A flag as the text after a table's last column: ` yes` or ` no`.
-pub fn yes_no(flag: bool) -> String {
-    if flag { " yes" } else { " no" }.into()
 }
 
 /// The table's columns of a row's work-precision row.

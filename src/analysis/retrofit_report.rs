@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use crate::model::buildings::Row;
 use crate::output::Num;
-use crate::output::report::{TableColumn, aligned};
+use crate::output::report::{TableColumn, aligned, yes_no};
 use crate::solver::buildings::RowRun;
 
 #[derive(Debug, Clone, Serialize)]
@@ -99,9 +99,7 @@ const BUMPER_TABLE: &[TableColumn<BumperReport>] = &[
     ("compression mm", 15, |b| {
         format!("{:.3}", b.max_compression * 1e3)
     }),
-    (" bottomed out", 0, |b| {
-        super::buildings_report::yes_no(b.bottomed_out)
-    }),
+    (" bottomed out", 0, |b| yes_no(b.bottomed_out)),
 ];
 
 /// The table's columns of a link (stroke in mm).

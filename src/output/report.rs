@@ -133,6 +133,11 @@ pub fn aligned<'a, R: 'a>(
     s
 }
 
+/// A flag as the text after a table's last column: ` yes` or ` no`.
+pub fn yes_no(flag: bool) -> String {
+    if flag { " yes" } else { " no" }.into()
+}
+
 /// A CSV cell: quoted, with quotes doubled, if it holds a comma, quote or line break.
 pub fn csv_cell(cell: &str) -> std::borrow::Cow<'_, str> {
     if cell.contains([',', '"', '\n', '\r']) {
