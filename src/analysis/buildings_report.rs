@@ -6,11 +6,14 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use crate::accuracy::row_bench::RowBenchRow;
 use crate::model::buildings::matrices::periods;
 use crate::model::buildings::{Ground, Row};
 use crate::model::record::STANDARD_GRAVITY;
 use crate::output::Num;
-use crate::output::report::{Report, float_or_inf};
+use crate::output::report::{
+    Column, Report, TableColumn, aligned, column_header, column_rows, float_or_inf, yes_no,
+};
 use crate::solver::buildings::RowRun;
 
 use super::retrofit_report::{self, BumperReport, LinkReport};
@@ -241,6 +244,34 @@ impl RowReport {
     }
 }
 
+/// The table's columns of a floor, top floor first: peaks in mm, m/s and
+/// g, the drift ratio in %.
+const FLOOR_TABLE: &[TableColumn<FloorReport>] = &[
+    ("floor", 5, |f| f.floor.to_string()),
+    ("u mm", 9, |f| format!("{:.2}", f.peak_displacement * 1e3)),
+    ("v m/s", 8, |f| format!("{:.3}", f.peak_velocity)),
+    ("A g", 8, |f| format!("{:.3}", f.peak_absolute_acceleration)),
+    ("drift mm", 9, |f| format!("{:.2}", f.peak_drift * 1e3)),
+    ("drift %", 9, |f| format!("{:.3}", f.drift_ratio * 100.0)),
+    ("μ", 8, |f| format!("{:.3}", f.ductility)),
+    ("resid mm", 9, |f| format!("{:.2}", f.residual_drift * 1e3)),
+];
+
+/// The table's columns of a floor pair.
+const PAIR_TABLE: &[TableColumn<PairReport>] = &[
+    ("pair", -28, |p| {
+        format!(
+            "{} {} – {} {}",
+            p.left, p.left_floor, p.right, p.right_floor
+        )
+    }),
+    ("impacts", 7, |p| p.impacts.to_string()),
+    ("max force kN", 13, |p| format!("{:.0}", p.max_force)),
+    ("penetration mm", 15, |p| {
+        format!("{:.3}", p.max_penetration * 1e3)
+    }),
+];
+
 impl Report for RowReport {
     fn table(&self) -> String {
         let mut s = String::new();
@@ -264,43 +295,11 @@ impl Report for RowReport {
                 let list: Vec<String> = theta.iter().map(|x| format!("{x:.3}")).collect();
                 let _ = writeln!(s, "P-Δ: θ = P/(k h) by storey {}", list.join(", "));
             }
-            let _ = writeln!(
-                s,
-                "floor      u mm    v m/s      A g  drift mm   drift %        μ  resid mm"
-            );
-            for f in b.floors.iter().rev() {
-                let _ = writeln!(
-                    s,
-                    "{:5} {:9.2} {:8.3} {:8.3} {:9.2} {:9.3} {:8.3} {:9.2}",
-                    f.floor,
-                    f.peak_displacement * 1e3,
-                    f.peak_velocity,
-                    f.peak_absolute_acceleration,
-                    f.peak_drift * 1e3,
-                    f.drift_ratio * 100.0,
-                    f.ductility,
-                    f.residual_drift * 1e3
-                );
-            }
+            s.push_str(&aligned(FLOOR_TABLE, b.floors.iter().rev()));
         }
         if !self.pairs.is_empty() {
-            let _ = writeln!(
-                s,
-                "\npair                         impacts  max force kN  penetration mm"
-            );
-            for p in &self.pairs {
-                let name = format!(
-                    "{} {} – {} {}",
-                    p.left, p.left_floor, p.right, p.right_floor
-                );
-                let _ = writeln!(
-                    s,
-                    "{name:28} {:7} {:13.0} {:15.3}",
-                    p.impacts,
-                    p.max_force,
-                    p.max_penetration * 1e3
-                );
-            }
+            s.push('\n');
+            s.push_str(&aligned(PAIR_TABLE, &self.pairs));
         }
         s.push_str(&retrofit_report::table(&self.bumpers, &self.links));
         if let Some(e) = &self.energy {
@@ -344,17 +343,7 @@ impl Report for RowReport {
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        let mut header = vec![
-            "building",
-            "floor",
-            "peak_displacement",
-            "peak_velocity",
-            "peak_absolute_acceleration",
-            "peak_drift",
-            "drift_ratio",
-            "ductility",
-            "residual_drift",
-        ];
+        let mut header = column_header(&["building"], FLOOR_COLUMNS);
         if self.is_retrofitted() {
             header.extend(retrofit_report::CSV_COLUMNS);
         }
@@ -362,27 +351,12 @@ impl Report for RowReport {
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
+        let retrofit = retrofit_report::CSV_COLUMNS.len() * usize::from(self.is_retrofitted());
         self.buildings
             .iter()
-            .flat_map(|b| {
-                b.floors.iter().map(|f| {
-                    vec![
-                        b.name.clone(),
-                        f.floor.to_string(),
-                        Num(f.peak_displacement).to_string(),
-                        Num(f.peak_velocity).to_string(),
-                        Num(f.peak_absolute_acceleration).to_string(),
-                        Num(f.peak_drift).to_string(),
-                        Num(f.drift_ratio).to_string(),
-                        Num(f.ductility).to_string(),
-                        Num(f.residual_drift).to_string(),
-                    ]
-                })
-            })
+            .flat_map(|b| column_rows(std::slice::from_ref(&b.name), FLOOR_COLUMNS, &b.floors))
             .map(|mut r| {
-                if self.is_retrofitted() {
-                    r.resize(r.len() + retrofit_report::CSV_COLUMNS.len(), String::new());
-                }
+                r.resize(r.len() + retrofit, String::new());
                 r
             })
             .chain(retrofit_report::csv_rows(&self.bumpers, &self.links, 8))
@@ -390,68 +364,75 @@ impl Report for RowReport {
     }
 }
 
+/// The CSV columns of a floor, after its building's name.
+const FLOOR_COLUMNS: &[Column<FloorReport>] = &[
+    ("floor", |f| f.floor.to_string()),
+    ("peak_displacement", |f| {
+        Num(f.peak_displacement).to_string()
+    }),
+    ("peak_velocity", |f| Num(f.peak_velocity).to_string()),
+    ("peak_absolute_acceleration", |f| {
+        Num(f.peak_absolute_acceleration).to_string()
+    }),
+    ("peak_drift", |f| Num(f.peak_drift).to_string()),
+    ("drift_ratio", |f| Num(f.drift_ratio).to_string()),
+    ("ductility", |f| Num(f.ductility).to_string()),
+    ("residual_drift", |f| Num(f.residual_drift).to_string()),
+];
+
 /// `bench --buildings`: the work-precision rows of one row and ground motion.
 #[derive(Debug, Clone, Serialize)]
 pub struct RowBenchReport {
     pub row: String,
     pub excitation: String,
     pub duration: f64,
-    pub rows: Vec<crate::accuracy::row_bench::RowBenchRow>,
+    pub rows: Vec<RowBenchRow>,
 }
 
 impl Report for RowBenchReport {
     fn table(&self) -> String {
-        let mut s = format!(
+        let s = format!(
             "{}: {} excitation, {:.3} s; error = largest peak difference (|u|, |u̇|, |Δ|) from the reference, relative per building; accel = the same for |ü + ü_g|\n",
             self.row, self.excitation, self.duration
         );
-        s += "method        setting       error       accel        ms  impacts  counts match\n";
-        for r in &self.rows {
-            let _ = writeln!(
-                s,
-                "{:10} {:>10} {:11.3e} {:11.3e} {:9.3} {:8}  {}",
-                r.method,
-                if r.setting > 0.0 {
-                    format!("{:e}", r.setting)
-                } else {
-                    "-".into()
-                },
-                r.error,
-                r.acceleration_error,
-                r.ms,
-                r.impacts,
-                if r.impacts_match { "yes" } else { "no" }
-            );
-        }
-        s
+        s + &aligned(BENCH_TABLE, &self.rows)
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "method",
-            "setting",
-            "error",
-            "acceleration_error",
-            "ms",
-            "impacts",
-            "impacts_match",
-        ]
+        column_header(&[], BENCH_COLUMNS)
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.rows
-            .iter()
-            .map(|r| {
-                vec![
-                    r.method.clone(),
-                    Num(r.setting).to_string(),
-                    Num(r.error).to_string(),
-                    Num(r.acceleration_error).to_string(),
-                    Num(r.ms).to_string(),
-                    r.impacts.to_string(),
-                    r.impacts_match.to_string(),
-                ]
-            })
-            .collect()
+        column_rows(&[], BENCH_COLUMNS, &self.rows)
     }
 }
+
+/// The table's columns of a row's work-precision row.
+const BENCH_TABLE: &[TableColumn<RowBenchRow>] = &[
+    ("method", -10, |r| r.method.clone()),
+    ("setting", 10, |r| {
+        if r.setting > 0.0 {
+            format!("{:e}", r.setting)
+        } else {
+            "-".into()
+        }
+    }),
+    ("error", 11, |r| format!("{:.3e}", r.error)),
+    ("accel", 11, |r| format!("{:.3e}", r.acceleration_error)),
+    ("ms", 9, |r| format!("{:.3}", r.ms)),
+    ("impacts", 8, |r| r.impacts.to_string()),
+    (" counts match", 0, |r| yes_no(r.impacts_match)),
+];
+
+/// The CSV columns of a row's work-precision row.
+const BENCH_COLUMNS: &[Column<RowBenchRow>] = &[
+    ("method", |r| r.method.clone()),
+    ("setting", |r| Num(r.setting).to_string()),
+    ("error", |r| Num(r.error).to_string()),
+    ("acceleration_error", |r| {
+        Num(r.acceleration_error).to_string()
+    }),
+    ("ms", |r| Num(r.ms).to_string()),
+    ("impacts", |r| r.impacts.to_string()),
+    ("impacts_match", |r| r.impacts_match.to_string()),
+];

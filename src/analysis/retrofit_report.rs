@@ -4,12 +4,11 @@
 //! its peak |F| (kN), stroke (m), peak |Δv| (m/s) and the energy its
 //! dashpot dissipated (kJ). A row without retrofits reports none of these.
 
-use std::fmt::Write as _;
-
 use serde::Serialize;
 
 use crate::model::buildings::Row;
 use crate::output::Num;
+use crate::output::report::{TableColumn, aligned, yes_no};
 use crate::solver::buildings::RowRun;
 
 #[derive(Debug, Clone, Serialize)]
@@ -83,43 +82,35 @@ pub fn of(row: &Row, run: &RowRun) -> (Vec<BumperReport>, Vec<LinkReport>) {
 pub fn table(bumpers: &[BumperReport], links: &[LinkReport]) -> String {
     let mut s = String::new();
     if !bumpers.is_empty() {
-        let _ = writeln!(
-            s,
-            "\nbumper                      t mm  contacts  max force kN  compression mm  bottomed out"
-        );
-        for b in bumpers {
-            let _ = writeln!(
-                s,
-                "{:24} {:7.1} {:9} {:13.0} {:15.3}  {}",
-                b.floors,
-                b.thickness * 1e3,
-                b.contacts,
-                b.max_force_kn,
-                b.max_compression * 1e3,
-                if b.bottomed_out { "yes" } else { "no" }
-            );
-        }
+        s = s + "\n" + &aligned(BUMPER_TABLE, bumpers);
     }
     if !links.is_empty() {
-        let _ = writeln!(
-            s,
-            "\nlink    floors                    max |F| kN  stroke mm  max |Δv| m/s  energy kJ"
-        );
-        for l in links {
-            let _ = writeln!(
-                s,
-                "{:7} {:24} {:11.1} {:10.2} {:13.4} {:10.3}",
-                l.name,
-                l.floors,
-                l.max_force_kn,
-                l.stroke * 1e3,
-                l.max_rate,
-                l.energy_kj
-            );
-        }
+        s = s + "\n" + &aligned(LINK_TABLE, links);
     }
     s
 }
+
+/// The table's columns of a bumper element (thickness and compression in mm).
+const BUMPER_TABLE: &[TableColumn<BumperReport>] = &[
+    ("bumper", -24, |b| b.floors.clone()),
+    ("t mm", 7, |b| format!("{:.1}", b.thickness * 1e3)),
+    ("contacts", 9, |b| b.contacts.to_string()),
+    ("max force kN", 13, |b| format!("{:.0}", b.max_force_kn)),
+    ("compression mm", 15, |b| {
+        format!("{:.3}", b.max_compression * 1e3)
+    }),
+    (" bottomed out", 0, |b| yes_no(b.bottomed_out)),
+];
+
+/// The table's columns of a link (stroke in mm).
+const LINK_TABLE: &[TableColumn<LinkReport>] = &[
+    ("link", -7, |l| l.name.clone()),
+    ("floors", -24, |l| l.floors.clone()),
+    ("max |F| kN", 11, |l| format!("{:.1}", l.max_force_kn)),
+    ("stroke mm", 10, |l| format!("{:.2}", l.stroke * 1e3)),
+    ("max |Δv| m/s", 13, |l| format!("{:.4}", l.max_rate)),
+    ("energy kJ", 10, |l| format!("{:.3}", l.energy_kj)),
+];
 
 /// The CSV columns the retrofits add after the floors' (a row with a
 /// retrofit only): one row per bumper and per link, its floor pair in

@@ -6,13 +6,14 @@ use std::fmt::Write as _;
 use clap::Args;
 
 use super::CliError;
-use super::output::{Format, FormatArg, num, render};
+use super::output::{Format, FormatArg, num, optional, render};
 use super::params::user_preset_dir;
 use crate::accuracy::figure_spectra::SpectraAccuracy;
 use crate::accuracy::plot::{Series, render as plot_render};
-use crate::accuracy::work_precision::{Row, meets_target, rows};
+use crate::accuracy::record_speed::RecordRow;
+use crate::accuracy::work_precision::{Row, TRUTH_TOLERANCE, meets_target, rows};
 use crate::model::{ContactModel, Preset};
-use crate::output::report::Report;
+use crate::output::report::{Column, Report, TableColumn, aligned, column_header, column_rows};
 use serde::Serialize;
 
 #[derive(Debug, Clone, Default, Args)]
@@ -107,7 +108,7 @@ pub fn execute(args: &BenchArgs) -> Result<(), CliError> {
     let report = BenchReport {
         version: env!("CARGO_PKG_VERSION"),
         units: "ms_per_run in milliseconds of wall time; dt, tolerance, max_rel_error and order dimensionless",
-        truth_tolerance: crate::accuracy::work_precision::TRUTH_TOLERANCE,
+        truth_tolerance: TRUTH_TOLERANCE,
         rows: all,
     };
     let mut text = render(&report, args.output.format)?;
@@ -193,85 +194,59 @@ struct RecordSpeedReport {
     preset: String,
     excitation: String,
     units: &'static str,
-    rows: Vec<crate::accuracy::record_speed::RecordRow>,
+    rows: Vec<RecordRow>,
 }
 
 impl Report for RecordSpeedReport {
     fn table(&self) -> String {
-        let mut s = format!(
-            "{} under {} ({} intervals): exact method against the Nigam–Jennings floor ({} ms)\n\
-             {:<24} {:<6} {:>10} {:>10} {:>9} {:>7} {:>8} {:>11}\n",
+        let s = format!(
+            "{} under {} ({} intervals): exact method against the Nigam–Jennings floor ({} ms)\n",
             self.preset,
             self.excitation,
             self.rows.first().map_or(0, |r| r.intervals),
             self.rows
                 .first()
                 .map_or(String::new(), |r| format!("{:.4}", r.floor_ms)),
-            "case",
-            "run",
-            "series ms",
-            "ms",
-            "ns/intvl",
-            "×floor",
-            "impacts",
-            "Δpeaks",
         );
-        for r in &self.rows {
-            let _ = writeln!(
-                s,
-                "{:<24} {:<6} {:>10.4} {:>10.4} {:>9.1} {:>7.2} {:>8} {:>11.1e}",
-                r.case,
-                r.run,
-                r.series_ms,
-                r.ms,
-                r.ns_per_interval,
-                r.ratio,
-                r.impacts,
-                r.peak_difference
-            );
-        }
-        s
+        s + &aligned(RECORD_TABLE, &self.rows)
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "preset",
-            "excitation",
-            "case",
-            "run",
-            "intervals",
-            "series_ms",
-            "ms",
-            "ns_per_interval",
-            "floor_ms",
-            "ratio",
-            "impacts",
-            "peak_difference",
-        ]
+        column_header(&["preset", "excitation"], RECORD_COLUMNS)
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.rows
-            .iter()
-            .map(|r| {
-                vec![
-                    self.preset.clone(),
-                    self.excitation.clone(),
-                    r.case.to_string(),
-                    r.run.to_string(),
-                    r.intervals.to_string(),
-                    num(r.series_ms),
-                    num(r.ms),
-                    num(r.ns_per_interval),
-                    num(r.floor_ms),
-                    num(r.ratio),
-                    r.impacts.to_string(),
-                    num(r.peak_difference),
-                ]
-            })
-            .collect()
+        let head = [self.preset.clone(), self.excitation.clone()];
+        column_rows(&head, RECORD_COLUMNS, &self.rows)
     }
 }
+
+/// The table's columns of a case of `bench --excitation`.
+const RECORD_TABLE: &[TableColumn<RecordRow>] = &[
+    ("case", -24, |r| r.case.to_string()),
+    ("run", -6, |r| r.run.to_string()),
+    ("series ms", 10, |r| format!("{:.4}", r.series_ms)),
+    ("ms", 10, |r| format!("{:.4}", r.ms)),
+    ("ns/intvl", 9, |r| format!("{:.1}", r.ns_per_interval)),
+    ("×floor", 7, |r| format!("{:.2}", r.ratio)),
+    ("impacts", 8, |r| r.impacts.to_string()),
+    ("Δpeaks", 11, |r| format!("{:.1e}", r.peak_difference)),
+];
+
+/// The CSV columns of a case of `bench --excitation`, after the preset and
+/// the excitation.
+const RECORD_COLUMNS: &[Column<RecordRow>] = &[
+    ("case", |r| r.case.to_string()),
+    ("run", |r| r.run.to_string()),
+    ("intervals", |r| r.intervals.to_string()),
+    ("series_ms", |r| num(r.series_ms)),
+    ("ms", |r| num(r.ms)),
+    ("ns_per_interval", |r| num(r.ns_per_interval)),
+    ("floor_ms", |r| num(r.floor_ms)),
+    ("ratio", |r| num(r.ratio)),
+    ("impacts", |r| r.impacts.to_string()),
+    ("peak_difference", |r| num(r.peak_difference)),
+];
 
 /// The work-precision table in every format.
 #[derive(Debug, Serialize)]
@@ -289,39 +264,26 @@ impl Report for BenchReport<'_> {
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "preset",
-            "model",
-            "method",
-            "dt",
-            "tolerance",
-            "ms_per_run",
-            "max_rel_error",
-            "order",
-            "truth_tolerance",
-        ]
+        column_header(&[], BENCH_COLUMNS)
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        let cell = |v: Option<f64>| v.map(num).unwrap_or_default();
-        self.rows
-            .iter()
-            .map(|r| {
-                vec![
-                    r.preset.clone(),
-                    r.model.clone(),
-                    r.method.to_string(),
-                    cell(r.dt),
-                    cell(r.tolerance),
-                    num(r.ms_per_run),
-                    num(r.max_rel_error),
-                    cell(r.order),
-                    num(self.truth_tolerance),
-                ]
-            })
-            .collect()
+        column_rows(&[], BENCH_COLUMNS, self.rows.iter().copied())
     }
 }
+
+/// The CSV columns of a work-precision row.
+const BENCH_COLUMNS: &[Column<Row>] = &[
+    ("preset", |r| r.preset.clone()),
+    ("model", |r| r.model.clone()),
+    ("method", |r| r.method.to_string()),
+    ("dt", |r| optional(r.dt)),
+    ("tolerance", |r| optional(r.tolerance)),
+    ("ms_per_run", |r| num(r.ms_per_run)),
+    ("max_rel_error", |r| num(r.max_rel_error)),
+    ("order", |r| optional(r.order)),
+    ("truth_tolerance", |_| num(TRUTH_TOLERANCE)),
+];
 
 /// One method's accuracy over the ten curves, and their wall time.
 #[derive(Debug, Serialize)]
@@ -373,37 +335,29 @@ impl Report for SpectraReport {
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "method",
-            "runs",
-            "max_rel_error",
-            "above_1e_7",
-            "impact_count_mismatches",
-            "wall_s_ten_curves",
-            "reference_tolerance",
-            "worst",
-        ]
+        column_header(&[], SPECTRA_COLUMNS)
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.methods
-            .iter()
-            .map(|r| {
-                let a = &r.accuracy;
-                vec![
-                    a.method.name().to_string(),
-                    a.runs.to_string(),
-                    num(a.max_rel_error),
-                    a.above_1e_7.to_string(),
-                    a.impact_count_mismatches.to_string(),
-                    num(r.wall_s_ten_curves),
-                    num(self.reference_tolerance),
-                    a.worst.clone(),
-                ]
-            })
-            .collect()
+        column_rows(&[], SPECTRA_COLUMNS, &self.methods)
     }
 }
+
+/// The CSV columns of a method of `bench --spectra`.
+const SPECTRA_COLUMNS: &[Column<SpectraRow>] = &[
+    ("method", |r| r.accuracy.method.name().to_string()),
+    ("runs", |r| r.accuracy.runs.to_string()),
+    ("max_rel_error", |r| num(r.accuracy.max_rel_error)),
+    ("above_1e_7", |r| r.accuracy.above_1e_7.to_string()),
+    ("impact_count_mismatches", |r| {
+        r.accuracy.impact_count_mismatches.to_string()
+    }),
+    ("wall_s_ten_curves", |r| num(r.wall_s_ten_curves)),
+    ("reference_tolerance", |_| {
+        num(crate::accuracy::figure_spectra::REFERENCE_TOLERANCE)
+    }),
+    ("worst", |r| r.accuracy.worst.clone()),
+];
 
 fn opt(v: Option<f64>, digits: usize) -> String {
     v.map_or("-".into(), |v| format!("{v:.digits$}"))
@@ -417,37 +371,35 @@ fn step_or_tolerance(r: &Row) -> String {
     }
 }
 
+/// The work-precision table's columns of a row, and whether it meets the
+/// target.
+const TABLE: &[TableColumn<Row>] = &[
+    ("preset", -6, |r| r.preset.clone()),
+    ("model", -16, |r| r.model.clone()),
+    ("method", -16, |r| r.method.to_string()),
+    ("dt|tol", 11, step_or_tolerance),
+    ("ms/run", 10, |r| format!("{:.3}", r.ms_per_run)),
+    ("max rel err", 13, |r| format!("{:.3e}", r.max_rel_error)),
+    ("order", 6, |r| opt(r.order, 2)),
+    (
+        " target (err ≤ 1e-5, set1 ≤ 2 ms)",
+        0,
+        |r| match meets_target(r) {
+            Some(true) => " meets".into(),
+            Some(false) => " misses".into(),
+            None => " ".into(),
+        },
+    ),
+];
+
 fn table(rows: &[&Row]) -> String {
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "{:<6} {:<16} {:<16} {:>11} {:>10} {:>13} {:>6}  target (err ≤ 1e-5, set1 ≤ 2 ms)",
-        "preset", "model", "method", "dt|tol", "ms/run", "max rel err", "order"
-    );
-    for r in rows {
-        let target = match meets_target(r) {
-            Some(true) => "meets",
-            Some(false) => "misses",
-            None => "",
-        };
-        let _ = writeln!(
-            s,
-            "{:<6} {:<16} {:<16} {:>11} {:>10.3} {:>13.3e} {:>6}  {target}",
-            r.preset,
-            r.model,
-            r.method,
-            step_or_tolerance(r),
-            r.ms_per_run,
-            r.max_rel_error,
-            opt(r.order, 2)
-        );
-    }
+    let mut s = aligned(TABLE, rows.iter().copied());
     let _ = writeln!(
         s,
         "errors: max over Π_u1, Π_v1, Π_u2, Π_v2 of |p − p_ref|/p_ref, reference = DOPRI5 at tol {:e}; \
          times: median of repeated runs in one process after a warm-up; \
          each run finds the four peaks and the impacts (exact: no energy integrals, no force or penetration extremes)",
-        crate::accuracy::work_precision::TRUTH_TOLERANCE
+        TRUTH_TOLERANCE
     );
     s
 }

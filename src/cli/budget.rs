@@ -51,7 +51,7 @@ pub fn steps_per_tau(p: &Params) -> f64 {
     run_steps(p) / p.tau_end()
 }
 
-/// The estimated cost of a request.
+/// The estimated cost of a request; the cost of several is their sum.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Work {
     /// Newmark steps over all runs.
@@ -61,6 +61,11 @@ pub struct Work {
 }
 
 impl Work {
+    /// The work of `steps` Newmark steps, writing no history.
+    pub fn steps(steps: f64) -> Work {
+        Work { steps, rows: 0.0 }
+    }
+
     /// Estimated wall time in seconds.
     pub fn seconds(&self) -> f64 {
         self.steps * SECONDS_PER_STEP + self.rows * SECONDS_PER_ROW
@@ -94,6 +99,15 @@ impl Work {
             )));
         }
         Ok(())
+    }
+}
+
+impl std::iter::Sum for Work {
+    fn sum<I: Iterator<Item = Work>>(works: I) -> Work {
+        works.fold(Work::default(), |sum, w| Work {
+            steps: sum.steps + w.steps,
+            rows: sum.rows + w.rows,
+        })
     }
 }
 
@@ -141,10 +155,7 @@ mod tests {
 
     #[test]
     fn limits_need_their_flags() {
-        let long = Work {
-            steps: 1e14,
-            rows: 0.0,
-        };
+        let long = Work::steps(1e14);
         let e = long.check("run", false, false).unwrap_err().to_string();
         assert!(e.contains("--allow-long") && e.contains("35 days"), "{e}");
         assert!(long.check("run", true, false).is_ok());
@@ -155,10 +166,7 @@ mod tests {
         let e = large.check("run", false, false).unwrap_err().to_string();
         assert!(e.contains("--allow-large") && e.contains("26 GB"), "{e}");
         assert!(large.check("run", false, true).is_ok());
-        let nan = Work {
-            steps: f64::NAN,
-            rows: 0.0,
-        };
+        let nan = Work::steps(f64::NAN);
         assert!(nan.check("run", false, true).is_err());
     }
 

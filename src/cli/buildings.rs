@@ -5,10 +5,10 @@ use std::time::Instant;
 
 use clap::Args;
 
-use super::CliError;
 use super::budget::{SECONDS_PER_STEP, Work};
 use super::output::{Emit, FormatArg, print, render};
 use super::params::ParamArgs;
+use super::{CliError, usage};
 use crate::accuracy::timing::median;
 use crate::analysis::buildings_report::RowReport;
 use crate::analysis::work;
@@ -79,13 +79,13 @@ impl BuildingsArgs {
         if let Some(m) = model {
             sets.push(format!("model=\"{m}\""));
         }
-        let row = load_with(name, &sets).map_err(|e| CliError::Usage(e.to_string()))?;
+        let row = load_with(name, &sets).map_err(usage)?;
         if newmark {
             return Ok(row);
         }
         RowError::unsolved_damper(&row).map_err(|e| {
             let file = text_of(name).map_or_else(|_| name.to_string(), |(file, _)| file);
-            CliError::Usage(format!("{file}: {e}"))
+            usage(format!("{file}: {e}"))
         })?;
         Ok(row)
     }
@@ -103,9 +103,7 @@ impl BuildingsArgs {
     /// `synthetic:N` or `record:PATH`, scaled by `scale`.
     fn record(&self, spec: &str, scale: f64) -> Result<Ground, CliError> {
         let record = match spec.strip_prefix("record:") {
-            Some(path) => {
-                crate::model::record::read(path).map_err(|e| CliError::Usage(e.to_string()))?
-            }
+            Some(path) => crate::model::record::read(path).map_err(usage)?,
             None => synthetic(spec)?,
         };
         Ok(Ground::from_record(&record, scale))
@@ -120,21 +118,19 @@ impl BuildingsArgs {
     ) -> Result<(Ground, String, f64), CliError> {
         let scale = self.scale.unwrap_or(1.0);
         if !scale.is_finite() {
-            return Err(CliError::Usage(format!(
-                "--scale {scale}: must be a finite number"
-            )));
+            return Err(usage(format!("--scale {scale}: must be a finite number")));
         }
         let amplitude = match &self.amplitude {
             None => 0.3 * crate::model::record::STANDARD_GRAVITY,
             Some(a) => parse_acceleration(a).ok_or_else(|| {
-                CliError::Usage(format!(
+                usage(format!(
                     "--amplitude `{a}`: must be a number > 0 in m/s², or with a g suffix (0.3g)"
                 ))
             })?,
         } * scale;
         let period = self.period.unwrap_or(1.0);
         if !(period > 0.0 && period.is_finite()) {
-            return Err(CliError::Usage(format!(
+            return Err(usage(format!(
                 "--period {period}: must be a finite number > 0 (s)"
             )));
         }
@@ -149,20 +145,20 @@ impl BuildingsArgs {
                         .ok()
                         .filter(|c| *c > 0.0 && c.is_finite())
                         .ok_or_else(|| {
-                            CliError::Usage(format!("--cycles `{c}`: must be a finite number > 0"))
+                            usage(format!("--cycles `{c}`: must be a finite number > 0"))
                         })?,
                 };
                 Ground::sine(amplitude, omega, cycles * period)
             }
             _ if cycles.is_some() => {
-                return Err(CliError::Usage(format!(
+                return Err(usage(format!(
                     "--cycles `{}`: only a sine on a row takes cycles; a row under {name} runs for the motion and then --tail seconds",
                     cycles.unwrap_or_default()
                 )));
             }
             spec if spec.starts_with("synthetic:") || spec.starts_with("record:") => {
                 if let Some((key, value)) = self.shape() {
-                    return Err(CliError::Usage(format!(
+                    return Err(usage(format!(
                         "{key} `{value}`: a record on a row is used in its own units; only a sine or a pulse takes --amplitude and --period (scale a record with --scale)"
                     )));
                 }
@@ -171,7 +167,7 @@ impl BuildingsArgs {
             other => match Excitation::parse(other) {
                 Ok(Excitation::Pulse(pulse)) => Ground::from_pulse(pulse, amplitude, omega),
                 _ => {
-                    return Err(CliError::Usage(format!(
+                    return Err(usage(format!(
                         "--excitation `{other}`: rows take sine, pulse-a, pulse-b, pulse-c1, pulse-c2, synthetic:N or record:PATH"
                     )));
                 }
@@ -179,7 +175,7 @@ impl BuildingsArgs {
         };
         let tail = self.tail.unwrap_or_else(|| default_tail(row));
         if !(tail >= 0.0 && tail.is_finite()) {
-            return Err(CliError::Usage(format!(
+            return Err(usage(format!(
                 "--tail {tail}: must be a finite number ≥ 0 (s)"
             )));
         }
@@ -214,8 +210,7 @@ pub fn bench(
         21.0 * exact + 1.875 * newmark,
         allow_long,
     )?;
-    let rows = crate::accuracy::row_bench::row_bench(&row, &ground, duration)
-        .map_err(|e| CliError::Usage(e.to_string()))?;
+    let rows = crate::accuracy::row_bench::row_bench(&row, &ground, duration).map_err(usage)?;
     let report = crate::analysis::buildings_report::RowBenchReport {
         row: row.name.clone(),
         excitation: name,
@@ -242,12 +237,12 @@ fn newmark_step(
         .ok()
         .filter(|d| *d > 0.0 && d.is_finite())
         .ok_or_else(|| {
-            CliError::Usage(format!(
+            usage(format!(
                 "--dt `{text}`: rows take a step in seconds, a finite number > 0"
             ))
         })?;
     if dt > most {
-        return Err(CliError::Usage(format!(
+        return Err(usage(format!(
             "--dt `{text}`: must be <= {} s on this row ({why})",
             crate::model::params::echo::g4(most)
         )));
@@ -260,11 +255,7 @@ fn newmark_step(
 /// [`work::row_seconds`], so that a long tail or a tiny Newmark step
 /// is a clear error rather than a wait without end.
 fn bounded(what: &str, seconds: f64, allow_long: bool) -> Result<(), CliError> {
-    Work {
-        steps: seconds / SECONDS_PER_STEP,
-        rows: 0.0,
-    }
-    .check(what, allow_long, true)
+    Work::steps(seconds / SECONDS_PER_STEP).check(what, allow_long, true)
 }
 
 /// `pounding run --buildings`.
@@ -356,7 +347,7 @@ pub fn gap(
 /// contact itself: one line saying why.
 fn refuse_no_pounding(command: &str, params: &ParamArgs, why: &str) -> Result<(), CliError> {
     if params.no_pounding {
-        return Err(CliError::Usage(format!(
+        return Err(usage(format!(
             "--no-pounding: not with {command} --buildings ({why}); drop --no-pounding"
         )));
     }
@@ -377,13 +368,12 @@ pub fn figure(
         params,
         "it draws the row with and without pounding",
     )?;
-    let out =
-        out.ok_or_else(|| CliError::Usage("figure buildings needs --out F.svg or F.png".into()))?;
+    let out = out.ok_or_else(|| usage("figure buildings needs --out F.svg or F.png"))?;
     let format = match out.extension().and_then(|e| e.to_str()) {
         Some("svg") => Format::Svg,
         Some("png") => Format::Png,
         _ => {
-            return Err(CliError::Usage(format!(
+            return Err(usage(format!(
                 "--out {}: must end in .svg or .png",
                 out.display()
             )));

@@ -6,7 +6,7 @@
 
 use clap::Args;
 
-use super::CliError;
+use super::{CliError, usage};
 use crate::analysis::record_scaling::{Code, Design, PeriodRange};
 use crate::model::target_spectrum::TargetSpectrum;
 
@@ -25,10 +25,6 @@ pub struct TargetArgs {
     /// With --target: the rule's periods as multiples of T1 [default: 0.2:2.0].
     #[arg(long, value_name = "LO:HI", allow_hyphen_values = true)]
     pub range: Option<String>,
-}
-
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
 }
 
 /// `--period T1`: a period in (0, 10] s.
@@ -95,11 +91,11 @@ impl TargetArgs {
         };
         let range = match &self.range {
             None => PeriodRange::default(),
-            Some(r) => PeriodRange::parse(r).map_err(|e| usage(e.to_string()))?,
+            Some(r) => PeriodRange::parse(r).map_err(usage)?,
         };
         Design::new(target, code, period, range)
             .map(Some)
-            .map_err(|e| usage(e.to_string()))
+            .map_err(usage)
     }
 
     /// [`TargetArgs::design`] with `--target` required.

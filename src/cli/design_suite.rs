@@ -19,17 +19,13 @@
 //! T1 is `--period`, or else the pair's left T1 (a preset's `[physical]`
 //! table) or the row's longest first-mode period, and the name says which.
 
-use super::CliError;
 use super::design::{PeriodSource, TargetArgs, parse_period};
 use super::params::ParamArgs;
+use super::{CliError, usage};
 use crate::analysis::record_scaling::{Design, scale};
 use crate::model::buildings::Row;
 use crate::model::buildings::matrices::periods;
 use crate::model::suite::{SuiteMember, SuiteSpec};
-
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
-}
 
 /// The words between a suite and its target in a scaled suite's name.
 const SCALED_TO: &str = " scaled to ";
@@ -96,11 +92,11 @@ pub fn load(suite: &str) -> Result<Vec<SuiteMember>, CliError> {
     let Some(scaled) = ScaledSuite::parse(suite) else {
         return SuiteSpec::parse(suite)
             .and_then(|s| s.load())
-            .map_err(|e| usage(e.to_string()));
+            .map_err(usage);
     };
     let design = scaled.design()?;
     let members = load(&scaled.base)?;
-    let matching = scale(&design, &members).map_err(|e| usage(e.to_string()))?;
+    let matching = scale(&design, &members).map_err(usage)?;
     if !matching.check.holds {
         // The study runs, as asked; what the rule misses is said once.
         eprintln!(
@@ -137,7 +133,7 @@ pub fn scaled_name(
         }
         if period.is_some() {
             return Err(usage(
-                "--period: applies with --target TARGET (the records' T1)".into(),
+                "--period: applies with --target TARGET (the records' T1)",
             ));
         }
         return Ok(None);

@@ -9,18 +9,18 @@ use std::time::Instant;
 use clap::Args;
 use serde::Serialize;
 
-use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
 use super::description::{DIMENSIONLESS, Provenance, RecordNumbers};
 use super::map::{AxisReport, resolve_mu};
-use super::output::{Emit, FormatArg, num, printer};
+use super::output::{Emit, FormatArg, num, optional, printer};
 use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
 use super::progress::Progress;
+use super::{CliError, usage};
 use crate::analysis::gap::{MinimumGap, free_params, minimum_gap, minimum_gaps};
 use crate::analysis::map::{Axis, line};
 use crate::model::{Method, Params};
-use crate::output::report::Report;
+use crate::output::report::{Column, Report, column_cells, column_header};
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct GapArgs {
@@ -81,7 +81,7 @@ pub fn report_with(
         .into_iter()
         .find(|(_, given)| *given)
         {
-            return Err(CliError::Usage(format!(
+            return Err(usage(format!(
                 "{flag}: not with --buildings and --suite (each record is scaled by --level \
                  or its list, and runs four fundamental periods past its end); drop {flag}"
             )));
@@ -118,19 +118,16 @@ pub fn report_with(
         .as_deref()
         .map(|t| Axis::parse("--x", t))
         .transpose()
-        .map_err(|e| CliError::Usage(e.to_string()))?;
+        .map_err(usage)?;
     let mu = match &axis {
         Some(_) => Some(resolve_mu(&preset, &p, args.mu.as_deref())?),
         None => None,
     };
     let points: Vec<(f64, Params)> = match (&axis, mu) {
-        (Some(a), Some(mu)) => line(&p, mu, a).map_err(|e| CliError::Usage(e.to_string()))?,
+        (Some(a), Some(mu)) => line(&p, mu, a).map_err(usage)?,
         _ => vec![(f64::NAN, p.clone())],
     };
-    let work = Work {
-        steps: points.len() as f64 * run_steps(&p),
-        rows: 0.0,
-    };
+    let work = Work::steps(points.len() as f64 * run_steps(&p));
     work.check("gap", args.long.allow_long, true)?;
     let progress = Progress::start(&work);
     let t = Instant::now();
@@ -349,50 +346,18 @@ impl<'a> GapReport<'a> {
 
 impl Report for GapReport<'_> {
     fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = Provenance::CSV_COLUMNS.to_vec();
-        h.extend(param_columns());
-        h.extend([
-            "free_left_peak_displacement",
-            "free_right_peak_displacement",
-            "min_gap",
-            "absolute_sum",
-            "srss",
-            "double_difference",
-            "correlation",
-            "ratio_absolute_sum",
-            "ratio_srss",
-            "ratio_double_difference",
-            "pounds_at_set_gap",
-            "completed",
-        ]);
-        h
+        let head = [&Provenance::CSV_COLUMNS[..], &param_columns()].concat();
+        column_header(&head, POINT_COLUMNS)
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.points
-            .iter()
-            .map(|pt| {
-                let g = &pt.gap;
-                let mut row = self.provenance.csv_cells();
-                row.extend(param_cells(&pt.params));
-                row.extend(
-                    [
-                        g.free_left.peak_displacement,
-                        g.free_right.peak_displacement,
-                        g.exact,
-                        g.rules.absolute_sum,
-                        g.rules.srss,
-                        g.rules.double_difference,
-                        g.rules.correlation,
-                    ]
-                    .map(num),
-                );
-                row.extend(g.ratios().map(|r| r.map(num).unwrap_or_default()));
-                row.push(pt.pounds_at_set_gap.to_string());
-                row.push(g.completed.to_string());
-                row
-            })
-            .collect()
+        let row = |pt: &GapPoint| {
+            let mut row = self.provenance.csv_cells();
+            row.extend(param_cells(&pt.params));
+            row.extend(column_cells(POINT_COLUMNS, pt));
+            row
+        };
+        self.points.iter().map(row).collect()
     }
 
     fn table(&self) -> String {
@@ -408,3 +373,27 @@ impl Report for GapReport<'_> {
         s
     }
 }
+
+/// The CSV columns of a point, after its parameter set.
+const POINT_COLUMNS: &[Column<GapPoint>] = &[
+    ("free_left_peak_displacement", |pt| {
+        num(pt.gap.free_left.peak_displacement)
+    }),
+    ("free_right_peak_displacement", |pt| {
+        num(pt.gap.free_right.peak_displacement)
+    }),
+    ("min_gap", |pt| num(pt.gap.exact)),
+    ("absolute_sum", |pt| num(pt.gap.rules.absolute_sum)),
+    ("srss", |pt| num(pt.gap.rules.srss)),
+    ("double_difference", |pt| {
+        num(pt.gap.rules.double_difference)
+    }),
+    ("correlation", |pt| num(pt.gap.rules.correlation)),
+    ("ratio_absolute_sum", |pt| optional(pt.ratio_absolute_sum)),
+    ("ratio_srss", |pt| optional(pt.ratio_srss)),
+    ("ratio_double_difference", |pt| {
+        optional(pt.ratio_double_difference)
+    }),
+    ("pounds_at_set_gap", |pt| pt.pounds_at_set_gap.to_string()),
+    ("completed", |pt| pt.gap.completed.to_string()),
+];

@@ -5,7 +5,7 @@
 
 use clap::Args;
 
-use super::CliError;
+use super::{CliError, usage};
 use crate::analysis::limit_state::{LimitParser, LimitState, LimitStateError, ROW_ONLY};
 use crate::model::buildings::Row;
 
@@ -64,10 +64,6 @@ impl RowLimitArgs {
     }
 }
 
-fn usage(e: LimitStateError) -> CliError {
-    CliError::Usage(e.to_string())
-}
-
 /// The limit states the flags ask of the pair (`row` none) or of `row`:
 /// pounding first (of `--building` on a row), then with `--collapse` each
 /// P-Δ building's collapse, then `--ductility` or `--drift`,
@@ -94,7 +90,7 @@ pub fn limit_states(
     if let (Some(row), true) = (row, row_limits.collapse) {
         let collapses = parser.collapses(row);
         if collapses.is_empty() {
-            return Err(CliError::Usage(format!(
+            return Err(usage(format!(
                 "--collapse: no building of `{}` has P-Δ (`p_delta = true`): a building without it \
                  keeps a restoring force after yielding (α ≥ 0) and cannot collapse",
                 row.name

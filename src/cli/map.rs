@@ -9,18 +9,20 @@ use std::time::Instant;
 use clap::Args;
 use serde::Serialize;
 
-use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
 use super::description::{Description, Provenance};
-use super::output::{Emit, FormatArg, PEAK_COLUMNS, num, param_cells, param_columns, printer};
+use super::output::{
+    Emit, FormatArg, PEAK_COLUMNS, num, optional, param_cells, param_columns, printer,
+};
 use super::params::ParamArgs;
 use super::progress::Progress;
+use super::{CliError, usage};
 use crate::analysis::map::{Axis, MapCache, MapCell, MapPlan, compute_rows, row_regions};
 use crate::analysis::spectrum::{REGION_THRESHOLD, Region};
 use crate::analysis::spectrum_spec::{SpectrumSpec, mu_from_text};
 use crate::model::params::echo;
 use crate::model::{Params, Preset};
-use crate::output::report::Report;
+use crate::output::report::{Column, Report, column_cells, column_header};
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct MapArgs {
@@ -85,15 +87,11 @@ pub fn report_with(
         };
     }
     let (preset, p) = args.params.resolve_for_many()?;
-    let usage = |e: crate::analysis::map::MapError| CliError::Usage(e.to_string());
     let x = Axis::parse("--x", &args.x).map_err(usage)?;
     let y = Axis::parse("--y", &args.y).map_err(usage)?;
     let mu = resolve_mu(&preset, &p, args.mu.as_deref())?;
     let plan = MapPlan::new(p.clone(), mu, x, y).map_err(usage)?;
-    let work = Work {
-        steps: 2.0 * plan.cells() as f64 * run_steps(&p),
-        rows: 0.0,
-    };
+    let work = Work::steps(2.0 * plan.cells() as f64 * run_steps(&p));
     work.check("map", args.long.allow_long, true)?;
     let progress = Progress::start(&work);
     let t = Instant::now();
@@ -229,49 +227,42 @@ fn mark(c: &MapCell) -> char {
     }
 }
 
-/// The columns after the eight peaks ([`PEAK_COLUMNS`]).
-const RESULT_COLUMNS: [&str; 10] = [
-    "left_amplification",
-    "right_amplification",
-    "region",
-    "impacts",
-    "max_force",
-    "min_force",
-    "min_gap",
-    "left_yielded",
-    "right_yielded",
-    "completed",
+/// The columns of a cell's results, after its parameter set and the eight
+/// peaks ([`PEAK_COLUMNS`]).
+const CELL_COLUMNS: &[Column<MapCell>] = &[
+    ("left_amplification", |c| num(c.left_amplification)),
+    ("right_amplification", |c| num(c.right_amplification)),
+    ("region", |c| c.region.name().to_string()),
+    ("impacts", |c| c.impacts.to_string()),
+    ("max_force", |c| num(c.max_force)),
+    ("min_force", |c| num(c.min_force)),
+    ("min_gap", |c| optional(c.min_gap)),
+    ("left_yielded", |c| c.left.yielded.to_string()),
+    ("right_yielded", |c| c.right.yielded.to_string()),
+    ("completed", |c| c.completed.to_string()),
 ];
 
 impl Report for MapReport<'_> {
     /// Every row carries the cell's whole parameter set, μ and its results.
     fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = Provenance::CSV_COLUMNS.to_vec();
-        h.extend(param_columns());
-        h.extend(PEAK_COLUMNS);
-        h.extend(RESULT_COLUMNS);
-        h
+        let head = [
+            &Provenance::CSV_COLUMNS[..],
+            &param_columns(),
+            &PEAK_COLUMNS,
+        ]
+        .concat();
+        column_header(&head, CELL_COLUMNS)
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.cells
-            .iter()
-            .map(|c| {
-                let mut row = self.description.provenance.csv_cells();
-                row.extend(param_cells(&self.plan.at(c.x, c.y)));
-                row.extend(c.peaks().map(num));
-                row.extend([c.left_amplification, c.right_amplification].map(num));
-                row.push(c.region.name().to_string());
-                row.push(c.impacts.to_string());
-                row.push(num(c.max_force));
-                row.push(num(c.min_force));
-                row.push(c.min_gap.map(num).unwrap_or_default());
-                row.push(c.left.yielded.to_string());
-                row.push(c.right.yielded.to_string());
-                row.push(c.completed.to_string());
-                row
-            })
-            .collect()
+        let row = |c: &MapCell| {
+            let mut row = self.description.provenance.csv_cells();
+            row.extend(param_cells(&self.plan.at(c.x, c.y)));
+            row.extend(c.peaks().map(num));
+            row.extend(column_cells(CELL_COLUMNS, c));
+            row
+        };
+        self.cells.iter().map(row).collect()
     }
 
     fn table(&self) -> String {

@@ -76,19 +76,11 @@ pub fn run_cells<S: MapSubject + CliSubject>(
     let Some(first) = cells.first().map(|c| &c.2) else {
         return Ok(Some((Vec::new(), 0.0)));
     };
-    let work = cells.iter().zip(&plans).fold(
-        Work {
-            steps: 0.0,
-            rows: 0.0,
-        },
-        |sum, ((_, _, s), p)| {
-            let w = s.work_of(members, std::slice::from_ref(p));
-            Work {
-                steps: sum.steps + w.steps,
-                rows: sum.rows + w.rows,
-            }
-        },
-    );
+    let work: Work = cells
+        .iter()
+        .zip(&plans)
+        .map(|((_, _, s), p)| s.work_of(members, std::slice::from_ref(p)))
+        .sum();
     first.check(&work, "map --suite", args.long.allow_long)?;
     let sharded = super::shard::suite::map_cells(
         &args.shard,

@@ -18,7 +18,7 @@ use std::sync::Arc;
 use clap::{Args, Parser};
 
 use super::output::Format;
-use super::{Cli, CliError, Command, shard};
+use super::{Cli, CliError, Command, shard, usage};
 use crate::analysis::shard::{Part, merge};
 
 #[derive(Debug, Clone, Args)]
@@ -38,7 +38,7 @@ pub fn execute(args: &MergeArgs) -> Result<(), CliError> {
     let parts: Vec<Part> = args
         .parts
         .iter()
-        .map(|p| Part::read(p).map_err(|e| CliError::Usage(e.to_string())))
+        .map(|p| Part::read(p).map_err(usage))
         .collect::<Result<_, _>>()?;
     let parts = Arc::new(merge::check(parts).map_err(CliError::Usage)?);
     let first = &parts[0].header;
@@ -59,7 +59,7 @@ pub fn execute(args: &MergeArgs) -> Result<(), CliError> {
     let argv =
         std::iter::once(OsString::from("pounding")).chain(first.args.iter().map(OsString::from));
     let cli = Cli::try_parse_from(argv).map_err(|e| {
-        CliError::Usage(format!(
+        usage(format!(
             "merge: {}: its command line does not read here: {}",
             parts[0].name,
             e.render().to_string().lines().next().unwrap_or("")
@@ -126,7 +126,7 @@ fn replay(
             set(&mut a.suite.output.format);
             super::ida::execute(&a)
         }
-        _ => Err(CliError::Usage(format!(
+        _ => Err(usage(format!(
             "merge: {}: parts of `{}` cannot be merged",
             parts[0].name, parts[0].header.command
         ))),

@@ -60,6 +60,11 @@ pub enum CliError {
     BrokenPipe,
 }
 
+/// Bad input (exit code 2), its message `message`.
+pub fn usage(message: impl std::fmt::Display) -> CliError {
+    CliError::Usage(message.to_string())
+}
+
 impl CliError {
     pub fn exit_code(&self) -> i32 {
         match self {

@@ -86,6 +86,11 @@ pub fn num(v: f64) -> String {
     Num(v).to_string()
 }
 
+/// A cell that may be empty: the number, or nothing.
+pub fn optional(v: Option<f64>) -> String {
+    v.map(num).unwrap_or_default()
+}
+
 /// CSV columns naming a whole parameter set: μ, then every key of the table.
 /// The columns of the eight peaks with and without pounding, in the order
 /// of [`crate::analysis::spectrum::eight_peaks`].

@@ -9,8 +9,8 @@ use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
 
-use super::CliError;
 use super::output::{print, refuse_non_file};
+use super::{CliError, usage};
 use crate::model::simulated::{self, Filter, MAX_COUNT, Simulation, SimulationError};
 use crate::model::suite::{LIST_FILE, SuiteMember};
 use crate::output::{shown, write_file};
@@ -129,13 +129,13 @@ pub fn synthetic_record(name: &str, n: &str) -> Result<crate::model::record::Rec
         .parse()
         .ok()
         .filter(|&n| n >= 11)
-        .ok_or_else(|| CliError::Usage(format!("synthetic:N needs N ≥ 11, not `{n}`")))?;
-    Simulation::synthetic(name, samples).map_err(|e| CliError::Usage(e.to_string()))
+        .ok_or_else(|| usage(format!("synthetic:N needs N ≥ 11, not `{n}`")))?;
+    Simulation::synthetic(name, samples).map_err(usage)
 }
 
 /// A parameter out of range, named by its flag: `--zeta-g -1: must be in (0, 5]`.
 fn flag_error(e: SimulationError) -> CliError {
-    CliError::Usage(format!(
+    usage(format!(
         "--{} {}: must be {}",
         e.key.replace('_', "-"),
         e.value,
@@ -145,7 +145,7 @@ fn flag_error(e: SimulationError) -> CliError {
 
 fn execute_synth(args: &SynthArgs) -> Result<(), CliError> {
     if !(1..=MAX_COUNT).contains(&args.count) {
-        return Err(CliError::Usage(format!(
+        return Err(usage(format!(
             "--count {}: must be in [1, {MAX_COUNT}]",
             args.count
         )));
@@ -155,13 +155,10 @@ fn execute_synth(args: &SynthArgs) -> Result<(), CliError> {
     match std::fs::metadata(dir) {
         Ok(m) if m.is_dir() => {}
         Ok(_) => {
-            return Err(CliError::Usage(format!(
-                "--out {}: not a directory",
-                shown(dir)
-            )));
+            return Err(usage(format!("--out {}: not a directory", shown(dir))));
         }
         Err(e) => {
-            return Err(CliError::Usage(format!(
+            return Err(usage(format!(
                 "--out {}: {} (the directory must exist)",
                 shown(dir),
                 crate::output::reason(&e)

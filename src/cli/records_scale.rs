@@ -11,10 +11,11 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 use serde::Serialize;
 
-use super::CliError;
 use super::design::{TargetArgs, parse_period};
 use super::design_suite::load as members;
 use super::output::{Emit, FormatArg, num, printer, refuse_non_file};
+use super::study_tables::{clip, name_width};
+use super::{CliError, usage};
 use crate::analysis::record_scaling::{
     Binding, Design, FACTOR_BAND, FRACTION, Matching, PeriodRange, RecordMatch, RuleCheck, check,
     scale,
@@ -46,10 +47,6 @@ pub struct ScaleArgs {
     pub output: FormatArg,
 }
 
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
-}
-
 pub fn execute(args: &ScaleArgs) -> Result<(), CliError> {
     report_with(args, printer(args.output.format))
 }
@@ -72,10 +69,10 @@ pub fn scaled(
     let design = args.target.required(parse_period(&args.period)?)?;
     if args.check && args.out.is_some() {
         return Err(usage(
-            "--out: --check writes nothing (the list is checked as it is); drop --out".into(),
+            "--out: --check writes nothing (the list is checked as it is); drop --out",
         ));
     }
-    let spec = SuiteSpec::parse(&args.suite).map_err(|e| usage(e.to_string()))?;
+    let spec = SuiteSpec::parse(&args.suite).map_err(usage)?;
     if let (Some(out), SuiteSpec::Synthetic { count, seed }) = (&args.out, &spec) {
         return Err(usage(format!(
             "--out {}: the records of synthetic:{count}@{seed} are made in memory, a list cannot \
@@ -90,7 +87,7 @@ pub fn scaled(
     } else {
         scale(&design, &members)
     }
-    .map_err(|e| usage(e.to_string()))?;
+    .map_err(usage)?;
     if let Some(out) = &args.out {
         let text = list_text(
             out,
@@ -354,13 +351,7 @@ impl Report for ScaleReport<'_> {
             );
         }
         let _ = writeln!(s);
-        let width = self
-            .records
-            .iter()
-            .map(|r| r.matched.record.chars().count())
-            .max()
-            .unwrap_or(6)
-            .clamp(6, 40);
+        let width = name_width(self.records.iter().map(|r| r.matched.record.as_str()));
         let events = self.records.iter().any(|r| r.event.is_some());
         let _ = writeln!(
             s,
@@ -377,7 +368,7 @@ impl Report for ScaleReport<'_> {
             let _ = writeln!(
                 s,
                 "{:<width$} {:>9} {:>10} {:>10} {:>16}{}{}",
-                super::study_tables::clip(&m.record, width),
+                clip(&m.record, width),
                 g4(m.factor),
                 g4(m.least_squares_factor),
                 g4(m.ln_misfit),

@@ -7,10 +7,10 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use super::CliError;
 use super::design::{TargetArgs, parse_period};
 use super::output::{Emit, FormatArg, printer};
 use super::records_scale::{ScaleReport, list_text, verdict, write_list};
+use super::{CliError, usage};
 use crate::analysis::record_selection::{Candidate, Limits, select};
 use crate::model::record::event;
 use crate::model::suite::SuiteSpec;
@@ -40,10 +40,6 @@ pub struct SelectArgs {
     pub out: Option<PathBuf>,
     #[command(flatten)]
     pub output: FormatArg,
-}
-
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
 }
 
 /// A whole number ≥ 1 given to `flag`.
@@ -112,7 +108,7 @@ pub fn report_with(
         max_scale,
         per_event,
     };
-    let selection = select(&design, &candidates, limits).map_err(|e| usage(e.to_string()))?;
+    let selection = select(&design, &candidates, limits).map_err(usage)?;
     if let Some(out) = &args.out {
         let text = list_text(
             out,

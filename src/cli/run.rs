@@ -12,14 +12,15 @@ use serde::Serialize;
 use super::CliError;
 use super::budget::{LongArg, Work, run_steps, steps_per_tau};
 use super::description::{Case, DIMENSIONLESS, Provenance, RecordNumbers};
-use super::output::{Emit, FormatArg, num, param_cells, param_columns, print};
+use super::output::{Emit, FormatArg, num, optional, param_cells, param_columns, print};
 use super::params::ParamArgs;
 use super::progress::{Progress, Tracked};
 use crate::accuracy::timing::median;
 use crate::analysis::demands::{DemandsSi, RunSi};
+use crate::model::params::echo::g4;
 use crate::model::physical::Physical;
 use crate::model::{Excitation, Method, Params, Preset};
-use crate::output::report::Report;
+use crate::output::report::{Column, Report, column_cells, column_header};
 use crate::output::{Num, Target};
 use crate::solver::{CsvHistory, Impact, RunResult, StructurePeaks, error_vs_exact, solve};
 
@@ -276,7 +277,23 @@ fn structure_cells(p: &StructurePeaks) -> [String; 7] {
     ]
 }
 
-impl RunReport<'_> {
+impl<'a> RunReport<'a> {
+    /// The CSV columns after the demands in SI.
+    const RESULT_COLUMNS: [Column<RunReport<'a>>; 10] = [
+        ("impacts", |r| r.impacts.to_string()),
+        ("max_force", |r| num(r.max_force)),
+        ("min_force", |r| num(r.min_force)),
+        ("energy_residual", |r| num(r.energy_residual)),
+        ("steps", |r| r.steps.to_string()),
+        ("elapsed_ms", |r| num(r.elapsed_ms)),
+        ("error_vs_exact", |r| optional(r.error_vs_exact)),
+        ("min_gap_no_pounding", |r| num(r.min_gap_no_pounding)),
+        ("reliable", |r| r.reliable.to_string()),
+        ("unreliable_reason", |r| {
+            r.unreliable_reason.clone().unwrap_or_default()
+        }),
+    ];
+
     /// The table's lines of each structure's peaks and demands (SPEC §6), in
     /// Π units: Π_u, Π_v, A = max |ẍ + g| (in a_p), μ = Π_u/Π_uy, r the
     /// residual displacement, E_h the hysteretic energy.
@@ -380,10 +397,6 @@ fn si_cells(si: Option<&RunSi>) -> Vec<String> {
 }
 
 /// `v` to `digits` decimals, or `inf`/`nan` as [`Num`] writes them.
-fn g4(v: f64) -> String {
-    crate::model::params::echo::g4(v)
-}
-
 fn fixed(v: f64, digits: usize) -> String {
     if v.is_finite() {
         format!("{v:.digits$}")
@@ -403,18 +416,7 @@ impl Report for RunReport<'_> {
         h.extend(LEFT_COLUMNS);
         h.extend(RIGHT_COLUMNS);
         h.extend(SI_COLUMNS);
-        h.extend([
-            "impacts",
-            "max_force",
-            "min_force",
-            "energy_residual",
-            "steps",
-            "elapsed_ms",
-            "error_vs_exact",
-            "min_gap_no_pounding",
-            "reliable",
-            "unreliable_reason",
-        ]);
+        h.extend(column_header(&[], &Self::RESULT_COLUMNS));
         h
     }
 
@@ -430,18 +432,7 @@ impl Report for RunReport<'_> {
         row.extend(structure_cells(l));
         row.extend(structure_cells(r));
         row.extend(si_cells(self.si.as_ref()));
-        row.extend([
-            self.impacts.to_string(),
-            num(self.max_force),
-            num(self.min_force),
-            num(self.energy_residual),
-            self.steps.to_string(),
-            num(self.elapsed_ms),
-            self.error_vs_exact.map(num).unwrap_or_default(),
-            num(self.min_gap_no_pounding),
-            self.reliable.to_string(),
-            self.unreliable_reason.clone().unwrap_or_default(),
-        ]);
+        row.extend(column_cells(&Self::RESULT_COLUMNS, self));
         vec![row]
     }
 

@@ -7,18 +7,18 @@ use std::time::Instant;
 
 use clap::Args;
 
-use super::CliError;
 use super::budget::{LongArg, Work};
 use super::description::Provenance;
 use super::output::{FormatArg, num, render};
 use super::output::{param_cells, param_columns};
 use super::params::ParamArgs;
 use super::spectrum::SpectrumPlan;
+use super::{CliError, usage};
 use crate::analysis::similarity::{Level, master_curve_spread, study};
 use crate::analysis::spectrum::at_omega;
 use crate::analysis::spectrum_spec::SpectrumSpec;
 use crate::model::physical::{G, OMEGA_P, OMEGA_P_ALLOWED, Physical, parse_acceleration};
-use crate::output::report::{Report, float_or_inf};
+use crate::output::report::{Column, Report, column_cells, column_header, float_or_inf};
 use serde::Serialize;
 
 #[derive(Debug, Clone, Default, Args)]
@@ -52,10 +52,6 @@ pub struct SimilarityArgs {
     pub output: FormatArg,
     #[command(flatten)]
     pub long: LongArg,
-}
-
-fn usage(msg: impl std::fmt::Display) -> CliError {
-    CliError::Usage(msg.to_string())
 }
 
 pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
@@ -132,10 +128,7 @@ pub fn execute(args: &SimilarityArgs) -> Result<(), CliError> {
         (None, None) => physical.omega[1] / physical.omega[0],
         _ => plan.mu,
     };
-    let work = Work {
-        steps: levels.len() as f64 * plan.work()?.steps,
-        rows: 0.0,
-    };
+    let work = Work::steps(levels.len() as f64 * plan.work()?.steps);
     work.check("similarity", args.long.allow_long, true)?;
     let t = Instant::now();
     let result = study(
@@ -255,6 +248,21 @@ struct LevelReport<'a> {
 }
 
 impl<'a> LevelReport<'a> {
+    /// The CSV columns of the level each row is of: its a_p, ω_p, scales,
+    /// masses, yield displacements and gap.
+    const COLUMNS: [Column<LevelReport<'a>>; 10] = [
+        ("ap_m_s2", |l| num(l.level.physical.ap)),
+        ("ap_g", |l| num(l.level.physical.ap / G)),
+        ("omega_p_rad_s", |l| num(l.level.physical.omega_p)),
+        ("length_scale_m", |l| num(l.level.length_scale())),
+        ("velocity_scale_m_s", |l| num(l.level.velocity_scale())),
+        ("m1_kg", |l| num(l.level.physical.mass[0])),
+        ("m2_kg", |l| num(l.level.physical.mass[1])),
+        ("yield1_m", |l| num(l.level.physical.yield_displacement[0])),
+        ("yield2_m", |l| num(l.level.physical.yield_displacement[1])),
+        ("gap_m", |l| num(l.level.physical.gap)),
+    ];
+
     fn of(l: &'a Level) -> LevelReport<'a> {
         let points = l
             .curve
@@ -354,19 +362,8 @@ impl Report for SimilarityReport<'_> {
     /// dimensionless parameter set (model and method among them), then its
     /// peaks in SI units and as Π-groups.
     fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = vec![
-            "ap_m_s2",
-            "ap_g",
-            "omega_p_rad_s",
-            "length_scale_m",
-            "velocity_scale_m_s",
-            "m1_kg",
-            "m2_kg",
-            "yield1_m",
-            "yield2_m",
-            "gap_m",
-            "omega1_grid",
-        ];
+        let mut h = column_header(&[], &LevelReport::COLUMNS);
+        h.push("omega1_grid");
         h.extend(param_columns());
         h.extend([
             "omega1_rad_s",
@@ -398,23 +395,9 @@ impl Report for SimilarityReport<'_> {
         let mut rows = Vec::new();
         for lr in &self.levels {
             let l = lr.level;
-            let ph = &l.physical;
             let (lx, lv) = (l.length_scale(), l.velocity_scale());
             for (p, si) in l.curve.points.iter().zip(&lr.points) {
-                let mut row: Vec<String> = [
-                    ph.ap,
-                    ph.ap / G,
-                    ph.omega_p,
-                    lx,
-                    lv,
-                    ph.mass[0],
-                    ph.mass[1],
-                    ph.yield_displacement[0],
-                    ph.yield_displacement[1],
-                    ph.gap,
-                ]
-                .map(num)
-                .to_vec();
+                let mut row: Vec<String> = column_cells(&LevelReport::COLUMNS, lr).collect();
                 row.push(self.omega1_grid.clone());
                 row.extend(param_cells(&at_omega(&l.params, p.omega1, self.mu)));
                 row.extend([si.omega1_rad_s, si.period1_s].map(num));

@@ -7,13 +7,13 @@ use std::time::Instant;
 
 use clap::Args;
 
-use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
 use super::description::{Description, Provenance};
 use super::output::{Emit, FormatArg, num, printer};
 use super::output::{PEAK_COLUMNS, param_cells, param_columns};
 use super::params::ParamArgs;
 use super::progress::Progress;
+use super::{CliError, usage};
 use crate::analysis::baseline::BaselineCache;
 use crate::analysis::family::{Family, parse_mu};
 use crate::analysis::grid::Grid;
@@ -22,7 +22,7 @@ use crate::analysis::spectrum_spec::{SpectrumSpec, check_sweep};
 use crate::analysis::sweep::{Curve, CurveSpec, curve_specs, sweep};
 use crate::model::params::echo;
 use crate::model::{Params, Preset};
-use crate::output::report::Report;
+use crate::output::report::{Report, TableColumn, aligned};
 use serde::Serialize;
 
 #[derive(Debug, Clone, Default, Args)]
@@ -64,41 +64,39 @@ impl SpectrumPlan {
         family: Option<&str>,
     ) -> Result<SpectrumPlan, CliError> {
         let (preset, p) = params.resolve_for_many()?;
-        let usage = |e: &dyn std::fmt::Display| CliError::Usage(e.to_string());
         let spec = match &preset.spectrum {
             Some(t) => {
-                SpectrumSpec::from_table(t).map_err(|e| usage(&format!("{}: {e}", preset.name)))?
+                SpectrumSpec::from_table(t).map_err(|e| usage(format!("{}: {e}", preset.name)))?
             }
             None => SpectrumSpec::default(),
         };
         let grid = match omega1 {
-            Some(text) => text.parse().map_err(|e| usage(&e))?,
+            Some(text) => text.parse().map_err(usage)?,
             None => spec.grid.unwrap_or_default(),
         };
         let mu = match (mu, spec.mu) {
             (Some(text), _) => parse_mu(text).ok_or_else(|| {
-                usage(&format!(
+                usage(format!(
                     "--mu {}: must be a finite number > 0",
                     echo::text(text.trim())
                 ))
             })?,
             (None, Some(m)) => m,
             (None, None) => parse_mu(&p.mu().to_string()).ok_or_else(|| {
-                usage(&format!(
+                usage(format!(
                     "omega2/omega1 = {}/{}: the frequency ratio must be finite and > 0; give --mu",
                     p.omega2, p.omega1
                 ))
             })?,
         };
         let family = match (family, &spec.family) {
-            (Some(text), _) => Some(Family::parse(text, &p).map_err(|e| usage(&e))?),
+            (Some(text), _) => Some(Family::parse(text, &p).map_err(usage)?),
             (None, Some((key, values))) => Some(
-                Family::new(&preset.origin("spectrum.family"), key, values, &p)
-                    .map_err(|e| usage(&e))?,
+                Family::new(&preset.origin("spectrum.family"), key, values, &p).map_err(usage)?,
             ),
             (None, None) => None,
         };
-        check_sweep(&p, &grid, mu, family.as_ref()).map_err(|e| usage(&e))?;
+        check_sweep(&p, &grid, mu, family.as_ref()).map_err(usage)?;
         Ok(SpectrumPlan {
             preset,
             params: p,
@@ -110,8 +108,7 @@ impl SpectrumPlan {
 
     /// The curves to compute.
     pub fn specs(&self) -> Result<Vec<CurveSpec>, CliError> {
-        curve_specs(&self.params, self.mu, self.family.as_ref())
-            .map_err(|e| CliError::Usage(e.to_string()))
+        curve_specs(&self.params, self.mu, self.family.as_ref()).map_err(usage)
     }
 
     /// The estimated work: a pounding run and a baseline run per point of every curve.
@@ -122,7 +119,7 @@ impl SpectrumPlan {
             .iter()
             .map(|s| 2.0 * points * run_steps(&s.params))
             .sum();
-        Ok(Work { steps, rows: 0.0 })
+        Ok(Work::steps(steps))
     }
 
     /// Computes every curve with a fresh baseline cache; returns the curves,
@@ -272,6 +269,30 @@ impl<'a> SpectrumReport<'a> {
     }
 }
 
+/// The table's columns of a point: Π_ω1, each peak with pounding beside
+/// the same without (free), the impacts and the left structure's region.
+const POINT_TABLE: &[TableColumn<SpectrumPoint>] = &[
+    ("Π_ω1", 7, |pt| format!("{:.3}", pt.omega1)),
+    ("Π_u1", 9, |pt| format!("{:.4}", pt.left.peak_displacement)),
+    ("free", 9, |pt| {
+        format!("{:.4}", pt.free_left.peak_displacement)
+    }),
+    ("Π_v1", 9, |pt| format!("{:.4}", pt.left.peak_velocity)),
+    ("free", 9, |pt| format!("{:.4}", pt.free_left.peak_velocity)),
+    ("Π_u2", 9, |pt| {
+        format!("{:.4}", pt.right.peak_displacement)
+    }),
+    ("free", 9, |pt| {
+        format!("{:.4}", pt.free_right.peak_displacement)
+    }),
+    ("Π_v2", 9, |pt| format!("{:.4}", pt.right.peak_velocity)),
+    ("free", 9, |pt| {
+        format!("{:.4}", pt.free_right.peak_velocity)
+    }),
+    ("impacts", 7, |pt| pt.impacts.to_string()),
+    (" region", 0, |pt| format!(" {}", pt.region.name())),
+];
+
 impl Report for SpectrumReport<'_> {
     /// Every row is self-contained: the curve's family member (`key=value`,
     /// empty without a family), the Π_ω1 grid, μ and the point's whole
@@ -332,28 +353,7 @@ impl Report for SpectrumReport<'_> {
                 .as_ref()
                 .map_or_else(String::new, |m| format!("{m}, "));
             let _ = writeln!(s, "\n{label}μ = {}   (free = no pounding)", num(c.mu));
-            let _ = writeln!(
-                s,
-                "{:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7}  region",
-                "Π_ω1", "Π_u1", "free", "Π_v1", "free", "Π_u2", "free", "Π_v2", "free", "impacts"
-            );
-            for pt in c.points {
-                let _ = writeln!(
-                    s,
-                    "{:>7.3} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>7}  {}",
-                    pt.omega1,
-                    pt.left.peak_displacement,
-                    pt.free_left.peak_displacement,
-                    pt.left.peak_velocity,
-                    pt.free_left.peak_velocity,
-                    pt.right.peak_displacement,
-                    pt.free_right.peak_displacement,
-                    pt.right.peak_velocity,
-                    pt.free_right.peak_velocity,
-                    pt.impacts,
-                    pt.region.name()
-                );
-            }
+            s.push_str(&aligned(POINT_TABLE, c.points));
             let ranges: Vec<String> = c
                 .regions
                 .iter()

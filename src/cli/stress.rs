@@ -9,7 +9,7 @@ use serde::Serialize;
 use super::CliError;
 use super::output::{FormatArg, num, print, render};
 use crate::accuracy::stress::{Outcome, check, corner_cases, random_cases};
-use crate::output::report::Report;
+use crate::output::report::{Column, Report, TableColumn, aligned, column_header, column_rows};
 
 #[derive(Debug, Clone, Args)]
 pub struct StressArgs {
@@ -80,44 +80,29 @@ impl Report for StressReport<'_> {
     }
 
     fn csv_header(&self) -> Vec<&'static str> {
-        vec![
-            "case",
-            "passed",
-            "impacts",
-            "steps",
-            "step_retries",
-            "energy_residual",
-            "min_force",
-            "ms",
-            "exact_ms",
-            "exact_energy_residual",
-            "newmark_vs_exact",
-            "why",
-        ]
+        column_header(&[], COLUMNS)
     }
 
     fn csv_rows(&self) -> Vec<Vec<String>> {
-        self.cases
-            .iter()
-            .map(|o| {
-                vec![
-                    o.name.clone(),
-                    o.passed.to_string(),
-                    o.impacts.to_string(),
-                    o.steps.to_string(),
-                    o.step_retries.to_string(),
-                    num(o.energy_residual),
-                    num(o.min_force),
-                    num(o.ms),
-                    num(o.exact_ms),
-                    num(o.exact_energy_residual),
-                    num(o.methods_differ_by),
-                    why(o),
-                ]
-            })
-            .collect()
+        column_rows(&[], COLUMNS, self.cases)
     }
 }
+
+/// The CSV columns of a case's outcome.
+const COLUMNS: &[Column<Outcome>] = &[
+    ("case", |o| o.name.clone()),
+    ("passed", |o| o.passed.to_string()),
+    ("impacts", |o| o.impacts.to_string()),
+    ("steps", |o| o.steps.to_string()),
+    ("step_retries", |o| o.step_retries.to_string()),
+    ("energy_residual", |o| num(o.energy_residual)),
+    ("min_force", |o| num(o.min_force)),
+    ("ms", |o| num(o.ms)),
+    ("exact_ms", |o| num(o.exact_ms)),
+    ("exact_energy_residual", |o| num(o.exact_energy_residual)),
+    ("newmark_vs_exact", |o| num(o.methods_differ_by)),
+    ("why", why),
+];
 
 fn why(o: &Outcome) -> String {
     o.failures
@@ -128,39 +113,25 @@ fn why(o: &Outcome) -> String {
         .join("; ")
 }
 
+/// The table's columns of a case's outcome.
+const TABLE: &[TableColumn<Outcome>] = &[
+    ("case", -44, |o| o.name.clone()),
+    ("", -4, |o| {
+        if o.passed { "pass" } else { "FAIL" }.to_string()
+    }),
+    ("impacts", 7, |o| o.impacts.to_string()),
+    ("steps", 9, |o| o.steps.to_string()),
+    ("retries", 7, |o| o.step_retries.to_string()),
+    ("residual", 9, |o| format!("{:.1e}", o.energy_residual)),
+    ("min force", 10, |o| format!("{:.3e}", o.min_force)),
+    ("ms", 9, |o| format!("{:.1}", o.ms)),
+    ("exact ms", 9, |o| format!("{:.3}", o.exact_ms)),
+    ("N vs E", 9, |o| format!("{:.1e}", o.methods_differ_by)),
+    (" why / notes", 0, |o| format!(" {}", why(o))),
+];
+
 fn table(outcomes: &[Outcome]) -> String {
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "{:<44} {:<4} {:>7} {:>9} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9}  why / notes",
-        "case",
-        "",
-        "impacts",
-        "steps",
-        "retries",
-        "residual",
-        "min force",
-        "ms",
-        "exact ms",
-        "N vs E"
-    );
-    for o in outcomes {
-        let _ = writeln!(
-            s,
-            "{:<44} {:<4} {:>7} {:>9} {:>7} {:>9.1e} {:>10.3e} {:>9.1} {:>9.3} {:>9.1e}  {}",
-            o.name,
-            if o.passed { "pass" } else { "FAIL" },
-            o.impacts,
-            o.steps,
-            o.step_retries,
-            o.energy_residual,
-            o.min_force,
-            o.ms,
-            o.exact_ms,
-            o.methods_differ_by,
-            why(o)
-        );
-    }
+    let mut s = aligned(TABLE, outcomes);
     let failed = outcomes.iter().filter(|o| !o.passed).count();
     let _ = writeln!(
         s,

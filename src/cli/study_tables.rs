@@ -134,6 +134,16 @@ fn fragility_table(s: &mut String, fragility: &[LimitStateFragility], levels: &[
     }
 }
 
+/// The width of a column of record names: the longest name's, from 6 to
+/// 40 characters (a longer name is [`clip`]ped).
+pub fn name_width<'a>(names: impl Iterator<Item = &'a str>) -> usize {
+    names
+        .map(|n| n.chars().count())
+        .max()
+        .unwrap_or(6)
+        .clamp(6, 40)
+}
+
 /// `text` cut to `width` characters, ending in "…" where cut.
 pub fn clip(text: &str, width: usize) -> String {
     if text.chars().count() <= width {

@@ -14,13 +14,13 @@ pub mod row;
 
 pub use pair::SuiteRow;
 
-use super::CliError;
 use super::budget::{LongArg, Work, run_steps};
 use super::output::{Emit, FormatArg, printer};
 use super::params::ParamArgs;
 use super::records::members;
 use super::subject::row::RowStudyArgs;
 use super::subject::{CliSubject, Study};
+use super::{CliError, usage};
 use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
 use crate::analysis::suite::{MemberPlan, Scaling, SuiteCase, SuiteRun};
 use crate::model::Params;
@@ -129,18 +129,10 @@ impl SuiteOptions {
             output,
             long,
             allow_unreliable: true,
-            shard: Default::default(),
-            buildings: None,
-            compare: Vec::new(),
-            collective: false,
             design: self.design.clone(),
-            period: None,
+            ..SuiteArgs::default()
         }))
     }
-}
-
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
 }
 
 impl SuiteArgs {
@@ -211,7 +203,7 @@ pub fn parse_level(text: &str) -> Result<f64, CliError> {
 pub fn case_of(args: &SuiteArgs) -> Result<(crate::model::Preset, SuiteCase), CliError> {
     if args.params.excitation.is_some() {
         return Err(usage(
-            "--excitation: a suite runs the records of --suite; drop --excitation".into(),
+            "--excitation: a suite runs the records of --suite; drop --excitation",
         ));
     }
     let (preset, settings) = args.params.resolve_for_many()?;
@@ -250,10 +242,7 @@ pub fn record_steps(params: &Params) -> f64 {
 
 /// The work of every planned record of a study.
 pub fn work_of<'a>(plans: impl IntoIterator<Item = &'a MemberPlan>) -> Work {
-    Work {
-        steps: plans.into_iter().map(|m| record_steps(&m.params)).sum(),
-        rows: 0.0,
-    }
+    Work::steps(plans.into_iter().map(|m| record_steps(&m.params)).sum())
 }
 
 pub fn execute(args: &SuiteArgs) -> Result<(), CliError> {

@@ -2,6 +2,8 @@
 //! prints it in the format asked for: JSON from its `Serialize`, a table and
 //! CSV rows from [`Report`]; the CSV and JSON encodings live here only.
 
+use std::fmt::Write as _;
+
 use serde::Serialize;
 
 /// What a command reports, in every format.
@@ -60,6 +62,80 @@ pub fn csv(header: &[&str], rows: &[Vec<String>]) -> String {
         line(&mut row.iter().map(String::as_str));
     }
     out
+}
+
+/// A CSV column of rows of type `R`: its name in the header, and the cell
+/// a row writes under it. A report lists its columns once, so that the
+/// header and every row come from the same list and cannot drift apart.
+pub type Column<R> = (&'static str, fn(&R) -> String);
+
+/// A CSV header: the columns `head` every row leads with, then the names
+/// of `columns`.
+pub fn column_header<R>(head: &[&'static str], columns: &[Column<R>]) -> Vec<&'static str> {
+    let mut header = head.to_vec();
+    header.extend(columns.iter().map(|(name, _)| *name));
+    header
+}
+
+/// The cells of `row` under `columns`, in order.
+pub fn column_cells<'a, R>(
+    columns: &'a [Column<R>],
+    row: &'a R,
+) -> impl Iterator<Item = String> + 'a {
+    columns.iter().map(move |(_, cell)| cell(row))
+}
+
+/// One CSV row per item of `rows`: the cells `head`, then its own under
+/// `columns` (the rows of [`column_header`]).
+pub fn column_rows<'a, R: 'a>(
+    head: &[String],
+    columns: &[Column<R>],
+    rows: impl IntoIterator<Item = &'a R>,
+) -> Vec<Vec<String>> {
+    let row = |r| {
+        head.iter()
+            .cloned()
+            .chain(column_cells(columns, r))
+            .collect()
+    };
+    rows.into_iter().map(row).collect()
+}
+
+/// A column of an aligned table of rows of type `R`: its heading, its
+/// width in characters (right-aligned; a negative width left-aligns), and
+/// the cell a row writes. Text after the last column (a verdict, a note)
+/// is a column of width 0 whose heading and cells begin with a space.
+pub type TableColumn<R> = (&'static str, isize, fn(&R) -> String);
+
+/// The line of headings of `columns`, then one line per item of `rows`:
+/// each cell padded to its column's width, one space between columns.
+pub fn aligned<'a, R: 'a>(
+    columns: &[TableColumn<R>],
+    rows: impl IntoIterator<Item = &'a R>,
+) -> String {
+    let mut s = String::new();
+    let mut line = |cell: &dyn Fn(&TableColumn<R>) -> String| {
+        for (i, column) in columns.iter().enumerate() {
+            let (text, width) = (cell(column), column.1.unsigned_abs());
+            let gap = if i > 0 { " " } else { "" };
+            let _ = if column.1 < 0 {
+                write!(s, "{gap}{text:<width$}")
+            } else {
+                write!(s, "{gap}{text:>width$}")
+            };
+        }
+        s.push('\n');
+    };
+    line(&|column| column.0.to_string());
+    for row in rows {
+        line(&|column| (column.2)(row));
+    }
+    s
+}
+
+/// A flag as the text after a table's last column: ` yes` or ` no`.
+pub fn yes_no(flag: bool) -> String {
+    if flag { " yes" } else { " no" }.into()
 }
 
 /// A CSV cell: quoted, with quotes doubled, if it holds a comma, quote or line break.

@@ -12,20 +12,19 @@ use crate::cli::description::Provenance;
 use crate::cli::output::{Emit, Format, num};
 use crate::cli::records::members;
 use crate::cli::suite::{SuiteArgs, case_of};
+use crate::output::report::{Column, column_cells, column_header};
 
 const UNITS: &str = "SI (the axes' units: kg, s, m, rad/s); gaps in m";
 
-/// The CSV columns of a cell.
-const COLUMNS: [&str; 9] = [
-    "version",
-    "units",
-    "x",
-    "y",
-    "pounding_probability",
-    "median_amplification",
-    "median_min_gap_m",
-    "records",
-    "measure",
+/// The CSV columns of a cell, after `version` and `units` and before the
+/// intensity measure's name.
+const COLUMNS: &[Column<SuiteMapCell>] = &[
+    ("x", |c| num(c.x)),
+    ("y", |c| num(c.y)),
+    ("pounding_probability", |c| num(c.pounding_probability)),
+    ("median_amplification", |c| num(c.median_amplification)),
+    ("median_min_gap_m", |c| num(c.median_min_gap_m)),
+    ("records", |c| c.records.to_string()),
 ];
 
 /// Runs the pair's suite map of `suite_args` over `x` × `y` (texts of
@@ -43,21 +42,15 @@ pub fn report_with(
     let members = members(&suite_args.suite)?;
     let cells = cell_cases(&case, &x, &y);
     let measure = case.scaling.measure.to_string();
+    let mut columns = column_header(&["version", "units"], COLUMNS);
+    columns.push("measure");
+    let head = [env!("CARGO_PKG_VERSION").to_string(), UNITS.to_string()];
     let lines = |c: &SuiteMapCell| -> Vec<Vec<String>> {
-        vec![vec![
-            env!("CARGO_PKG_VERSION").to_string(),
-            UNITS.to_string(),
-            num(c.x),
-            num(c.y),
-            num(c.pounding_probability),
-            num(c.median_amplification),
-            num(c.median_min_gap_m),
-            c.records.to_string(),
-            measure.clone(),
-        ]]
+        let cells = head.iter().cloned().chain(column_cells(COLUMNS, c));
+        vec![cells.chain([measure.clone()]).collect()]
     };
     let csv_of = CsvOf {
-        columns: &COLUMNS,
+        columns: &columns,
         lines: &lines,
     };
     let Some((cells, elapsed_ms)) =

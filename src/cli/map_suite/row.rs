@@ -17,7 +17,7 @@ use crate::cli::description::Provenance;
 use crate::cli::output::{Emit, Format, num};
 use crate::cli::suite::SuiteArgs;
 use crate::model::buildings::Row;
-use crate::model::params::echo::g4;
+use crate::model::params::echo::{self, g4};
 
 const UNITS: &str = "SI (the axes' keys' units as in the row preset); accelerations in g, \
      link forces in kN";
@@ -104,7 +104,7 @@ pub fn run(suite_args: &SuiteArgs, x_text: &str, y_text: &str) -> Result<Option<
     for (flag, text, axis) in [("--x", x_text, &x), ("--y", y_text, &y)] {
         for &v in &axis.values {
             row_with(&[set_text(&axis.key, v)])
-                .map_err(|e| prefixed(&format!("{flag} {}: ", echo(text)), e))?;
+                .map_err(|e| prefixed(&format!("{flag} {}: ", echo::text(text)), e))?;
         }
     }
     // `--im sa` is Sa at the leftmost building's T₁, which a cell may change.
@@ -169,10 +169,6 @@ pub fn run(suite_args: &SuiteArgs, x_text: &str, y_text: &str) -> Result<Option<
         cells,
         elapsed_ms,
     }))
-}
-
-fn echo(text: &str) -> String {
-    crate::model::params::echo::text(text)
 }
 
 /// What the row's buildings, joints and links are called in the outputs.

@@ -20,7 +20,7 @@ use clap::Args;
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 
-use super::CliError;
+use super::{CliError, usage};
 use crate::analysis::shard::partition::units_of;
 use crate::analysis::shard::{Fingerprint, Part, PartHeader, Shard, merge, partition};
 use crate::output::shown;
@@ -182,12 +182,12 @@ fn from_parts<T: DeserializeOwned>(
 ) -> Result<Sweep<T>, CliError> {
     let first = parts
         .first()
-        .ok_or_else(|| CliError::Usage("merge: no parts given".into()))?;
+        .ok_or_else(|| usage("merge: no parts given"))?;
     if first.header.command != command
         || first.header.fingerprint != fingerprint.hex()
         || first.header.total_units != units
     {
-        return Err(CliError::Usage(format!(
+        return Err(usage(format!(
             "merge: {} and the other parts are of a request (fingerprint {}) that their command \
              line no longer makes here (fingerprint {}): an input file (preset, record) changed, \
              or they were made by another version of pounding",
@@ -196,8 +196,7 @@ fn from_parts<T: DeserializeOwned>(
             fingerprint.hex()
         )));
     }
-    let (results, elapsed_ms) =
-        merge::assemble(parts).map_err(|e| CliError::Usage(e.to_string()))?;
+    let (results, elapsed_ms) = merge::assemble(parts).map_err(usage)?;
     Ok(Sweep::Merged(results, elapsed_ms))
 }
 

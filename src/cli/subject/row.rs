@@ -6,19 +6,15 @@ use super::CliSubject;
 use crate::analysis::subject::row::record_seconds;
 use crate::analysis::subject::row::{RowSuiteCase, RowSuiteError, RowSuiteRun, row_intensity};
 use crate::analysis::suite::Scaling;
-use crate::cli::CliError;
 use crate::cli::budget::{SECONDS_PER_STEP, Work};
 use crate::cli::buildings::BuildingsArgs;
 use crate::cli::params::ParamArgs;
 use crate::cli::records::members;
 use crate::cli::shard::ShardArgs;
+use crate::cli::{CliError, usage};
 use crate::model::buildings::Row;
 use crate::model::intensity::IntensityMeasure;
 use crate::model::suite::SuiteMember;
-
-fn usage(message: String) -> CliError {
-    CliError::Usage(message)
-}
 
 /// A study on a row as the command line asks for it (`--buildings`):
 /// what `suite`, `ida` and `gap` on a row share.
@@ -115,14 +111,8 @@ pub fn record_steps(row: &Row, samples: usize, dt: f64) -> f64 {
 
 /// The work of running every member `times` times (levels of an IDA).
 pub fn work_of(row: &Row, members: &[SuiteMember], times: usize) -> Work {
-    Work {
-        steps: times as f64
-            * members
-                .iter()
-                .map(|m| record_steps(row, m.record.acceleration.len(), m.record.dt))
-                .sum::<f64>(),
-        rows: 0.0,
-    }
+    let record = |m: &SuiteMember| record_steps(row, m.record.acceleration.len(), m.record.dt);
+    Work::steps(times as f64 * members.iter().map(record).sum::<f64>())
 }
 
 /// A failed row study as the command line reports it: a record that cannot

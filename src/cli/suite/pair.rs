@@ -10,10 +10,11 @@ use crate::analysis::suite::{SuiteCase, SuiteRun};
 use crate::analysis::suite_statistics::SuiteStatistics;
 use crate::cli::description::{Provenance, ScalingReport};
 use crate::cli::output::num;
-use crate::cli::study_tables::{clip, over_suite_table};
+use crate::cli::study_tables::{clip, name_width, over_suite_table};
+use crate::model::params::echo::g4;
 use crate::model::physical::G;
 use crate::model::{Method, Params};
-use crate::output::report::Report;
+use crate::output::report::{Column, Report, column_cells, column_header};
 use crate::solver::StructurePeaks;
 
 /// One structure of one record, in SI and in Π (SPEC §6).
@@ -87,42 +88,20 @@ impl SuiteRow {
 
     /// The CSV columns of a row, after `version` and `units`.
     pub fn csv_header() -> Vec<&'static str> {
-        let mut h = vec![
-            "record",
-            "samples",
-            "dt",
-            "scale",
-            "intensity_measure",
-            "intensity_g",
-            "ap",
-            "omega_p",
-        ];
-        for side in SIDE_COLUMNS {
-            h.extend(side);
-        }
-        h.extend([
-            "impacts",
-            "max_force_kn",
-            "min_gap_m",
-            "min_gap",
-            "reliable",
-        ]);
+        let mut h = column_header(&[], RECORD_COLUMNS);
+        h.push("intensity_measure");
+        h.extend(column_header(&[], SCALING_COLUMNS));
+        h.extend(SIDE_COLUMNS.concat());
+        h.extend(column_header(&[], RESULT_COLUMNS));
         h
     }
 
     /// The cells of [`SuiteRow::csv_header`]; `measure` names the IM.
     pub fn csv_cells(&self, measure: &str) -> Vec<String> {
         let r = self;
-        let mut row = vec![
-            r.record.clone(),
-            r.samples.to_string(),
-            num(r.dt),
-            num(r.scale),
-            measure.to_string(),
-            num(r.intensity_g),
-            num(r.scales.ap),
-            num(r.scales.omega_p),
-        ];
+        let mut row: Vec<String> = column_cells(RECORD_COLUMNS, r).collect();
+        row.push(measure.to_string());
+        row.extend(column_cells(SCALING_COLUMNS, r));
         for s in [&r.left, &r.right] {
             row.extend(
                 [
@@ -141,16 +120,34 @@ impl SuiteRow {
                 .map(num),
             );
         }
-        row.extend([
-            r.impacts.to_string(),
-            num(r.max_force_kn),
-            num(r.min_gap_m),
-            num(r.min_gap),
-            r.reliable.to_string(),
-        ]);
+        row.extend(column_cells(RESULT_COLUMNS, r));
         row
     }
 }
+
+/// A record's CSV columns before the intensity measure's name.
+const RECORD_COLUMNS: &[Column<SuiteRow>] = &[
+    ("record", |r| r.record.clone()),
+    ("samples", |r| r.samples.to_string()),
+    ("dt", |r| num(r.dt)),
+    ("scale", |r| num(r.scale)),
+];
+
+/// A record's CSV columns of its scaling, after the intensity measure's name.
+const SCALING_COLUMNS: &[Column<SuiteRow>] = &[
+    ("intensity_g", |r| num(r.intensity_g)),
+    ("ap", |r| num(r.scales.ap)),
+    ("omega_p", |r| num(r.scales.omega_p)),
+];
+
+/// A record's CSV columns after both structures' ([`SIDE_COLUMNS`]).
+const RESULT_COLUMNS: &[Column<SuiteRow>] = &[
+    ("impacts", |r| r.impacts.to_string()),
+    ("max_force_kn", |r| num(r.max_force_kn)),
+    ("min_gap_m", |r| num(r.min_gap_m)),
+    ("min_gap", |r| num(r.min_gap)),
+    ("reliable", |r| r.reliable.to_string()),
+];
 
 /// `pounding suite` in every format.
 #[derive(Debug, Serialize)]
@@ -213,11 +210,6 @@ impl<'a> SuiteReport<'a> {
     }
 }
 
-/// A number for a table: four significant digits, `inf` for infinity.
-fn g4(v: f64) -> String {
-    crate::model::params::echo::g4(v)
-}
-
 impl Report for SuiteReport<'_> {
     fn csv_header(&self) -> Vec<&'static str> {
         let mut h = vec!["version", "units"];
@@ -258,13 +250,7 @@ impl Report for SuiteReport<'_> {
             g4(self.gap_m * 1e3)
         );
         let _ = writeln!(s);
-        let name_width = self
-            .records
-            .iter()
-            .map(|r| r.record.chars().count())
-            .max()
-            .unwrap_or(6)
-            .clamp(6, 40);
+        let name_width = name_width(self.records.iter().map(|r| r.record.as_str()));
         let _ = writeln!(
             s,
             "{:<name_width$} {:>7} {:>5} {:>8} {:>8} {:>8} {:>7} {:>9} {:>9}",

@@ -10,7 +10,7 @@ use crate::analysis::subject::row::{RowDemands, RowSuiteCase, RowSuiteRun};
 use crate::analysis::suite_statistics::SuiteStatistics;
 use crate::cli::description::{Provenance, ScalingReport};
 use crate::cli::output::num;
-use crate::cli::study_tables::{clip, over_suite_table};
+use crate::cli::study_tables::{clip, name_width, over_suite_table};
 use crate::model::buildings::matrices::periods;
 use crate::model::params::echo::g4;
 use crate::output::report::Report;
@@ -249,12 +249,7 @@ impl RowSuiteRow {
 /// The per-record tables of a row suite: the impacts and gaps per joint,
 /// then per building its demands with and without pounding.
 pub fn records_table(s: &mut String, records: &[RowSuiteRow]) {
-    let width = records
-        .iter()
-        .map(|r| r.record.chars().count())
-        .max()
-        .unwrap_or(6)
-        .clamp(6, 40);
+    let width = name_width(records.iter().map(|r| r.record.as_str()));
     let Some(first) = records.first() else {
         return;
     };
