@@ -9,6 +9,7 @@
 
 use std::fmt::Write as _;
 
+mod compare;
 pub mod pair;
 pub mod row;
 
@@ -80,6 +81,9 @@ pub fn report_with(
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let probabilities = probabilities(probability)?;
+    if !suite_args.compare.is_empty() {
+        return compare::gap(suite_args, probabilities, emit);
+    }
     match Chosen::of(suite_args)? {
         Chosen::Pair(study) => separation(&study, suite_args, &probabilities, emit),
         Chosen::Row(study) => separation(&study, suite_args, &probabilities, emit),
@@ -94,8 +98,38 @@ fn separation<S: SeparationWriter>(
     probabilities: &[f64],
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let Some((runs, elapsed_ms)) = study.run("gap", &args.shard, args.long.allow_long)? else {
+    let Some(ran) = separated(study, args, probabilities)? else {
         return Ok(());
+    };
+    let report = study.subject.separation_report(
+        &study.name,
+        &args.suite,
+        &ran.runs,
+        ran.joints,
+        ran.elapsed_ms,
+    );
+    emit(&*report)
+}
+
+/// A separation study that ran: the records' runs, each joint's study and
+/// the wall time (ms).
+struct Separated<R> {
+    runs: Vec<R>,
+    joints: Vec<JointSeparation>,
+    elapsed_ms: f64,
+}
+
+/// The records of `study` run (or sharded, or merged) and each joint's
+/// separation at `probabilities`; `None` when a shard's part was written.
+/// A record whose run without contact stopped early fails the study (exit
+/// 1): its gap would cover only part of the record.
+fn separated<S: CliSubject>(
+    study: &Study<S>,
+    args: &SuiteArgs,
+    probabilities: &[f64],
+) -> Result<Option<Separated<S::Run>>, CliError> {
+    let Some((runs, elapsed_ms)) = study.run("gap", &args.shard, args.long.allow_long)? else {
+        return Ok(None);
     };
     let subject = &study.subject;
     if let Some(r) = runs.iter().find(|r| subject.free_run_stopped(r)) {
@@ -106,7 +140,11 @@ fn separation<S: SeparationWriter>(
         )));
     }
     let joints = joint_separations(subject, &runs, probabilities);
-    emit(&*subject.separation_report(&study.name, &args.suite, &runs, joints, elapsed_ms))
+    Ok(Some(Separated {
+        runs,
+        joints,
+        elapsed_ms,
+    }))
 }
 
 /// How a subject writes the separation's report: the pair's ([`pair`]) and
