@@ -237,22 +237,11 @@ fn compare_is_refused_in_one_line_where_it_cannot_compare() {
         );
     }
     // On the pair.
-    fails(
-        &["ida", "--preset", "two-buildings", "--compare", ROWS[1]]
-            .into_iter()
-            .chain(IDA[..4].iter().copied())
-            .collect::<Vec<_>>(),
-        2,
-        &["--compare", "--buildings ROW"],
-    );
-    fails(
-        &["gap", "--preset", "two-buildings", "--compare", ROWS[1]]
-            .into_iter()
-            .chain(GAP[..4].iter().copied())
-            .collect::<Vec<_>>(),
-        2,
-        &["--compare", "--buildings ROW"],
-    );
+    for (command, tail) in [("ida", &IDA[..4]), ("gap", &GAP[..4])] {
+        let mut args = vec![command, "--preset", "two-buildings", "--compare", ROWS[1]];
+        args.extend(tail);
+        fails(&args, 2, &["--compare", "--buildings ROW"]);
+    }
     // With --shard: each row's study shards on its own.
     for (command, tail, study) in [("ida", &IDA, "IDA"), ("gap", &GAP, "separation study")] {
         let mut args = compared(command, tail, "json");

@@ -118,7 +118,7 @@ pub fn compare<C: Compared>(
 
 /// Refuses a variant whose buildings differ from the first row's in number
 /// or names, naming it (`variant`, as given) and what differs.
-fn same_buildings(first: &Row, other: &Row, variant: &str) -> Result<(), CliError> {
+pub fn same_buildings(first: &Row, other: &Row, variant: &str) -> Result<(), CliError> {
     let names = |r: &Row| -> Vec<String> { r.buildings.iter().map(|b| b.name.clone()).collect() };
     let (a, b) = (names(first), names(other));
     if a == b {
