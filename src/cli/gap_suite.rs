@@ -5,7 +5,8 @@
 //! run without contact; the study of those values is
 //! [`crate::analysis::separation::joint_separations`], one path for both
 //! subjects. This module runs it, and each subject's writer (`pair`,
-//! `row`) prints it.
+//! `row`) prints it; with `--compare`, on each variant of a row, side by
+//! side ([`compare`]).
 
 use std::fmt::Write as _;
 
