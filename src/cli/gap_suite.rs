@@ -6,7 +6,7 @@
 //! [`crate::analysis::separation::joint_separations`], one path for both
 //! subjects. This module runs it, and each subject's writer (`pair`,
 //! `row`) prints it; with `--compare`, on each variant of a row, side by
-//! side ([`compare`]).
+//! side (module `compare`).
 
 use std::fmt::Write as _;
 

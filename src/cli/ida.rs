@@ -4,7 +4,7 @@
 //! study is [`crate::analysis::ida`], one path for the pair (`--preset`) and
 //! a row (`--buildings`, SPEC §13); this module parses and runs it, and
 //! each subject's writer (`pair`, `row`) prints it. With `--compare`, the
-//! same IDA runs on each variant of a row, side by side ([`compare`]).
+//! same IDA runs on each variant of a row, side by side (module `compare`).
 
 use clap::Args;
 use serde::Serialize;
