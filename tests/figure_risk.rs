@@ -539,3 +539,179 @@ fn a_row_ida_to_collapse_marks_each_collapsed_record_at_the_flatline() {
     assert!(svg.has_text("collapse"), "{:?}", svg.texts);
     assert!(svg.has_text("collapse, with pounding"));
 }
+
+// `figure ida|fragility|separation --buildings ROW --compare ROW2,…`: the
+// variants overlaid on one SVG, one palette colour per variant and every
+// legend entry naming its variant by its file stem, the values in the
+// legend those of `ida` and `gap --suite` on each row alone; and the
+// refusals, one line each, exit 2.
+
+const ROWS: [&str; 2] = ["block-and-frame", "block-and-frame-retrofit"];
+
+/// Runs `figure NAME --buildings ROWS[0] --compare compare` with `study`,
+/// and reads the SVG back.
+fn draw_compared(name: &str, compare: &str, study: &[&str]) -> Svg {
+    let rows = ["--buildings", ROWS[0], "--compare", compare];
+    draw_study(name, &[&rows[..], study].concat())
+}
+
+const LEVELS: [&str; 4] = [
+    "--suite",
+    "synthetic:5",
+    "--levels",
+    "0.1,0.15,0.2,0.25,0.3",
+];
+
+#[test]
+fn compared_fragility_curves_are_each_row_s_ida_fits_one_colour_a_variant() {
+    let svg = draw_compared(
+        "fragility",
+        ROWS[1],
+        &[&LEVELS[..], &["--drift", "0.004"]].concat(),
+    );
+    let mut fitted = 0;
+    for name in ROWS {
+        let mut args = vec![
+            "ida",
+            "--buildings",
+            name,
+            "--format",
+            "json",
+            "--drift",
+            "0.004",
+        ];
+        args.extend(LEVELS);
+        let report = json(&args);
+        for c in report["fragility"].as_array().unwrap() {
+            let state = c["limit_state"].as_str().unwrap();
+            for (key, style) in [
+                ("fragility", ", with pounding"),
+                ("no_pounding_fragility", ", without pounding"),
+            ] {
+                let Some(fit) = c.get(key) else { continue };
+                // The pounding limit state has its one fit, unnamed.
+                let style = if c.get("no_pounding_fragility").is_some() {
+                    style
+                } else {
+                    ""
+                };
+                let legend = svg.texts_starting(&format!("{name}: {state}{style}: "));
+                assert_eq!(legend.len(), 1, "{name}: {state}{style} in {:?}", svg.texts);
+                if fit["outcome"] == "fitted" {
+                    // θ to 4 digits and β to 3 decimals, as the legend writes them.
+                    let theta = fit["theta"].as_f64().unwrap();
+                    let beta = fit["beta"].as_f64().unwrap();
+                    assert!((number_after(legend[0], "θ = ") - theta).abs() <= 5e-4 * theta);
+                    assert!((number_after(legend[0], "β = ") - beta).abs() <= 5e-4);
+                    fitted += 1;
+                }
+            }
+        }
+    }
+    assert!(fitted >= 2, "fits to compare: {fitted}");
+    // The first row's fit with pounding (drift) is a solid curve in its
+    // colour; the retrofit's fit apart is dashed in the darker shade of its.
+    assert!(!svg.curves(BLUE).is_empty(), "{:?}", svg.polylines);
+    assert!(svg.polylines.iter().any(|(s, _)| s == DARK_ORANGE));
+}
+
+#[test]
+fn compared_ida_draws_each_variant_s_medians_in_its_colour_in_each_building_s_panel() {
+    let svg = draw_compared("ida", ROWS[1], &LEVELS);
+    for name in ROWS {
+        for style in ["median, with pounding", "median, every joint open"] {
+            let legend = svg.texts_starting(&format!("{name}: {style}"));
+            assert_eq!(legend.len(), 1, "{name}: {style} in {:?}", svg.texts);
+        }
+    }
+    // Per building panel (block, frame) and variant: the median with
+    // pounding, solid in the variant's colour, from 0 through 5 levels.
+    assert_eq!(svg.curves(BLUE), vec![6, 6]);
+    assert_eq!(svg.curves(ORANGE), vec![6, 6]);
+}
+
+#[test]
+fn a_compared_row_given_as_a_path_is_named_by_its_file_stem() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("retro.toml");
+    std::fs::copy("presets/buildings/block-and-frame-retrofit.toml", &path).unwrap();
+    let study = [
+        "--suite",
+        "synthetic:5",
+        "--level",
+        "0.3",
+        "--probability",
+        "0.5",
+    ];
+    let svg = draw_compared("separation", path.to_str().unwrap(), &study);
+    for (name, row) in [
+        ("block-and-frame", ROWS[0]),
+        ("retro", path.to_str().unwrap()),
+    ] {
+        let legend = svg.texts_starting(&format!("{name}: records (empirical, N = 5)"));
+        assert_eq!(legend.len(), 1, "{name} in {:?}", svg.texts);
+        // Its gap at p = 0.5 is `gap --suite`'s on that row, to 4 digits.
+        let mut args = vec!["gap", "--buildings", row, "--format", "json"];
+        args.extend(study);
+        let report = json(&args);
+        let want = report["joints"][0]["study"]["at_probability"][0]["empirical"]
+            .as_f64()
+            .unwrap()
+            * 1e3;
+        let legend = svg.texts_starting(&format!("{name}: gap d_(⌈pN⌉) "));
+        assert_eq!(legend.len(), 1, "{name} in {:?}", svg.texts);
+        let drawn = number_after(legend[0], "d_(⌈pN⌉) ");
+        assert!(
+            (drawn - want).abs() <= 5e-4 * want,
+            "{drawn} mm against {want} mm"
+        );
+    }
+    // Each variant's empirical step curve in its colour.
+    assert_eq!(svg.curves(BLUE).len(), 1, "{:?}", svg.polylines);
+    assert_eq!(svg.curves(ORANGE).len(), 1, "{:?}", svg.polylines);
+}
+
+#[test]
+fn compared_figures_are_refused_in_one_line_where_they_cannot_compare() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("f.svg");
+    let out = out.to_str().unwrap();
+    let base = [
+        "figure",
+        "fragility",
+        "--out",
+        out,
+        "--suite",
+        "synthetic:2",
+    ];
+    let levels = ["--levels", "0.1,0.2"];
+    // A variant with other buildings.
+    let args = [
+        &base[..],
+        &levels,
+        &["--buildings", ROWS[0], "--compare", "three-in-series"],
+    ];
+    fails(
+        &args.concat(),
+        2,
+        &[
+            "--compare three-in-series",
+            "block, mid, tall",
+            "block, frame",
+        ],
+    );
+    // On the pair.
+    let args = [
+        &base[..],
+        &levels,
+        &["--preset", "two-buildings", "--compare", ROWS[1]],
+    ];
+    fails(&args.concat(), 2, &["--compare", "--buildings ROW"]);
+    // On a figure that is not a suite study.
+    fails(
+        &["figure", "fig3", "--out", out, "--compare", ROWS[1]],
+        2,
+        &["--compare", "ida, fragility and separation"],
+    );
+    assert!(!std::path::Path::new(out).exists());
+}

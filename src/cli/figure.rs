@@ -61,6 +61,11 @@ pub struct FigureArgs {
     /// `figure match`: the target spectrum and its rule (T1 is `--period`).
     #[command(flatten)]
     pub design: super::design::TargetArgs,
+    /// `figure ida|fragility|separation --buildings`: overlay the same
+    /// study of each of these rows too (a retrofit, say: built-in names or
+    /// paths), one colour per row, each with the first row's buildings.
+    #[arg(long, value_name = "NAME|PATH", num_args = 1.., value_delimiter = ',')]
+    pub compare: Vec<String>,
 }
 
 fn usage(msg: impl std::fmt::Display) -> CliError {
@@ -113,6 +118,14 @@ fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
 }
 
 pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
+    let compared = ["ida", "fragility", "separation"];
+    if !args.compare.is_empty() && !compared.contains(&args.name.trim()) {
+        return Err(usage(format!(
+            "--compare applies to figure ida, fragility and separation (with --buildings), \
+             not {}",
+            args.name
+        )));
+    }
     if args.name.trim() == "buildings" {
         let long = args.risk.long.allow_long;
         return super::buildings::figure(&args.row, &args.params, args.out.as_deref(), long);
@@ -221,7 +234,11 @@ pub fn execute(args: &FigureArgs) -> Result<(), CliError> {
     };
     if let Some(n) = name.filter(|n| n.is_risk()) {
         let buildings = args.row.buildings.as_deref();
-        options.suite = Some(figure_risk::study(&args.risk, &args.params, buildings, n)?);
+        options.suite = Some(if args.compare.is_empty() {
+            figure_risk::study(&args.risk, &args.params, buildings, n)?
+        } else {
+            figure_risk::compare(&args.risk, &args.params, buildings, &args.compare, n)?
+        });
     } else if let Some(n) = name.filter(|n| !n.is_paper()) {
         let plan = SpectrumPlan::resolve(
             &args.params,

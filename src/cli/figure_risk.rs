@@ -8,6 +8,7 @@ use clap::Args;
 
 use super::CliError;
 use super::budget::LongArg;
+use super::compare::same_buildings;
 use super::gap_suite::DEFAULT_PROBABILITIES;
 use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
 use super::params::ParamArgs;
@@ -18,6 +19,7 @@ use super::suite::{SuiteArgs, case_of, parse_level, work_of};
 use crate::analysis::ida::parse_levels;
 use crate::analysis::separation::parse_probabilities;
 use crate::analysis::subject::runs::{plan, plan_levels};
+use crate::figure::risk_compare::Variant;
 use crate::figure::{FigureName, RiskStudy, RowSuiteStudy, SuiteStudy};
 
 #[derive(Debug, Clone, Default, Args)]
@@ -172,6 +174,38 @@ pub fn study(
         states,
         probabilities,
     }))
+}
+
+/// The study of figure `name` on the row `buildings` and on each row of
+/// `compare` (`--compare`, as given), to overlay: each variant's study as
+/// [`study`] reads it alone, named in the legend by its file stem, with
+/// the first row's buildings by number and name.
+pub fn compare(
+    risk: &RiskArgs,
+    params: &ParamArgs,
+    buildings: Option<&str>,
+    compare: &[String],
+    name: FigureName,
+) -> Result<RiskStudy, CliError> {
+    let Some(first) = buildings else {
+        return Err(usage(
+            "--compare: compares rows of buildings; give --buildings ROW".into(),
+        ));
+    };
+    let mut variants: Vec<Variant> = Vec::new();
+    for row in std::iter::once(first).chain(compare.iter().map(String::as_str)) {
+        let RiskStudy::Row(study) = self::study(risk, params, Some(row), name)? else {
+            unreachable!("--buildings chooses a row");
+        };
+        if let Some(head) = variants.first() {
+            same_buildings(&head.study.case.row, &study.case.row, row)?;
+        }
+        let stem = std::path::Path::new(row)
+            .file_stem()
+            .map_or(row.to_string(), |s| s.to_string_lossy().into_owned());
+        variants.push(Variant { name: stem, study });
+    }
+    Ok(RiskStudy::Compare(variants))
 }
 
 /// The study of figure `name` on the row `buildings`, as `ida --buildings`

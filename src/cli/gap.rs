@@ -47,6 +47,11 @@ pub struct GapArgs {
     pub shard: super::shard::ShardArgs,
     #[command(flatten)]
     pub row: super::buildings::BuildingsArgs,
+    /// With --buildings and --suite: run the same study on each of these
+    /// rows too (a retrofit, say), each with the first row's buildings by
+    /// name, and report them side by side.
+    #[arg(long, value_name = "NAME|PATH", num_args = 1.., value_delimiter = ',')]
+    pub compare: Vec<String>,
 }
 
 pub fn execute(args: &GapArgs) -> Result<(), CliError> {
@@ -59,7 +64,10 @@ pub fn report_with(
     args: &GapArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let others = [("--probability", args.probability.is_some())];
+    let others = [
+        ("--probability", args.probability.is_some()),
+        ("--compare", !args.compare.is_empty()),
+    ];
     if args.row.buildings.is_some() {
         let Some(mut suite_args) =
             args.records
@@ -87,6 +95,7 @@ pub fn report_with(
             )));
         }
         suite_args.buildings = args.row.buildings.clone();
+        suite_args.compare = args.compare.clone();
         suite_args.shard = args.shard.clone();
         suite_args.period = args.row.period.map(|t| t.to_string());
         let suite_args = suite_args.at_design_level()?;
@@ -104,6 +113,7 @@ pub fn report_with(
         }
         let suite_args = super::suite::SuiteArgs {
             shard: args.shard.clone(),
+            compare: args.compare.clone(),
             period: args.row.period.map(|t| t.to_string()),
             ..suite_args
         }

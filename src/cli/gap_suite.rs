@@ -5,10 +5,12 @@
 //! run without contact; the study of those values is
 //! [`crate::analysis::separation::joint_separations`], one path for both
 //! subjects. This module runs it, and each subject's writer (`pair`,
-//! `row`) prints it.
+//! `row`) prints it; with `--compare`, on each variant of a row, side by
+//! side (module `compare`).
 
 use std::fmt::Write as _;
 
+mod compare;
 pub mod pair;
 pub mod row;
 
@@ -80,6 +82,9 @@ pub fn report_with(
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let probabilities = probabilities(probability)?;
+    if !suite_args.compare.is_empty() {
+        return compare::gap(suite_args, probabilities, emit);
+    }
     match Chosen::of(suite_args)? {
         Chosen::Pair(study) => separation(&study, suite_args, &probabilities, emit),
         Chosen::Row(study) => separation(&study, suite_args, &probabilities, emit),
@@ -94,8 +99,38 @@ fn separation<S: SeparationWriter>(
     probabilities: &[f64],
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    let Some((runs, elapsed_ms)) = study.run("gap", &args.shard, args.long.allow_long)? else {
+    let Some(ran) = separated(study, args, probabilities)? else {
         return Ok(());
+    };
+    let report = study.subject.separation_report(
+        &study.name,
+        &args.suite,
+        &ran.runs,
+        ran.joints,
+        ran.elapsed_ms,
+    );
+    emit(&*report)
+}
+
+/// A separation study that ran: the records' runs, each joint's study and
+/// the wall time (ms).
+struct Separated<R> {
+    runs: Vec<R>,
+    joints: Vec<JointSeparation>,
+    elapsed_ms: f64,
+}
+
+/// The records of `study` run (or sharded, or merged) and each joint's
+/// separation at `probabilities`; `None` when a shard's part was written.
+/// A record whose run without contact stopped early fails the study (exit
+/// 1): its gap would cover only part of the record.
+fn separated<S: CliSubject>(
+    study: &Study<S>,
+    args: &SuiteArgs,
+    probabilities: &[f64],
+) -> Result<Option<Separated<S::Run>>, CliError> {
+    let Some((runs, elapsed_ms)) = study.run("gap", &args.shard, args.long.allow_long)? else {
+        return Ok(None);
     };
     let subject = &study.subject;
     if let Some(r) = runs.iter().find(|r| subject.free_run_stopped(r)) {
@@ -106,7 +141,11 @@ fn separation<S: SeparationWriter>(
         )));
     }
     let joints = joint_separations(subject, &runs, probabilities);
-    emit(&*subject.separation_report(&study.name, &args.suite, &runs, joints, elapsed_ms))
+    Ok(Some(Separated {
+        runs,
+        joints,
+        elapsed_ms,
+    }))
 }
 
 /// How a subject writes the separation's report: the pair's ([`pair`]) and

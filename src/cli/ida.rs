@@ -3,11 +3,13 @@
 //! fragility of each limit state with and without pounding (SPEC §12). The
 //! study is [`crate::analysis::ida`], one path for the pair (`--preset`) and
 //! a row (`--buildings`, SPEC §13); this module parses and runs it, and
-//! each subject's writer (`pair`, `row`) prints it.
+//! each subject's writer (`pair`, `row`) prints it. With `--compare`, the
+//! same IDA runs on each variant of a row, side by side (module `compare`).
 
 use clap::Args;
 use serde::Serialize;
 
+mod compare;
 mod pair;
 mod row;
 
@@ -15,10 +17,12 @@ use super::CliError;
 use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
 use super::output::{Emit, printer};
 use super::records::members;
+use super::subject::row::RowStudyArgs;
 use super::subject::{CliSubject, run_levels_or_shard};
 use super::suite::{SuiteArgs, case_of};
 use crate::analysis::ida::{LimitStateFragility, fragilities, parse_levels};
 use crate::analysis::limit_state::LimitState;
+use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
 use crate::analysis::subject::runs::plan_levels;
 use crate::analysis::suite_statistics::SuiteStatistics;
 use crate::model::suite::SuiteMember;
@@ -72,11 +76,6 @@ pub fn report_with(
     args: &IdaArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    if !args.suite.compare.is_empty() {
-        return Err(usage(
-            "--compare: `suite` compares rows side by side; run `ida` on each row".into(),
-        ));
-    }
     if args.suite.level.is_some() {
         return Err(usage(
             "--level: an IDA runs every level of --levels; use `pounding suite` for one".into(),
@@ -97,18 +96,15 @@ pub fn report_with(
         args.row_limits.refuse_on_a_pair()?;
     }
     let levels = parse_levels(&args.levels).map_err(usage)?;
+    if !args.suite.compare.is_empty() {
+        return compare::ida(args, levels, emit);
+    }
     if let Some(study) = study {
-        let (case, members) = super::subject::row::case_of(&study)?;
-        let states = limit_states(&args.limits, &args.row_limits, Some(&case.row))?;
-        let ran = ida(
-            &case,
-            study.buildings,
-            &members,
-            levels,
-            states,
-            &args.suite,
-        )?;
-        return ran.map_or(Ok(()), |ran| emit(&row::report(&case, study.suite, ran)));
+        let row = RowIda::load(args, &study)?;
+        let ran = row.run(&levels, &args.suite)?;
+        return ran.map_or(Ok(()), |ran| {
+            emit(&row::report(&row.case, study.suite, ran))
+        });
     }
     let states = limit_states(&args.limits, &args.row_limits, None)?;
     let (preset, case) = case_of(&args.suite)?;
@@ -131,6 +127,47 @@ pub fn report_with(
         )));
     }
     Ok(())
+}
+
+/// The IDA of a row (`--buildings`), loaded and checked before any run:
+/// the row and its scaling, its records and its limit states.
+struct RowIda {
+    case: RowSuiteCase,
+    /// `--buildings` as given, naming the row in shards' parts.
+    name: String,
+    members: Vec<SuiteMember>,
+    states: Vec<LimitState>,
+}
+
+impl RowIda {
+    /// The row `study` with the limit states `args` ask of it.
+    fn load(args: &IdaArgs, study: &RowStudyArgs) -> Result<RowIda, CliError> {
+        let (case, members) = super::subject::row::case_of(study)?;
+        let states = limit_states(&args.limits, &args.row_limits, Some(&case.row))?;
+        Ok(RowIda {
+            case,
+            name: study.buildings.to_string(),
+            members,
+            states,
+        })
+    }
+
+    /// Its IDA at `levels` ([`ida`]).
+    fn run(
+        &self,
+        levels: &[f64],
+        args: &SuiteArgs,
+    ) -> Result<Option<IdaRan<RowSuiteRun>>, CliError> {
+        let states = self.states.clone();
+        ida(
+            &self.case,
+            &self.name,
+            &self.members,
+            levels.to_vec(),
+            states,
+            args,
+        )
+    }
 }
 
 /// An IDA that ran: its levels and limit states, each level's runs, the

@@ -13,6 +13,7 @@
 pub mod bench;
 pub mod budget;
 pub mod buildings;
+pub mod compare;
 pub mod description;
 pub mod design;
 pub mod design_suite;

@@ -9,6 +9,7 @@
 //! - [`risk`]: a suite study's IDA curves, fragility curves and separation;
 //! - [`matching`]: a suite against its target spectrum (`figure match`);
 //! - [`risk_row`]: the same three figures of a row of buildings;
+//! - [`risk_compare`]: the same three figures of several variants of a row, overlaid;
 //! - [`caption`]: the caption line (every Π, the law, the method);
 //! - [`render`]: plotters, SVG and bitmap back ends;
 //! - [`font`]: the embedded typeface (no system fonts needed);
@@ -28,6 +29,7 @@ pub mod matching;
 pub mod render;
 pub mod retrofit_map;
 pub mod risk;
+pub mod risk_compare;
 pub mod risk_row;
 pub mod runs;
 pub mod spec;
@@ -240,6 +242,8 @@ pub struct Options {
 pub enum RiskStudy {
     Pair(SuiteStudy),
     Row(RowSuiteStudy),
+    /// The same study on each variant of a row (`--compare`), overlaid.
+    Compare(Vec<risk_compare::Variant>),
 }
 
 /// Computes a figure.
@@ -295,6 +299,11 @@ pub fn build(name: FigureName, options: &Options) -> Result<Figure, FigureError>
                 (FigureName::Ida, RiskStudy::Row(s)) => risk_row::row_ida_figure(s),
                 (FigureName::Fragility, RiskStudy::Row(s)) => risk_row::row_fragility_figure(s),
                 (_, RiskStudy::Row(s)) => risk_row::row_separation_figure(s),
+                (FigureName::Ida, RiskStudy::Compare(v)) => risk_compare::compare_ida_figure(v),
+                (FigureName::Fragility, RiskStudy::Compare(v)) => {
+                    risk_compare::compare_fragility_figure(v)
+                }
+                (_, RiskStudy::Compare(v)) => risk_compare::compare_separation_figure(v),
             }
         }
     }

@@ -18,7 +18,9 @@
 use crate::analysis::fragility::{self, Fragility, LevelCount, describe};
 use crate::analysis::ida::{LimitStateFragility, fragilities};
 use crate::analysis::limit_state::LimitState;
-use crate::analysis::separation::{self, RecordGap, SeparationStudy, probability_of_pounding};
+use crate::analysis::separation::{
+    self, LognormalFit, RecordGap, SeparationStudy, probability_of_pounding,
+};
 use crate::analysis::statistics::Summary;
 use crate::analysis::subject::runs::{plan, plan_levels, run_levels, run_suite};
 use crate::analysis::suite::{SuiteCase, SuiteRun};
@@ -174,14 +176,9 @@ pub(super) fn ida_panel(
             (0..levels.len()).flat_map(move |l| (0..records).map(move |j| (l, j, pounding)))
         })
     };
-    let collapsed = all().any(|(l, j, p)| demand(l, j, p) == f64::INFINITY);
-    let flat = 1.15
-        * all()
-            .map(|(l, j, p)| demand(l, j, p))
-            .filter(|d| d.is_finite())
-            .fold(0.0, f64::max)
-            .max(f64::MIN_POSITIVE);
-    let shown = |d: f64| if d == f64::INFINITY { flat } else { d };
+    let flatline = Flatline::over(all().map(|(l, j, p)| demand(l, j, p)));
+    let flat = flatline.at;
+    let shown = |d: f64| flatline.shown(d);
     let mut medians = Vec::new();
     for &(pounding, color, stroke, name) in &STYLES {
         let mut ends = Vec::new();
@@ -238,17 +235,50 @@ pub(super) fn ida_panel(
     }
     // The medians go over every record's curve.
     panel.series.extend(medians);
-    if collapsed {
-        // Room to the right of the flatline for its tag.
-        panel.x_range = Some((0.0, 1.12 * flat));
-        panel.guides.push(Guide {
-            at: GuideAt::X(flat),
-            color: None,
-            tag: "collapse".into(),
-            label: String::new(),
-        });
-    }
+    flatline.mark(&mut panel);
     panel
+}
+
+/// Where an IDA panel draws an infinite demand, a record whose building
+/// collapsed (SPEC §15): the flatline, at 1.15 times the largest finite
+/// demand of the panel.
+pub(super) struct Flatline {
+    pub at: f64,
+    /// Whether any demand is infinite (the flatline is drawn).
+    pub collapsed: bool,
+}
+
+impl Flatline {
+    /// The flatline of a panel's `demands`.
+    pub(super) fn over(demands: impl Iterator<Item = f64> + Clone) -> Flatline {
+        let largest = demands
+            .clone()
+            .filter(|d| d.is_finite())
+            .fold(0.0, f64::max);
+        Flatline {
+            at: 1.15 * largest.max(f64::MIN_POSITIVE),
+            collapsed: demands.into_iter().any(|d| d == f64::INFINITY),
+        }
+    }
+
+    /// Demand `d` as drawn: at the flatline when infinite.
+    pub(super) fn shown(&self, d: f64) -> f64 {
+        if d == f64::INFINITY { self.at } else { d }
+    }
+
+    /// Draws the flatline on `panel` when a demand is infinite, with room
+    /// to its right for its tag.
+    pub(super) fn mark(&self, panel: &mut Panel) {
+        if self.collapsed {
+            panel.x_range = Some((0.0, 1.12 * self.at));
+            panel.guides.push(Guide {
+                at: GuideAt::X(self.at),
+                color: None,
+                tag: "collapse".into(),
+                label: String::new(),
+            });
+        }
+    }
 }
 
 /// IDA curves of the left structure's peak drift (mm) against IM (g).
@@ -367,32 +397,47 @@ pub(super) fn fragility_panel(
         "P(exceed)",
     );
     for (i, c) in curves.iter().enumerate() {
-        // The pounding limit state exists with pounding only.
-        let with = c.no_pounding_fragility.is_some().then_some("with pounding");
-        panel.series.extend(fragility_series(
-            &c.limit_state,
-            with,
-            i,
-            Stroke::Solid,
-            &c.counts,
-            &c.fragility,
-            x_max,
-        ));
-        if let (Some(counts), Some(fit)) = (&c.no_pounding_counts, &c.no_pounding_fragility) {
-            panel.series.extend(fragility_series(
-                &c.limit_state,
-                Some("without pounding"),
-                i,
-                Stroke::Dashed,
-                counts,
-                fit,
-                x_max,
-            ));
-        }
+        panel
+            .series
+            .extend(limit_state_series(c, &c.limit_state, i, x_max));
     }
     panel.x_range = Some((0.0, x_max));
     panel.y_range = Some((-0.03, 1.03));
     panel
+}
+
+/// One limit state's series in colour `color`, its legend entries named
+/// `state`: with pounding (solid) and without (dashed), each its fit and
+/// observed fractions.
+pub(super) fn limit_state_series(
+    c: &LimitStateFragility,
+    state: &str,
+    color: usize,
+    x_max: f64,
+) -> Vec<Series> {
+    // The pounding limit state exists with pounding only.
+    let with = c.no_pounding_fragility.is_some().then_some("with pounding");
+    let mut series = fragility_series(
+        state,
+        with,
+        color,
+        Stroke::Solid,
+        &c.counts,
+        &c.fragility,
+        x_max,
+    );
+    if let (Some(counts), Some(fit)) = (&c.no_pounding_counts, &c.no_pounding_fragility) {
+        series.extend(fragility_series(
+            state,
+            Some("without pounding"),
+            color,
+            Stroke::Dashed,
+            counts,
+            fit,
+            x_max,
+        ));
+    }
+    series
 }
 
 /// What a fragility figure's caption says of its curves.
@@ -406,7 +451,7 @@ pub(super) fn fragility_note(measure: IntensityMeasure, levels: &[f64]) -> Strin
 
 /// The records' empirical distribution of `gaps` (mm) as a step curve from
 /// 0 to `x_max`.
-fn step_curve(gaps: &[f64], x_max: f64) -> Vec<(f64, f64)> {
+pub(super) fn step_curve(gaps: &[f64], x_max: f64) -> Vec<(f64, f64)> {
     let mut sorted: Vec<f64> = gaps.iter().copied().filter(|d| d.is_finite()).collect();
     sorted.sort_by(f64::total_cmp);
     let n = gaps.len() as f64;
@@ -464,6 +509,29 @@ pub(super) fn scaling_text(measure: IntensityMeasure, level: Option<f64>) -> Str
     }
 }
 
+/// The lognormal fit of the records' gaps, P(Π_d,min ≤ d), over d from 0
+/// to `x_max` (mm).
+pub(super) fn lognormal_curve(fit: &LognormalFit, x_max: f64) -> Vec<(f64, f64)> {
+    const POINTS: usize = 300;
+    (0..=POINTS)
+        .map(|i| {
+            let d = x_max * i as f64 / POINTS as f64;
+            (d, fit.probability(d / 1e3))
+        })
+        .collect()
+}
+
+/// The gap d_(⌈pN⌉) at each probability p of `result` as (d in mm, p),
+/// where it is finite.
+pub(super) fn probability_marks(result: &SeparationStudy) -> Vec<(f64, f64)> {
+    result
+        .at_probability
+        .iter()
+        .filter(|a| a.empirical.is_finite())
+        .map(|a| (a.empirical * 1e3, a.probability))
+        .collect()
+}
+
 /// The records' gaps that prevent pounding (`gaps`, m) as an empirical step
 /// curve (mm) with its lognormal fit, each probability of `result` a
 /// horizontal line with its gap written, the gap at rest (`gap`: its name
@@ -503,13 +571,7 @@ pub(super) fn separation_panel(
         step_curve(&gaps.iter().map(|d| d * mm).collect::<Vec<_>>(), x_max),
     ));
     if let Some(fit) = result.lognormal {
-        const POINTS: usize = 300;
-        let points = (0..=POINTS)
-            .map(|i| {
-                let d = x_max * i as f64 / POINTS as f64;
-                (d, fit.probability(d / mm))
-            })
-            .collect();
+        let points = lognormal_curve(&fit, x_max);
         panel.series.push(Series::new(
             format!(
                 "{whose}lognormal fit: median {} mm, β = {:.3}",
@@ -521,12 +583,7 @@ pub(super) fn separation_panel(
             points,
         ));
     }
-    let marks: Vec<(f64, f64)> = result
-        .at_probability
-        .iter()
-        .filter(|a| a.empirical.is_finite())
-        .map(|a| (a.empirical * mm, a.probability))
-        .collect();
+    let marks = probability_marks(result);
     panel.series.push(
         Series::new("gap at probability p: d_(⌈pN⌉)", 0, Stroke::Solid, marks)
             .with_pen(Pen::Markers),

@@ -50,7 +50,7 @@ pub struct RowSuiteStudy {
 }
 
 /// Every record at every level (level by level), or the first run that failed.
-fn runs(study: &RowSuiteStudy) -> Result<Vec<Vec<RowSuiteRun>>, FigureError> {
+pub(super) fn runs(study: &RowSuiteStudy) -> Result<Vec<Vec<RowSuiteRun>>, FigureError> {
     if study.levels.is_empty() {
         return Err(FigureError::Input("an IDA needs --levels".into()));
     }
@@ -63,6 +63,18 @@ fn runs(study: &RowSuiteStudy) -> Result<Vec<Vec<RowSuiteRun>>, FigureError> {
 /// The row, the suite and `note`, for every caption: each building's
 /// storeys and T₁, each joint's gap, the contact law.
 fn caption(study: &RowSuiteStudy, note: &str) -> String {
+    format!(
+        "{}; suite {} ({} records), {note}; {} contact; exact method",
+        row_text(study),
+        study.suite,
+        study.members.len(),
+        study.case.row.model.name(),
+    )
+}
+
+/// The row of `study` for a caption: its name, each building's storeys and
+/// T₁, each joint's gap.
+pub(super) fn row_text(study: &RowSuiteStudy) -> String {
     let row = &study.case.row;
     let buildings: Vec<String> = row
         .buildings
@@ -86,13 +98,10 @@ fn caption(study: &RowSuiteStudy, note: &str) -> String {
         })
         .collect();
     format!(
-        "{}: {}; gaps {}; suite {} ({} records), {note}; {} contact; exact method",
+        "{}: {}; gaps {}",
         row.name,
         buildings.join(", "),
-        gaps.join(", "),
-        study.suite,
-        study.members.len(),
-        row.model.name(),
+        gaps.join(", ")
     )
 }
 

@@ -23,11 +23,11 @@ use super::{Chosen, SuiteArgs};
 use crate::analysis::separation::median;
 use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
 use crate::cli::CliError;
+use crate::cli::compare::{Compared, Ran, Request, SideBySide, compare};
 use crate::cli::output::Emit;
 use crate::cli::subject::Study;
 use crate::model::buildings::Row;
 use crate::model::params::echo::g4;
-use crate::output::report::Report;
 
 /// Runs the suite of `args` on its row and on every `--compare` row, and
 /// hands the side-by-side report to `emit`.
@@ -35,74 +35,65 @@ pub fn suite(
     args: &SuiteArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
-    if args.buildings.is_none() {
-        return Err(CliError::Usage(
-            "--compare: compares rows of buildings; give --buildings ROW".into(),
-        ));
+    compare(args, &args.compare_request(), emit)
+}
+
+impl SuiteArgs {
+    /// What `--compare` is given with: `--buildings`, the variants and
+    /// the sharding asked for.
+    pub fn compare_request(&self) -> Request<'_> {
+        Request {
+            buildings: self.buildings.as_deref(),
+            compare: &self.compare,
+            shard: &self.shard,
+        }
     }
-    if args.shard.shard.is_some() {
-        return Err(CliError::Usage(
-            "--compare: not with --shard; shard each row's suite on its own".into(),
-        ));
-    }
-    let names = args.buildings.iter().chain(&args.compare);
-    let mut studies: Vec<Study<RowSuiteCase>> = Vec::new();
-    for name in names {
+
+    /// The study of these arguments on the row `name` instead (a
+    /// `--compare` variant, as given), with its records, checked.
+    pub fn variant(&self, name: &str) -> Result<Study<RowSuiteCase>, CliError> {
         let variant = SuiteArgs {
-            buildings: Some(name.clone()),
+            buildings: Some(name.to_string()),
             compare: Vec::new(),
-            ..args.clone()
+            ..self.clone()
         };
         let Chosen::Row(study) = Chosen::of(&variant)? else {
             unreachable!("--buildings chooses a row");
         };
-        if let Some(first) = studies.first() {
-            same_buildings(&first.subject.row, &study.subject.row, name)?;
-        }
-        studies.push(study);
+        Ok(study)
     }
-    let mut ran = Vec::new();
-    for study in &studies {
-        let Some((runs, elapsed_ms)) = study.run("suite", &args.shard, args.long.allow_long)?
-        else {
-            return Ok(());
-        };
-        ran.push((runs, elapsed_ms));
-    }
-    let variants = studies
-        .iter()
-        .zip(&ran)
-        .map(|(study, (runs, elapsed_ms))| Variant {
-            variant: study.name.clone(),
-            summary: Summary::of(&study.subject.row, runs),
-            report: report(&study.subject, &args.suite, runs, *elapsed_ms),
-        })
-        .collect();
-    emit(&CompareReport { variants })
 }
 
-/// Refuses a variant whose buildings differ from the first row's in number
-/// or names, naming it (`variant`, as given) and what differs.
-fn same_buildings(first: &Row, other: &Row, variant: &str) -> Result<(), CliError> {
-    let names = |r: &Row| -> Vec<String> { r.buildings.iter().map(|b| b.name.clone()).collect() };
-    let (a, b) = (names(first), names(other));
-    if a == b {
-        return Ok(());
+impl Compared for SuiteArgs {
+    type Variant = Study<RowSuiteCase>;
+    type Summary = Summary;
+    type Report<'a> = RowSuiteReport<'a>;
+    const STUDY: &'static str = "suite";
+
+    fn load(&self, name: &str) -> Result<Study<RowSuiteCase>, CliError> {
+        self.variant(name)
     }
-    Err(CliError::Usage(format!(
-        "--compare {}: its buildings are {} ({}), the first row's {} ({}); a variant keeps \
-         the buildings and their names",
-        crate::model::params::echo::text(variant),
-        b.len(),
-        b.join(", "),
-        a.len(),
-        a.join(", ")
-    )))
+
+    fn row(study: &Study<RowSuiteCase>) -> &Row {
+        &study.subject.row
+    }
+
+    fn run<'a>(&'a self, study: &'a Study<RowSuiteCase>) -> Ran<Summary, RowSuiteReport<'a>> {
+        let Some((runs, elapsed_ms)) = study.run("suite", &self.shard, self.long.allow_long)?
+        else {
+            return Ok(None);
+        };
+        let summary = Summary::of(&study.subject.row, &runs);
+        Ok(Some((
+            summary,
+            report(&study.subject, &self.suite, &runs, elapsed_ms),
+        )))
+    }
 }
 
 /// One joint of a variant over the suite.
 #[derive(Debug, Serialize)]
-struct JointSummary {
+pub struct JointSummary {
     joint: String,
     /// The fraction of records with an impact at it.
     pounding_probability: f64,
@@ -112,7 +103,7 @@ struct JointSummary {
 
 /// One building of a variant over the suite.
 #[derive(Debug, Serialize)]
-struct BuildingSummary {
+pub struct BuildingSummary {
     name: String,
     /// Medians of max_i |Δ_i|/h_i, with pounding and with every joint open.
     #[serde(serialize_with = "crate::output::report::float_or_inf")]
@@ -123,7 +114,7 @@ struct BuildingSummary {
 
 /// What the side-by-side summary gives of one variant.
 #[derive(Debug, Serialize)]
-struct Summary {
+pub struct Summary {
     joints: Vec<JointSummary>,
     buildings: Vec<BuildingSummary>,
 }
@@ -166,61 +157,16 @@ impl Summary {
     }
 }
 
-/// One variant: its name as given, its summary and its own suite report.
-#[derive(Debug, Serialize)]
-struct Variant<'a> {
-    variant: String,
-    summary: Summary,
-    #[serde(flatten)]
-    report: RowSuiteReport<'a>,
-}
+impl SideBySide for Summary {
+    const HEADING: &'static str = "side by side: per joint P(pounding) and the median gap that prevents it, \
+         per building the median peak storey drift ratio";
 
-/// `pounding suite --buildings --compare` in every format.
-#[derive(Debug, Serialize)]
-struct CompareReport<'a> {
-    variants: Vec<Variant<'a>>,
-}
-
-impl Report for CompareReport<'_> {
-    fn csv_header(&self) -> Vec<&'static str> {
-        let mut h = vec!["variant"];
-        if let Some(v) = self.variants.first() {
-            h.extend(v.report.csv_header());
-        }
-        h
-    }
-
-    fn csv_rows(&self) -> Vec<Vec<String>> {
-        let mut rows = Vec::new();
-        for v in &self.variants {
-            for line in v.report.csv_rows() {
-                let mut row = vec![v.variant.clone()];
-                row.extend(line);
-                rows.push(row);
-            }
-        }
-        rows
-    }
-
-    fn table(&self) -> String {
-        let mut s = String::new();
-        let Some(first) = self.variants.first() else {
-            return s;
+    fn table(variants: &[(&str, &Summary)], width: usize, s: &mut String) {
+        let Some((_, first)) = variants.first() else {
+            return;
         };
-        let width = self
-            .variants
-            .iter()
-            .map(|v| v.variant.chars().count())
-            .max()
-            .unwrap_or(7)
-            .max(7);
-        let _ = writeln!(
-            s,
-            "side by side: per joint P(pounding) and the median gap that prevents it, \
-             per building the median peak storey drift ratio"
-        );
         let _ = write!(s, "{:<width$}", "variant");
-        for j in &first.summary.joints {
+        for j in &first.joints {
             let label = j.joint.split(' ').next().unwrap_or("");
             let _ = write!(
                 s,
@@ -229,13 +175,13 @@ impl Report for CompareReport<'_> {
                 "d_min med mm"
             );
         }
-        for b in &first.summary.buildings {
+        for b in &first.buildings {
             let _ = write!(s, " {:>16}", format!("{} drift %", b.name));
         }
         let _ = writeln!(s);
-        for v in &self.variants {
-            let _ = write!(s, "{:<width$}", v.variant);
-            for j in &v.summary.joints {
+        for (name, summary) in variants {
+            let _ = write!(s, "{:<width$}", name);
+            for j in &summary.joints {
                 let _ = write!(
                     s,
                     " {:>14} {:>14}",
@@ -243,16 +189,10 @@ impl Report for CompareReport<'_> {
                     g4(j.median_min_gap_m * 1e3)
                 );
             }
-            for b in &v.summary.buildings {
+            for b in &summary.buildings {
                 let _ = write!(s, " {:>16}", g4(b.median_max_drift_ratio * 100.0));
             }
             let _ = writeln!(s);
         }
-        for v in &self.variants {
-            let _ = writeln!(s);
-            let _ = writeln!(s, "── variant {} ──", v.variant);
-            s.push_str(&v.report.table());
-        }
-        s
     }
 }
