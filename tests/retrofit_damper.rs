@@ -1,26 +1,14 @@
 //! Fluid viscous dampers across the joint (SPEC §14), F = c|Δv|^α sgn Δv
-//! with α < 1, in Newmark (the exact method refuses them): convergence as
-//! Δt halves (peaks, link force, stroke and dissipated energy), the limit
-//! α → 1 against the linear dashpot, the mirror image, and the command
-//! line.
+//! with α < 1, in Newmark: convergence as Δt halves (peaks, link force,
+//! stroke and dissipated energy), the limit α → 1 against the linear
+//! dashpot, and the mirror image. The exact method's are in
+//! `retrofit_fvd_exact.rs`, with the command line.
 
 mod common;
 
-use common::{fails, json, linked};
-use pounding::model::buildings::{self, Ground, Row};
-use pounding::model::record::read;
+use common::{damped, linked, record_ground};
+use pounding::model::buildings::Ground;
 use pounding::solver::buildings::{RowRun, run_newmark};
-
-fn record_ground(scale: f64) -> Ground {
-    Ground::from_record(&read("presets/synthetic.at2").unwrap(), scale)
-}
-
-/// The shipped retrofit row with its dashpot a damper of exponent α.
-fn damped(alpha: f64, more: &[&str]) -> Row {
-    let mut sets = vec![format!("link1.exponent={alpha}")];
-    sets.extend(more.iter().map(|s| s.to_string()));
-    buildings::load_with("block-and-frame-retrofit", &sets).unwrap()
-}
 
 /// Every floor's peaks |u|, |u̇|, |ü + ü_g| and drift, then the link's
 /// peak force, stroke, peak rate and dissipated energy
@@ -141,30 +129,4 @@ fn the_mirror_image_gives_the_same_peaks_and_damper_forces() {
     assert!(close(x.stroke, y.stroke));
     assert!(close(x.max_rate, y.max_rate));
     assert!(close(x.energy, y.energy));
-}
-
-/// The exact method refuses a damper with one line and exit 2, naming the
-/// file, the link, the exponent and the method that solves it; Newmark
-/// runs it and reports the link's peak force, stroke and energy.
-#[test]
-fn the_command_line_runs_a_damper_by_newmark() {
-    let set = ["--set", "link1.exponent=0.35"];
-    let mut exact = vec!["run", "--buildings", "block-and-frame-retrofit"];
-    exact.extend(set);
-    fails(
-        &exact,
-        2,
-        &[
-            "presets/buildings/block-and-frame-retrofit.toml: link1: `exponent` = 0.35",
-            "--method newmark",
-        ],
-    );
-    let mut newmark = exact.clone();
-    newmark.extend(["--method", "newmark", "--format", "json"]);
-    let v = json(&newmark);
-    let link = &v["links"][0];
-    for key in ["max_force_kn", "stroke", "max_rate", "energy_kj"] {
-        let x = link[key].as_f64().unwrap_or(f64::NAN);
-        assert!(x > 0.0 && x.is_finite(), "{key}: {link}");
-    }
 }

@@ -12,14 +12,11 @@ use super::{CliError, usage};
 use crate::accuracy::timing::median;
 use crate::analysis::buildings_report::RowReport;
 use crate::analysis::work;
-use crate::model::buildings::load::text_of;
 use crate::model::buildings::matrices::default_tail;
 use crate::model::buildings::{Ground, Row, load_with};
 use crate::model::excitation::Excitation;
 use crate::model::physical::parse_acceleration;
-use crate::solver::buildings::{
-    RowError, RowOptions, default_step, max_step, run_newmark, run_row,
-};
+use crate::solver::buildings::{RowOptions, default_step, max_step, run_newmark, run_row};
 
 /// The options of a row of buildings.
 #[derive(Debug, Clone, Default, Args)]
@@ -61,33 +58,14 @@ impl BuildingsArgs {
         .collect()
     }
 
-    /// The row, with `--set` and `--model` applied, for the exact method.
+    /// The row, with `--set` and `--model` applied.
     pub fn row(&self, overrides: &[String], model: Option<&str>) -> Result<Row, CliError> {
-        self.row_for(overrides, model, false)
-    }
-
-    /// The row, with `--set` and `--model` applied; a fluid viscous damper
-    /// (SPEC §14) is refused unless the run is Newmark's, which alone solves it.
-    pub fn row_for(
-        &self,
-        overrides: &[String],
-        model: Option<&str>,
-        newmark: bool,
-    ) -> Result<Row, CliError> {
         let name = self.buildings.as_deref().unwrap_or("block-and-frame");
         let mut sets = overrides.to_vec();
         if let Some(m) = model {
             sets.push(format!("model=\"{m}\""));
         }
-        let row = load_with(name, &sets).map_err(usage)?;
-        if newmark {
-            return Ok(row);
-        }
-        RowError::unsolved_damper(&row).map_err(|e| {
-            let file = text_of(name).map_or_else(|_| name.to_string(), |(file, _)| file);
-            usage(format!("{file}: {e}"))
-        })?;
-        Ok(row)
+        load_with(name, &sets).map_err(usage)
     }
 
     /// The first of `--amplitude` and `--period` given, as (key, value):
@@ -267,8 +245,7 @@ pub fn run(
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     let method = params.method.as_deref().unwrap_or("exact");
-    let newmark = method == "newmark";
-    let mut row = args.row_for(&params.overrides, params.model.as_deref(), newmark)?;
+    let mut row = args.row(&params.overrides, params.model.as_deref())?;
     if params.no_pounding {
         // The no-pounding baseline: every joint open for good.
         for joint in &mut row.joints {
@@ -294,10 +271,7 @@ pub fn run(
             Some(dt) => run_newmark(&row, &ground, duration, dt),
             None => run_row(&row, &ground, &options),
         };
-        result = Some(run.map_err(|e| match e {
-            RowError::Runaway(_) | RowError::Unconverged(_) => CliError::Failed(e.to_string()),
-            RowError::Damper { .. } => CliError::Usage(e.to_string()),
-        })?);
+        result = Some(run.map_err(|e| CliError::Failed(e.to_string()))?);
         times.push(t.elapsed().as_secs_f64() * 1e3);
     }
     let mut result = result.expect("at least one run");

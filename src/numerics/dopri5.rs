@@ -168,6 +168,23 @@ pub fn step<S: State>(f: &impl Fn(f64, &S) -> S, t0: f64, y0: &S, f0: &S, h: f64
 }
 
 impl<S: State> Step<S> {
+    /// A step of length h from y0 to y1 taken by another method, with f at
+    /// its end and its error estimate; its dense output is the line from
+    /// y0 to y1 (first order).
+    pub fn linear(h: f64, y0: &S, y1: S, f1: S, error: S) -> Step<S> {
+        let rise = axpby(1.0, &y1, -1.0, y0);
+        let mut zero = y0.clone();
+        zero.as_mut().fill(0.0);
+        Step {
+            t0: 0.0,
+            h,
+            y1,
+            f1,
+            error,
+            dense: [y0.clone(), rise, zero.clone(), zero.clone(), zero],
+        }
+    }
+
     /// The dense-output state at θ ∈ [0, 1] (t = t0 + θh), 4th order.
     #[inline]
     pub fn at(&self, theta: f64) -> S {

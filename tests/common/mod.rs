@@ -173,3 +173,41 @@ pub fn linked(link: &str) -> pounding::model::buildings::Row {
     );
     pounding::model::buildings::parse("linked.toml", &text).unwrap()
 }
+
+/// The shipped simulated record `presets/synthetic.at2`, scaled.
+pub fn record_ground(scale: f64) -> pounding::model::buildings::Ground {
+    let record = pounding::model::record::read("presets/synthetic.at2").unwrap();
+    pounding::model::buildings::Ground::from_record(&record, scale)
+}
+
+/// The shipped retrofit row with its dashpot a damper of exponent α, and
+/// more `--set`s.
+pub fn damped(alpha: f64, more: &[&str]) -> pounding::model::buildings::Row {
+    let mut sets = vec![format!("link1.exponent={alpha}")];
+    sets.extend(more.iter().map(|s| s.to_string()));
+    pounding::model::buildings::load_with("block-and-frame-retrofit", &sets).unwrap()
+}
+
+/// A row's exact run against the reference: the largest difference of the
+/// floors' peaks |u| and |ü + ü_g|, each relative to its building's
+/// largest, and of the first link's peak force relative to itself.
+pub fn against_reference(
+    exact: &pounding::solver::buildings::RowRun,
+    reference: &pounding::reference::row::RowReference,
+) -> f64 {
+    let mut worst = 0.0f64;
+    for (b, floors) in exact.floors.iter().enumerate() {
+        let scale = |v: &Vec<f64>| v.iter().fold(0.0f64, |m, x| m.max(*x));
+        let (su, sa) = (
+            scale(&reference.displacement[b]),
+            scale(&reference.absolute_acceleration[b]),
+        );
+        for (i, f) in floors.iter().enumerate() {
+            worst = worst
+                .max((f.displacement - reference.displacement[b][i]).abs() / su)
+                .max((f.absolute_acceleration - reference.absolute_acceleration[b][i]).abs() / sa);
+        }
+    }
+    let (fe, fr) = (exact.links[0].max_force, reference.link_force[0]);
+    worst.max((fe - fr).abs() / fr)
+}

@@ -8,11 +8,14 @@
 //! one accepted step of the Dormand–Prince 5(4) pair on y = (u, u̇),
 //!
 //! ```text
-//! ü = −M⁻¹K u − M⁻¹C u̇ + M⁻¹q − 1 ü_g(t) − M⁻¹ Σ_p f_p(δ_p, δ̇_p) e_p,
+//! ü = −M⁻¹K u − M⁻¹C u̇ + M⁻¹q − 1 ü_g(t) − M⁻¹ Σ_p f_p(δ_p, δ̇_p) e_p
+//!     − M⁻¹ Σ_d c_d |Δv_d|^α_d sgn(Δv_d) e_d,
 //! ```
 //!
 //! (K, C and q of the configuration's storeys: a Hertz-type law puts
-//! nothing into them), its local error held below [`TOLERANCE`] of the
+//! nothing into them; the last sum is the row's fluid viscous dampers,
+//! SPEC §14, [`super::damper`], which put their springs alone into K, and
+//! which keep a row on these steps for the whole run), its local error held below [`TOLERANCE`] of the
 //! motion's scales (largest |u| for displacements, largest |u̇| for
 //! velocities). On the accepted step each u_i is the quintic Hermite
 //! polynomial through (u, u̇, ü) at both ends (error O(h⁶), the step's own
@@ -27,6 +30,8 @@ use crate::numerics::dopri5::{self, Step};
 use crate::solver::exact::contact_rk::{equispaced_quintic, hermite_quintic};
 
 use super::config::Config;
+use super::damper::{self, Damper};
+use super::damper_radau;
 use super::event_function::EventFunction;
 use super::layout::Layout;
 use super::system::System;
@@ -52,10 +57,12 @@ struct HertzPair {
     right_rate: f64,
 }
 
-/// The row's motion through Hertz-type contact phases in one configuration.
+/// The row's motion through Hertz-type contact phases, and with its fluid
+/// viscous dampers, in one configuration.
 pub struct Contact<'a, G: Fn(f64) -> f64> {
     system: &'a System,
     pairs: Vec<HertzPair>,
+    dampers: &'a [Damper],
     /// ü_g at offset s from the step's start.
     ground: G,
 }
@@ -63,17 +70,19 @@ pub struct Contact<'a, G: Fn(f64) -> f64> {
 /// One accepted step with where it started: y₀ = (u, u̇), ẏ₀, the step.
 pub type Taken = (Vec<f64>, Vec<f64>, Step<Vec<f64>>);
 
-/// Whether any closed pair of `config` is under a Hertz-type law.
-pub fn any_hertzian(config: &Config) -> bool {
-    config
-        .contact
-        .iter()
-        .flatten()
-        .any(|c| !c.law.is_analytic())
+/// Whether the row's motion in `config` goes by these steps: a closed pair
+/// is under a Hertz-type law, or the row has a fluid viscous damper.
+pub fn by_steps(layout: &Layout, config: &Config) -> bool {
+    !layout.dampers.is_empty()
+        || config
+            .contact
+            .iter()
+            .flatten()
+            .any(|c| !c.law.is_analytic())
 }
 
 impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
-    pub fn new(layout: &Layout, config: &Config, system: &'a System, ground: G) -> Self {
+    pub fn new(layout: &'a Layout, config: &Config, system: &'a System, ground: G) -> Self {
         let pairs = layout
             .pairs
             .iter()
@@ -94,6 +103,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         Contact {
             system,
             pairs,
+            dampers: &layout.dampers,
             ground,
         }
     }
@@ -107,6 +117,16 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         let mut out = vec![0.0; 2 * n];
         out[..n].copy_from_slice(v);
         let acc = &mut out[n..];
+        self.hertz_acceleration(s, u, v, acc);
+        for d in self.dampers {
+            d.add_to(v, acc);
+        }
+        out
+    }
+
+    /// ü at offset s without the dampers' forces: the linear system's and
+    /// the closed Hertz-type pairs'.
+    fn hertz_acceleration(&self, s: f64, u: &[f64], v: &[f64], acc: &mut [f64]) {
         self.system.acceleration(u, v, (self.ground)(s), acc);
         for p in &self.pairs {
             let delta = u[p.left] - u[p.right] - p.gap;
@@ -114,14 +134,70 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
             acc[p.left] -= p.left_rate * f;
             acc[p.right] += p.right_rate * f;
         }
-        out
+    }
+
+    /// Whether some damper is stiff over a step of length h from y0
+    /// ([`Damper::stiff`]): the step is then the implicit one.
+    fn stiff(&self, y0: &[f64], h: f64) -> bool {
+        let n = y0.len() / 2;
+        self.dampers.iter().any(|d| d.stiff(d.rate(&y0[n..]), h))
+    }
+
+    /// The implicit step of length h from y0 ([`damper_radau`]), as a
+    /// step of the pair with f at its end, its error by step doubling, and
+    /// as its dense output the line from y0 to y1; `speed` is the motion's
+    /// velocity scale. Where Newton's method fails on it (a damper so weak
+    /// that its inverse law overflows), the explicit step instead.
+    fn implicit(&self, (y0, f0): (&Vec<f64>, &Vec<f64>), h: f64, speed: f64) -> Step<Vec<f64>> {
+        let n = y0.len() / 2;
+        let acceleration = |s: f64, u: &[f64], v: &[f64], f: &[f64], acc: &mut [f64]| {
+            self.hertz_acceleration(s, u, v, acc);
+            for (d, &f) in self.dampers.iter().zip(f) {
+                acc[d.left] -= d.left_rate * f;
+                acc[d.right] += d.right_rate * f;
+            }
+        };
+        let row = damper_radau::Row {
+            acceleration: &acceleration,
+            stiffness: &self.system.stiffness,
+            damping: &self.system.damping,
+            dampers: self.dampers,
+        };
+        let forces = |y: &[f64]| -> Vec<f64> {
+            self.dampers
+                .iter()
+                .map(|d| d.force(d.rate(&y[n..])))
+                .collect()
+        };
+        let whole = damper_radau::step(&row, y0, &forces(y0), h, speed);
+        let half = damper_radau::step(&row, y0, &forces(y0), 0.5 * h, speed);
+        let twice = half.as_ref().and_then(|y| {
+            // The second half starts at h/2: the ground is shifted there.
+            let shifted = |s: f64, u: &[f64], v: &[f64], f: &[f64], acc: &mut [f64]| {
+                acceleration(0.5 * h + s, u, v, f, acc)
+            };
+            let row = damper_radau::Row {
+                acceleration: &shifted,
+                ..row
+            };
+            damper_radau::step(&row, y, &forces(y), 0.5 * h, speed)
+        });
+        let (Some(y1), Some(twice)) = (whole, twice) else {
+            return dopri5::step(&|s, y| self.rate(s, y), 0.0, y0, f0, h);
+        };
+        let error = y1.iter().zip(&twice).map(|(a, b)| (a - b) / 31.0).collect();
+        let f1 = self.rate(h, &y1);
+        Step::linear(h, y0, y1, f1, error)
     }
 
     /// One accepted step from y0 (f0 = ẏ there), at most `h_max` long,
     /// from the suggestion `h_try`, shrunk until the error is within
     /// [`TOLERANCE`] of `scale` = (displacement, velocity); steps below
-    /// `h_min` are accepted (round-off floor). Returns the step and the
-    /// suggested length of the next.
+    /// `h_min` are accepted (round-off floor). A step rejected while some
+    /// damper's Δv changes sign inside it is retried to that reversal, as
+    /// its dense output places it ([`damper::first_reversal`]): its error
+    /// came from the kink, which no step should straddle. Returns the step
+    /// and the suggested length of the next.
     pub fn step(
         &self,
         (y0, f0): (&Vec<f64>, &Vec<f64>),
@@ -131,7 +207,11 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         let n = y0.len() / 2;
         let mut h = h_try.min(h_max);
         loop {
-            let step = dopri5::step(&|s, y| self.rate(s, y), 0.0, y0, f0, h);
+            let step = if self.stiff(y0, h) {
+                self.implicit((y0, f0), h, scale.1)
+            } else {
+                dopri5::step(&|s, y| self.rate(s, y), 0.0, y0, f0, h)
+            };
             let err = step
                 .error
                 .iter()
@@ -152,13 +232,25 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
                 };
                 return (step, next);
             }
-            h *= factor.min(0.9);
+            let reversal =
+                damper::first_reversal(self.dampers, h, &y0[n..], &step.y1[n..], |theta| {
+                    step.at(theta)
+                });
+            h *= match reversal {
+                Some(theta) if theta < 0.999 => theta.max(1e-6),
+                _ => factor.min(0.9),
+            };
         }
     }
 
-    /// The step of length s from y0, taken again.
-    pub fn retake(&self, (y0, f0): (&Vec<f64>, &Vec<f64>), s: f64) -> Step<Vec<f64>> {
-        dopri5::step(&|t, y| self.rate(t, y), 0.0, y0, f0, s)
+    /// The step of length s from y0, taken again (the implicit one where a
+    /// damper is stiff over it; `speed` the motion's velocity scale).
+    pub fn retake(&self, (y0, f0): (&Vec<f64>, &Vec<f64>), s: f64, speed: f64) -> Step<Vec<f64>> {
+        if self.stiff(y0, s) {
+            self.implicit((y0, f0), s, speed)
+        } else {
+            dopri5::step(&|t, y| self.rate(t, y), 0.0, y0, f0, s)
+        }
     }
 
     /// The event of function `g`, found near `s` on the polynomials, placed
@@ -171,13 +263,14 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         start: (&Vec<f64>, &Vec<f64>),
         g: &EventFunction,
         mut s: f64,
+        speed: f64,
     ) -> Step<Vec<f64>> {
         let n = start.0.len() / 2;
         let value = |step: &Step<Vec<f64>>| {
             let (u, v) = step.y1.split_at(n);
             g.at(u, v, &step.f1[n..])
         };
-        let mut step = self.retake(start, s);
+        let mut step = self.retake(start, s, speed);
         for _ in 0..NEWTON {
             let (gs, rate) = value(&step);
             let ds = -gs / rate;
@@ -188,7 +281,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
                 break;
             }
             s = (s + ds).max(if gs <= 0.0 { s.next_up() } else { 0.0 });
-            step = self.retake(start, s);
+            step = self.retake(start, s, speed);
         }
         for _ in 0..NEWTON {
             let (gs, rate) = value(&step);
@@ -197,7 +290,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
             }
             let ds = if rate > 0.0 { -gs / rate } else { 0.0 };
             s = (s + 2.0 * ds).max(s.next_up().next_up());
-            step = self.retake(start, s);
+            step = self.retake(start, s, speed);
         }
         step
     }

@@ -11,10 +11,12 @@
 //! - under the Jankowski law, a closed pair's δ̇ turns negative (its
 //!   damping switches off there);
 //! - a storey of a building with P-Δ reaches its collapse drift,
-//!   |Δ| = collapse_drift_ratio · h (SPEC §15): the run stops there.
+//!   |Δ| = collapse_drift_ratio · h (SPEC §15): the run stops there;
+//! - a fluid viscous damper's Δv changes sign (SPEC §14, [`super::damper`]).
 //!
-//! While a pair under a Hertz-type law is closed, the steps are those of
-//! the Runge–Kutta pair of [`super::contact_rk`] instead of the series.
+//! While a pair under a Hertz-type law is closed, and through the whole run
+//! of a row with a fluid viscous damper, the steps are those of the
+//! Runge–Kutta pair of [`super::contact_rk`] instead of the series.
 //!
 //! A sub-step is quiet when, on rigorous ranges of every watched quantity
 //! and of its rate over the sub-step ([`super::bound`]: the cubic Hermite
@@ -32,7 +34,8 @@ use crate::model::buildings::{Ground, Row};
 
 use super::bound::{Stack, Watch};
 use super::config::{Branch, Closed, Config};
-use super::contact_rk::{self, Contact, Taken, any_hertzian};
+use super::contact_rk::{self, Contact, Taken, by_steps};
+use super::damper;
 use super::energy::{NODES, RowEnergy, gauss_legendre};
 use super::event_function::EventFunction;
 use super::hermite::range;
@@ -100,31 +103,6 @@ pub enum RowError {
         "Newmark's iteration did not converge at t = {0} s (singular tangent or no convergence in 100 iterations); try a smaller --dt"
     )]
     Unconverged(f64),
-    /// A link with α < 1 (SPEC §14), which the exact method does not solve
-    /// yet; Newmark does ([`super::newmark`]).
-    #[error(
-        "link{link}: `exponent` = {exponent}: the exact method does not solve fluid viscous dampers (exponent < 1) yet; `run --method newmark` does"
-    )]
-    Damper { link: usize, exponent: f64 },
-}
-
-impl RowError {
-    /// The first link of `row` that is a fluid viscous damper (α < 1),
-    /// refused by the exact method: near Δv = 0 its damping
-    /// c_l α |Δv|^(α−1) has no bound, and from rest, where the relative
-    /// forcing is small, Δv stays near 0 with a relaxation time
-    /// m̄/(c_l α |Δv|^(α−1)) that shrinks without bound as t → 0: the
-    /// motion is stiff there, and explicit steps (the series, Runge–Kutta)
-    /// do not get through it. Newmark's implicit steps do.
-    pub fn unsolved_damper(row: &Row) -> Result<(), RowError> {
-        match row.links.iter().position(|l| l.exponent < 1.0) {
-            Some(i) => Err(RowError::Damper {
-                link: i + 1,
-                exponent: row.links[i].exponent,
-            }),
-            None => Ok(()),
-        }
-    }
 }
 
 /// Sub-steps a configuration takes by the series before its map is made
@@ -199,6 +177,9 @@ enum Event {
     Turn,
     /// A storey reaches its building's collapse drift (SPEC §15).
     Collapse(usize),
+    /// A fluid viscous damper's Δv changes sign (SPEC §14), by its index
+    /// among the dampers.
+    Reversal(usize),
 }
 
 struct Run<'a> {
@@ -245,6 +226,9 @@ struct Run<'a> {
     spare: Vec<Stack>,
     /// Every link's peaks and energy (SPEC §14).
     links: Vec<LinkResult>,
+    /// The sign of each damper's Δv in its current phase (0 until it has
+    /// one): its reversal is watched against it ([`super::damper`]).
+    damper_signs: Vec<f64>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -282,7 +266,6 @@ pub fn run_row_cached(
     options: &RowOptions,
     cache: &mut MapCache,
 ) -> Result<RowRun, RowError> {
-    RowError::unsolved_damper(row)?;
     let propagator = cache.of(row);
     let counts_before = (propagator.made, propagator.used, propagator.seconds);
     let layout = Layout::of(row);
@@ -343,7 +326,9 @@ pub fn run_row_cached(
         next: (Vec::new(), Vec::new()),
         spare: Vec::new(),
         links: vec![LinkResult::new(); layout_links],
+        damper_signs: Vec::new(),
     };
+    run.damper_signs = damper::signs(&run.layout.dampers, &run.v);
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
     'pieces: for piece in ground.pieces(options.duration) {
@@ -364,6 +349,8 @@ pub fn run_row_cached(
                 Some(Cause::Energy)
             } else if run.config.any_contact() {
                 Some(Cause::Contact)
+            } else if !run.layout.dampers.is_empty() {
+                Some(Cause::Damper)
             } else {
                 run.quiet_step(&piece, h).err()
             };
@@ -631,8 +618,7 @@ impl Run<'_> {
             let su = self.u.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
             let sv = self.v.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
             let ground = (a, rate, piece.sigma);
-            let hertzian = any_hertzian(&self.config);
-            let (series, mut rk) = if hertzian {
+            let (series, mut rk) = if by_steps(&self.layout, &self.config) {
                 let (series, step) = self.contact_step(piece, rem, ground, (su, sv));
                 (series, Some(step))
             } else {
@@ -651,7 +637,7 @@ impl Run<'_> {
                 let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
                     ground_at(piece, t + s).0
                 });
-                *step = contact.settle((y0, f0), g, end);
+                *step = contact.settle((y0, f0), g, end, sv);
                 end = step.h;
             }
             self.peaks_on(&series, end, rk.is_some().then_some(piece));
@@ -671,6 +657,15 @@ impl Run<'_> {
             if let Some((e, _)) = event {
                 self.apply(e);
             }
+            // A damper that had no sign (from rest), or whose crossings
+            // were not watched (stiff), takes Δv's sign now.
+            let h = self.next_contact_step;
+            for (sign, d) in self.damper_signs.iter_mut().zip(&self.layout.dampers) {
+                let rate = d.rate(&self.v);
+                if *sign == 0.0 || d.stiff(rate, h) {
+                    *sign = damper::signs(std::slice::from_ref(d), &self.v)[0];
+                }
+            }
             // The point itself, with ü of the configuration now in force.
             let (a1, _) = ground_at(piece, self.t);
             let acc = self.acceleration(piece, self.t, 0.0, (&self.u, &self.v));
@@ -687,7 +682,7 @@ impl Run<'_> {
     /// Hertz-type law ([`Contact::rate`]), which the system leaves out.
     fn acceleration(&self, piece: &Piece, t: f64, s: f64, (u, v): (&[f64], &[f64])) -> Vec<f64> {
         let n = self.layout.dofs;
-        if any_hertzian(&self.config) {
+        if by_steps(&self.layout, &self.config) {
             let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
                 ground_at(piece, t + s).0
             });
@@ -780,6 +775,23 @@ impl Run<'_> {
                         each(Event::Turn, EventFunction::drift_rate(a, Some(b), -1.0));
                     }
                 }
+            }
+        }
+        // A damper's reversal, unless it is stiff over the next step.
+        let h = self.next_contact_step;
+        for (k, (d, &sign)) in self
+            .layout
+            .dampers
+            .iter()
+            .zip(&self.damper_signs)
+            .enumerate()
+        {
+            if sign != 0.0 && !d.stiff(d.rate(&self.v), h) {
+                // g = −σΔv: Δv leaves the sign σ of its phase.
+                each(
+                    Event::Reversal(k),
+                    EventFunction::drift_rate(d.left, Some(d.right), -sign),
+                );
             }
         }
     }
@@ -970,6 +982,7 @@ impl Run<'_> {
             Event::Separation(_) => events.separations += 1,
             Event::Turn => events.turns += 1,
             Event::Collapse(_) => events.collapses += 1,
+            Event::Reversal(_) => events.reversals += 1,
         }
         match event {
             Event::Yield(k, branch) => self.config.branch[k] = branch,
@@ -999,6 +1012,11 @@ impl Run<'_> {
                 });
             }
             Event::Turn => return,
+            // Only the sign the next reversal is watched against changes.
+            Event::Reversal(k) => {
+                self.damper_signs[k] = -self.damper_signs[k];
+                return;
+            }
             Event::Collapse(k) => {
                 let (building, storey) = self.layout.building_storey(k);
                 self.collapse = Some(Collapse {

@@ -7,6 +7,8 @@ use nalgebra::DMatrix;
 use crate::model::buildings::matrices::RowMatrices;
 use crate::model::buildings::{ContactElement, FloorPair, LinkElement, Row};
 
+use super::damper::Damper;
+
 /// One storey: it joins floor `lower` (None: the ground) and floor `upper`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Storey {
@@ -41,6 +43,8 @@ pub struct Layout {
     pub hard: usize,
     /// The links across the joints (SPEC §14).
     pub links: Vec<LinkElement>,
+    /// The links that are fluid viscous dampers (α < 1), in link order.
+    pub dampers: Vec<Damper>,
     /// Floors at the same elevation whatever the gap, whose largest
     /// u_A − u_B is tracked (the gap that prevents pounding).
     pub facing: Vec<FloorPair>,
@@ -90,6 +94,7 @@ impl Layout {
         let damp = (0..n)
             .map(|i| (0..n).map(|j| c_all[(i, j)].abs()).sum::<f64>())
             .fold(0.0, f64::max);
+        let dampers = Damper::all(&links, &mass);
         Layout {
             facing: row.facing_floors(),
             dofs: n,
@@ -101,6 +106,7 @@ impl Layout {
             hard: row.pairs().len(),
             elements,
             links,
+            dampers,
             rate: stiff.sqrt().max(damp),
         }
     }

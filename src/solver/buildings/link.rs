@@ -4,8 +4,9 @@
 //! - The spring k_l is linear always, and so is the dashpot when α = 1: both
 //!   enter K and C of every configuration ([`add_linear`]), so that the
 //!   cached maps and the Taylor series carry them exactly.
-//! - A fluid viscous damper (α < 1) is refused for now
-//!   ([`super::RowError::Damper`]): near Δv = 0 its damping has no bound.
+//! - A fluid viscous damper's dashpot (α < 1) is nonlinear, its slope
+//!   without bound at Δv = 0: it stays out of K and C, and the row's
+//!   Runge–Kutta steps carry it ([`super::damper`]).
 //!
 //! Per link a run reports peak |F|, peak |Δu| (the stroke), peak |Δv|, and
 //! the energy its dashpot dissipated, E_l = ∫ c_l |Δv|^(α+1) dt; the peaks

@@ -17,7 +17,11 @@
 //! - through a contact phase of a Hertz-type law (SPEC §10), whose force is
 //!   not analytic at δ = 0, by steps of an embedded Runge–Kutta pair
 //!   ([`contact_rk`]), each written as polynomials so that the same
-//!   machinery finds events and peaks on it.
+//!   machinery finds events and peaks on it;
+//! - in a row with a fluid viscous damper (SPEC §14), whose force
+//!   c_l|Δv|^α sgn Δv is not analytic at Δv = 0 and acts at every instant,
+//!   by the same Runge–Kutta steps for the whole run, each reversal of Δv
+//!   an event ([`damper`]).
 //!
 //! One storey each gives the SDOF pair of SPEC §2.
 //!
@@ -27,6 +31,8 @@
 //! - [`system`]: the linear system of one configuration;
 //! - [`expm`]: the matrix exponential of its maps;
 //! - [`link`]: links across the joints (SPEC §14), linear and fluid viscous;
+//! - [`damper`]: the fluid viscous dampers (α < 1), carried by the
+//!   Runge–Kutta steps for the whole run, their reversals events;
 //! - [`peaks`]: the envelopes a run reports;
 //! - [`energy`]: the energy balance, by quadrature on the Taylor steps;
 //! - [`result`]: what a run returns;
@@ -37,6 +43,8 @@
 pub mod bound;
 pub mod config;
 pub mod contact_rk;
+pub mod damper;
+pub mod damper_radau;
 pub mod driver;
 pub mod energy;
 pub mod event_function;

@@ -26,6 +26,9 @@ pub enum Cause {
     Contact,
     /// The energy balance is asked for: every sub-step by the series.
     Energy,
+    /// The row has a fluid viscous damper (SPEC §14): its force is
+    /// nonlinear at every instant, so no sub-step goes by the map.
+    Damper,
     /// The configuration has been met fewer than
     /// [`super::driver::FRESH`] times in this run: over so few sub-steps a
     /// map costs more than the series.
@@ -34,7 +37,7 @@ pub enum Cause {
 
 /// Counts per [`Cause`], in its order.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct PerCause(pub [usize; 8]);
+pub struct PerCause(pub [usize; 9]);
 
 impl PerCause {
     pub fn add(&mut self, cause: Cause, count: usize) {
@@ -49,7 +52,8 @@ impl PerCause {
 }
 
 /// Events applied, by kind: each changes the configuration (the collapse
-/// stops the run; a Jankowski turn changes only the damping's sign).
+/// stops the run; a Jankowski turn changes only the damping's sign, a
+/// damper's reversal only the sign its next one is watched against).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Events {
     pub yields: usize,
@@ -58,6 +62,8 @@ pub struct Events {
     pub separations: usize,
     pub turns: usize,
     pub collapses: usize,
+    /// Reversals of a fluid viscous damper's Δv (SPEC §14).
+    pub reversals: usize,
 }
 
 /// The profile of one run.
@@ -84,6 +90,6 @@ pub struct RowProfile {
 }
 
 /// Names of the causes, in [`Cause`]'s order, for tables.
-pub const CAUSES: [&str; 8] = [
-    "onset", "yield", "unload", "collapse", "peak", "contact", "energy", "fresh",
+pub const CAUSES: [&str; 9] = [
+    "onset", "yield", "unload", "collapse", "peak", "contact", "energy", "damper", "fresh",
 ];
