@@ -13,6 +13,7 @@
 //! with contact (finite gap) counts [`POUNDING`] times a free run: set 1's
 //! nine impacts at Π_ω1 = 1 double its time (0.10 against 0.05 ms).
 
+use crate::model::buildings::Row;
 use crate::model::{Method, Params};
 
 /// Cost of one nominal Newmark step, measured on set 1 in a release build:
@@ -72,10 +73,51 @@ pub fn pounding_run(p: &Params) -> f64 {
 ///   Newton solve of the dense n-system: about 12 ns × n² on small rows
 ///   (block-and-frame: 430 ms for 292 000 steps; three-in-series: 3.4 s for
 ///   900 000), and its LU's n³/3 operations on tall ones.
-pub fn row_seconds(floors: usize, duration: f64, newmark_step: Option<f64>) -> f64 {
-    let n = floors as f64;
+/// - A fluid viscous damper (a link with α < 1, SPEC §14) makes the exact
+///   method take Runge–Kutta and, where the damper is stiff, Radau steps
+///   for the whole run: [`FLUID_DAMPER_EXACT`] times the linear row's map.
+///   Newmark's mixed step costs about the same with or without one.
+pub fn row_seconds(row: &Row, duration: f64, newmark_step: Option<f64>) -> f64 {
+    let n = row.dofs() as f64;
     match newmark_step {
-        None => 6.4e-6 * n * n * duration + 2.0 * 1e-9 * (2.0 * n).powi(3),
+        None => {
+            let fluid = row.links.iter().any(|l| l.exponent < 1.0);
+            let factor = if fluid { FLUID_DAMPER_EXACT } else { 1.0 };
+            factor * (6.4e-6 * n * n * duration + 2.0 * 1e-9 * (2.0 * n).powi(3))
+        }
         Some(dt) => duration / dt * (1.24e-8 * n * n + 3.3e-10 * n.powi(3)),
+    }
+}
+
+/// How many times the exact method's cost a row with a fluid viscous
+/// damper takes: block-and-frame-retrofit with `link1.exponent = 0.35`
+/// under `synthetic:2000` ran 1.49 s against the bare row's 13 ms, and
+/// 1.45 s against 9.2 ms in another run (113–157×).
+pub const FLUID_DAMPER_EXACT: f64 = 120.0;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::buildings::load_with;
+
+    fn retrofit(exponent: &str) -> Row {
+        let set = format!("link1.exponent={exponent}");
+        load_with("block-and-frame-retrofit", &[set]).expect("the shipped retrofit row")
+    }
+
+    /// A fluid viscous damper multiplies the exact method's estimate by
+    /// [`FLUID_DAMPER_EXACT`] and leaves Newmark's as it is, so that the
+    /// `--allow-long` guard sees the Radau steps such a run takes.
+    #[test]
+    fn a_fluid_damper_raises_the_exact_estimate_only() {
+        let (linear, fluid) = (retrofit("1.0"), retrofit("0.35"));
+        let exact = |row: &Row| row_seconds(row, 30.0, None);
+        let newmark = |row: &Row| row_seconds(row, 30.0, Some(1e-3));
+        assert!((exact(&fluid) / exact(&linear) - FLUID_DAMPER_EXACT).abs() < 1e-12);
+        assert_eq!(newmark(&fluid), newmark(&linear));
+        // block-and-frame: n = 11 floors, 6.4 µs × n² a second plus two
+        // exponentials of the 22-state.
+        let expected = 6.4e-6 * 121.0 * 30.0 + 2.0 * 1e-9 * 22f64.powi(3);
+        assert!((exact(&linear) - expected).abs() < 1e-15);
     }
 }

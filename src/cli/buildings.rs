@@ -181,8 +181,8 @@ pub fn bench(
         args.ground(Some(excitation.unwrap_or("synthetic:2000")), None, &row)?;
     // The reference costs about twenty exact runs; Newmark runs at the
     // default step and at two, four and eight times it.
-    let exact = work::row_seconds(row.dofs(), duration, None);
-    let newmark = work::row_seconds(row.dofs(), duration, Some(default_step(duration, &ground)));
+    let exact = work::row_seconds(&row, duration, None);
+    let newmark = work::row_seconds(&row, duration, Some(default_step(duration, &ground)));
     bounded(
         "bench --buildings",
         21.0 * exact + 1.875 * newmark,
@@ -260,7 +260,7 @@ pub fn run(
     };
     // The runs asked for, and the exact method's one more for its energy.
     let runs = f64::from(repeat.max(1)) + f64::from(u8::from(step.is_none()));
-    let seconds = runs * work::row_seconds(row.dofs(), duration, step);
+    let seconds = runs * work::row_seconds(&row, duration, step);
     bounded("run --buildings", seconds, allow_long)?;
     let options = RowOptions::lasting(duration);
     let mut times = Vec::new();
@@ -310,7 +310,7 @@ pub fn gap(
     let row = args.row(&params.overrides, params.model.as_deref())?;
     let (ground, name, duration) =
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
-    let seconds = 2.0 * work::row_seconds(row.dofs(), duration, None);
+    let seconds = 2.0 * work::row_seconds(&row, duration, None);
     bounded("gap --buildings", seconds, allow_long)?;
     let report = crate::analysis::gap::row_gap(&row, &ground, duration, &name)
         .map_err(|e| CliError::Failed(e.to_string()))?;
@@ -356,7 +356,7 @@ pub fn figure(
     let row = args.row(&params.overrides, params.model.as_deref())?;
     let (ground, name, duration) =
         args.ground(params.excitation.as_deref(), params.cycles.as_deref(), &row)?;
-    let seconds = 2.0 * work::row_seconds(row.dofs(), duration, None);
+    let seconds = 2.0 * work::row_seconds(&row, duration, None);
     bounded("figure buildings", seconds, allow_long)?;
     let fig = crate::figure::buildings::row_figure_of(&row, &ground, &name, duration)
         .map_err(|e| CliError::Failed(e.to_string()))?;

@@ -37,7 +37,7 @@ impl RowSpec {
     /// Estimated wall time of the whole job (s), by [`work::row_seconds`].
     pub fn seconds(&self) -> f64 {
         (self.laws.len() + 1 + usize::from(self.bare)) as f64
-            * work::row_seconds(self.row.dofs(), self.duration, None)
+            * work::row_seconds(&self.row, self.duration, None)
     }
 }
 

@@ -360,7 +360,7 @@ pub struct RowMemberRuns {
 /// ([`work::row_seconds`]): `samples` at interval `dt` (s), and the free tail.
 pub fn record_seconds(row: &Row, samples: usize, dt: f64) -> f64 {
     let duration = dt * (samples.max(1) - 1) as f64 + default_tail(row);
-    2.0 * work::row_seconds(row.dofs(), duration, None)
+    2.0 * work::row_seconds(row, duration, None)
 }
 
 impl Subject for RowSuiteCase {
