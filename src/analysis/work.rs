@@ -81,8 +81,11 @@ pub fn row_seconds(row: &Row, duration: f64, newmark_step: Option<f64>) -> f64 {
     let n = row.dofs() as f64;
     match newmark_step {
         None => {
-            let fluid = row.links.iter().any(|l| l.exponent < 1.0);
-            let factor = if fluid { FLUID_DAMPER_EXACT } else { 1.0 };
+            let factor = if row.has_fluid_damper() {
+                FLUID_DAMPER_EXACT
+            } else {
+                1.0
+            };
             factor * (6.4e-6 * n * n * duration + 2.0 * 1e-9 * (2.0 * n).powi(3))
         }
         Some(dt) => duration / dt * (1.24e-8 * n * n + 3.3e-10 * n.powi(3)),

@@ -165,9 +165,14 @@ impl RowPane {
         let seconds = spec.seconds();
         if seconds > row_job::MAX_SECONDS {
             return Err(format!(
-                "{}: {} floors over {:.0} s would take about {seconds:.1} s a change: at most {} s in the explorer (pounding run --buildings takes it)",
+                "{}: {} floors{} over {:.0} s would take about {seconds:.1} s a change: at most {} s in the explorer (pounding run --buildings takes it)",
                 self.file,
                 row.dofs(),
+                if row.has_fluid_damper() {
+                    " with a fluid viscous damper"
+                } else {
+                    ""
+                },
                 spec.duration,
                 row_job::MAX_SECONDS
             ));
@@ -307,5 +312,26 @@ mod tests {
         let e = p.type_value("200").unwrap_err();
         assert!(e.contains("at most 2 s in the explorer"), "{e}");
         assert_eq!(p.row.buildings[1].storeys(), 8);
+    }
+
+    /// A fluid viscous damper takes the exact method's Runge–Kutta and Radau
+    /// steps for the whole run: over the explorer's budget under a record
+    /// as long as its default one (about 30 s), and said so.
+    #[test]
+    fn a_fluid_damper_is_refused_as_too_slow_and_named() {
+        let ground = Ground::sine(3.0, 6.0, 30.0);
+        let mut p =
+            RowPane::open("block-and-frame-retrofit", Arc::new(ground), "sine", None).unwrap();
+        let before = p.row.clone();
+        let e = p
+            .apply(vec![("link1.exponent".into(), "0.35".into())])
+            .unwrap_err();
+        assert!(e.contains("with a fluid viscous damper"), "{e}");
+        assert!(e.contains("at most 2 s in the explorer"), "{e}");
+        assert_eq!(p.row, before);
+        p.apply(vec![("link1.exponent".into(), "0.9999".into())])
+            .unwrap_err();
+        p.apply(vec![("link1.exponent".into(), "1".into())])
+            .unwrap();
     }
 }

@@ -115,6 +115,12 @@ impl Row {
         !self.links.is_empty() || self.joints.iter().any(|j| j.bumper.is_some())
     }
 
+    /// Whether a link is a fluid viscous damper, α < 1 (SPEC §14): its
+    /// force is not linear in Δv, so no matrix map carries the row.
+    pub fn has_fluid_damper(&self) -> bool {
+        self.links.iter().any(|l| l.exponent < 1.0)
+    }
+
     /// The same row without its retrofits: no bumper, no link.
     pub fn bare(&self) -> Row {
         let mut r = self.clone();
