@@ -21,7 +21,6 @@ use crate::analysis::ida::LimitStateFragility;
 use crate::cli::CliError;
 use crate::cli::compare::{Compared, Ran, SideBySide, compare};
 use crate::cli::output::Emit;
-use crate::cli::suite::SuiteArgs;
 use crate::model::buildings::Row;
 
 /// Runs the IDA of `args` at `levels` on its row and on every `--compare`
@@ -51,11 +50,7 @@ impl Compared for IdaCompare<'_> {
     const STUDY: &'static str = "IDA";
 
     fn load(&self, name: &str) -> Result<RowIda, CliError> {
-        let suite = SuiteArgs {
-            buildings: Some(name.to_string()),
-            compare: Vec::new(),
-            ..self.args.suite.clone()
-        };
+        let suite = self.args.suite.on_variant(name);
         let Some(study) = suite.row_study()? else {
             unreachable!("--buildings chooses a row");
         };

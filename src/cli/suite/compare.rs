@@ -49,15 +49,20 @@ impl SuiteArgs {
         }
     }
 
-    /// The study of these arguments on the row `name` instead (a
-    /// `--compare` variant, as given), with its records, checked.
-    pub fn variant(&self, name: &str) -> Result<Study<RowSuiteCase>, CliError> {
-        let variant = SuiteArgs {
+    /// These arguments on the row `name` instead (a `--compare` variant,
+    /// as given), with no variants of their own.
+    pub fn on_variant(&self, name: &str) -> SuiteArgs {
+        SuiteArgs {
             buildings: Some(name.to_string()),
             compare: Vec::new(),
             ..self.clone()
-        };
-        let Chosen::Row(study) = Chosen::of(&variant)? else {
+        }
+    }
+
+    /// The study of these arguments on the row `name` instead (a
+    /// `--compare` variant, as given), with its records, checked.
+    pub fn variant(&self, name: &str) -> Result<Study<RowSuiteCase>, CliError> {
+        let Chosen::Row(study) = Chosen::of(&self.on_variant(name))? else {
             unreachable!("--buildings chooses a row");
         };
         Ok(study)
