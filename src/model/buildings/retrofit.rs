@@ -32,6 +32,22 @@ pub struct ContactElement {
     pub thickness: Option<f64>,
 }
 
+/// A dashpot's law written the other way round (SPEC §14): the velocity
+/// Δv = ψ(F) = sgn F (|F|/c_l)^(1/α) at which it carries the force F.
+/// Bounded in slope where F = 0 (1/α ≥ 1), where c_l|Δv|^α has none: the
+/// implicit steps of both methods take the force as their unknown.
+#[inline]
+pub fn dashpot_velocity(damping: f64, exponent: f64, force: f64) -> f64 {
+    (force / damping).abs().powf(1.0 / exponent) * force.signum()
+}
+
+/// ψ'(F) = (|F|/c_l)^(1/α − 1)/(c_l α) ≥ 0, the slope of
+/// [`dashpot_velocity`].
+#[inline]
+pub fn dashpot_velocity_slope(damping: f64, exponent: f64, force: f64) -> f64 {
+    (force / damping).abs().powf(1.0 / exponent - 1.0) / (damping * exponent)
+}
+
 /// A link with the floors it joins.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinkElement {

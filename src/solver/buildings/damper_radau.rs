@@ -28,6 +28,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::damper::Damper;
+use crate::model::buildings::retrofit::{dashpot_velocity, dashpot_velocity_slope};
 
 /// Newton iterations at most on one step's stages.
 const NEWTON: usize = 50;
@@ -52,12 +53,12 @@ const A: [[f64; 3]; 3] = [
 
 /// Δv = ψ(F), the damper's law the other way round.
 fn inverse_law(d: &Damper, force: f64) -> f64 {
-    (force.abs() / d.damping).powf(1.0 / d.exponent) * force.signum()
+    dashpot_velocity(d.damping, d.exponent, force)
 }
 
 /// ψ'(F) ≥ 0.
 fn inverse_slope(d: &Damper, force: f64) -> f64 {
-    (force.abs() / d.damping).powf(1.0 / d.exponent - 1.0) / (d.exponent * d.damping)
+    dashpot_velocity_slope(d.damping, d.exponent, force)
 }
 
 /// ü at offset s from (u, u̇) with the dampers' forces F given, into the

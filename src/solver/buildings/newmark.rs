@@ -17,6 +17,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::model::buildings::contact::{element_law, reduced_mass};
 use crate::model::buildings::matrices::{RowMatrices, periods};
+use crate::model::buildings::retrofit::{dashpot_velocity, dashpot_velocity_slope};
 use crate::model::buildings::{Ground, Row};
 use crate::model::params::echo;
 use crate::model::params::table::STEPS_PER_PERIOD;
@@ -220,11 +221,10 @@ impl Newmark<'_> {
                     f[j] -= fd;
                     big[(i, row)] = 1.0;
                     big[(j, row)] = -1.0;
-                    let x = (fd / c).abs();
-                    r[row] = w * ((v[i] - v[j]) - x.powf(1.0 / alpha) * fd.signum());
+                    r[row] = w * ((v[i] - v[j]) - dashpot_velocity(c, alpha, fd));
                     big[(row, i)] = w * c2;
                     big[(row, j)] = -w * c2;
-                    big[(row, row)] = -w * x.powf(1.0 / alpha - 1.0) / (c * alpha);
+                    big[(row, row)] = -w * dashpot_velocity_slope(c, alpha, fd);
                 }
                 r.rows_mut(0, n).copy_from(&f);
                 let z = big.lu().solve(&(-r)).ok_or(RowError::Unconverged(t))?;
