@@ -194,6 +194,14 @@ pub struct ScalingReport {
 }
 
 impl ScalingReport {
+    /// How `scaling` scales a suite's records.
+    pub fn of(scaling: &crate::analysis::suite::Scaling) -> Self {
+        ScalingReport {
+            measure: scaling.measure.to_string(),
+            level_g: scaling.level,
+        }
+    }
+
     /// The scaling in words, for a table's opening lines.
     pub fn words(&self) -> String {
         match self.level_g {

@@ -4,25 +4,23 @@
 //! (`--buildings`, SPEC §13). Each record's gap at a joint comes from its
 //! run without contact; the study of those values is
 //! [`crate::analysis::separation::joint_separations`], one path for both
-//! subjects. This module runs it, and each subject's writer (`pair`,
-//! `row`) prints it; with `--compare`, on each variant of a row, side by
-//! side (module `compare`).
+//! subjects. This module runs it, and [`report`] writes it, one writer for
+//! both subjects; with `--compare`, on each variant of a row, side by side
+//! (module `compare`).
 
 use std::fmt::Write as _;
 
 mod compare;
-pub mod pair;
-pub mod row;
+pub mod report;
 
 use super::CliError;
 use super::output::{Emit, num};
+use super::spelling::Spelling;
 use super::subject::{CliSubject, Study};
 use super::suite::{Chosen, SuiteArgs};
 use crate::analysis::separation::{
     JointSeparation, SeparationStudy, joint_separations, parse_probabilities,
 };
-use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
-use crate::analysis::suite::{SuiteCase, SuiteRun};
 use crate::model::params::echo::g4;
 
 /// The probabilities reported when `--probability` is not given.
@@ -92,8 +90,8 @@ pub fn report_with(
 }
 
 /// The separation of `study` at `probabilities`: its records run (or
-/// sharded, or merged), each joint's study, reported by the subject's writer.
-fn separation<S: SeparationWriter>(
+/// sharded, or merged), each joint's study, reported.
+fn separation<S: Spelling>(
     study: &Study<S>,
     args: &SuiteArgs,
     probabilities: &[f64],
@@ -102,14 +100,16 @@ fn separation<S: SeparationWriter>(
     let Some(ran) = separated(study, args, probabilities)? else {
         return Ok(());
     };
-    let report = study.subject.separation_report(
-        &study.name,
-        &args.suite,
+    let subject = &study.subject;
+    let (name, suite) = (&study.name, &args.suite);
+    emit(&report::report(
+        subject,
+        name,
+        suite,
         &ran.runs,
         ran.joints,
         ran.elapsed_ms,
-    );
-    emit(&*report)
+    ))
 }
 
 /// A separation study that ran: the records' runs, each joint's study and
@@ -146,47 +146,6 @@ fn separated<S: CliSubject>(
         joints,
         elapsed_ms,
     }))
-}
-
-/// How a subject writes the separation's report: the pair's ([`pair`]) and
-/// a row's ([`row`]) keep their own spellings of the same study.
-pub trait SeparationWriter: CliSubject {
-    /// `pounding gap --suite`'s report of `runs` and each joint's
-    /// separation (suite `suite`; `name` the preset's).
-    fn separation_report<'a>(
-        &'a self,
-        name: &'a str,
-        suite: &'a str,
-        runs: &[Self::Run],
-        joints: Vec<JointSeparation>,
-        elapsed_ms: f64,
-    ) -> Box<dyn Emit + 'a>;
-}
-
-impl SeparationWriter for SuiteCase {
-    fn separation_report<'a>(
-        &'a self,
-        name: &'a str,
-        suite: &'a str,
-        runs: &[SuiteRun],
-        joints: Vec<JointSeparation>,
-        elapsed_ms: f64,
-    ) -> Box<dyn Emit + 'a> {
-        Box::new(pair::report(name, suite, self, runs, joints, elapsed_ms))
-    }
-}
-
-impl SeparationWriter for RowSuiteCase {
-    fn separation_report<'a>(
-        &'a self,
-        _: &'a str,
-        suite: &'a str,
-        runs: &[RowSuiteRun],
-        joints: Vec<JointSeparation>,
-        elapsed_ms: f64,
-    ) -> Box<dyn Emit + 'a> {
-        Box::new(row::report(self, suite, runs, joints, elapsed_ms))
-    }
 }
 
 /// A separation study (SPEC §12) as a table: the minimum gaps' median and

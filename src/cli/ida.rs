@@ -3,15 +3,14 @@
 //! fragility of each limit state with and without pounding (SPEC §12). The
 //! study is [`crate::analysis::ida`], one path for the pair (`--preset`) and
 //! a row (`--buildings`, SPEC §13); this module parses and runs it, and
-//! each subject's writer (`pair`, `row`) prints it. With `--compare`, the
+//! its `report` writes it, one writer for both subjects. With `--compare`, the
 //! same IDA runs on each variant of a row, side by side (module `compare`).
 
 use clap::Args;
 use serde::Serialize;
 
 mod compare;
-mod pair;
-mod row;
+mod report;
 
 use super::CliError;
 use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
@@ -40,27 +39,6 @@ pub struct IdaArgs {
     pub limits: LimitStateArgs,
     #[command(flatten)]
     pub row_limits: RowLimitArgs,
-}
-
-/// An IDA's CSV rows, as both subjects write them: each of a level's
-/// record lines after the version, the units and the level (g).
-fn level_rows(
-    units: &str,
-    levels: impl IntoIterator<Item = (f64, Vec<Vec<String>>)>,
-) -> Vec<Vec<String>> {
-    let mut rows = Vec::new();
-    for (level_g, lines) in levels {
-        for line in lines {
-            let mut row = vec![
-                env!("CARGO_PKG_VERSION").to_string(),
-                units.to_string(),
-                super::output::num(level_g),
-            ];
-            row.extend(line);
-            rows.push(row);
-        }
-    }
-    rows
 }
 
 fn usage(message: String) -> CliError {
@@ -103,7 +81,7 @@ pub fn report_with(
         let row = RowIda::load(args, &study)?;
         let ran = row.run(&levels, &args.suite)?;
         return ran.map_or(Ok(()), |ran| {
-            emit(&row::report(&row.case, study.suite, ran))
+            emit(&report::report(&row.case, &row.name, study.suite, ran))
         });
     }
     let states = limit_states(&args.limits, &args.row_limits, None)?;
@@ -119,7 +97,7 @@ pub fn report_with(
         .filter(|r| r.result.unreliable().is_some())
         .count();
     let total = ran.runs.iter().map(Vec::len).sum::<usize>();
-    emit(&pair::report(&preset.name, &args.suite.suite, &case, ran))?;
+    emit(&report::report(&case, &preset.name, &args.suite.suite, ran))?;
     if unreliable > 0 && !args.suite.allow_unreliable {
         return Err(CliError::Failed(format!(
             "unreliable result for {unreliable} of {total} runs (flagged in the output); \

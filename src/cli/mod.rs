@@ -37,6 +37,7 @@ pub mod run;
 pub mod shard;
 pub mod similarity;
 pub mod spectrum;
+pub mod spelling;
 pub mod stress;
 pub mod study_tables;
 pub mod subject;

@@ -134,6 +134,33 @@ fn fragility_table(s: &mut String, fragility: &[LimitStateFragility], levels: &[
     }
 }
 
+/// The demand `key` of `st` (scaled by `unit`) as `median (p16–p84)`, or
+/// nothing where the statistics have no such demand.
+pub fn band(st: &SuiteStatistics, key: &str, unit: f64) -> String {
+    summary(st, key).map_or(String::new(), |d| {
+        format!(
+            "{} ({}–{})",
+            g4(d.median * unit),
+            g4(d.p16 * unit),
+            g4(d.p84 * unit)
+        )
+    })
+}
+
+/// The median of the demand `key` of `st` (scaled by `unit`), or nothing
+/// where the statistics have no such demand.
+pub fn median(st: &SuiteStatistics, key: &str, unit: f64) -> String {
+    summary(st, key).map_or(String::new(), |d| g4(d.median * unit))
+}
+
+/// The summary of the demand `key` of `st`.
+fn summary(st: &SuiteStatistics, key: &str) -> Option<crate::analysis::statistics::Summary> {
+    st.demands
+        .iter()
+        .find(|d| d.demand == key)
+        .map(|d| d.summary)
+}
+
 /// The width of a column of record names: the longest name's, from 6 to
 /// 40 characters (a longer name is [`clip`]ped).
 pub fn name_width<'a>(names: impl Iterator<Item = &'a str>) -> usize {

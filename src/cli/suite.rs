@@ -3,25 +3,22 @@
 //! an intensity, with each record's demands and their statistics over the
 //! suite (SPEC §12). The study itself is [`crate::analysis::suite`] over a
 //! [`crate::analysis::subject::Subject`]; this module parses and runs it,
-//! one handler for both subjects, and each subject's writer (`pair`, `row`)
-//! prints it.
+//! and [`report`] writes it, one handler and one writer for both subjects.
 
 use clap::Args;
 
 mod compare;
-pub mod pair;
-pub mod row;
-
-pub use pair::SuiteRow;
+pub mod report;
 
 use super::budget::{LongArg, Work, run_steps};
 use super::output::{Emit, FormatArg, printer};
 use super::params::ParamArgs;
 use super::records::members;
+use super::spelling::Spelling;
 use super::subject::row::RowStudyArgs;
 use super::subject::{CliSubject, Study};
 use super::{CliError, usage};
-use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
+use crate::analysis::subject::row::RowSuiteCase;
 use crate::analysis::suite::{MemberPlan, Scaling, SuiteCase, SuiteRun};
 use crate::model::Params;
 use crate::model::intensity::IntensityMeasure;
@@ -265,10 +262,10 @@ pub fn report_with(
     }
 }
 
-/// The suite of `study`: its records run (or sharded, or merged), reported
-/// by the subject's writer, and refused after the report where a record's
-/// result is unreliable unless `--allow-unreliable`.
-fn suite<S: Writer>(
+/// The suite of `study`: its records run (or sharded, or merged), reported,
+/// and refused after the report where a record's result is unreliable
+/// unless `--allow-unreliable`.
+fn suite<S: Spelling>(
     study: &Study<S>,
     args: &SuiteArgs,
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
@@ -276,11 +273,14 @@ fn suite<S: Writer>(
     let Some((runs, elapsed_ms)) = study.run("suite", &args.shard, args.long.allow_long)? else {
         return Ok(());
     };
-    emit(
-        &*study
-            .subject
-            .suite_report(&study.name, &args.suite, &runs, elapsed_ms),
-    )?;
+    let subject = &study.subject;
+    emit(&report::report(
+        subject,
+        &study.name,
+        &args.suite,
+        &runs,
+        elapsed_ms,
+    ))?;
     let unreliable: Vec<String> = runs
         .iter()
         .filter_map(|r| {
@@ -323,43 +323,6 @@ impl Chosen {
             name: preset.name,
             members: members(&args.suite)?,
         }))
-    }
-}
-
-/// How a subject writes a suite's report: the pair's ([`pair`]) and a
-/// row's ([`row`]) keep their own spellings of the same demands.
-pub trait Writer: CliSubject {
-    /// `pounding suite`'s report of `runs` (suite `suite`); `name` the preset's.
-    fn suite_report<'a>(
-        &'a self,
-        name: &'a str,
-        suite: &'a str,
-        runs: &[Self::Run],
-        elapsed_ms: f64,
-    ) -> Box<dyn Emit + 'a>;
-}
-
-impl Writer for SuiteCase {
-    fn suite_report<'a>(
-        &'a self,
-        name: &'a str,
-        suite: &'a str,
-        runs: &[SuiteRun],
-        elapsed_ms: f64,
-    ) -> Box<dyn Emit + 'a> {
-        Box::new(pair::SuiteReport::new(name, suite, self, runs, elapsed_ms))
-    }
-}
-
-impl Writer for RowSuiteCase {
-    fn suite_report<'a>(
-        &'a self,
-        _: &'a str,
-        suite: &'a str,
-        runs: &[RowSuiteRun],
-        elapsed_ms: f64,
-    ) -> Box<dyn Emit + 'a> {
-        Box::new(row::report(self, suite, runs, elapsed_ms))
     }
 }
 

@@ -16,7 +16,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::row::{RowSeparationReport, report};
+use super::report::{SeparationReport, report};
 use super::{Separated, separated};
 use crate::analysis::separation::{GapAtProbability, JointSeparation, RuleOnSuite};
 use crate::analysis::subject::row::RowSuiteCase;
@@ -52,7 +52,7 @@ impl Compared for GapCompare<'_> {
     type Variant = Study<RowSuiteCase>;
     type Summary = Summary;
     type Report<'a>
-        = RowSeparationReport<'a>
+        = SeparationReport<'a, RowSuiteCase>
     where
         Self: 'a;
     const STUDY: &'static str = "separation study";
@@ -65,7 +65,7 @@ impl Compared for GapCompare<'_> {
         &study.subject.row
     }
 
-    fn run<'a>(&'a self, study: &'a Study<RowSuiteCase>) -> Ran<Summary, RowSeparationReport<'a>> {
+    fn run<'a>(&'a self, study: &'a Study<RowSuiteCase>) -> Ran<Summary, Self::Report<'a>> {
         let Some(Separated {
             runs,
             joints,
@@ -75,7 +75,15 @@ impl Compared for GapCompare<'_> {
             return Ok(None);
         };
         let summary = Summary::of(&joints);
-        let report = report(&study.subject, &self.args.suite, &runs, joints, elapsed_ms);
+        let suite = &self.args.suite;
+        let report = report(
+            &study.subject,
+            &study.name,
+            suite,
+            &runs,
+            joints,
+            elapsed_ms,
+        );
         Ok(Some((summary, report)))
     }
 }

@@ -14,10 +14,11 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::row::{RowIdaReport, report};
+use super::report::{IdaReport, report};
 use super::{IdaArgs, RowIda};
 use crate::analysis::fragility::{Fragility, describe};
 use crate::analysis::ida::LimitStateFragility;
+use crate::analysis::subject::row::RowSuiteCase;
 use crate::cli::CliError;
 use crate::cli::compare::{Compared, Ran, SideBySide, compare};
 use crate::cli::output::Emit;
@@ -44,7 +45,7 @@ impl Compared for IdaCompare<'_> {
     type Variant = RowIda;
     type Summary = Summary;
     type Report<'a>
-        = RowIdaReport<'a>
+        = IdaReport<'a, RowSuiteCase>
     where
         Self: 'a;
     const STUDY: &'static str = "IDA";
@@ -61,13 +62,14 @@ impl Compared for IdaCompare<'_> {
         &variant.case.row
     }
 
-    fn run<'a>(&'a self, variant: &'a RowIda) -> Ran<Summary, RowIdaReport<'a>> {
+    fn run<'a>(&'a self, variant: &'a RowIda) -> Ran<Summary, Self::Report<'a>> {
         let Some(ran) = variant.run(&self.levels, &self.args.suite)? else {
             return Ok(None);
         };
         let summary = Summary::of(&ran.fragility);
         let suite = &self.args.suite.suite;
-        Ok(Some((summary, report(&variant.case, suite, ran))))
+        let report = report(&variant.case, &variant.name, suite, ran);
+        Ok(Some((summary, report)))
     }
 }
 

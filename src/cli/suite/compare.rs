@@ -18,7 +18,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::row::{RowSuiteReport, report};
+use super::report::{SuiteReport, report};
 use super::{Chosen, SuiteArgs};
 use crate::analysis::separation::median;
 use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
@@ -72,7 +72,7 @@ impl SuiteArgs {
 impl Compared for SuiteArgs {
     type Variant = Study<RowSuiteCase>;
     type Summary = Summary;
-    type Report<'a> = RowSuiteReport<'a>;
+    type Report<'a> = SuiteReport<'a, RowSuiteCase>;
     const STUDY: &'static str = "suite";
 
     fn load(&self, name: &str) -> Result<Study<RowSuiteCase>, CliError> {
@@ -83,16 +83,14 @@ impl Compared for SuiteArgs {
         &study.subject.row
     }
 
-    fn run<'a>(&'a self, study: &'a Study<RowSuiteCase>) -> Ran<Summary, RowSuiteReport<'a>> {
+    fn run<'a>(&'a self, study: &'a Study<RowSuiteCase>) -> Ran<Summary, Self::Report<'a>> {
         let Some((runs, elapsed_ms)) = study.run("suite", &self.shard, self.long.allow_long)?
         else {
             return Ok(None);
         };
         let summary = Summary::of(&study.subject.row, &runs);
-        Ok(Some((
-            summary,
-            report(&study.subject, &self.suite, &runs, elapsed_ms),
-        )))
+        let report = report(&study.subject, &study.name, &self.suite, &runs, elapsed_ms);
+        Ok(Some((summary, report)))
     }
 }
 
