@@ -19,11 +19,12 @@ use super::spelling::Spelling;
 use super::subject::{CliSubject, Study};
 use super::suite::{Chosen, SuiteArgs};
 use crate::analysis::separation::{
-    JointSeparation, SeparationStudy, joint_separations, parse_probabilities,
+    GapAtProbability, JointSeparation, RuleOnSuite, SeparationStudy, joint_separations,
+    parse_probabilities,
 };
 use crate::model::params::echo::g4;
+use crate::output::report::{TableColumn, aligned};
 
-/// The probabilities reported when `--probability` is not given.
 /// The CSV columns every record's line of a separation study begins with,
 /// the pair's and a row's alike; [`record_cells`] fills them.
 pub const RECORD_COLUMNS: [&str; 6] = [
@@ -54,6 +55,7 @@ pub fn record_cells(
     ]
 }
 
+/// The probabilities reported when `--probability` is not given.
 pub const DEFAULT_PROBABILITIES: &str = "0.5,0.84,0.9";
 
 fn usage(message: String) -> CliError {
@@ -168,20 +170,7 @@ pub fn study_table(
         ))
     );
     let _ = writeln!(s);
-    let _ = writeln!(
-        s,
-        "{:>11}  {:>22}  {:>14}",
-        "probability", "gap d_(⌈pN⌉) mm", "lognormal mm"
-    );
-    for a in &st.at_probability {
-        let _ = writeln!(
-            s,
-            "{:>11}  {:>22}  {:>14}",
-            num(a.probability),
-            g4(a.empirical * 1e3),
-            a.lognormal.map_or("-".to_string(), |v| g4(v * 1e3))
-        );
-    }
+    s.push_str(&aligned(PROBABILITY_TABLE, &st.at_probability));
     let _ = writeln!(s);
     let pounded = (pounding_probability_at_gap * st.records as f64).round() as usize;
     let _ = writeln!(
@@ -201,29 +190,36 @@ pub fn study_table(
         g4(st.median_peaks[1] * 1e3),
         st.correlation
     );
-    let _ = writeln!(
-        s,
-        "{:<5} {:>16} {:>18} {:>12}  enough at probability",
-        "rule", "holds (records)", "on medians mm", "P(pounding)"
-    );
-    for r in &st.rules {
-        let enough = if r.sufficient_at.is_empty() {
-            "none of those asked".to_string()
-        } else {
-            r.sufficient_at
-                .iter()
-                .map(|p| num(*p))
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
-        let _ = writeln!(
-            s,
-            "{:<5} {:>16} {:>18} {:>12}  {}",
-            r.rule,
-            format!("{:.0} %", 100.0 * r.holds),
-            g4(r.at_median_peaks * 1e3),
-            g4(r.pounding_probability),
-            enough
-        );
-    }
+    s.push_str(&aligned(RULE_TABLE, &st.rules));
 }
+
+/// The gap at each probability: the records' d_(⌈pN⌉) and the lognormal
+/// fit's (mm). Each column after the first is one wider than its numbers,
+/// for two spaces between columns.
+const PROBABILITY_TABLE: &[TableColumn<GapAtProbability>] = &[
+    ("probability", 11, |a| num(a.probability)),
+    ("gap d_(⌈pN⌉) mm", 23, |a| g4(a.empirical * 1e3)),
+    ("lognormal mm", 15, |a| {
+        a.lognormal.map_or("-".to_string(), |v| g4(v * 1e3))
+    }),
+];
+
+/// Each code rule over the suite: the share of records it holds for, its
+/// gap on the median peaks (mm), P(pounding) there, and the probabilities
+/// at which it is enough.
+const RULE_TABLE: &[TableColumn<RuleOnSuite>] = &[
+    ("rule", -5, |r| r.rule.to_string()),
+    ("holds (records)", 16, |r| {
+        format!("{:.0} %", 100.0 * r.holds)
+    }),
+    ("on medians mm", 18, |r| g4(r.at_median_peaks * 1e3)),
+    ("P(pounding)", 12, |r| g4(r.pounding_probability)),
+    (" enough at probability", 0, |r| {
+        if r.sufficient_at.is_empty() {
+            " none of those asked".to_string()
+        } else {
+            let at: Vec<String> = r.sufficient_at.iter().map(|p| num(*p)).collect();
+            format!(" {}", at.join(", "))
+        }
+    }),
+];
