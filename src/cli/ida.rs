@@ -16,15 +16,15 @@ use super::CliError;
 use super::limit_states::{LimitStateArgs, RowLimitArgs, limit_states};
 use super::output::{Emit, printer};
 use super::records::members;
+use super::spelling::Spelling;
 use super::subject::row::RowStudyArgs;
-use super::subject::{CliSubject, run_levels_or_shard};
+use super::subject::{Study, run_levels_or_shard};
 use super::suite::{SuiteArgs, case_of};
 use crate::analysis::ida::{LimitStateFragility, fragilities, parse_levels};
 use crate::analysis::limit_state::LimitState;
-use crate::analysis::subject::row::{RowSuiteCase, RowSuiteRun};
+use crate::analysis::subject::row::RowSuiteCase;
 use crate::analysis::subject::runs::plan_levels;
 use crate::analysis::suite_statistics::SuiteStatistics;
-use crate::model::suite::SuiteMember;
 
 #[derive(Debug, Clone, Default, Args)]
 pub struct IdaArgs {
@@ -77,74 +77,99 @@ pub fn report_with(
     if !args.suite.compare.is_empty() {
         return compare::ida(args, levels, emit);
     }
-    if let Some(study) = study {
-        let row = RowIda::load(args, &study)?;
-        let ran = row.run(&levels, &args.suite)?;
-        return ran.map_or(Ok(()), |ran| {
-            emit(&report::report(&row.case, &row.name, study.suite, ran))
-        });
+    match study {
+        Some(study) => Ida::on_row(args, &study)?.report(&levels, args, emit),
+        None => {
+            let states = limit_states(&args.limits, &args.row_limits, None)?;
+            let (preset, subject) = case_of(&args.suite)?;
+            let members = members(&args.suite.suite)?;
+            let study = Study {
+                subject,
+                name: preset.name,
+                members,
+            };
+            Ida { study, states }.report(&levels, args, emit)
+        }
     }
-    let states = limit_states(&args.limits, &args.row_limits, None)?;
-    let (preset, case) = case_of(&args.suite)?;
-    let members = members(&args.suite.suite)?;
-    let Some(ran) = ida(&case, &preset.name, &members, levels, states, &args.suite)? else {
-        return Ok(());
-    };
-    let unreliable = ran
-        .runs
-        .iter()
-        .flatten()
-        .filter(|r| r.result.unreliable().is_some())
-        .count();
-    let total = ran.runs.iter().map(Vec::len).sum::<usize>();
-    emit(&report::report(&case, &preset.name, &args.suite.suite, ran))?;
-    if unreliable > 0 && !args.suite.allow_unreliable {
-        return Err(CliError::Failed(format!(
-            "unreliable result for {unreliable} of {total} runs (flagged in the output); \
-             pass --allow-unreliable to accept them"
-        )));
-    }
-    Ok(())
 }
 
-/// The IDA of a row (`--buildings`), loaded and checked before any run:
-/// the row and its scaling, its records and its limit states.
-struct RowIda {
-    case: RowSuiteCase,
-    /// `--buildings` as given, naming the row in shards' parts.
-    name: String,
-    members: Vec<SuiteMember>,
+/// An IDA, loaded and checked before any run: the subject with its
+/// records, and its limit states.
+struct Ida<S> {
+    study: Study<S>,
     states: Vec<LimitState>,
 }
 
-impl RowIda {
+impl Ida<RowSuiteCase> {
     /// The row `study` with the limit states `args` ask of it.
-    fn load(args: &IdaArgs, study: &RowStudyArgs) -> Result<RowIda, CliError> {
-        let (case, members) = super::subject::row::case_of(study)?;
-        let states = limit_states(&args.limits, &args.row_limits, Some(&case.row))?;
-        Ok(RowIda {
-            case,
-            name: study.buildings.to_string(),
+    fn on_row(args: &IdaArgs, study: &RowStudyArgs) -> Result<Self, CliError> {
+        let (subject, members) = super::subject::row::case_of(study)?;
+        let states = limit_states(&args.limits, &args.row_limits, Some(&subject.row))?;
+        let name = study.buildings.to_string();
+        let study = Study {
+            subject,
+            name,
             members,
-            states,
-        })
+        };
+        Ok(Ida { study, states })
     }
+}
 
-    /// Its IDA at `levels` ([`ida`]).
-    fn run(
+impl<S: Spelling> Ida<S> {
+    /// Its IDA at `levels`, reported to `emit`, and refused after the
+    /// report where a run's result is unreliable unless
+    /// `--allow-unreliable`.
+    fn report(
         &self,
         levels: &[f64],
-        args: &SuiteArgs,
-    ) -> Result<Option<IdaRan<RowSuiteRun>>, CliError> {
-        let states = self.states.clone();
-        ida(
-            &self.case,
-            &self.name,
-            &self.members,
-            levels.to_vec(),
-            states,
-            args,
-        )
+        args: &IdaArgs,
+        emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
+    ) -> Result<(), CliError> {
+        let Some(ran) = self.run(levels, &args.suite)? else {
+            return Ok(());
+        };
+        let (subject, suite) = (&self.study.subject, &args.suite.suite);
+        let all = ran.runs.iter().flatten();
+        let unreliable = all.filter(|r| subject.unreliable(r).is_some()).count();
+        let total = ran.runs.iter().map(Vec::len).sum::<usize>();
+        emit(&report::report(subject, &self.study.name, suite, ran))?;
+        if unreliable > 0 && !args.suite.allow_unreliable {
+            return Err(CliError::Failed(format!(
+                "unreliable result for {unreliable} of {total} runs (flagged in the output); \
+                 pass --allow-unreliable to accept them"
+            )));
+        }
+        Ok(())
+    }
+
+    /// Its IDA at `levels`: every record planned, run within the bound (or
+    /// sharded, or merged) and the fragility of each limit state fitted;
+    /// `None` when a shard's part was written.
+    fn run(&self, levels: &[f64], args: &SuiteArgs) -> Result<Option<IdaRan<S::Run>>, CliError> {
+        let Study {
+            subject,
+            name,
+            members,
+        } = &self.study;
+        let plans = plan_levels(subject, members, levels).map_err(S::failed)?;
+        let extra = (&levels, &self.states);
+        let shard = &args.shard;
+        let allow_long = args.long.allow_long;
+        let Some((runs, elapsed_ms)) = run_levels_or_shard(
+            subject, name, members, &plans, "ida", shard, allow_long, &extra,
+        )?
+        else {
+            return Ok(None);
+        };
+        let fragility = fragilities(subject, levels, &runs, &self.states);
+        Ok(Some(IdaRan {
+            records: members.len(),
+            levels: levels.to_vec(),
+            states: self.states.clone(),
+            runs,
+            fragility,
+            elapsed_ms,
+        }))
     }
 }
 
@@ -176,39 +201,6 @@ impl<R> IdaRan<R> {
             })
             .collect()
     }
-}
-
-/// The IDA of `subject` (named `name` in shards' parts) at `levels`: every
-/// record planned, run within the bound (or sharded, or merged) and the
-/// fragility of each limit state of `states` fitted; `None` when a shard's
-/// part was written.
-fn ida<S: CliSubject>(
-    subject: &S,
-    name: &str,
-    members: &[SuiteMember],
-    levels: Vec<f64>,
-    states: Vec<LimitState>,
-    args: &SuiteArgs,
-) -> Result<Option<IdaRan<S::Run>>, CliError> {
-    let plans = plan_levels(subject, members, &levels).map_err(S::failed)?;
-    let extra = (&levels, &states);
-    let shard = &args.shard;
-    let allow_long = args.long.allow_long;
-    let Some((runs, elapsed_ms)) = run_levels_or_shard(
-        subject, name, members, &plans, "ida", shard, allow_long, &extra,
-    )?
-    else {
-        return Ok(None);
-    };
-    let fragility = fragilities(subject, &levels, &runs, &states);
-    Ok(Some(IdaRan {
-        records: members.len(),
-        levels,
-        states,
-        runs,
-        fragility,
-        elapsed_ms,
-    }))
 }
 
 /// One intensity level: its statistics and its rows (those of `pounding

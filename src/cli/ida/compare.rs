@@ -15,7 +15,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::report::{IdaReport, report};
-use super::{IdaArgs, RowIda};
+use super::{Ida, IdaArgs};
 use crate::analysis::fragility::{Fragility, describe};
 use crate::analysis::ida::LimitStateFragility;
 use crate::analysis::subject::row::RowSuiteCase;
@@ -42,7 +42,7 @@ struct IdaCompare<'a> {
 }
 
 impl Compared for IdaCompare<'_> {
-    type Variant = RowIda;
+    type Variant = Ida<RowSuiteCase>;
     type Summary = Summary;
     type Report<'a>
         = IdaReport<'a, RowSuiteCase>
@@ -50,25 +50,25 @@ impl Compared for IdaCompare<'_> {
         Self: 'a;
     const STUDY: &'static str = "IDA";
 
-    fn load(&self, name: &str) -> Result<RowIda, CliError> {
+    fn load(&self, name: &str) -> Result<Ida<RowSuiteCase>, CliError> {
         let suite = self.args.suite.on_variant(name);
         let Some(study) = suite.row_study()? else {
             unreachable!("--buildings chooses a row");
         };
-        RowIda::load(self.args, &study)
+        Ida::on_row(self.args, &study)
     }
 
-    fn row(variant: &RowIda) -> &Row {
-        &variant.case.row
+    fn row(variant: &Ida<RowSuiteCase>) -> &Row {
+        &variant.study.subject.row
     }
 
-    fn run<'a>(&'a self, variant: &'a RowIda) -> Ran<Summary, Self::Report<'a>> {
+    fn run<'a>(&'a self, variant: &'a Ida<RowSuiteCase>) -> Ran<Summary, Self::Report<'a>> {
         let Some(ran) = variant.run(&self.levels, &self.args.suite)? else {
             return Ok(None);
         };
         let summary = Summary::of(&ran.fragility);
         let suite = &self.args.suite.suite;
-        let report = report(&variant.case, &variant.name, suite, ran);
+        let report = report(&variant.study.subject, &variant.study.name, suite, ran);
         Ok(Some((summary, report)))
     }
 }
