@@ -46,6 +46,7 @@ use super::peaks::{Envelope, raise};
 use super::poly;
 use super::profile::{Cause, RowProfile};
 use super::propagator::{Propagator, apply};
+use super::reach::Reach;
 use super::result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
 use super::taylor::{ORDER, Series};
@@ -206,6 +207,10 @@ struct Run<'a> {
     requests: usize,
     buf: Vec<f64>,
     buf2: Vec<f64>,
+    /// How far each floor moves over the current series step.
+    reach: Reach,
+    /// The last Taylor step's series, its vectors reused by the next.
+    spare_series: Series,
     /// The quantities of the quiet test ([`watched`]).
     watch: Vec<Watch>,
     /// The stack at the end of the last quiet sub-step, with its ground
@@ -305,6 +310,8 @@ pub fn run_row_cached(
         requests: 0,
         buf: Vec::new(),
         buf2: Vec::new(),
+        reach: Reach::default(),
+        spare_series: Series::default(),
         watch,
         stack: None,
         energy: options.energy.then(|| {
@@ -622,7 +629,8 @@ impl Run<'_> {
                 let (series, step) = self.contact_step(piece, rem, ground, (su, sv));
                 (series, Some(step))
             } else {
-                let series = Series::new(&self.system, &self.u, &self.v, ground, (su, sv));
+                let mut series = std::mem::take(&mut self.spare_series);
+                series.fill(&self.system, (&self.u, &self.v), ground, (su, sv));
                 (series, None)
             };
             let mut end = rem.min(series.radius);
@@ -649,7 +657,10 @@ impl Run<'_> {
                     un.copy_from_slice(&step.y1[..n]);
                     vn.copy_from_slice(&step.y1[n..]);
                 }
-                None => series.state(end, &mut un, &mut vn),
+                None => {
+                    series.state(end, &mut un, &mut vn);
+                    self.spare_series = series;
+                }
             }
             std::mem::swap(&mut self.u, &mut un);
             std::mem::swap(&mut self.v, &mut vn);
@@ -803,7 +814,14 @@ impl Run<'_> {
         event: &mut Option<(Event, EventFunction)>,
     ) {
         let mut c = std::mem::take(&mut self.buf);
+        // The reach over the whole step holds over any shorter part of it.
+        let mut reach = std::mem::take(&mut self.reach);
+        reach.set(series, *end);
         self.watched_events(|e, g| {
+            // g cannot turn positive on the step: first_rise finds nothing.
+            if reach.upper(series, (&g.on_u, &g.on_v), g.constant) < 0.0 {
+                return;
+            }
             g.on(series, &mut c);
             if let Some(s) = poly::first_rise(&c, *end)
                 && (s < *end || event.is_none())
@@ -812,6 +830,7 @@ impl Run<'_> {
                 *event = Some((e, g));
             }
         });
+        self.reach = reach;
         self.buf = c;
     }
 
@@ -828,14 +847,21 @@ impl Run<'_> {
     fn peaks_on(&mut self, series: &Series, end: f64, rk: Option<&Piece>) {
         let mut c = std::mem::take(&mut self.buf);
         let n = self.layout.dofs;
+        self.reach.set(series, end);
         for i in 0..n {
             let env = &mut self.envelope;
+            // |u_i| and |u̇_i| cannot pass their peaks on the step ([`Reach`]),
+            // or their polynomials' bounds decide.
             let u = series.displacement(i);
-            if poly::magnitude_bound(u, end) > env.displacement[i] {
+            if self.reach.magnitude(series, &[(i, 1.0)]) > env.displacement[i]
+                && poly::magnitude_bound(u, end) > env.displacement[i]
+            {
                 raise(&mut env.displacement[i], poly::max_abs(u, end));
             }
             let v = series.velocity(i);
-            if poly::magnitude_bound(v, end) > env.velocity[i] {
+            if self.reach.speed(series, i) > env.velocity[i]
+                && poly::magnitude_bound(v, end) > env.velocity[i]
+            {
                 raise(&mut env.velocity[i], poly::max_abs(v, end));
             }
             series.absolute_acceleration(i, &mut c);
@@ -863,16 +889,25 @@ impl Run<'_> {
         );
         let c = &mut c;
         let env = &mut self.envelope;
+        let reach = &self.reach;
         for (k, s) in self.layout.storeys.iter().enumerate() {
             let du = [(s.upper, 1.0), (s.lower.unwrap_or(s.upper), -1.0)];
             let terms = if s.lower.is_some() { &du[..] } else { &du[..1] };
+            // |Δ| cannot pass its peak on the step ([`Reach`]).
+            if reach.magnitude(series, terms) <= env.drift[k] {
+                continue;
+            }
             series.combine(terms, &[], c);
             if poly::magnitude_bound(c, end) > env.drift[k] {
                 raise(&mut env.drift[k], poly::max_abs(c, end));
             }
         }
         for (k, p) in self.layout.facing.iter().enumerate() {
-            series.combine(&[(p.left_dof, 1.0), (p.right_dof, -1.0)], &[], c);
+            let terms = [(p.left_dof, 1.0), (p.right_dof, -1.0)];
+            if reach.upper(series, (&terms, &[]), 0.0) <= env.relative[k] {
+                continue;
+            }
+            series.combine(&terms, &[], c);
             if poly::upper_bound(c, end) > env.relative[k] {
                 env.relative[k] = env.relative[k].max(poly::max(c, end));
             }

@@ -34,6 +34,8 @@
 //! - [`damper`]: the fluid viscous dampers (α < 1), carried by the
 //!   Runge–Kutta steps for the whole run, their reversals events;
 //! - [`peaks`]: the envelopes a run reports;
+//! - [`reach`]: how far each floor moves over a series step, to pass over
+//!   quantities that cannot reach their events or peaks there;
 //! - [`energy`]: the energy balance, by quadrature on the Taylor steps;
 //! - [`result`]: what a run returns;
 //! - [`profile`]: why sub-steps took the series, and where the time went;
@@ -58,6 +60,7 @@ pub mod peaks;
 pub mod poly;
 pub mod profile;
 pub mod propagator;
+pub mod reach;
 pub mod result;
 pub mod system;
 pub mod taylor;

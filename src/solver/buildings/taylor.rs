@@ -34,7 +34,7 @@ pub fn ground_coefficients((a, rate, sigma): (f64, f64, f64)) -> [f64; ORDER + 1
 /// Coefficients of u and u̇, floor by floor (each a block of
 /// [`Series::degree`] + 1, lowest order first), so that one floor's
 /// polynomial is one slice.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct Series {
     pub n: usize,
     pub u: Vec<f64>,
@@ -58,10 +58,28 @@ impl Series {
         ground: (f64, f64, f64),
         scale: (f64, f64),
     ) -> Series {
+        let mut series = Series::default();
+        series.fill(system, (u0, v0), ground, scale);
+        series
+    }
+
+    /// [`Series::new`] written over this series, its coefficients'
+    /// vectors reused (a run takes thousands of steps).
+    pub fn fill(
+        &mut self,
+        system: &System,
+        (u0, v0): (&[f64], &[f64]),
+        ground: (f64, f64, f64),
+        scale: (f64, f64),
+    ) {
         const W: usize = ORDER + 1;
         let n = u0.len();
-        let mut u = vec![0.0; W * n];
-        let mut v = vec![0.0; W * n];
+        let mut u = std::mem::take(&mut self.u);
+        let mut v = std::mem::take(&mut self.v);
+        u.clear();
+        u.resize(W * n, 0.0);
+        v.clear();
+        v.resize(W * n, 0.0);
         for i in 0..n {
             u[i * W] = u0[i];
             v[i * W] = v0[i];
@@ -113,14 +131,14 @@ impl Series {
                 }
             })
             .fold(f64::INFINITY, f64::min);
-        Series {
+        *self = Series {
             n,
             u,
             v,
             ground: g,
             radius,
             degree: ORDER,
-        }
+        };
     }
 
     /// The coefficients of u_i, orders 0 to [`Series::degree`].

@@ -1,0 +1,160 @@
+//! How far each floor's u and u̇ can move from their start over a series
+//! step (SPEC §13), so that a step's search for events and peaks can pass
+//! over a quantity that cannot reach its threshold without forming its
+//! polynomial.
+//!
+//! On [0, s] a floor's displacement u(t) = Σ u_k t^k moves from u_0 by at
+//! most
+//!
+//! ```text
+//! R_u = Σ_{k≥1} |u_k| s^k,
+//! ```
+//!
+//! and likewise its velocity by R_v. A quantity of a few floors (an event
+//! function, a drift, a relative displacement),
+//!
+//! ```text
+//! q = Σ w_i u_i + Σ w'_i u̇_i + c,
+//! ```
+//!
+//! is then within q(0) ± (Σ|w_i| R_u,i + Σ|w'_i| R_v,i),
+//! which is at least the bounds of [`super::poly`] on q's own polynomial
+//! (its coefficients are those sums, each no larger in magnitude than the
+//! sum of magnitudes). So where this reach clears a threshold, so would
+//! q's polynomial: the search skips q and finds exactly what it found
+//! before. A relative allowance of 1e-12 covers the round-off of the sums.
+
+use super::poly;
+use super::taylor::Series;
+
+/// Terms (floor, weight) of a linear form.
+pub type Terms<'a> = &'a [(usize, f64)];
+
+/// Relative allowance for the round-off of the reaches and of q(0).
+const ROUNDING: f64 = 1e-12;
+
+/// R_u and R_v of every floor over [0, s] of one step, reused from step
+/// to step.
+#[derive(Debug, Clone, Default)]
+pub struct Reach {
+    u: Vec<f64>,
+    v: Vec<f64>,
+}
+
+impl Reach {
+    /// The reaches of every floor of `series` over [0, s].
+    pub fn set(&mut self, series: &Series, s: f64) {
+        let n = series.n;
+        let reach = |c: &[f64]| {
+            if c.len() < 2 {
+                0.0
+            } else {
+                poly::bound(&c[1..], s) * s
+            }
+        };
+        self.u.clear();
+        self.u.extend((0..n).map(|i| reach(series.displacement(i))));
+        self.v.clear();
+        self.v.extend((0..n).map(|i| reach(series.velocity(i))));
+    }
+
+    /// An upper bound over the step of q = Σ w_i u_i + Σ w'_i u̇_i + c
+    /// (terms on u, terms on u̇, the constant), from its value at the start.
+    pub fn upper(&self, series: &Series, (on_u, on_v): (Terms, Terms), constant: f64) -> f64 {
+        let (mut start, mut size, mut reach) = (constant, constant.abs(), 0.0);
+        for &(i, w) in on_u {
+            let x = w * series.displacement(i)[0];
+            start += x;
+            size += x.abs();
+            reach += w.abs() * self.u[i];
+        }
+        for &(i, w) in on_v {
+            let x = w * series.velocity(i)[0];
+            start += x;
+            size += x.abs();
+            reach += w.abs() * self.v[i];
+        }
+        start + reach + ROUNDING * (size + reach)
+    }
+
+    /// An upper bound over the step of |u̇_i|.
+    pub fn speed(&self, series: &Series, i: usize) -> f64 {
+        let start = series.velocity(i)[0].abs();
+        start + self.v[i] + ROUNDING * (start + self.v[i])
+    }
+
+    /// An upper bound over the step of |q|, q as in [`Reach::upper`] with
+    /// terms on u alone.
+    pub fn magnitude(&self, series: &Series, on_u: Terms) -> f64 {
+        let negated: [(usize, f64); 2] =
+            std::array::from_fn(|k| on_u.get(k).map_or((0, 0.0), |&(i, w)| (i, -w)));
+        let up = self.upper(series, (on_u, &[]), 0.0);
+        let down = self.upper(series, (&negated[..on_u.len().min(2)], &[]), 0.0);
+        up.max(down)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Reach;
+    use crate::model::buildings;
+    use crate::solver::buildings::config::Config;
+    use crate::solver::buildings::layout::Layout;
+    use crate::solver::buildings::poly;
+    use crate::solver::buildings::system::System;
+    use crate::solver::buildings::taylor::Series;
+
+    /// Block-and-frame from scattered states, on steps up to the series'
+    /// radius: every drift and relative displacement, sampled densely on
+    /// its polynomial, stays within the reach's bounds, which are at least
+    /// the polynomial's own bounds of [`poly`] (so a quantity the reach
+    /// passes over is one the polynomial's search would find nothing in).
+    #[test]
+    fn the_reach_bounds_every_quantity_and_its_polynomial_bound() {
+        let row = buildings::load("block-and-frame").expect("shipped");
+        let layout = Layout::of(&row);
+        let n = layout.dofs;
+        let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
+        let system = System::of(&layout, &config);
+        let mut reach = Reach::default();
+        let mut checked = 0;
+        for seed in 1..40u32 {
+            // A deterministic spread of states of a few centimetres and
+            // tens of centimetres per second, signs mixed.
+            let wave = |i: usize, k: u32| ((i as f64 + 1.0) * 0.7 * f64::from(seed + k)).sin();
+            let u: Vec<f64> = (0..n).map(|i| 0.03 * wave(i, 0)).collect();
+            let v: Vec<f64> = (0..n).map(|i| 0.4 * wave(i, 11)).collect();
+            let ground = (3.0 * wave(0, 5), 200.0 * wave(1, 7), 0.0);
+            let series = Series::new(&system, &u, &v, ground, (0.03, 0.4));
+            let end = series.radius.min(0.01);
+            reach.set(&series, end);
+            let mut c = Vec::new();
+            for s in &layout.storeys {
+                let du = [(s.upper, 1.0), (s.lower.unwrap_or(s.upper), -1.0)];
+                let terms = if s.lower.is_some() { &du[..] } else { &du[..1] };
+                series.combine(terms, &[], &mut c);
+                let top = reach.magnitude(&series, terms);
+                assert!(poly::magnitude_bound(&c, end) <= top);
+                for p in 0..=200 {
+                    assert!(poly::eval(&c, end * f64::from(p) / 200.0).abs() <= top);
+                }
+                checked += 1;
+            }
+            for p in &layout.facing {
+                let terms = [(p.left_dof, 1.0), (p.right_dof, -1.0)];
+                series.combine(&terms, &[], &mut c);
+                let top = reach.upper(&series, (&terms, &[]), 0.0);
+                assert!(poly::upper_bound(&c, end) <= top);
+                checked += 1;
+            }
+            for i in 0..n {
+                let top = reach.speed(&series, i);
+                assert!(poly::magnitude_bound(series.velocity(i), end) <= top);
+                let top = reach.magnitude(&series, &[(i, 1.0)]);
+                assert!(poly::magnitude_bound(series.displacement(i), end) <= top);
+                checked += 1;
+            }
+        }
+        assert!(checked > 500, "{checked} quantities checked");
+    }
+}
