@@ -42,7 +42,7 @@
 
 use nalgebra::DMatrix;
 
-use super::expm::exponential;
+use super::expm::{Blocks, exponential_blocks};
 use super::system::System;
 
 /// Grid of the sweep of ‖e^{𝒜̃t}‖ over the sub-step.
@@ -183,24 +183,20 @@ impl Bounds {
         scale[2 * n] = 1.0 / s;
         scale[2 * n + 1] = 1.0 / (s * s);
         let scaled = DMatrix::from_fn(d, d, |i, j| scale[i] * a[(i, j)] / scale[j]);
-        let step = exponential(&(&scaled * (h / GRID as f64)));
-        // The powers of the step in blocks: 𝒜 has no entry from (u, u̇) into
-        // the ground and the load, so neither has its exponential, and every
-        // power is [[X, Y], [0, Z]] with X the 2n × 2n block of (u, u̇):
-        // step·P = [[X₁X, X₁Y + Y₁Z], [0, Z₁Z]], half the work of whole products.
+        // The step and its powers in blocks: 𝒜 has no entry from (u, u̇)
+        // into the ground and the load, so neither has its exponential, and
+        // every power is [[X, Y], [0, Z]] with X the 2n × 2n block of (u, u̇):
+        // step·P = [[X₁X, X₁Y + Y₁Z], [0, Z₁Z]], half the work of whole
+        // products ([`super::expm`]).
         let t = 2 * n;
-        let b = d - t;
-        let x1 = step.view((0, 0), (t, t)).clone_owned();
-        let y1 = step.view((0, t), (t, b)).clone_owned();
-        let z1 = step.view((t, t), (b, b)).clone_owned();
-        let (mut x, mut y, mut z) = (x1.clone(), y1.clone(), z1.clone());
+        let step = exponential_blocks(&Blocks::of(&(&scaled * (h / GRID as f64)), t));
+        let mut power = step.clone();
         let mut sweep = 1.0f64;
         for _ in 1..GRID {
-            sweep = sweep.max(block_norm(&x, &y, &z));
-            y = &x1 * &y + &y1 * &z;
-            x = &x1 * &x;
-            z = &z1 * &z;
+            sweep = sweep.max(block_norm(&power.x, &power.y, &power.z));
+            power = step.mul(&power);
         }
+        let (x, y) = (&power.x, &power.y);
         // e^{𝒜h} = D⁻¹ (e^{𝒜̃h/N})^N D: the top rows of the sweep's N-th power.
         let map = DMatrix::from_fn(t, d, |i, j| {
             let w = if j < t { x[(i, j)] } else { y[(i, j - t)] };

@@ -38,7 +38,6 @@ use super::contact_rk::{self, Contact, Taken, by_steps};
 use super::damper;
 use super::energy::{NODES, RowEnergy, gauss_legendre};
 use super::event_function::EventFunction;
-use super::hermite::range;
 use super::layout::Layout;
 use super::link::{self, LinkResult};
 use super::link_peaks;
@@ -55,7 +54,10 @@ use super::taylor::{ORDER, Series};
 mod cache_check;
 #[cfg(test)]
 mod quiet_check;
+mod ranges;
 mod rising;
+
+use ranges::{Ends, Probe};
 
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -136,34 +138,21 @@ fn ground_at(piece: &Piece, t: f64) -> (f64, f64) {
 /// u_i, u̇_i and ü_i + a_g of every floor, every storey's drift, the
 /// relative displacement u_A − u_B of every facing pair, then of every
 /// contact element, then Δu and Δv of every link (SPEC §14).
-fn watched(layout: &Layout) -> Vec<Watch> {
+fn watched(layout: &Layout) -> Vec<Probe> {
     let n = layout.dofs;
     let mut w = Vec::new();
     for order in 0..3 {
-        w.extend((0..n).map(|i| Watch {
-            terms: vec![(i, 1.0)],
-            order,
-        }));
+        w.extend((0..n).map(|i| Probe::new(order, i, None)));
     }
     for s in &layout.storeys {
-        let mut terms = vec![(s.upper, 1.0)];
-        if let Some(l) = s.lower {
-            terms.push((l, -1.0));
-        }
-        w.push(Watch { terms, order: 0 });
+        w.push(Probe::new(0, s.upper, s.lower));
     }
     for p in layout.facing.iter().chain(&layout.pairs) {
-        w.push(Watch {
-            terms: vec![(p.left_dof, 1.0), (p.right_dof, -1.0)],
-            order: 0,
-        });
+        w.push(Probe::new(0, p.left_dof, Some(p.right_dof)));
     }
     for l in &layout.links {
         for order in 0..2 {
-            w.push(Watch {
-                terms: vec![(l.pair.left_dof, 1.0), (l.pair.right_dof, -1.0)],
-                order,
-            });
+            w.push(Probe::new(order, l.pair.left_dof, Some(l.pair.right_dof)));
         }
     }
     w
@@ -211,8 +200,10 @@ struct Run<'a> {
     reach: Reach,
     /// The last Taylor step's series, its vectors reused by the next.
     spare_series: Series,
-    /// The quantities of the quiet test ([`watched`]).
+    /// The quantities of the quiet test ([`watched`]), and each as read
+    /// from a stack.
     watch: Vec<Watch>,
+    probes: Vec<Probe>,
     /// The stack at the end of the last quiet sub-step, with its ground
     /// (a, ȧ, σ); dropped whenever the state moves otherwise.
     stack: Option<((f64, f64, f64), Stack)>,
@@ -278,7 +269,7 @@ pub fn run_row_cached(
     let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
     let system = System::of(&layout, &config);
     let h_max = options.max_substep.unwrap_or(1.0 / layout.rate);
-    let watch = watched(&layout);
+    let probes = watched(&layout);
     // Every floor starts at rest on the ground, or against it when the
     // ground starts moving (SPEC §9, type B pulse): u̇_i(0) = −u̇_g(0).
     let v0 = vec![-ground.initial_velocity(); n];
@@ -312,7 +303,8 @@ pub fn run_row_cached(
         buf2: Vec::new(),
         reach: Reach::default(),
         spare_series: Series::default(),
-        watch,
+        watch: probes.iter().map(Probe::watch).collect(),
+        probes,
         stack: None,
         energy: options.energy.then(|| {
             let (x, w) = gauss_legendre(NODES);
@@ -449,31 +441,18 @@ impl Run<'_> {
         let mut end = self.spare.pop().unwrap_or_default();
         end.set(&self.system, (&u1, &v1), (a1, r1, sigma));
         let size = bounds.size((&self.u, &self.v), (a0, r0), &self.system.load);
-        let ends = |k: usize| (start.of(&self.watch[k]), end.of(&self.watch[k]));
-        // The rigorous range of q of quantity k over the sub-step.
-        let values = |k: usize, (q0, q1): ([f64; 3], [f64; 3])| {
-            let ev = bounds.errors(k, size).0;
-            let (lo, hi) = range(q0[0], q0[1], q1[0], q1[1], h);
-            (lo - ev, hi + ev)
-        };
-        // Whether q̇ keeps one sign over the sub-step (rigorous range).
-        let monotone = |k: usize, (q0, q1): ([f64; 3], [f64; 3])| {
-            let er = bounds.errors(k, size).1;
-            let (lo, hi) = range(q0[1], q0[2], q1[1], q1[2], h);
-            lo - er > 0.0 || hi + er < 0.0
-        };
-        // |q| cannot pass `peak` inside: bounded below it, or monotone.
-        let clear = |k: usize, peak: f64| {
-            let q = ends(k);
-            let (lo, hi) = values(k, q);
-            lo.abs().max(hi.abs()) <= peak || monotone(k, q)
+        let ends = |k: usize| Ends {
+            start: self.probes[k].at(&start),
+            end: self.probes[k].at(&end),
+            errors: bounds.errors(k, size),
+            h,
         };
         // Quantities whose peak may rise inside, located after the events clear.
         let mut rising = Vec::new();
         let verdict = (|| {
             let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
             for (k, &d) in self.layout.gaps.iter().enumerate() {
-                if values(base + k, ends(base + k)).1 >= d {
+                if !ends(base + k).clears(0, |(_, hi)| hi < d) {
                     return Err(Cause::Onset);
                 }
             }
@@ -481,54 +460,56 @@ impl Run<'_> {
             let base = 3 * n;
             for (k, s) in self.layout.storeys.iter().enumerate() {
                 let q = ends(base + k);
-                let (lo, hi) = values(base + k, q);
-                let rate = || {
-                    let er = bounds.errors(base + k, size).1;
-                    let (rlo, rhi) = range(q.0[1], q.0[2], q.1[1], q.1[2], h);
-                    (rlo - er, rhi + er)
-                };
                 let (quiet, cause) = match self.config.branch[k] {
                     Branch::Elastic => {
-                        let p = self.config.plastic[k];
-                        let clear = (lo - p).abs().max((hi - p).abs()) < s.yield_drift;
-                        (clear, Cause::Yield)
+                        let (p, dy) = (self.config.plastic[k], s.yield_drift);
+                        let within = |(lo, hi): (f64, f64)| (lo - p).abs().max((hi - p).abs()) < dy;
+                        (q.clears(0, within), Cause::Yield)
                     }
-                    Branch::Plus => (rate().0 > 0.0, Cause::Unload),
-                    Branch::Minus => (rate().1 < 0.0, Cause::Unload),
+                    Branch::Plus => (q.clears(1, |(lo, _)| lo > 0.0), Cause::Unload),
+                    Branch::Minus => (q.clears(1, |(_, hi)| hi < 0.0), Cause::Unload),
                 };
                 if !quiet {
                     return Err(cause);
                 }
+                // Below its running peak (and so its collapse drift, which
+                // it has not reached), nothing more to ask.
+                let peak = env.drift[k];
+                if peak < s.collapse_drift && q.clears(0, |(lo, hi)| lo.abs().max(hi.abs()) <= peak)
+                {
+                    continue;
+                }
+                let (lo, hi) = q.range(0);
                 let extreme = lo.abs().max(hi.abs());
                 if extreme >= s.collapse_drift {
                     return Err(Cause::Collapse);
                 }
-                if extreme > env.drift[k] && !monotone(base + k, q) {
+                if extreme > peak && !q.monotone() {
                     rising.push(base + k);
                 }
             }
-            for (i, peaks) in [&env.displacement, &env.velocity, &env.acceleration]
+            for (i, peak) in [&env.displacement, &env.velocity, &env.acceleration]
                 .into_iter()
                 .flatten()
                 .enumerate()
             {
-                if !clear(i, *peaks) {
+                if !ends(i).below(*peak) {
                     rising.push(i);
                 }
             }
             let base = base + self.layout.storeys.len();
             for k in 0..self.layout.facing.len() {
                 let q = ends(base + k);
-                if values(base + k, q).1 > env.relative[k] && !monotone(base + k, q) {
+                let peak = env.relative[k];
+                if !q.clears(0, |(_, hi)| hi <= peak) && !q.monotone() {
                     rising.push(base + k);
                 }
             }
             let base = base + self.layout.facing.len() + self.layout.pairs.len();
             for (l, (link, peaks)) in self.layout.links.iter().zip(&self.links).enumerate() {
-                let (du, dv) = (base + 2 * l, base + 2 * l + 1);
-                let (qu, qv) = (ends(du), ends(dv));
-                let stroke = (values(du, qu), monotone(du, qu));
-                let rate = (values(dv, qv), monotone(dv, qv));
+                let (du, dv) = (ends(base + 2 * l), ends(base + 2 * l + 1));
+                let stroke = (du.range(0), du.monotone());
+                let rate = (dv.range(0), dv.monotone());
                 if !link::quiet(link, peaks, stroke, rate) {
                     return Err(Cause::Peak);
                 }
