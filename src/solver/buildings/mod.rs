@@ -44,6 +44,7 @@ pub mod bound;
 pub mod config;
 pub mod contact_rk;
 pub mod damper;
+pub mod damper_collocation;
 pub mod damper_radau;
 pub mod driver;
 pub mod energy;
