@@ -66,6 +66,8 @@ pub struct Contact<'a, G: Fn(f64) -> f64> {
     system: &'a System,
     pairs: Vec<HertzPair>,
     dampers: &'a [Damper],
+    /// The floors' masses (kg).
+    mass: &'a [f64],
     /// ü_g at offset s from the step's start.
     ground: G,
     /// Where set, the steps of a row with dampers and no Hertz-type pair
@@ -114,6 +116,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
             system,
             pairs,
             dampers: &layout.dampers,
+            mass: &layout.mass,
             ground,
             collocation: None,
         }
@@ -150,6 +153,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         let row = damper_collocation::Row {
             system: self.system,
             dampers: self.dampers,
+            mass: self.mass,
             ground,
             scale,
         };

@@ -22,7 +22,7 @@
 //!
 //! ```text
 //! damper:   ψ(X_{d,i}) = Δv_d(c_i h),   ψ(F) = sgn F (|F|/c_l)^(1/α),
-//! product:  X_{p,i} = δ_p(c_i h) δ̇_p(c_i h),
+//! product:  X_{p,i} = h_p δ_p(c_i h) δ̇_p(c_i h),
 //! ```
 //!
 //! by Newton's method: the damper's law written the other way round, as
@@ -70,13 +70,13 @@ const CAPACITY: usize = 512;
 enum Law {
     /// ψ(X) = Δv: a fluid viscous damper's force (N).
     Damper { damping: f64, exponent: f64 },
-    /// X = δ δ̇, δ = Δu − gap: the improved Kelvin law's product (m²/s),
-    /// its coefficient h in the rates 1/m.
-    Product { gap: f64 },
+    /// X = h δ δ̇, δ = Δu − gap: the improved Kelvin law's product (N).
+    Product { gap: f64, coefficient: f64 },
 }
 
-/// One nonlinear force across floors A and B: −X/m_A on A, +X/m_B on B
-/// (with the product's h in both rates).
+/// One nonlinear force across floors A and B: −X/m_A on A, +X/m_B on B.
+/// The rates are the floors' alone, so that the responses of a contact's
+/// product serve every contact of the pair whatever its h (v₀).
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Element {
     left: usize,
@@ -161,13 +161,13 @@ fn values(elements: &[Element], u: &[f64], v: &[f64]) -> Vec<f64> {
                 Law::Damper { damping, exponent } => {
                     damping * dv.abs().powf(exponent) * dv.signum()
                 }
-                Law::Product { gap } => (du - gap) * dv,
+                Law::Product { gap, coefficient } => coefficient * (du - gap) * dv,
             }
         })
         .collect()
 }
 
-fn elements(dampers: &[Damper], system: &System) -> Vec<Element> {
+fn elements(dampers: &[Damper], system: &System, mass: &[f64]) -> Vec<Element> {
     let mut out: Vec<Element> = dampers
         .iter()
         .map(|d| Element {
@@ -181,12 +181,16 @@ fn elements(dampers: &[Damper], system: &System) -> Vec<Element> {
             },
         })
         .collect();
+    // The system's product rates are h/m_A and h/m_B.
     out.extend(system.products.iter().map(|p| Element {
         left: p.left,
         right: p.right,
-        left_rate: p.left_rate,
-        right_rate: p.right_rate,
-        law: Law::Product { gap: p.gap },
+        left_rate: 1.0 / mass[p.left],
+        right_rate: 1.0 / mass[p.right],
+        law: Law::Product {
+            gap: p.gap,
+            coefficient: p.left_rate * mass[p.left],
+        },
     }));
     out
 }
@@ -287,6 +291,8 @@ pub struct Row<'a> {
     /// The configuration's system (its products are elements here).
     pub system: &'a System,
     pub dampers: &'a [Damper],
+    /// The floors' masses (kg).
+    pub mass: &'a [f64],
     /// (a_g, ȧ_g, σ) at offset s from the step's start.
     pub ground: &'a dyn Fn(f64) -> (f64, f64, f64),
     /// The motion's scales (largest |u|, largest |u̇|).
@@ -376,7 +382,7 @@ impl Collocation {
         let n = y0.len() / 2;
         let mut linear = row.system.clone();
         linear.products.clear();
-        let elements = elements(row.dampers, row.system);
+        let elements = elements(row.dampers, row.system, row.mass);
         let system = (&linear, &elements[..]);
         let free = Series::new(&linear, &y0[..n], &y0[n..], (row.ground)(0.0), row.scale);
         if h > free.radius {
@@ -464,12 +470,12 @@ fn solve(
                     }
                     jacobian[(r, r)] += dashpot_velocity_slope(damping, exponent, x[r]);
                 }
-                Law::Product { gap } => {
+                Law::Product { gap, coefficient } => {
                     let delta = stroke[r] - gap;
-                    residual[r] = x[r] - delta * rate[r];
+                    residual[r] = x[r] - coefficient * delta * rate[r];
                     for q in 0..m {
-                        jacobian[(r, q)] =
-                            -(rate[r] * responses.stroke[(r, q)] + delta * responses.rate[(r, q)]);
+                        jacobian[(r, q)] = -coefficient
+                            * (rate[r] * responses.stroke[(r, q)] + delta * responses.rate[(r, q)]);
                     }
                     jacobian[(r, r)] += 1.0;
                 }
