@@ -733,6 +733,8 @@ impl Run<'_> {
             h if h > 0.0 => h,
             _ => 1e-3 * fastest,
         };
+        // A series left by an earlier settling is not this step's.
+        self.collocation.borrow_mut().last = None;
         let (step, next) = contact.step((&y0, &f0), (guess, rem, 1e-12 * fastest), scale);
         self.next_contact_step = next;
         // A collocated step's own series, else the quintic through its ends.
