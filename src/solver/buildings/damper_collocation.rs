@@ -53,10 +53,8 @@ use super::system::System;
 use super::taylor::{Forcing, Series};
 use crate::model::buildings::retrofit::{dashpot_velocity, dashpot_velocity_slope};
 
-const SQ6: f64 = 2.449_489_742_783_178;
-
-/// The nodes c_j of Radau IIA, 3 stages.
-pub const NODES: [f64; 3] = [(4.0 - SQ6) / 10.0, (4.0 + SQ6) / 10.0, 1.0];
+/// The nodes c_j of Radau IIA, 3 stages: (4 − √6)/10, (4 + √6)/10, 1.
+pub const NODES: [f64; 3] = super::damper_radau::C;
 
 /// Newton iterations at most on one step.
 const NEWTON: usize = 50;
@@ -508,39 +506,30 @@ fn solve(
 
 #[cfg(test)]
 mod tests {
-    use super::{NODES, SQ6, basis, lagrange, node_polynomial};
+    use super::super::damper_radau::A;
+    use super::{NODES, basis, lagrange, node_polynomial};
 
-    /// ∫₀^{c_i} ℓ_j = a_ij, Radau IIA's matrix in closed form (Hairer &
-    /// Wanner, Table IV.5.6): where the damper is far stiffer than the step
-    /// the collocated equations on Δv are Radau IIA's; and ℓ_j(c_i) = δ_ij,
+    /// ∫₀^{c_i} ℓ_j = a_ij, Radau IIA's matrix (Hairer & Wanner, Table
+    /// IV.5.6): where the damper is far stiffer than the step the
+    /// collocated equations on Δv are Radau IIA's; and ℓ_j(c_i) = δ_ij,
     /// π(c_i) = 0, each to 1e-15.
     #[test]
     fn the_basis_integrates_to_radau_iia() {
-        let a = [
-            [
-                (88.0 - 7.0 * SQ6) / 360.0,
-                (296.0 - 169.0 * SQ6) / 1800.0,
-                (-2.0 + 3.0 * SQ6) / 225.0,
-            ],
-            [
-                (296.0 + 169.0 * SQ6) / 1800.0,
-                (88.0 + 7.0 * SQ6) / 360.0,
-                (-2.0 - 3.0 * SQ6) / 225.0,
-            ],
-            [(16.0 - SQ6) / 36.0, (16.0 + SQ6) / 36.0, 1.0 / 9.0],
-        ];
         let pi = node_polynomial(1.0);
-        for (i, &c) in NODES.iter().enumerate() {
+        for (&c, row) in NODES.iter().zip(&A) {
             let at = pi.iter().rev().fold(0.0, |acc, x| acc * c + x);
             assert!(at.abs() < 1e-15, "π({c}) = {at}");
-            for j in 0..3 {
+            for (j, &a) in row.iter().enumerate() {
                 let p = basis(j, 1.0);
                 let integral: f64 = (0..4)
                     .map(|k| p[k] * c.powi(k as i32 + 1) / (k + 1) as f64)
                     .sum();
-                assert!((integral - a[i][j]).abs() < 1e-15, "a_{i}{j}: {integral}");
+                assert!(
+                    (integral - a).abs() < 1e-15,
+                    "a_{j}: {integral} against {a}"
+                );
                 let value = lagrange(j, c);
-                let expected = if i == j { 1.0 } else { 0.0 };
+                let expected = if c == NODES[j] { 1.0 } else { 0.0 };
                 assert!((value - expected).abs() < 1e-15, "ℓ_{j}({c}) = {value}");
             }
         }
