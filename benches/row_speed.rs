@@ -3,15 +3,19 @@
 //! storeys) under the simulated 2,000-sample record at scales 1, 2 and 3
 //! (the frame yields from scale 2), under Kelvin and improved Kelvin
 //! contact. `cargo bench --bench row_speed`; medians of repeated runs
-//! after a warm-up.
+//! after a warm-up. Last, the retrofitted row with its damper a fluid
+//! viscous one (α = 0.35, SPEC §14) beside the bare row under the same
+//! record, with its collocated steps' profile.
 
 use pounding::accuracy::row_floor::RowFloor;
 use pounding::accuracy::row_speed::row_speed;
+use pounding::accuracy::timing::median_ms;
 use pounding::model::ContactModel;
 use pounding::model::buildings::matrices::default_tail;
 use pounding::model::buildings::{self, Ground};
 use pounding::model::simulated::Simulation;
 use pounding::solver::buildings::profile::CAUSES;
+use pounding::solver::buildings::{RowOptions, run_row};
 
 fn main() {
     let record = Simulation::synthetic("synthetic:2000", 2000).expect("a record");
@@ -77,4 +81,25 @@ fn main() {
             );
         }
     }
+    let damped = buildings::load_with("block-and-frame-retrofit", &["link1.exponent=0.35".into()])
+        .expect("a shipped row");
+    let ground = Ground::from_record(&record, 1.0);
+    let options = RowOptions::lasting(duration);
+    let (bare_ms, _) = median_ms(|| run_row(&base, &ground, &options).expect("runs"));
+    let (damper_ms, _) = median_ms(|| run_row(&damped, &ground, &options).expect("runs"));
+    let profiled = RowOptions {
+        profile: true,
+        ..options
+    };
+    let p = run_row(&damped, &ground, &profiled).expect("runs").profile;
+    let c = &p.collocation;
+    println!(
+        "fluid viscous damper (block-and-frame-retrofit, α = 0.35), scale 1: {damper_ms:.3} ms against the bare row's {bare_ms:.3} ms, {:.1}×; collocated steps {} accepted, {} rejected, {} solves, {} Newton iterations, {} response sets",
+        damper_ms / bare_ms,
+        c.accepted,
+        c.rejected,
+        c.solves,
+        c.newton,
+        c.responses
+    );
 }

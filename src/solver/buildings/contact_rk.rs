@@ -15,7 +15,9 @@
 //! (K, C and q of the configuration's storeys: a Hertz-type law puts
 //! nothing into them; the last sum is the row's fluid viscous dampers,
 //! SPEC §14, [`super::damper`], which put their springs alone into K, and
-//! which keep a row on these steps for the whole run), its local error held below [`TOLERANCE`] of the
+//! which keep a row on these steps for the whole run: out of Hertz-type
+//! contact each is [`damper_collocation`]'s step instead, the linear motion
+//! exact and only the nonlinear forces collocated), its local error held below [`TOLERANCE`] of the
 //! motion's scales (largest |u| for displacements, largest |u̇| for
 //! velocities). On the accepted step each u_i is the quintic Hermite
 //! polynomial through (u, u̇, ü) at both ends (error O(h⁶), the step's own
@@ -25,12 +27,15 @@
 //! function, each trial a step retaken from the start to that instant
 //! ([`Contact::settle`]).
 
+use std::cell::RefCell;
+
 use crate::model::contact::Hertzian;
 use crate::numerics::dopri5::{self, Step};
 use crate::solver::exact::contact_rk::{equispaced_quintic, hermite_quintic};
 
 use super::config::Config;
 use super::damper::{self, Damper};
+use super::damper_collocation::{self, Collocation};
 use super::damper_radau;
 use super::event_function::EventFunction;
 use super::layout::Layout;
@@ -63,9 +68,18 @@ pub struct Contact<'a, G: Fn(f64) -> f64> {
     system: &'a System,
     pairs: Vec<HertzPair>,
     dampers: &'a [Damper],
+    /// The floors' masses (kg).
+    mass: &'a [f64],
     /// ü_g at offset s from the step's start.
     ground: G,
+    /// Where set, the steps of a row with dampers and no Hertz-type pair
+    /// are [`damper_collocation`]'s, with its cache and the ground
+    /// (a_g, ȧ_g, σ) at offset s.
+    collocation: Option<(&'a RefCell<Collocation>, &'a GroundAt<'a>)>,
 }
+
+/// Ground (a_g, ȧ_g, σ) at offset s from a step's start.
+pub type GroundAt<'a> = dyn Fn(f64) -> (f64, f64, f64) + 'a;
 
 /// One accepted step with where it started: y₀ = (u, u̇), ẏ₀, the step.
 pub type Taken = (Vec<f64>, Vec<f64>, Step<Vec<f64>>);
@@ -104,8 +118,50 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
             system,
             pairs,
             dampers: &layout.dampers,
+            mass: &layout.mass,
             ground,
+            collocation: None,
         }
+    }
+
+    /// The same, its steps by exponential collocation where it applies
+    /// (a row with dampers and no pair closed under a Hertz-type law), with the cache `cache` and the ground
+    /// (a_g, ȧ_g, σ) at offset s.
+    pub fn with_collocation(self, cache: &'a RefCell<Collocation>, ground: &'a GroundAt) -> Self {
+        Contact {
+            collocation: Some((cache, ground)),
+            ..self
+        }
+    }
+
+    /// Whether the steps go by [`damper_collocation`]: the row has a
+    /// damper, no pair is closed under a Hertz-type law (whose force is
+    /// not a polynomial's in time near onset), and a cache was given.
+    fn collocates(&self) -> bool {
+        self.collocation.is_some() && self.pairs.is_empty() && !self.dampers.is_empty()
+    }
+
+    /// The step of length h from y0 by [`damper_collocation`], as a step
+    /// of the pair with f at its end, its error by step doubling, and as
+    /// its dense output the line from y0 to y1; None where it does not
+    /// apply or its Newton's method fails.
+    fn collocated(
+        &self,
+        (y0, _): (&Vec<f64>, &Vec<f64>),
+        h: f64,
+        scale: (f64, f64),
+    ) -> Option<Step<Vec<f64>>> {
+        let (cache, ground) = self.collocation.filter(|_| self.collocates())?;
+        let row = damper_collocation::Row {
+            system: self.system,
+            dampers: self.dampers,
+            mass: self.mass,
+            ground,
+            scale,
+        };
+        let (y1, error) = cache.borrow_mut().step(&row, y0, h)?;
+        let f1 = self.rate(h, &y1);
+        Some(Step::linear(h, y0, y1, f1, error))
     }
 
     /// ẏ at offset s, y = (u, u̇) (the equation above). It takes the
@@ -206,11 +262,19 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
     ) -> (Step<Vec<f64>>, f64) {
         let n = y0.len() / 2;
         let mut h = h_try.min(h_max);
+        // Whether the length is h_max's, not the controller's.
+        let mut cut = h_try > h_max;
         loop {
-            let step = if self.stiff(y0, h) {
-                self.implicit((y0, f0), h, scale.1)
-            } else {
-                dopri5::step(&|s, y| self.rate(s, y), 0.0, y0, f0, h)
+            // Collocation takes lengths of a few values, whose responses
+            // it caches: a ladder of powers of 2^(1/4), or the rest of the
+            // sub-step.
+            if self.collocates() && h < h_max {
+                h = ladder_below(h);
+            }
+            let step = match self.collocated((y0, f0), h, scale) {
+                Some(step) => step,
+                None if self.stiff(y0, h) => self.implicit((y0, f0), h, scale.1),
+                None => dopri5::step(&|s, y| self.rate(s, y), 0.0, y0, f0, h),
             };
             let err = step
                 .error
@@ -223,9 +287,18 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
             } else {
                 5.0
             };
+            if let Some((cache, _)) = self.collocation {
+                let mut cache = cache.borrow_mut();
+                if err <= 1.0 || h <= h_min {
+                    cache.accepted += 1;
+                } else {
+                    cache.rejected += 1;
+                }
+            }
             if err <= 1.0 || h <= h_min {
-                // A step cut short by h_max says nothing against h_try.
-                let next = if h < h_try {
+                // A step cut short by h_max says nothing against h_try;
+                // one shrunk after a rejection does.
+                let next = if cut {
                     h_try.max(h * factor)
                 } else {
                     h * factor
@@ -236,6 +309,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
                 damper::first_reversal(self.dampers, h, &y0[n..], &step.y1[n..], |theta| {
                     step.at(theta)
                 });
+            cut = false;
             h *= match reversal {
                 Some(theta) if theta < 0.999 => theta.max(1e-6),
                 _ => factor.min(0.9),
@@ -246,7 +320,11 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
     /// The step of length s from y0, taken again (the implicit one where a
     /// damper is stiff over it; `speed` the motion's velocity scale).
     pub fn retake(&self, (y0, f0): (&Vec<f64>, &Vec<f64>), s: f64, speed: f64) -> Step<Vec<f64>> {
-        if self.stiff(y0, s) {
+        let n = y0.len() / 2;
+        let size = y0[..n].iter().fold(1e-6f64, |m, x| m.max(x.abs()));
+        if let Some(step) = self.collocated((y0, f0), s, (size, speed)) {
+            step
+        } else if self.stiff(y0, s) {
             self.implicit((y0, f0), s, speed)
         } else {
             dopri5::step(&|t, y| self.rate(t, y), 0.0, y0, f0, s)
@@ -294,6 +372,13 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         }
         step
     }
+}
+
+/// The largest power of 2^(1/4) not above h > 0, 2^(⌊4 log₂ h⌋/4): a
+/// quarter octave's ladder of lengths, each computed the same way to the
+/// bit, so that the steps' responses are met again.
+fn ladder_below(h: f64) -> f64 {
+    ((4.0 * h.log2()).floor() / 4.0).exp2()
 }
 
 /// u on the accepted `step` from y0 (f0 = ẏ there) as the quintic Hermite

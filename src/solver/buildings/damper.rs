@@ -8,8 +8,11 @@
 //! its spring k_l being in K of every configuration ([`super::link::add_linear`]).
 //! F_d is continuous but not smooth where Δv = 0, and its slope
 //! c_l α |Δv|^(α−1) has no bound there, so no configuration's linear map
-//! carries it: a row with a damper goes by the Runge–Kutta steps of
-//! [`super::contact_rk`] for the whole run, F_d in their right-hand side.
+//! carries it: a row with a damper goes by the steps of
+//! [`super::contact_rk`] for the whole run, each the configuration's linear
+//! motion with F_d collocated at the nodes of Radau IIA
+//! ([`super::damper_collocation`]), or, through a Hertz-type contact, the
+//! Runge–Kutta steps with F_d in their right-hand side.
 //!
 //! **Reversals.** Each instant where a damper's Δv changes sign is an event
 //! (g = −σΔv rising through 0, σ the sign of Δv in the current phase,

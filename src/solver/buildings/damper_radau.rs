@@ -36,8 +36,8 @@ const NEWTON: usize = 50;
 const SQ6: f64 = 2.449_489_742_783_178;
 
 /// The stages' nodes c_i and matrix a_ij of Radau IIA, 3 stages.
-const C: [f64; 3] = [(4.0 - SQ6) / 10.0, (4.0 + SQ6) / 10.0, 1.0];
-const A: [[f64; 3]; 3] = [
+pub const C: [f64; 3] = [(4.0 - SQ6) / 10.0, (4.0 + SQ6) / 10.0, 1.0];
+pub const A: [[f64; 3]; 3] = [
     [
         (88.0 - 7.0 * SQ6) / 360.0,
         (296.0 - 169.0 * SQ6) / 1800.0,

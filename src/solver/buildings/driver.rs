@@ -25,6 +25,7 @@
 //! inside; a quiet sub-step's interior then holds no event and no new
 //! peak, so its end is all that is recorded.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::time::Instant;
 
@@ -36,6 +37,7 @@ use super::bound::{Stack, Watch};
 use super::config::{Branch, Closed, Config};
 use super::contact_rk::{self, Contact, Taken, by_steps};
 use super::damper;
+use super::damper_collocation::Collocation;
 use super::energy::{NODES, RowEnergy, gauss_legendre};
 use super::event_function::EventFunction;
 use super::layout::Layout;
@@ -43,7 +45,7 @@ use super::link::{self, LinkResult};
 use super::link_peaks;
 use super::peaks::{Envelope, raise};
 use super::poly;
-use super::profile::{Cause, RowProfile};
+use super::profile::{Cause, CollocationSteps, RowProfile};
 use super::propagator::{Propagator, apply};
 use super::reach::Reach;
 use super::result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};
@@ -131,6 +133,12 @@ fn ground_at(piece: &Piece, t: f64) -> (f64, f64) {
             -piece.a * w * sn + piece.rate * cs,
         )
     }
+}
+
+/// Ground (a, ȧ, σ) at time t on `piece`.
+fn ground_triple(piece: &Piece, t: f64) -> (f64, f64, f64) {
+    let (a, rate) = ground_at(piece, t);
+    (a, rate, piece.sigma)
 }
 
 /// The quantities the quiet test watches, as combinations of the augmented
@@ -225,6 +233,9 @@ struct Run<'a> {
     /// The sign of each damper's Δv in its current phase (0 until it has
     /// one): its reversal is watched against it ([`super::damper`]).
     damper_signs: Vec<f64>,
+    /// The responses of the dampers' collocated steps, by configuration
+    /// and length ([`super::damper_collocation`]), and their counts.
+    collocation: RefCell<Collocation>,
 }
 
 /// Runs the exact method on `row` under `ground`.
@@ -326,6 +337,7 @@ pub fn run_row_cached(
         spare: Vec::new(),
         links: vec![LinkResult::new(); layout_links],
         damper_signs: Vec::new(),
+        collocation: RefCell::default(),
     };
     run.damper_signs = damper::signs(&run.layout.dampers, &run.v);
     run.record_start(ground);
@@ -611,7 +623,7 @@ impl Run<'_> {
                 (series, Some(step))
             } else {
                 let mut series = std::mem::take(&mut self.spare_series);
-                series.fill(&self.system, (&self.u, &self.v), ground, (su, sv));
+                series.fill(&self.system, (&self.u, &self.v), ground, (su, sv), &[]);
                 (series, None)
             };
             let mut end = rem.min(series.radius);
@@ -623,9 +635,11 @@ impl Run<'_> {
                 && end < step.h
             {
                 let t = self.t;
+                let ground = |s: f64| ground_triple(piece, t + s);
                 let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
                     ground_at(piece, t + s).0
-                });
+                })
+                .with_collocation(&self.collocation, &ground);
                 *step = contact.settle((y0, f0), g, end, sv);
                 end = step.h;
             }
@@ -699,9 +713,11 @@ impl Run<'_> {
         scale: (f64, f64),
     ) -> (Series, Taken) {
         let t = self.t;
+        let at = |s: f64| ground_triple(piece, t + s);
         let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
             ground_at(piece, t + s).0
-        });
+        })
+        .with_collocation(&self.collocation, &at);
         let y0: Vec<f64> = self.u.iter().chain(&self.v).copied().collect();
         let f0 = contact.rate(0.0, &y0);
         let fastest = 1.0 / self.layout.rate;
@@ -709,9 +725,15 @@ impl Run<'_> {
             h if h > 0.0 => h,
             _ => 1e-3 * fastest,
         };
+        // A series left by an earlier settling is not this step's.
+        self.collocation.borrow_mut().last = None;
         let (step, next) = contact.step((&y0, &f0), (guess, rem, 1e-12 * fastest), scale);
         self.next_contact_step = next;
-        let series = contact_rk::series((&y0, &f0), &step, ground);
+        // A collocated step's own series, else the quintic through its ends.
+        let series = match self.collocation.borrow_mut().last.take() {
+            Some(series) => series,
+            None => contact_rk::series((&y0, &f0), &step, ground),
+        };
         (series, (y0, f0, step))
     }
 
@@ -1059,6 +1081,15 @@ impl Run<'_> {
 
     fn finish(mut self, duration: f64) -> RowRun {
         self.profile.maps_made = self.propagator.made - self.counts_before.0;
+        let c = self.collocation.borrow();
+        self.profile.collocation = CollocationSteps {
+            accepted: c.accepted,
+            rejected: c.rejected,
+            solves: c.solves,
+            newton: c.newton,
+            responses: c.made,
+        };
+        drop(c);
         if self.timed {
             self.profile.exponential_seconds = self.propagator.seconds - self.counts_before.2;
         }

@@ -20,8 +20,9 @@
 //!   machinery finds events and peaks on it;
 //! - in a row with a fluid viscous damper (SPEC §14), whose force
 //!   c_l|Δv|^α sgn Δv is not analytic at Δv = 0 and acts at every instant,
-//!   by the same Runge–Kutta steps for the whole run, each reversal of Δv
-//!   an event ([`damper`]).
+//!   by steps that carry the configuration's linear motion exactly and
+//!   collocate only the dampers' forces ([`damper_collocation`]), for the
+//!   whole run, each reversal of Δv an event ([`damper`]).
 //!
 //! One storey each gives the SDOF pair of SPEC §2.
 //!
@@ -31,8 +32,9 @@
 //! - [`system`]: the linear system of one configuration;
 //! - [`expm`]: the matrix exponential of its maps;
 //! - [`link`]: links across the joints (SPEC §14), linear and fluid viscous;
-//! - [`damper`]: the fluid viscous dampers (α < 1), carried by the
-//!   Runge–Kutta steps for the whole run, their reversals events;
+//! - [`damper`]: the fluid viscous dampers (α < 1), their reversals events;
+//! - [`damper_collocation`]: their steps, by exponential collocation;
+//! - [`damper_radau`]: their implicit step through a Hertz-type contact;
 //! - [`peaks`]: the envelopes a run reports;
 //! - [`reach`]: how far each floor moves over a series step, to pass over
 //!   quantities that cannot reach their events or peaks there;
@@ -46,6 +48,7 @@ pub mod bound;
 pub mod config;
 pub mod contact_rk;
 pub mod damper;
+pub mod damper_collocation;
 pub mod damper_radau;
 pub mod driver;
 pub mod energy;

@@ -66,6 +66,20 @@ pub struct Events {
     pub reversals: usize,
 }
 
+/// What the collocated steps of a row with dampers cost: steps accepted
+/// and rejected for their error, solves of their nodes (three per doubled
+/// step, and those of the steps retaken to place events), Newton
+/// iterations over the solves, and response sets made (one per
+/// configuration and step length met).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct CollocationSteps {
+    pub accepted: usize,
+    pub rejected: usize,
+    pub solves: usize,
+    pub newton: usize,
+    pub responses: usize,
+}
+
 /// The profile of one run.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct RowProfile {
@@ -79,6 +93,9 @@ pub struct RowProfile {
     /// Series (or Runge–Kutta) steps, by the cause of their sub-step.
     pub series: PerCause,
     pub events: Events,
+    /// The steps of a row with a fluid viscous damper by exponential
+    /// collocation ([`super::damper_collocation`]).
+    pub collocation: CollocationSteps,
     /// Linear maps made (each a matrix exponential and its bounds).
     pub maps_made: usize,
     /// Seconds in map steps (every quiet test, passed or not, and the maps

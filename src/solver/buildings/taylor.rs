@@ -9,7 +9,8 @@
 //! with a_k the ground's coefficients (a_{k+2} = σ a_k/((k+1)(k+2)) on a
 //! piece where ä_g = σ a_g) and (δδ̇)_k = Σ_j δ_j δ̇_{k−j} the improved Kelvin
 //! law's product, so that a contact phase of the Kelvin family is carried
-//! exactly too. The series is used on [0, radius], where its last two terms
+//! exactly too; a force given as a polynomial in s ([`Forcing`]) adds its
+//! coefficients to ü's. The series is used on [0, radius], where its last two terms
 //! are below [`TOLERANCE`] of the state's scale.
 
 use super::system::System;
@@ -29,6 +30,21 @@ pub fn ground_coefficients((a, rate, sigma): (f64, f64, f64)) -> [f64; ORDER + 1
         g[k + 2] = sigma * g[k] / ((k + 1) * (k + 2)) as f64;
     }
     g
+}
+
+/// A force x(s) = Σ_k x_k s^k across floors A (left) and B (right),
+/// acting −x/m_A on A and +x/m_B on B, as a link's or a contact's does:
+/// it adds −(x_k/m_A) at A and +(x_k/m_B) at B to the k-th coefficient
+/// of ü.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Forcing {
+    pub left: usize,
+    pub right: usize,
+    /// 1/m_A and 1/m_B.
+    pub left_rate: f64,
+    pub right_rate: f64,
+    /// x_0 … x_3 (N, N/s, N/s², N/s³).
+    pub force: [f64; 4],
 }
 
 /// Coefficients of u and u̇, floor by floor (each a block of
@@ -59,11 +75,25 @@ impl Series {
         scale: (f64, f64),
     ) -> Series {
         let mut series = Series::default();
-        series.fill(system, (u0, v0), ground, scale);
+        series.fill(system, (u0, v0), ground, scale, &[]);
         series
     }
 
-    /// [`Series::new`] written over this series, its coefficients'
+    /// [`Series::new`] with polynomial forces across floor pairs
+    /// ([`Forcing`]) added to the right-hand side.
+    pub fn forced(
+        system: &System,
+        (u0, v0): (&[f64], &[f64]),
+        ground: (f64, f64, f64),
+        scale: (f64, f64),
+        forcing: &[Forcing],
+    ) -> Series {
+        let mut series = Series::default();
+        series.fill(system, (u0, v0), ground, scale, forcing);
+        series
+    }
+
+    /// [`Series::forced`] written over this series, its coefficients'
     /// vectors reused (a run takes thousands of steps).
     pub fn fill(
         &mut self,
@@ -71,6 +101,7 @@ impl Series {
         (u0, v0): (&[f64], &[f64]),
         ground: (f64, f64, f64),
         scale: (f64, f64),
+        forcing: &[Forcing],
     ) {
         const W: usize = ORDER + 1;
         let n = u0.len();
@@ -108,6 +139,12 @@ impl Series {
                 let conv: f64 = (0..=k).map(|j| delta[row + j] * rate_d[row + k - j]).sum();
                 acc[p.left] -= p.left_rate * conv;
                 acc[p.right] += p.right_rate * conv;
+            }
+            for f in forcing {
+                if let Some(&x) = f.force.get(k) {
+                    acc[f.left] -= f.left_rate * x;
+                    acc[f.right] += f.right_rate * x;
+                }
             }
             let inv = 1.0 / (k + 1) as f64;
             for i in 0..n {
