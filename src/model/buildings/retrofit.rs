@@ -32,6 +32,14 @@ pub struct ContactElement {
     pub thickness: Option<f64>,
 }
 
+/// A dashpot's force at the velocity Δv (SPEC §14):
+/// F = c_l |Δv|^α sgn Δv (N), linear for α = 1, a fluid viscous damper's
+/// for α < 1.
+#[inline]
+pub fn dashpot_force(damping: f64, exponent: f64, dv: f64) -> f64 {
+    damping * dv.abs().powf(exponent) * dv.signum()
+}
+
 /// A dashpot's law written the other way round (SPEC §14): the velocity
 /// Δv = ψ(F) = sgn F (|F|/c_l)^(1/α) at which it carries the force F.
 /// Bounded in slope where F = 0 (1/α ≥ 1), where c_l|Δv|^α has none: the
@@ -59,8 +67,7 @@ impl LinkElement {
     /// F = k_l Δu + c_l |Δv|^α sgn Δv (N), acting −F on the left floor.
     #[inline]
     pub fn force(&self, du: f64, dv: f64) -> f64 {
-        self.link.stiffness * du
-            + self.link.damping * dv.abs().powf(self.link.exponent) * dv.signum()
+        self.link.stiffness * du + dashpot_force(self.link.damping, self.link.exponent, dv)
     }
 
     /// Whether the force is linear in (Δu, Δv): α = 1.

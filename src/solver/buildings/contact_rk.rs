@@ -287,15 +287,16 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
             } else {
                 5.0
             };
+            let accepted = err <= 1.0 || h <= h_min;
             if let Some((cache, _)) = self.collocation {
                 let mut cache = cache.borrow_mut();
-                if err <= 1.0 || h <= h_min {
+                if accepted {
                     cache.accepted += 1;
                 } else {
                     cache.rejected += 1;
                 }
             }
-            if err <= 1.0 || h <= h_min {
+            if accepted {
                 // A step cut short by h_max says nothing against h_try;
                 // one shrunk after a rejection does.
                 let next = if cut {

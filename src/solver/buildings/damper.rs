@@ -32,6 +32,7 @@
 //! own dense output puts the kink ([`first_reversal`]).
 
 use crate::model::buildings::LinkElement;
+use crate::model::buildings::retrofit::dashpot_force;
 
 /// One fluid viscous damper (a link with α < 1).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -81,7 +82,7 @@ impl Damper {
     /// F_d = c_l |Δv|^α sgn Δv (N).
     #[inline]
     pub fn force(&self, rate: f64) -> f64 {
-        self.damping * rate.abs().powf(self.exponent) * rate.signum()
+        dashpot_force(self.damping, self.exponent, rate)
     }
 
     /// Adds −F_d/m_A to ü_A and F_d/m_B to ü_B.

@@ -39,7 +39,7 @@
 //! nodes O(h⁴). The local error is estimated by step doubling,
 //! (y_h − y_{h/2,h/2})/(2⁵ − 1), and the step returns y_{h/2,h/2}.
 //!
-//! Step lengths are powers of two, or the rest of the sub-step, so that the
+//! Step lengths are powers of 2^(1/4), or the rest of the sub-step, so that the
 //! responses are made once per configuration and length and reused: a step
 //! then costs two Taylor series of the free motion and a Newton solve on
 //! 3 × (elements) unknowns instead of 3 × (n + elements).
@@ -51,7 +51,7 @@ use nalgebra::{DMatrix, DVector};
 use super::damper::Damper;
 use super::system::System;
 use super::taylor::{Forcing, Series};
-use crate::model::buildings::retrofit::{dashpot_velocity, dashpot_velocity_slope};
+use crate::model::buildings::retrofit::{dashpot_force, dashpot_velocity, dashpot_velocity_slope};
 
 /// The nodes c_j of Radau IIA, 3 stages: (4 − √6)/10, (4 + √6)/10, 1.
 pub const NODES: [f64; 3] = super::damper_radau::C;
@@ -156,9 +156,7 @@ fn values(elements: &[Element], u: &[f64], v: &[f64]) -> Vec<f64> {
         .map(|el| {
             let (du, dv) = measure(el, u, v);
             match el.law {
-                Law::Damper { damping, exponent } => {
-                    damping * dv.abs().powf(exponent) * dv.signum()
-                }
+                Law::Damper { damping, exponent } => dashpot_force(damping, exponent, dv),
                 Law::Product { gap, coefficient } => coefficient * (du - gap) * dv,
             }
         })
