@@ -78,7 +78,7 @@ fn the_default_step_keeps_a_long_record_within_1e_5() {
     let ground = Ground::from_record(&record, 1.0);
     let row = buildings::load("three-in-series").unwrap();
     let duration = ground.end() + pounding::model::buildings::matrices::default_tail(&row);
-    let dt = default_step(duration, &ground);
+    let dt = default_step(&row, duration, &ground);
     let per_sample = record.dt / dt;
     assert!(
         (per_sample - per_sample.round()).abs() < 1e-9,
@@ -86,9 +86,9 @@ fn the_default_step_keeps_a_long_record_within_1e_5() {
     );
     assert!(dt <= 5e-5 * (10.0 / duration).sqrt() && dt > 0.99 * 5e-5 * (10.0 / duration).sqrt());
     // Short runs keep 5e-5 s (a whole number of them per 5 ms sample).
-    assert_eq!(default_step(8.0, &ground), 5e-5);
+    assert_eq!(default_step(&row, 8.0, &ground), 5e-5);
     let sine = Ground::sine(3.0, 6.0, 30.0);
-    assert_eq!(default_step(40.0, &sine), 2.5e-5);
+    assert_eq!(default_step(&row, 40.0, &sine), 2.5e-5);
     let exact = run_row(&row, &ground, &RowOptions::lasting(duration)).unwrap();
     let nm = run_newmark(&row, &ground, duration, dt).unwrap();
     let counts = |r: &RowRun| r.pairs.iter().map(|p| p.impacts.len()).collect::<Vec<_>>();
@@ -116,7 +116,7 @@ fn under_each_pulse_newmark_converges_at_second_order() {
         let duration = ground.end() + 2.0;
         let exact = run_row(&row, &ground, &RowOptions::lasting(duration)).unwrap();
         assert!(exact.impacts() > 0, "{pulse:?}");
-        let dt = default_step(duration, &ground);
+        let dt = default_step(&row, duration, &ground);
         let nm = run_newmark(&row, &ground, duration, dt).unwrap();
         assert_eq!(counts(&nm), counts(&exact), "{pulse:?}");
         let e = peak_error(&nm, &exact);

@@ -115,7 +115,7 @@ pub fn row_bench(row: &Row, ground: &Ground, duration: f64) -> Result<Vec<RowBen
         impacts_match: counts(&exact) == reference.impacts,
     });
     // The fixed steps, and the default step of this run's length.
-    let default = default_step(duration, ground);
+    let default = default_step(row, duration, ground);
     let steps = NEWMARK_STEPS
         .into_iter()
         .chain((!NEWMARK_STEPS.contains(&default)).then_some(default));

@@ -182,7 +182,7 @@ pub fn bench(
     // The reference costs about twenty exact runs; Newmark runs at the
     // default step and at two, four and eight times it.
     let exact = work::row_seconds(&row, duration, None);
-    let newmark = work::row_seconds(&row, duration, Some(default_step(duration, &ground)));
+    let newmark = work::row_seconds(&row, duration, Some(default_step(&row, duration, &ground)));
     bounded(
         "bench --buildings",
         21.0 * exact + 1.875 * newmark,
@@ -208,7 +208,7 @@ fn newmark_step(
 ) -> Result<f64, CliError> {
     let (most, why) = max_step(row, ground);
     let Some(text) = &params.dt else {
-        return Ok(default_step(duration, ground).min(most));
+        return Ok(default_step(row, duration, ground).min(most));
     };
     let dt = text
         .parse::<f64>()
