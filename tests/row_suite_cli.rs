@@ -418,3 +418,35 @@ fn long_work_needs_allow_long_and_is_refused_before_any_run() {
     ]);
     assert!(o.status.success());
 }
+
+/// A row's separation study writes each top-level key of its JSON once:
+/// the joints are the study's entries, each naming its buildings and gap
+/// (a parser that kept the first of two `joints` would lose the study).
+#[test]
+fn gap_suite_json_names_each_key_once() {
+    #[derive(serde::Deserialize)]
+    struct Top {
+        buildings: Vec<serde_json::Value>,
+        joints: Vec<serde_json::Value>,
+        records: Vec<serde_json::Value>,
+    }
+    let out = succeeds(&[
+        "gap",
+        "--buildings",
+        "three-in-series",
+        "--suite",
+        "synthetic:3",
+        "--level",
+        "0.2",
+        "--format",
+        "json",
+    ]);
+    // serde refuses a struct's field given twice.
+    let top: Top = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!((top.buildings.len(), top.records.len()), (3, 3));
+    assert_eq!(top.joints.len(), 2);
+    for j in &top.joints {
+        assert!(j["left"].is_string() && j["gap_m"].as_f64().unwrap() > 0.0);
+        assert!(j["study"]["at_probability"].is_array(), "{j}");
+    }
+}

@@ -88,13 +88,26 @@ pub struct GapRow {
 }
 
 /// What a row's separation study says before its records: the contact
-/// law and method, the buildings and the scaling.
-#[derive(Debug, Serialize)]
+/// law and method, the buildings and the scaling. Its joints head the
+/// table only: in JSON each joint is the study's own entry ([`GapTail`]),
+/// which names its buildings and gap too, under the one key `joints`.
+#[derive(Debug)]
 pub struct GapHead {
     model: &'static str,
     method: &'static str,
-    #[serde(flatten)]
     scaled: Scaled,
+}
+
+impl Serialize for GapHead {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut m = s.serialize_struct("GapHead", 4)?;
+        m.serialize_field("model", self.model)?;
+        m.serialize_field("method", self.method)?;
+        m.serialize_field("buildings", &self.scaled.buildings.buildings)?;
+        m.serialize_field("scaling", &self.scaled.scaling)?;
+        m.end()
+    }
 }
 
 /// Per joint, left to right: the separation study over the records.
