@@ -12,6 +12,33 @@ pub fn eval(c: &[f64], s: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &x| acc * s + x)
 }
 
+/// s⁰, s¹, … into `powers`, for many polynomials at one s by [`dot`].
+pub fn powers(s: f64, powers: &mut [f64]) {
+    let mut x = 1.0;
+    for p in powers {
+        *p = x;
+        x *= s;
+    }
+}
+
+/// p(s) = Σ c_k s^k from the powers of s ([`powers`], at least as many as
+/// c): four partial sums side by side, where Horner's rule is one chain
+/// of multiply-adds, each waiting on the last.
+#[inline]
+pub fn dot(c: &[f64], powers: &[f64]) -> f64 {
+    let mut sum = [0.0; 4];
+    let (chunks, rest) = (c.chunks_exact(4), c.len() % 4);
+    let tail = &c[c.len() - rest..];
+    for (block, p) in chunks.zip(powers.chunks_exact(4)) {
+        for k in 0..4 {
+            sum[k] += block[k] * p[k];
+        }
+    }
+    let base = c.len() - rest;
+    let tail: f64 = tail.iter().zip(&powers[base..]).map(|(c, p)| c * p).sum();
+    (sum[0] + sum[1]) + (sum[2] + sum[3]) + tail
+}
+
 /// p'(s).
 #[inline]
 pub fn eval_derivative(c: &[f64], s: f64) -> f64 {
