@@ -291,17 +291,32 @@ impl Responses {
         w
     }
 
-    /// Σ_r w_r (u, u̇)_r(s), added to (u, v).
+    /// Σ_r w_r (u, u̇)_r(s), added to (u, v): each floor's coefficients
+    /// against the powers of s, as arrays of one length, which the
+    /// compiler unrolls.
     fn add_state(&self, w: &[f64], s: f64, (u, v): (&mut [f64], &mut [f64])) {
-        let mut p = [0.0; ORDER + 1];
+        const W: usize = ORDER + 1;
+        let mut p = [0.0; W];
         poly::powers(s, &mut p);
+        let dot = |c: &[f64]| -> f64 {
+            let Ok(c) = <&[f64; W]>::try_from(c) else {
+                return poly::dot(c, &p);
+            };
+            let mut sum = [0.0; 4];
+            for k in 0..W {
+                sum[k % 4] += c[k] * p[k];
+            }
+            (sum[0] + sum[1]) + (sum[2] + sum[3])
+        };
         for (series, &wr) in self.series.iter().zip(w) {
             if wr == 0.0 {
                 continue;
             }
-            for (i, (u, v)) in u.iter_mut().zip(v.iter_mut()).enumerate() {
-                *u += wr * poly::dot(series.displacement(i), &p);
-                *v += wr * poly::dot(series.velocity(i), &p);
+            for (x, c) in u.iter_mut().zip(series.u.chunks_exact(W)) {
+                *x += wr * dot(c);
+            }
+            for (x, c) in v.iter_mut().zip(series.v.chunks_exact(W)) {
+                *x += wr * dot(c);
             }
         }
     }
