@@ -681,8 +681,72 @@ fn solve(
 
 #[cfg(test)]
 mod tests {
+    use super::super::config::Config;
+    use super::super::damper::Damper;
     use super::super::damper_radau::A;
-    use super::{NODES, basis, lagrange, node_polynomial};
+    use super::super::layout::Layout;
+    use super::super::system::System;
+    use super::super::taylor::{Forcing, Series};
+    use super::{AtNodes, Collocation, NODES, basis, elements_into, lagrange, node_polynomial};
+    use crate::model::buildings;
+
+    /// The responses to ℓ_j(s/h) at the nodes, summed from the cached
+    /// responses to 1, s, s² ([`AtNodes::of`]), are those of the Taylor
+    /// series forced by ℓ_j(s/h) itself, to 1e-12 of the largest, on
+    /// block-and-frame-retrofit with its damper at α = 0.35, at step
+    /// lengths across three decades: one response set serves every h.
+    #[test]
+    fn the_responses_to_powers_of_s_serve_every_step_length() {
+        let row = buildings::load_with("block-and-frame-retrofit", &["link1.exponent=0.35".into()])
+            .expect("shipped");
+        let layout = Layout::of(&row);
+        let n = layout.dofs;
+        let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
+        let system = System::of(&layout, &config);
+        let dampers = Damper::all(&layout.links, &layout.mass);
+        let mut cache = Collocation::default();
+        elements_into(&dampers, &system, &layout.mass, &mut cache.elements);
+        let set = cache.responses(&system);
+        assert_eq!(cache.made, 1);
+        let el = cache.elements[0];
+        let mut rest = system.clone();
+        rest.load.fill(0.0);
+        let zero = vec![0.0; n];
+        let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
+        for h in [1e-4, 1.3e-3, 2e-2] {
+            let nodes = AtNodes::of(&cache.sets[set], 1, h);
+            let largest = nodes.rate.amax();
+            for j in 0..3 {
+                let forcing = Forcing {
+                    left: el.left,
+                    right: el.right,
+                    left_rate: el.left_rate,
+                    right_rate: el.right_rate,
+                    force: basis(j, h),
+                };
+                let direct = Series::forced(
+                    &rest,
+                    (&zero, &zero),
+                    (0.0, 0.0, 0.0),
+                    (1.0, 1.0),
+                    &[forcing],
+                );
+                for (i, &c) in NODES.iter().enumerate() {
+                    direct.state(c * h, &mut u, &mut v);
+                    let rate = v[el.left] - v[el.right];
+                    let error = (nodes.rate[(i, j)] - rate).abs();
+                    assert!(
+                        error <= 1e-12 * largest,
+                        "h = {h}, ℓ_{j} at c_{i}: {} against {rate}",
+                        nodes.rate[(i, j)]
+                    );
+                }
+            }
+        }
+        // The same configuration finds its set again without making one.
+        assert_eq!(cache.responses(&system), set);
+        assert_eq!(cache.made, 1);
+    }
 
     /// ∫₀^{c_i} ℓ_j = a_ij, Radau IIA's matrix (Hairer & Wanner, Table
     /// IV.5.6): where the damper is far stiffer than the step the
