@@ -142,7 +142,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
     }
 
     /// The step of length h from y0 by [`damper_collocation`], as a step
-    /// of the pair with f at its end, its error by step doubling, and as
+    /// of the pair with f at its end, its error estimate, and as
     /// its dense output the line from y0 to y1; None where it does not
     /// apply or its Newton's method fails.
     fn collocated(
@@ -265,12 +265,6 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         // Whether the length is h_max's, not the controller's.
         let mut cut = h_try > h_max;
         loop {
-            // Collocation takes lengths of a few values, whose responses
-            // it caches: a ladder of powers of 2^(1/4), or the rest of the
-            // sub-step.
-            if self.collocates() && h < h_max {
-                h = ladder_below(h);
-            }
             let step = match self.collocated((y0, f0), h, scale) {
                 Some(step) => step,
                 None if self.stiff(y0, h) => self.implicit((y0, f0), h, scale.1),
@@ -373,13 +367,6 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         }
         step
     }
-}
-
-/// The largest power of 2^(1/4) not above h > 0, 2^(⌊4 log₂ h⌋/4): a
-/// quarter octave's ladder of lengths, each computed the same way to the
-/// bit, so that the steps' responses are met again.
-fn ladder_below(h: f64) -> f64 {
-    ((4.0 * h.log2()).floor() / 4.0).exp2()
 }
 
 /// u on the accepted `step` from y0 (f0 = ẏ there) as the quintic Hermite

@@ -67,10 +67,10 @@ pub struct Events {
 }
 
 /// What the collocated steps of a row with dampers cost: steps accepted
-/// and rejected for their error, solves of their nodes (three per doubled
-/// step, and those of the steps retaken to place events), Newton
-/// iterations over the solves, and response sets made (one per
-/// configuration and step length met).
+/// and rejected for their error, solves of their nodes (one per step,
+/// three where the step is doubled near a damper's reversal, and those of
+/// the steps retaken to place events), Newton iterations over the solves,
+/// and response sets made (one per configuration met).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct CollocationSteps {
     pub accepted: usize,

@@ -13,7 +13,7 @@
 //! coefficients to ü's. The series is used on [0, radius], where its last two terms
 //! are below [`TOLERANCE`] of the state's scale.
 
-use super::system::System;
+use super::system::{Product, System};
 
 /// Highest order kept.
 pub const ORDER: usize = 24;
@@ -98,6 +98,32 @@ impl Series {
     pub fn fill(
         &mut self,
         system: &System,
+        start: (&[f64], &[f64]),
+        ground: (f64, f64, f64),
+        scale: (f64, f64),
+        forcing: &[Forcing],
+    ) {
+        self.fill_with(system, &system.products, start, ground, scale, forcing);
+    }
+
+    /// [`Series::fill`] of the configuration's linear motion alone: K, C
+    /// and q, its products h δ δ̇ left out (a collocated step carries them
+    /// as forces, [`super::damper_collocation`]).
+    pub fn fill_linear(
+        &mut self,
+        system: &System,
+        start: (&[f64], &[f64]),
+        ground: (f64, f64, f64),
+        scale: (f64, f64),
+    ) {
+        self.fill_with(system, &[], start, ground, scale, &[]);
+    }
+
+    /// The series with the products `products` in place of the system's.
+    fn fill_with(
+        &mut self,
+        system: &System,
+        products: &[Product],
         (u0, v0): (&[f64], &[f64]),
         ground: (f64, f64, f64),
         scale: (f64, f64),
@@ -116,7 +142,7 @@ impl Series {
             v[i * W] = v0[i];
         }
         let g = ground_coefficients(ground);
-        let np = system.products.len();
+        let np = products.len();
         let mut delta = vec![0.0; np * W];
         let mut rate_d = vec![0.0; np * W];
         let mut acc = vec![0.0; n];
@@ -131,7 +157,7 @@ impl Series {
                 }
                 *acc = s;
             }
-            for (pi, p) in system.products.iter().enumerate() {
+            for (pi, p) in products.iter().enumerate() {
                 let row = pi * W;
                 let (l, r) = (p.left * W + k, p.right * W + k);
                 delta[row + k] = u[l] - u[r] - if k == 0 { p.gap } else { 0.0 };
