@@ -95,10 +95,10 @@ pub fn row_seconds(row: &Row, duration: f64, newmark_step: Option<f64>) -> f64 {
 
 /// How many times the exact method's cost a row with a fluid viscous
 /// damper takes: block-and-frame-retrofit with `link1.exponent = 0.35`
-/// under `synthetic:2000` ran 420–506 ms against the bare row's 8.1–10.9 ms
-/// side by side, and 496–541 ms against 7.8–10.6 ms in the `row_speed`
-/// bench (39–69×); rounded to 50.
-pub const FLUID_DAMPER_EXACT: f64 = 50.0;
+/// ran 202–214 ms under `synthetic:2000` against the bare row's 7.3–9.8 ms
+/// side by side (21–28×), and 1.24 s under a 30 s sine (3 m/s², ω = 6)
+/// against 36–43 ms (29–34×); rounded up to 35.
+pub const FLUID_DAMPER_EXACT: f64 = 35.0;
 
 #[cfg(test)]
 mod tests {

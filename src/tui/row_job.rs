@@ -34,10 +34,16 @@ pub struct RowSpec {
 }
 
 impl RowSpec {
-    /// Estimated wall time of the whole job (s), by [`work::row_seconds`].
+    /// Estimated wall time of the whole job (s), by [`work::row_seconds`]:
+    /// each law's run and the run apart on the row, and the bare row's run
+    /// without its retrofit (no fluid damper to pay for).
     pub fn seconds(&self) -> f64 {
-        (self.laws.len() + 1 + usize::from(self.bare)) as f64
-            * work::row_seconds(&self.row, self.duration, None)
+        let bare = if self.bare {
+            work::row_seconds(&self.row.bare(), self.duration, None)
+        } else {
+            0.0
+        };
+        (self.laws.len() + 1) as f64 * work::row_seconds(&self.row, self.duration, None) + bare
     }
 }
 
