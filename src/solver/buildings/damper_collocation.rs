@@ -621,11 +621,17 @@ fn solve(
     });
     let mut x = x;
     // Each damper's bound on Newton's update: 1e-15 of its force at the
-    // motion's speed.
+    // motion's speed, and never below the smallest normal number. A
+    // vanishing damper (c = 1e-300) would otherwise ask for updates among
+    // the subnormals, whose precision falls with their size, so that
+    // whether Newton converges would rest on rounding; a force that small
+    // moves no floor.
     let bounds: Vec<f64> = elements
         .iter()
         .map(|el| match el.law {
-            Law::Damper { damping, exponent } => 1e-15 * damping * row.scale.1.powf(exponent),
+            Law::Damper { damping, exponent } => {
+                (1e-15 * damping * row.scale.1.powf(exponent)).max(f64::MIN_POSITIVE)
+            }
             Law::Product { .. } => 0.0,
         })
         .collect();
