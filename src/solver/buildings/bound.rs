@@ -100,27 +100,17 @@ impl Stack {
         (u, v): (&[f64], &[f64]),
         (a, rate, sigma): (f64, f64, f64),
     ) {
-        let n = u.len();
         self.ground = [a, rate, sigma * a];
-        // On the nonzeros of M⁻¹K and M⁻¹C ([`System::row`]).
-        let next = |x: &[f64], y: &[f64], g: f64, load: bool, out: &mut Vec<f64>| {
-            out.clear();
-            out.extend((0..n).map(|i| {
-                let mut s = if load { system.load[i] - g } else { -g };
-                for &(j, kij, cij) in system.row(i) {
-                    s -= kij * x[j] + cij * y[j];
-                }
-                s
-            }));
-        };
+        // By columns of M⁻¹K and M⁻¹C ([`System::columns`]).
         let [x, y, acc, jerk, snap] = &mut self.rates;
         x.clear();
         x.extend_from_slice(u);
         y.clear();
         y.extend_from_slice(v);
-        next(u, v, a, true, acc);
-        next(v, acc, rate, false, jerk);
-        next(acc, jerk, sigma * a, false, snap);
+        let columns = &system.columns;
+        columns.rate((u, v), Some(&system.load), a, acc);
+        columns.rate((v, acc), None, rate, jerk);
+        columns.rate((acc, jerk), None, sigma * a, snap);
     }
 
     /// q, q̇, q̈ of `w`.

@@ -31,6 +31,8 @@
 //! - [`event_function`]: each event's function, linear in the state;
 //! - [`system`]: the linear system of one configuration;
 //! - [`expm`]: the matrix exponential of its maps;
+//! - [`propagator`]: the cache of maps out of contact, and a map step;
+//! - [`lanes`]: the vector blocks a map step is stored in;
 //! - [`link`]: links across the joints (SPEC §14), linear and fluid viscous;
 //! - [`damper`]: the fluid viscous dampers (α < 1), their reversals events;
 //! - [`damper_collocation`]: their steps, by exponential collocation;
@@ -55,6 +57,7 @@ pub mod energy;
 pub mod event_function;
 pub mod expm;
 pub mod hermite;
+pub mod lanes;
 pub mod layout;
 pub mod link;
 pub mod link_peaks;

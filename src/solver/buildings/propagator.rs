@@ -25,6 +25,10 @@ use nalgebra::DMatrix;
 use super::bound::{Bounds, Watch};
 use super::system::System;
 
+mod map;
+
+pub use map::{Map, apply};
+
 /// Cache key: the branches, h and σ (as bits).
 pub type Key = (Vec<u8>, u64, u64);
 
@@ -112,50 +116,5 @@ impl Propagator {
 
     pub fn is_empty(&self) -> bool {
         self.entries.is_empty()
-    }
-}
-
-/// The rows of (u, u̇) of e^{𝒜h}, 2n × (3n + 2), stored row by row: a map
-/// step reads each row once, front to back.
-#[derive(Debug, Clone)]
-pub struct Map {
-    /// Columns per row: 3n + 2.
-    width: usize,
-    rows: Vec<f64>,
-}
-
-impl Map {
-    /// From the map as a matrix ([`Bounds::with_map`]).
-    pub fn of(map: &DMatrix<f64>) -> Map {
-        Map {
-            width: map.ncols(),
-            rows: map.transpose().as_slice().to_vec(),
-        }
-    }
-}
-
-/// (u, u̇) after the map from (u, u̇) under ground (a, ȧ) and load M⁻¹q.
-pub fn apply(
-    map: &Map,
-    (u, v): (&[f64], &[f64]),
-    (a, rate): (f64, f64),
-    load: &[f64],
-    (u1, v1): (&mut [f64], &mut [f64]),
-) {
-    let n = u.len();
-    let (v, load) = (&v[..n], &load[..n]);
-    for (r, row) in map.rows.chunks_exact(map.width).enumerate() {
-        let (x, rest) = row.split_at(n);
-        let (y, rest) = rest.split_at(n);
-        let (g, q) = rest.split_at(2);
-        let mut s = g[0] * a + g[1] * rate;
-        for j in 0..n {
-            s += x[j] * u[j] + y[j] * v[j] + q[j] * load[j];
-        }
-        if r < n {
-            u1[r] = s;
-        } else {
-            v1[r - n] = s;
-        }
     }
 }

@@ -21,6 +21,10 @@ use nalgebra::DMatrix;
 use super::config::{Branch, Config};
 use super::layout::Layout;
 
+mod columns;
+
+pub use columns::Columns;
+
 /// The nonlinear term of one closed pair: h δ δ̇.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Product {
@@ -45,6 +49,8 @@ pub struct System {
     /// and its contacts, so a row holds a few of the n entries.
     entries: Vec<(usize, f64, f64)>,
     row_start: Vec<usize>,
+    /// M⁻¹K and M⁻¹C by columns, for the rates at a map step's ends.
+    pub columns: Columns,
 }
 
 impl System {
@@ -128,6 +134,7 @@ impl System {
             row_start.push(entries.len());
         }
         System {
+            columns: Columns::of(&k, &c),
             stiffness: k,
             damping: c,
             load: q,
