@@ -19,10 +19,9 @@
 //! |q⁽ᵏ⁾(t)| = |(cᵀ𝒜ᵏD⁻¹)(D w(t))| ≤ ‖cᵀ𝒜ᵏD⁻¹‖₁ · ‖e^{𝒜̃t}‖∞ · ‖D w(0)‖∞,
 //! ```
 //!
-//! and sup over t ∈ [0, h] of ‖e^{𝒜̃t}‖∞ is at most B = max_j ‖e^{𝒜̃t_j}‖∞ ·
-//! e^{‖𝒜̃‖∞h/N} on the grid t_j = jh/N, j < N: any t lies in some
-//! [t_j, t_j + h/N], and e^{𝒜̃t} = e^{𝒜̃(t − t_j)} e^{𝒜̃t_j} with
-//! ‖e^{𝒜̃τ}‖ ≤ e^{‖𝒜̃‖τ}. The row norms and B depend only on the
+//! and sup over t ∈ [0, h] of ‖e^{𝒜̃t}‖∞ is at most B, bounded from its
+//! values on a grid of the sub-step, the last of which is the map
+//! ([`super::sweep`]). The row norms and B depend only on the
 //! configuration, h and σ, so they are made with its map and cached. A
 //! sub-step then costs one ∞-norm of the state and, at each end, ü and its
 //! next two rates for every floor (three products by M⁻¹K and M⁻¹C,
@@ -33,20 +32,18 @@
 //! exponential and the norms, far above it.
 //!
 //! The rows cᵀ𝒜⁴ and cᵀ𝒜⁵ come from rows n … 2n of the powers 𝒜² … 𝒜⁶
-//! (five products of n + 1 rows), since each c is a unit row or a row of 𝒜
-//! beside one; and the map itself is the sweep's step to the N-th power,
-//! e^{𝒜h} = D⁻¹(e^{𝒜̃h/N})ᴺD, one product more, so that a configuration
-//! costs one matrix exponential (of the scaled matrix over h/N, of small
-//! norm). The sweep's powers are taken in blocks: nothing moves from
-//! (u, u̇) into the ground or the load, which halves each product.
+//! (five products of n + 1 rows by the sparse 𝒜, [`super::sparse`]), since
+//! each c is a unit row or a row of 𝒜 beside one, and 𝒜̃² is one product by
+//! the sparse 𝒜̃; the map itself, e^{𝒜h} = D⁻¹e^{𝒜̃h}D, is the grid's last
+//! point, so that a configuration costs one matrix exponential (of the
+//! scaled matrix over a quarter of h, of norm below one: no squaring) and
+//! three products in blocks.
 
 use nalgebra::DMatrix;
 
-use super::expm::{Blocks, exponential_blocks};
+use super::sparse::Sparse;
+use super::sweep::sweep;
 use super::system::System;
-
-/// Grid of the sweep of ‖e^{𝒜̃t}‖ over the sub-step.
-const GRID: usize = 16;
 /// Relative allowance for the round-off of the exponential and the norms
 /// (of order 1e-13 for the rows' sizes met here).
 const ROUNDING: f64 = 1e-6;
@@ -129,34 +126,12 @@ impl Stack {
     }
 }
 
-/// ‖[[X, Y], [0, Z]]‖∞ of a power of the step, from its blocks.
-fn block_norm(x: &DMatrix<f64>, y: &DMatrix<f64>, z: &DMatrix<f64>) -> f64 {
-    let row_sums = |m: &DMatrix<f64>| {
-        let mut sums = vec![0.0; m.nrows()];
-        for column in m.column_iter() {
-            for (s, e) in sums.iter_mut().zip(column.iter()) {
-                *s += e.abs();
-            }
-        }
-        sums
-    };
-    let (top, right) = (row_sums(x), row_sums(y));
-    let top = top.iter().zip(&right).map(|(a, b)| a + b);
-    top.chain(row_sums(z)).fold(0.0, f64::max)
-}
-
-fn inf_norm(a: &DMatrix<f64>) -> f64 {
-    a.row_iter()
-        .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
-        .fold(0.0, f64::max)
-}
-
 impl Bounds {
     /// For the augmented matrix `a` (dofs `n`), over length `h`, with the
     /// scaling rate `s`.
     ///
     /// Returns them with the map's rows of (u, u̇), e^{𝒜h} = D⁻¹e^{𝒜̃h}D,
-    /// e^{𝒜̃h} being the N-th power of the sweep's step.
+    /// e^{𝒜̃h} being the last point of the grid of [`super::sweep`].
     pub fn with_map(
         a: &DMatrix<f64>,
         n: usize,
@@ -173,26 +148,15 @@ impl Bounds {
         scale[2 * n] = 1.0 / s;
         scale[2 * n + 1] = 1.0 / (s * s);
         let scaled = DMatrix::from_fn(d, d, |i, j| scale[i] * a[(i, j)] / scale[j]);
-        // The step and its powers in blocks: 𝒜 has no entry from (u, u̇)
-        // into the ground and the load, so neither has its exponential, and
-        // every power is [[X, Y], [0, Z]] with X the 2n × 2n block of (u, u̇):
-        // step·P = [[X₁X, X₁Y + Y₁Z], [0, Z₁Z]], half the work of whole
-        // products ([`super::expm`]).
         let t = 2 * n;
-        let step = exponential_blocks(&Blocks::of(&(&scaled * (h / GRID as f64)), t));
-        let mut power = step.clone();
-        let mut sweep = 1.0f64;
-        for _ in 1..GRID {
-            sweep = sweep.max(block_norm(&power.x, &power.y, &power.z));
-            power = step.mul(&power);
-        }
+        let (sweep, power) = sweep(&scaled, t, h);
         let (x, y) = (&power.x, &power.y);
-        // e^{𝒜h} = D⁻¹ (e^{𝒜̃h/N})^N D: the top rows of the sweep's N-th power.
+        // e^{𝒜h} = D⁻¹ e^{𝒜̃h} D: the top rows of the grid's last point.
         let map = DMatrix::from_fn(t, d, |i, j| {
             let w = if j < t { x[(i, j)] } else { y[(i, j - t)] };
             w * scale[j] / scale[i]
         });
-        let sweep = sweep * (inf_norm(&scaled) * h / GRID as f64).exp() * (1.0 + ROUNDING);
+        let sweep = sweep * (1.0 + ROUNDING);
         let factor = h.powi(4) / 384.0 * sweep;
         let scaled_norm = |r: &[f64]| {
             r.iter()
@@ -206,9 +170,10 @@ impl Bounds {
         // rows n … 2n of the powers are made, V_k = rows n … 2n of 𝒜ᵏ, by
         // V_{k+1} = V_k 𝒜: the rows of u are 𝒜's rows of u̇ shifted, so row
         // i < n of 𝒜ᵏ is row n + i of 𝒜ᵏ⁻¹, row i − n of V_{k−1}.
+        let unscaled = Sparse::of(a);
         let mut v = vec![a.rows(n, n + 1).clone_owned()];
         for _ in 1..6 {
-            let next = v.last().map(|m| m * a).expect("V_1");
+            let next = v.last().map(|m| unscaled.times(m)).expect("V_1");
             v.push(next);
         }
         let power_row = |k: usize, row: usize| {

@@ -30,9 +30,11 @@
 //! - [`config`]: the configuration (branches, contacts) and its cache key;
 //! - [`event_function`]: each event's function, linear in the state;
 //! - [`system`]: the linear system of one configuration;
+//! - [`sparse`]: its augmented matrix by the nonzeros, for cheap products;
 //! - [`expm`]: the matrix exponential of its maps;
 //! - [`propagator`]: the cache of maps out of contact, and a map step;
 //! - [`lanes`]: the vector blocks a map step is stored in;
+//! - [`sweep`]: the growth of the map over a sub-step, for the quiet test;
 //! - [`link`]: links across the joints (SPEC §14), linear and fluid viscous;
 //! - [`damper`]: the fluid viscous dampers (α < 1), their reversals events;
 //! - [`damper_collocation`]: their steps, by exponential collocation;
@@ -68,6 +70,8 @@ pub mod profile;
 pub mod propagator;
 pub mod reach;
 pub mod result;
+pub mod sparse;
+pub mod sweep;
 pub mod system;
 pub mod taylor;
 
