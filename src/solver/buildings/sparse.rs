@@ -75,12 +75,14 @@ impl Sparse {
         out: &mut DMatrix<f64>,
     ) {
         out.fill(0.0);
-        for j in 0..self.start.len() - 1 {
+        let (height, from) = (r.nrows(), r.as_slice());
+        let to = out.as_mut_slice();
+        for (j, column) in to.chunks_exact_mut(height).enumerate() {
             for &(k, x) in self.column(j) {
                 let rows = lead(k);
-                let (from, mut to) = (r.column(k), out.column_mut(j));
                 let cx = c * x;
-                for (o, f) in to.rows_range_mut(0..rows).iter_mut().zip(from.iter()) {
+                let source = &from[k * height..k * height + rows];
+                for (o, f) in column[..rows].iter_mut().zip(source) {
                     *o += cx * f;
                 }
             }
