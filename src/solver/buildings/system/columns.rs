@@ -14,7 +14,8 @@
 //! serial sum with an index per term; here a block of [`LANES`] rows goes
 //! column by column, its LANES sums together. A zero entry subtracts a
 //! zero, which leaves a nonzero sum as it is, so each r_i is the row-wise
-//! sum on the nonzeros bit for bit (a zero sum may change its sign).
+//! sum on the nonzeros bit for bit (a zero sum may change its sign); the
+//! columns before a block's first nonzero and after its last are skipped.
 //! The work grows as n² against the nonzeros' n, which pays while a
 //! block's column (two vector operations) costs less than a row's few
 //! indexed terms: for the rows met here, and always below the map's own
@@ -30,6 +31,11 @@ use super::super::lanes::{LANES, blocks};
 pub struct Columns {
     dofs: usize,
     blocks: Vec<f64>,
+    /// Per block, the floors j from the first to the last whose columns
+    /// have a nonzero in its rows: a floor couples only to its storeys'
+    /// other floors and its contacts and links, so the columns outside
+    /// subtract only zeros and are passed over.
+    spans: Vec<std::ops::Range<usize>>,
 }
 
 impl Columns {
@@ -45,9 +51,22 @@ impl Columns {
                 damping[(r, c / 2)]
             }
         };
+        let spans = (0..n.div_ceil(LANES))
+            .map(|b| {
+                let rows = b * LANES..((b + 1) * LANES).min(n);
+                let coupled = |j: &usize| {
+                    rows.clone()
+                        .any(|r| entry(r, 2 * j) != 0.0 || entry(r, 2 * j + 1) != 0.0)
+                };
+                let first = (0..n).find(coupled).unwrap_or(0);
+                let last = (0..n).rfind(coupled).map_or(first, |j| j + 1);
+                first..last
+            })
+            .collect();
         Columns {
             dofs: n,
             blocks: blocks(n, &order, entry),
+            spans,
         }
     }
 
@@ -57,7 +76,8 @@ impl Columns {
         let n = self.dofs;
         let (x, y) = (&x[..n], &y[..n]);
         out.clear();
-        for (b, block) in self.blocks.chunks_exact(2 * n * LANES).enumerate() {
+        let blocks = self.blocks.chunks_exact(2 * n * LANES);
+        for (b, (block, span)) in blocks.zip(&self.spans).enumerate() {
             let rows = b * LANES..((b + 1) * LANES).min(n);
             let mut s = [0.0; LANES];
             for (s, i) in s.iter_mut().zip(rows.clone()) {
@@ -66,6 +86,8 @@ impl Columns {
                     None => -g,
                 };
             }
+            let block = &block[2 * LANES * span.start..2 * LANES * span.end];
+            let (x, y) = (&x[span.clone()], &y[span.clone()]);
             for (column, (&xj, &yj)) in block.chunks_exact(2 * LANES).zip(x.iter().zip(y)) {
                 let column: &[f64; 2 * LANES] = column.try_into().expect("a block's columns");
                 let (k, c) = column.split_at(LANES);
