@@ -293,6 +293,16 @@ fn bad_input_exits_2_with_one_line() {
         2,
         &["--dt `0.006`: must be <= 0.005 s on this row (the record's sample interval"],
     );
+    // A history's columns are the pair's: asked of a row, it is refused,
+    // not silently dropped, and nothing is written.
+    let history = dir.path().join("h.csv");
+    let shown = history.display().to_string();
+    fails(
+        &["run", "--buildings", "two-buildings", "--history", &shown],
+        2,
+        &[&format!("--history {shown}: not with run --buildings")],
+    );
+    assert!(!history.exists(), "no history file is written for a row");
     // Just inside the limit, the run runs.
     let v = json(&[
         "run",

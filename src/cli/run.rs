@@ -75,6 +75,15 @@ pub fn report_with(
     emit: impl FnOnce(&dyn Emit) -> Result<(), CliError>,
 ) -> Result<(), CliError> {
     if args.row.buildings.is_some() {
+        if let Some(path) = &args.history {
+            // A row's motion is drawn by `figure buildings` and the explorer;
+            // the history's columns are the pair's (SPEC §9).
+            return Err(super::usage(format!(
+                "--history {}: not with run --buildings (the history's columns are the \
+                 pair's, SPEC §9); draw a row's motion with `pounding figure buildings`",
+                path.display()
+            )));
+        }
         let long = args.long.allow_long;
         return super::buildings::run(&args.row, &args.params, args.repeat, long, emit);
     }

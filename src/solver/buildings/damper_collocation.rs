@@ -39,7 +39,13 @@
 //! nodes O(h⁴). The local error is estimated from the defect of the
 //! collocated force at the start, which the node polynomial π carries
 //! across the step where the force is smooth, and by step doubling near a
-//! damper's reversal, where it is not ([`Collocation::step`]).
+//! damper's reversal, where it is not ([`Collocation::step`]). The first
+//! is an estimate, not a bound: the defect's θ² part (which π does not
+//! carry) and the damper's answer to the motion it moves are left out, and
+//! accepted steps' local errors, measured against sixteen collocated
+//! sub-steps, are a median 5.6 times the tolerance. The run's accuracy is
+//! held by the tests against the independent reference and the energy
+//! balance.
 //!
 //! The responses to x_e = s^k (k = 0 … 3) from rest depend only on the
 //! configuration's K and C and the elements, and are made once per
