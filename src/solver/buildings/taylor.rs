@@ -195,9 +195,9 @@ impl Series {
         let n = u0.len();
         let mut u = std::mem::take(&mut self.u);
         let mut v = std::mem::take(&mut self.v);
-        u.clear();
+        // Every coefficient up to the order reached is written below
+        // before it is read: the vectors are not zeroed first.
         u.resize(w * n, 0.0);
-        v.clear();
         v.resize(w * n, 0.0);
         for i in 0..n {
             u[i * w] = u0[i];
