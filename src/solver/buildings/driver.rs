@@ -636,7 +636,7 @@ impl Run<'_> {
                 (series, Some(step))
             } else {
                 let mut series = std::mem::take(&mut self.spare_series);
-                series.fill(&self.system, (&self.u, &self.v), ground, (su, sv), &[]);
+                series.fill_over(&self.system, (&self.u, &self.v), ground, (su, sv), rem);
                 (series, None)
             };
             let mut end = rem.min(series.radius);
