@@ -126,6 +126,23 @@ impl Stack {
     }
 }
 
+/// The diagonal D of the scaling by the row's fastest rate `s` and the
+/// scaled augmented matrix 𝒜̃ = D𝒜D⁻¹ of `a` (dofs `n`): D is s on u, 1 on
+/// u̇, 1/s on a_g, 1/s² on ȧ_g and 1/s on M⁻¹q, so that every entry of
+/// the scaled state is of one size.
+pub fn scaled(a: &DMatrix<f64>, n: usize, s: f64) -> (Vec<f64>, DMatrix<f64>) {
+    let d = a.nrows();
+    let mut scale = vec![1.0; d];
+    for i in 0..n {
+        scale[i] = s;
+        scale[2 * n + 2 + i] = 1.0 / s;
+    }
+    scale[2 * n] = 1.0 / s;
+    scale[2 * n + 1] = 1.0 / (s * s);
+    let scaled = DMatrix::from_fn(d, d, |i, j| scale[i] * a[(i, j)] / scale[j]);
+    (scale, scaled)
+}
+
 impl Bounds {
     /// For the augmented matrix `a` (dofs `n`), over length `h`, with the
     /// scaling rate `s`.
@@ -140,14 +157,7 @@ impl Bounds {
         watch: &[Watch],
     ) -> (Bounds, DMatrix<f64>) {
         let d = a.nrows();
-        let mut scale = vec![1.0; d];
-        for i in 0..n {
-            scale[i] = s;
-            scale[2 * n + 2 + i] = 1.0 / s;
-        }
-        scale[2 * n] = 1.0 / s;
-        scale[2 * n + 1] = 1.0 / (s * s);
-        let scaled = DMatrix::from_fn(d, d, |i, j| scale[i] * a[(i, j)] / scale[j]);
+        let (scale, scaled) = scaled(a, n, s);
         let t = 2 * n;
         let (sweep, power) = sweep(&scaled, t, h);
         let (x, y) = (&power.x, &power.y);

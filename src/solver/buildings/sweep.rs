@@ -84,6 +84,7 @@ fn inf_norm(a: &DMatrix<f64>) -> f64 {
 mod tests {
     use super::{inf_norm, sweep};
     use crate::model::buildings::load;
+    use crate::solver::buildings::bound::scaled;
     use crate::solver::buildings::config::{Branch, Config};
     use crate::solver::buildings::layout::Layout;
     use crate::solver::buildings::propagator::augmented;
@@ -99,13 +100,6 @@ mod tests {
         let layout = Layout::of(&row);
         let n = layout.dofs;
         let s = layout.rate;
-        let mut scale = vec![1.0; 3 * n + 2];
-        for i in 0..n {
-            scale[i] = s;
-            scale[2 * n + 2 + i] = 1.0 / s;
-        }
-        scale[2 * n] = 1.0 / s;
-        scale[2 * n + 1] = 1.0 / (s * s);
         let mut out = Vec::new();
         let storeys = layout.storeys.len();
         let branches = [
@@ -134,9 +128,7 @@ mod tests {
             config.branch = branch;
             let system = System::of(&layout, &config);
             for sigma in [0.0, -(0.5 * s).powi(2)] {
-                let a = augmented(&system, sigma);
-                let d = a.nrows();
-                let scaled = DMatrix::from_fn(d, d, |i, j| scale[i] * a[(i, j)] / scale[j]);
+                let (_, scaled) = scaled(&augmented(&system, sigma), n, s);
                 out.push((scaled, 2 * n, s));
             }
         }
