@@ -44,6 +44,11 @@ use nalgebra::DMatrix;
 use super::sparse::Sparse;
 use super::sweep::sweep;
 use super::system::System;
+
+mod ground_jump;
+
+pub use ground_jump::GroundJump;
+
 /// Relative allowance for the round-off of the exponential and the norms
 /// (of order 1e-13 for the rows' sizes met here).
 const ROUNDING: f64 = 1e-6;

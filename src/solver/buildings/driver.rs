@@ -431,7 +431,7 @@ impl Run<'_> {
         if self.requests < FRESH {
             return Err(Cause::Fresh);
         }
-        let (map, bounds) = self.propagator.map(
+        let (map, bounds, jump) = self.propagator.map(
             &self.key,
             &self.system,
             (h, piece.sigma),
@@ -450,14 +450,18 @@ impl Run<'_> {
         );
         let sigma = piece.sigma;
         // The end of a quiet sub-step is the start of the next one: its
-        // stack is kept while the state, ground and σ are the same.
+        // stack is kept while the state is the same, and carried to a new
+        // ground piece by the ground's jump ([`super::bound::GroundJump`]).
         let start = match self.stack.take() {
             Some((g, stack)) if g == (a0, r0, sigma) => stack,
-            other => {
-                let mut stack = other.map(|(_, s)| s).or_else(|| self.spare.pop());
-                let stack = stack.get_or_insert_default();
+            Some((_, mut stack)) => {
+                stack.reground(jump, (a0, r0, sigma));
+                stack
+            }
+            None => {
+                let mut stack = self.spare.pop().unwrap_or_default();
                 stack.set(&self.system, (&self.u, &self.v), (a0, r0, sigma));
-                std::mem::take(stack)
+                stack
             }
         };
         let mut end = self.spare.pop().unwrap_or_default();

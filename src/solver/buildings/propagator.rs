@@ -15,14 +15,17 @@
 //! with the bounds of the quiet test ([`Bounds::with_map`]). The
 //! plastic offsets only enter through M⁻¹q, a part of the state, so one map
 //! serves every configuration with the same branches. The bounds of the
-//! quiet test ([`super::bound`]) depend on the same data and are cached with it.
+//! quiet test ([`super::bound`]) depend on the same data and are cached
+//! with it, and so does the stack's response to a jump of the ground
+//! ([`GroundJump`]), which carries a sub-step's end stack into the next
+//! piece.
 
 use std::collections::HashMap;
 use std::time::Instant;
 
 use nalgebra::DMatrix;
 
-use super::bound::{Bounds, Watch};
+use super::bound::{Bounds, GroundJump, Watch};
 use super::system::System;
 
 mod map;
@@ -32,12 +35,13 @@ pub use map::{Map, apply};
 /// Cache key: the branches, h and σ (as bits).
 pub type Key = (Vec<u8>, u64, u64);
 
-/// The cache of linear maps with their quiet-test bounds, and how it was used.
+/// The cache of linear maps with their quiet-test bounds and ground jumps,
+/// and how it was used.
 #[derive(Debug, Default)]
 pub struct Propagator {
     /// Where each key's map is in `entries`.
     index: HashMap<Key, usize>,
-    entries: Vec<(Map, Bounds)>,
+    entries: Vec<(Map, Bounds, GroundJump)>,
     /// The key asked for last and its entry: a run asks for the same map
     /// sub-step after sub-step, which then costs a comparison of a few
     /// bytes instead of hashing the key.
@@ -70,9 +74,9 @@ pub fn augmented(system: &System, sigma: f64) -> DMatrix<f64> {
 }
 
 impl Propagator {
-    /// The map of `system` (no contact) over h on a piece with σ, and the
+    /// The map of `system` (no contact) over h on a piece with σ, the
     /// bounds of the quantities `watch` over it ([`Bounds`], scaled by the
-    /// row's fastest rate `rate`).
+    /// row's fastest rate `rate`), and the configuration's [`GroundJump`].
     pub fn map(
         &mut self,
         branches: &[u8],
@@ -80,7 +84,7 @@ impl Propagator {
         (h, sigma): (f64, f64),
         rate: f64,
         watch: &[Watch],
-    ) -> (&Map, &Bounds) {
+    ) -> (&Map, &Bounds, &GroundJump) {
         let n = system.load.len();
         self.used += 1;
         let bits = (h.to_bits(), sigma.to_bits());
@@ -96,7 +100,8 @@ impl Propagator {
                         let a = augmented(system, sigma);
                         let (bounds, map) = Bounds::with_map(&a, n, h, rate, watch);
                         self.seconds += clock.elapsed().as_secs_f64();
-                        self.entries.push((Map::of(&map), bounds));
+                        let jump = GroundJump::of(&system.columns, n);
+                        self.entries.push((Map::of(&map), bounds, jump));
                         self.index.insert(key.clone(), self.entries.len() - 1);
                         self.entries.len() - 1
                     }
@@ -105,8 +110,8 @@ impl Propagator {
                 at
             }
         };
-        let (map, bounds) = &self.entries[at];
-        (map, bounds)
+        let (map, bounds, jump) = &self.entries[at];
+        (map, bounds, jump)
     }
 
     /// Distinct maps held.
