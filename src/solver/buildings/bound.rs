@@ -45,8 +45,10 @@ use super::sparse::Sparse;
 use super::sweep::sweep;
 use super::system::System;
 
+mod equilibrium;
 mod ground_jump;
 
+pub use equilibrium::Equilibrium;
 pub use ground_jump::GroundJump;
 
 /// Relative allowance for the round-off of the exponential and the norms
@@ -71,6 +73,9 @@ pub struct Bounds {
     /// h⁴/384 · ‖cᵀ𝒜⁵D⁻¹‖₁ · B: the cubic of q̇.
     rate_error: Vec<f64>,
     scale: Vec<f64>,
+    /// The configuration's rest points, to measure the state from
+    /// ([`Equilibrium`]); none where K is singular.
+    equilibrium: Option<Equilibrium>,
 }
 
 /// u, u̇, ü, u⃛, u⁗ of every floor at one instant out of contact, and the
@@ -231,13 +236,21 @@ impl Bounds {
             value_error,
             rate_error,
             scale,
+            equilibrium: Equilibrium::of(a, n),
         };
         (bounds, map)
     }
 
     /// ‖D w‖∞ of the augmented state at (u, u̇) under ground (a, ȧ) with
-    /// load M⁻¹q.
-    pub fn size(&self, (u, v): (&[f64], &[f64]), (a, rate): (f64, f64), load: &[f64]) -> f64 {
+    /// load M⁻¹q, or ‖D(w − w*)‖∞ from the configuration's rest point w*
+    /// when smaller ([`Equilibrium`]); `rest` is scratch space.
+    pub fn size(
+        &self,
+        (u, v): (&[f64], &[f64]),
+        (a, rate): (f64, f64),
+        load: &[f64],
+        rest: &mut Vec<f64>,
+    ) -> f64 {
         let n = u.len();
         let s = &self.scale;
         let mut m = (a * s[2 * n]).abs().max((rate * s[2 * n + 1]).abs());
@@ -247,7 +260,10 @@ impl Bounds {
                 .max((v[i] * s[n + i]).abs())
                 .max((load[i] * s[2 * n + 2 + i]).abs());
         }
-        m
+        match &self.equilibrium {
+            Some(e) => m.min(e.size((u, v), (a, rate), load, s, rest)),
+            None => m,
+        }
     }
 
     /// Bounds on the errors of the cubics of q and q̇ of quantity `k`, for a

@@ -466,7 +466,12 @@ impl Run<'_> {
         };
         let mut end = self.spare.pop().unwrap_or_default();
         end.set(&self.system, (&u1, &v1), (a1, r1, sigma));
-        let size = bounds.size((&self.u, &self.v), (a0, r0), &self.system.load);
+        let size = bounds.size(
+            (&self.u, &self.v),
+            (a0, r0),
+            &self.system.load,
+            &mut self.buf,
+        );
         let ends = |k: usize| Ends {
             start: self.probes[k].at(&start),
             end: self.probes[k].at(&end),
