@@ -47,6 +47,13 @@ use super::taylor::{Series, ground_coefficients};
 /// row's peaks are checked.
 pub const TOLERANCE: f64 = 1e-12;
 
+#[cfg(test)]
+thread_local! {
+    /// Where a test sets it, each accepted collocated step's true local
+    /// error over its tolerance ([`Contact::audit`]).
+    pub static AUDIT: RefCell<Option<Vec<f64>>> = const { RefCell::new(None) };
+}
+
 /// Newton iterations at most when placing an event on the motion.
 const NEWTON: usize = 8;
 
@@ -141,16 +148,12 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         self.collocation.is_some() && self.pairs.is_empty() && !self.dampers.is_empty()
     }
 
-    /// The step of length h from y0 by [`damper_collocation`], as a step
-    /// of the pair with f at its end, its error estimate, and as
-    /// its dense output the line from y0 to y1; None where it does not
-    /// apply or its Newton's method fails.
-    fn collocated(
+    /// The cache and what a collocated step needs of the row, with the
+    /// motion's scales `scale`; None where the steps do not collocate.
+    fn collocation_row(
         &self,
-        (y0, _): (&Vec<f64>, &Vec<f64>),
-        h: f64,
         scale: (f64, f64),
-    ) -> Option<Step<Vec<f64>>> {
+    ) -> Option<(&'a RefCell<Collocation>, damper_collocation::Row<'_>)> {
         let (cache, ground) = self.collocation.filter(|_| self.collocates())?;
         let row = damper_collocation::Row {
             system: self.system,
@@ -159,7 +162,22 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
             ground,
             scale,
         };
-        let (y1, error) = cache.borrow_mut().step(&row, y0, h)?;
+        Some((cache, row))
+    }
+
+    /// The step of length h from y0 by [`damper_collocation`], as a step
+    /// of the pair with f at its end, its error estimate, and as
+    /// its dense output the line from y0 to y1 (its own series left in the
+    /// cache where `dense`); None where it does not apply or its Newton's
+    /// method fails.
+    fn collocated(
+        &self,
+        (y0, _): (&Vec<f64>, &Vec<f64>),
+        (h, dense): (f64, bool),
+        scale: (f64, f64),
+    ) -> Option<Step<Vec<f64>>> {
+        let (cache, row) = self.collocation_row(scale)?;
+        let (y1, error) = cache.borrow_mut().step(&row, y0, (h, dense))?;
         let f1 = self.rate(h, &y1);
         Some(Step::linear(h, y0, y1, f1, error))
     }
@@ -265,7 +283,10 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         // Whether the length is h_max's, not the controller's.
         let mut cut = h_try > h_max;
         loop {
-            let step = match self.collocated((y0, f0), h, scale) {
+            let collocated = self.collocated((y0, f0), (h, true), scale);
+            #[cfg(test)]
+            let audited = collocated.is_some();
+            let step = match collocated {
                 Some(step) => step,
                 None if self.stiff(y0, h) => self.implicit((y0, f0), h, scale.1),
                 None => dopri5::step(&|s, y| self.rate(s, y), 0.0, y0, f0, h),
@@ -290,6 +311,10 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
                     cache.rejected += 1;
                 }
             }
+            #[cfg(test)]
+            if accepted && audited {
+                self.audit(y0, &step, scale);
+            }
             if accepted {
                 // A step cut short by h_max says nothing against h_try;
                 // one shrunk after a rejection does.
@@ -312,12 +337,40 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         }
     }
 
+    /// Records an accepted collocated step's true local error over its
+    /// tolerance in [`AUDIT`] (where a test has set it): its end's distance
+    /// from sixteen collocated steps of a sixteenth of its length, in the
+    /// motion's scales.
+    #[cfg(test)]
+    fn audit(&self, y0: &[f64], step: &Step<Vec<f64>>, scale: (f64, f64)) {
+        if AUDIT.with(|a| a.borrow().is_none()) {
+            return;
+        }
+        let Some((cache, row)) = self.collocation_row(scale) else {
+            return;
+        };
+        let n = y0.len() / 2;
+        let Some(reference) = cache.borrow_mut().substepped(&row, y0, step.h, 16) else {
+            return;
+        };
+        let ratio = step
+            .y1
+            .iter()
+            .zip(&reference)
+            .enumerate()
+            .map(|(i, (a, b))| {
+                ((a - b) / (TOLERANCE * if i < n { scale.0 } else { scale.1 })).abs()
+            })
+            .fold(0.0, f64::max);
+        AUDIT.with(|a| a.borrow_mut().as_mut().map(|r| r.push(ratio)));
+    }
+
     /// The step of length s from y0, taken again (the implicit one where a
     /// damper is stiff over it; `speed` the motion's velocity scale).
     pub fn retake(&self, (y0, f0): (&Vec<f64>, &Vec<f64>), s: f64, speed: f64) -> Step<Vec<f64>> {
         let n = y0.len() / 2;
         let size = y0[..n].iter().fold(1e-6f64, |m, x| m.max(x.abs()));
-        if let Some(step) = self.collocated((y0, f0), s, (size, speed)) {
+        if let Some(step) = self.collocated((y0, f0), (s, false), (size, speed)) {
             step
         } else if self.stiff(y0, s) {
             self.implicit((y0, f0), s, speed)

@@ -163,17 +163,19 @@ impl Series {
         self.fill_with(system, products, start, ground, scale, &[], Some(want));
     }
 
-    /// [`Series::fill`] of the configuration's linear motion alone: K, C
-    /// and q, its products h δ δ̇ left out (a collocated step carries them
-    /// as forces, [`super::damper_collocation`]).
+    /// [`Series::fill_over`] of the configuration's linear motion alone:
+    /// K, C and q, its products h δ δ̇ left out (a collocated step carries
+    /// them as forces, [`super::damper_collocation`]), to the lowest order
+    /// that carries it over [0, `want`].
     pub fn fill_linear(
         &mut self,
         system: &System,
         start: (&[f64], &[f64]),
         ground: (f64, f64, f64),
         scale: (f64, f64),
+        want: f64,
     ) {
-        self.fill_with(system, &[], start, ground, scale, &[], None);
+        self.fill_with(system, &[], start, ground, scale, &[], Some(want));
     }
 
     /// The series with the products `products` in place of the system's,
