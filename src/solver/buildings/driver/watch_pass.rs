@@ -64,92 +64,81 @@ impl Difference {
     }
 }
 
-/// The questions of one sub-step in structure-of-arrays form, one entry
-/// per question, padded to whole blocks of [`LANES`].
-#[derive(Debug, Default)]
-struct Questions {
-    q0: Vec<f64>,
-    d0: Vec<f64>,
-    q1: Vec<f64>,
-    d1: Vec<f64>,
-    error: Vec<f64>,
-    offset: Vec<f64>,
-    lower: Vec<f64>,
-    upper: Vec<f64>,
+/// f of the [`LANES`] entries of `v` from `first`, `pad` past its end.
+#[inline(always)]
+fn lane(v: &[f64], first: usize, pad: f64, f: impl Fn(f64) -> f64) -> [f64; LANES] {
+    match v.get(first..first + LANES) {
+        Some(v) => std::array::from_fn(|l| f(v[l])),
+        None => std::array::from_fn(|l| v.get(first + l).map_or(pad, |&x| f(x))),
+    }
 }
 
-impl Questions {
-    fn clear(&mut self) {
-        for v in [
-            &mut self.q0,
-            &mut self.d0,
-            &mut self.q1,
-            &mut self.d1,
-            &mut self.error,
-            &mut self.offset,
-            &mut self.lower,
-            &mut self.upper,
-        ] {
-            v.clear();
-        }
+/// Eight questions side by side: each one's q (or q̇) and its rate at
+/// both ends, its error bound, offset and limits, one lane each.
+#[derive(Debug, Clone, Copy)]
+struct Block {
+    q0: [f64; LANES],
+    d0: [f64; LANES],
+    q1: [f64; LANES],
+    d1: [f64; LANES],
+    error: [f64; LANES],
+    offset: [f64; LANES],
+    lower: [f64; LANES],
+    upper: [f64; LANES],
+}
+
+impl Block {
+    /// A block of questions that nothing clears (a lower limit of +∞): the
+    /// padding of the last block stays so.
+    const CLOSED: Block = Block {
+        q0: [0.0; LANES],
+        d0: [0.0; LANES],
+        q1: [0.0; LANES],
+        d1: [0.0; LANES],
+        error: [0.0; LANES],
+        offset: [0.0; LANES],
+        lower: [f64::INFINITY; LANES],
+        upper: [0.0; LANES],
+    };
+
+    /// Each lane's verdict on its widened hull over a sub-step of length
+    /// `h`: lower ≤ fl(fl(c − e) − p) and fl(fl(c + e) − p) ≤ upper for
+    /// the four control points c, made as [`super::super::hermite::hull`]
+    /// makes them.
+    #[inline(always)]
+    fn verdicts(&self, h: f64) -> [bool; LANES] {
+        std::array::from_fn(|l| {
+            let (q0, q1) = (self.q0[l], self.q1[l]);
+            let (b1, b2) = (q0 + self.d0[l] * h / 3.0, q1 - self.d1[l] * h / 3.0);
+            let (e, p) = (self.error[l], self.offset[l]);
+            let (lo, hi) = (self.lower[l], self.upper[l]);
+            let ok = |c: f64| (lo <= (c - e) - p) & ((c + e) - p <= hi);
+            ok(q0) & ok(b1) & ok(b2) & ok(q1)
+        })
     }
 
-    /// One question: q's (or q̇'s) values and rates at both ends, its
-    /// error bound, offset and limits.
+    /// Lane `l`: ((q0, q̇0), (q1, q̇1)), error, offset, (lower, upper).
     #[inline]
-    fn push(
+    fn set(
         &mut self,
+        l: usize,
         ((q0, d0), (q1, d1)): ((f64, f64), (f64, f64)),
-        error: f64,
-        offset: f64,
+        (error, offset): (f64, f64),
         (lower, upper): (f64, f64),
     ) {
-        self.q0.push(q0);
-        self.d0.push(d0);
-        self.q1.push(q1);
-        self.d1.push(d1);
-        self.error.push(error);
-        self.offset.push(offset);
-        self.lower.push(lower);
-        self.upper.push(upper);
-    }
-
-    /// Pads to whole blocks with questions that nothing clears.
-    fn pad(&mut self) {
-        while !self.q0.len().is_multiple_of(LANES) {
-            self.push(((0.0, 0.0), (0.0, 0.0)), 0.0, 0.0, (f64::INFINITY, 0.0));
-        }
-    }
-
-    /// Each question's verdict on the widened hull over a sub-step of
-    /// length `h`, into `out` (one entry per question).
-    fn answer(&self, h: f64, out: &mut Vec<bool>) {
-        out.clear();
-        let rows = self
-            .q0
-            .chunks_exact(LANES)
-            .zip(self.d0.chunks_exact(LANES))
-            .zip(self.q1.chunks_exact(LANES))
-            .zip(self.d1.chunks_exact(LANES))
-            .zip(self.error.chunks_exact(LANES))
-            .zip(self.offset.chunks_exact(LANES))
-            .zip(self.lower.chunks_exact(LANES))
-            .zip(self.upper.chunks_exact(LANES));
-        for (((((((q0, d0), q1), d1), e), p), lo), hi) in rows {
-            let mut verdict = [false; LANES];
-            for l in 0..LANES {
-                // The hull's control points, as [`super::super::hermite::hull`] makes them.
-                let (b1, b2) = (q0[l] + d0[l] * h / 3.0, q1[l] - d1[l] * h / 3.0);
-                let ok = |c: f64| (lo[l] <= (c - e[l]) - p[l]) & ((c + e[l]) - p[l] <= hi[l]);
-                verdict[l] = ok(q0[l]) & ok(b1) & ok(b2) & ok(q1[l]);
-            }
-            out.extend_from_slice(&verdict);
-        }
+        self.q0[l] = q0;
+        self.d0[l] = d0;
+        self.q1[l] = q1;
+        self.d1[l] = d1;
+        self.error[l] = error;
+        self.offset[l] = offset;
+        self.lower[l] = lower;
+        self.upper[l] = upper;
     }
 }
 
 /// The first pass: the watched quantities' differences, laid out once per
-/// run, and each sub-step's questions and verdicts.
+/// run, and each sub-step's verdicts.
 #[derive(Debug, Default)]
 pub(super) struct WatchPass {
     /// Floors n.
@@ -157,7 +146,10 @@ pub(super) struct WatchPass {
     storeys: Vec<Difference>,
     facing: Vec<Difference>,
     gaps: Vec<Difference>,
-    questions: Questions,
+    /// The questions past the floors' (each storey's peak and event, each
+    /// facing pair's peak, each gap), in blocks of [`LANES`].
+    blocks: Vec<Block>,
+    /// Each question's verdict: the floors' 3n, then the blocks' lanes.
     cleared: Vec<bool>,
 }
 
@@ -168,8 +160,10 @@ impl WatchPass {
             b: p.right_dof,
             w: 1.0,
         };
+        let n = layout.dofs;
+        let questions = 2 * layout.storeys.len() + layout.facing.len() + layout.pairs.len();
         WatchPass {
-            dofs: layout.dofs,
+            dofs: n,
             storeys: layout
                 .storeys
                 .iter()
@@ -181,8 +175,8 @@ impl WatchPass {
                 .collect(),
             facing: layout.facing.iter().map(pair).collect(),
             gaps: layout.pairs.iter().map(pair).collect(),
-            questions: Questions::default(),
-            cleared: Vec::new(),
+            blocks: vec![Block::CLOSED; questions.div_ceil(LANES)],
+            cleared: vec![false; 3 * n + questions.next_multiple_of(LANES)],
         }
     }
 
@@ -198,40 +192,58 @@ impl WatchPass {
     ) {
         let n = self.dofs;
         let storeys = self.storeys.len();
-        let value_error = |k: usize| errors(k).0;
-        let qs = &mut self.questions;
-        qs.clear();
-        // Every floor's u, u̇, ü + a_g against its running peak.
+        // Every floor's u, u̇, ü + a_g against its running peak, read in
+        // blocks straight from the stacks (the ground added to ü).
         let peaks = [&env.displacement, &env.velocity, &env.acceleration];
         for (order, peaks) in peaks.into_iter().enumerate() {
-            let read = |stack: &Stack, i: usize| {
-                let (x, y) = (stack.rates[order][i], stack.rates[order + 1][i]);
-                if order == 2 {
-                    (x + stack.ground[0], y + stack.ground[1])
-                } else {
-                    (x, y)
-                }
+            let (g0, g1) = match order {
+                2 => (start.ground, end.ground),
+                _ => ([0.0; 3], [0.0; 3]),
             };
-            for (i, &peak) in peaks.iter().enumerate() {
-                let ends = (read(start, i), read(end, i));
-                qs.push(ends, value_error(order * n + i), 0.0, (-peak, peak));
+            let (x0, y0) = (&start.rates[order], &start.rates[order + 1]);
+            let (x1, y1) = (&end.rates[order], &end.rates[order + 1]);
+            for first in (0..n).step_by(LANES) {
+                let k = order * n + first;
+                let block =
+                    Block {
+                        q0: lane(x0, first, 0.0, |x| x + g0[0]),
+                        d0: lane(y0, first, 0.0, |x| x + g0[1]),
+                        q1: lane(x1, first, 0.0, |x| x + g1[0]),
+                        d1: lane(y1, first, 0.0, |x| x + g1[1]),
+                        error: std::array::from_fn(|l| {
+                            if first + l < n { errors(k + l).0 } else { 0.0 }
+                        }),
+                        offset: [0.0; LANES],
+                        lower: lane(peaks, first, f64::INFINITY, |p| -p),
+                        upper: lane(peaks, first, 0.0, |p| p),
+                    };
+                let verdicts = block.verdicts(h);
+                let count = LANES.min(n - first);
+                self.cleared[k..k + count].copy_from_slice(&verdicts[..count]);
             }
         }
-        // Every storey's drift against its running peak, then its event.
+        // Every storey's drift against its running peak, then its event;
+        // every facing pair's u_A − u_B under its running peak; every
+        // contact element's u_A − u_B under its gap.
+        let blocks = &mut self.blocks;
+        let mut set = |j: usize, ends, errors, limits| {
+            blocks[j / LANES].set(j % LANES, ends, errors, limits);
+        };
         let base = 3 * n;
         for (k, d) in self.storeys.iter().enumerate() {
             let ends = (d.at(start, 0), d.at(end, 0));
             let peak = env.drift[k];
-            qs.push(ends, value_error(base + k), 0.0, (-peak, peak));
+            set(k, ends, (errors(base + k).0, 0.0), (-peak, peak));
         }
         for (k, (d, s)) in self.storeys.iter().zip(&layout.storeys).enumerate() {
             let (error, rate_error) = errors(base + k);
+            let j = storeys + k;
             match config.branch[k] {
                 Branch::Elastic => {
                     let dy = s.yield_drift;
                     let ends = (d.at(start, 0), d.at(end, 0));
                     let limits = ((-dy).next_up(), dy.next_down());
-                    qs.push(ends, error, config.plastic[k], limits);
+                    set(j, ends, (error, config.plastic[k]), limits);
                 }
                 branch => {
                     let ends = (d.at(start, 1), d.at(end, 1));
@@ -240,26 +252,36 @@ impl WatchPass {
                     } else {
                         (f64::NEG_INFINITY, 0f64.next_down())
                     };
-                    qs.push(ends, rate_error, 0.0, limits);
+                    set(j, ends, (rate_error, 0.0), limits);
                 }
             }
         }
-        // Every facing pair's u_A − u_B under its running peak.
-        let base = base + storeys;
         for (k, d) in self.facing.iter().enumerate() {
             let ends = (d.at(start, 0), d.at(end, 0));
             let limits = (f64::NEG_INFINITY, env.relative[k]);
-            qs.push(ends, value_error(base + k), 0.0, limits);
+            set(
+                2 * storeys + k,
+                ends,
+                (errors(base + storeys + k).0, 0.0),
+                limits,
+            );
         }
-        // Every contact element's u_A − u_B under its gap.
-        let base = base + self.facing.len();
+        let (j, base) = (
+            2 * storeys + self.facing.len(),
+            base + storeys + self.facing.len(),
+        );
         for (k, (d, &gap)) in self.gaps.iter().zip(&layout.gaps).enumerate() {
             let ends = (d.at(start, 0), d.at(end, 0));
             let limits = (f64::NEG_INFINITY, gap.next_down());
-            qs.push(ends, value_error(base + k), 0.0, limits);
+            set(j + k, ends, (errors(base + k).0, 0.0), limits);
         }
-        qs.pad();
-        qs.answer(h, &mut self.cleared);
+        for (block, out) in self
+            .blocks
+            .iter()
+            .zip(self.cleared[3 * n..].chunks_exact_mut(LANES))
+        {
+            out.copy_from_slice(&block.verdicts(h));
+        }
     }
 
     /// Whether floor i's u (`order` 0), u̇ (1) or ü + a_g (2) stays within
