@@ -476,10 +476,9 @@ impl Run<'_> {
         // Quantities whose peak may rise inside, located after the events clear.
         let mut rising = Vec::new();
         // What the first pass clears, the per-quantity tests would clear.
-        let (layout, config) = (&self.layout, &self.config);
-        let pass = &mut self.pass;
         let errors = |k: usize| bounds.errors(k, size);
-        pass.ask((&start, &end), errors, h, (layout, config, &self.envelope));
+        let pass = &mut self.pass;
+        pass.ask((&start, &end), errors, h, (&self.config, &self.envelope));
         let pass = &self.pass;
         let verdict = (|| {
             let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();

@@ -146,6 +146,10 @@ pub(super) struct WatchPass {
     storeys: Vec<Difference>,
     facing: Vec<Difference>,
     gaps: Vec<Difference>,
+    /// Each storey's limits while elastic, ((−Δ_y)⁺, Δ_y⁻), and each gap's
+    /// d⁻: constants of the run, made once.
+    yield_limits: Vec<(f64, f64)>,
+    gap_limits: Vec<f64>,
     /// The questions past the floors' (each storey's peak and event, each
     /// facing pair's peak, each gap), in blocks of [`LANES`].
     blocks: Vec<Block>,
@@ -175,6 +179,12 @@ impl WatchPass {
                 .collect(),
             facing: layout.facing.iter().map(pair).collect(),
             gaps: layout.pairs.iter().map(pair).collect(),
+            yield_limits: layout
+                .storeys
+                .iter()
+                .map(|s| ((-s.yield_drift).next_up(), s.yield_drift.next_down()))
+                .collect(),
+            gap_limits: layout.gaps.iter().map(|d| d.next_down()).collect(),
             blocks: vec![Block::CLOSED; questions.div_ceil(LANES)],
             cleared: vec![false; 3 * n + questions.next_multiple_of(LANES)],
         }
@@ -188,7 +198,7 @@ impl WatchPass {
         (start, end): (&Stack, &Stack),
         errors: impl Fn(usize) -> (f64, f64),
         h: f64,
-        (layout, config, env): (&Layout, &Config, &Envelope),
+        (config, env): (&Config, &Envelope),
     ) {
         let n = self.dofs;
         let storeys = self.storeys.len();
@@ -218,8 +228,9 @@ impl WatchPass {
                         upper: lane(peaks, first, 0.0, |p| p),
                     };
                 let verdicts = block.verdicts(h);
-                let count = LANES.min(n - first);
-                self.cleared[k..k + count].copy_from_slice(&verdicts[..count]);
+                for (out, &verdict) in self.cleared[k..order * n + n].iter_mut().zip(&verdicts) {
+                    *out = verdict;
+                }
             }
         }
         // Every storey's drift against its running peak, then its event;
@@ -235,14 +246,12 @@ impl WatchPass {
             let peak = env.drift[k];
             set(k, ends, (errors(base + k).0, 0.0), (-peak, peak));
         }
-        for (k, (d, s)) in self.storeys.iter().zip(&layout.storeys).enumerate() {
+        for (k, (d, &limits)) in self.storeys.iter().zip(&self.yield_limits).enumerate() {
             let (error, rate_error) = errors(base + k);
             let j = storeys + k;
             match config.branch[k] {
                 Branch::Elastic => {
-                    let dy = s.yield_drift;
                     let ends = (d.at(start, 0), d.at(end, 0));
-                    let limits = ((-dy).next_up(), dy.next_down());
                     set(j, ends, (error, config.plastic[k]), limits);
                 }
                 branch => {
@@ -270,17 +279,16 @@ impl WatchPass {
             2 * storeys + self.facing.len(),
             base + storeys + self.facing.len(),
         );
-        for (k, (d, &gap)) in self.gaps.iter().zip(&layout.gaps).enumerate() {
+        for (k, (d, &gap)) in self.gaps.iter().zip(&self.gap_limits).enumerate() {
             let ends = (d.at(start, 0), d.at(end, 0));
-            let limits = (f64::NEG_INFINITY, gap.next_down());
+            let limits = (f64::NEG_INFINITY, gap);
             set(j + k, ends, (errors(base + k).0, 0.0), limits);
         }
-        for (block, out) in self
-            .blocks
-            .iter()
-            .zip(self.cleared[3 * n..].chunks_exact_mut(LANES))
-        {
-            out.copy_from_slice(&block.verdicts(h));
+        let out = self.cleared[3 * n..].chunks_exact_mut(LANES);
+        for (block, out) in self.blocks.iter().zip(out) {
+            for (out, verdict) in out.iter_mut().zip(block.verdicts(h)) {
+                *out = verdict;
+            }
         }
     }
 
@@ -403,7 +411,7 @@ mod tests {
                     peaks.copy_from_slice(&floor_peaks[order * FLOORS..order * FLOORS + n]);
                 }
                 let mut pass = WatchPass::new(&layout);
-                pass.ask((&start, &end), |k| errors[k], h, (&layout, &config, &env));
+                pass.ask((&start, &end), |k| errors[k], h, (&config, &env));
                 let probes = watched(&layout);
                 let ends = |k: usize| {
                     let p: &Probe = &probes[k];
@@ -483,7 +491,7 @@ mod tests {
         env.drift[0] = x.next_down();
         let ask = |layout: &Layout, config: &Config, env: &Envelope, s: &Stack| {
             let mut pass = WatchPass::new(layout);
-            pass.ask((s, s), |_| (0.0, 0.0), 0.5, (layout, config, env));
+            pass.ask((s, s), |_| (0.0, 0.0), 0.5, (config, env));
             pass
         };
         let pass = ask(&layout, &config, &env, &rest);
