@@ -54,14 +54,14 @@ use super::taylor::{ORDER, Series};
 
 #[cfg(test)]
 mod cache_check;
-mod floors_below;
 #[cfg(test)]
 mod quiet_check;
 mod ranges;
 mod rising;
+mod watch_pass;
 
-use floors_below::floor_below;
 use ranges::{Ends, Probe};
+use watch_pass::WatchPass;
 
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -219,6 +219,8 @@ struct Run<'a> {
     /// from a stack.
     watch: Vec<Watch>,
     probes: Vec<Probe>,
+    /// The quiet test's first pass over them all ([`watch_pass`]).
+    pass: WatchPass,
     /// The stack at the end of the last quiet sub-step, with its ground
     /// (a, ȧ, σ); dropped whenever the state moves otherwise.
     stack: Option<((f64, f64, f64), Stack)>,
@@ -323,6 +325,7 @@ pub fn run_row_cached(
         spare_series: Series::default(),
         watch: probes.iter().map(Probe::watch).collect(),
         probes,
+        pass: WatchPass::default(),
         stack: None,
         energy: options.energy.then(|| {
             let (x, w) = gauss_legendre(NODES);
@@ -347,6 +350,7 @@ pub fn run_row_cached(
         collocation: RefCell::default(),
     };
     run.damper_signs = damper::signs(&run.layout.dampers, &run.v);
+    run.pass = WatchPass::new(&run.layout);
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
     'pieces: for piece in ground.pieces(options.duration) {
@@ -480,16 +484,27 @@ impl Run<'_> {
         };
         // Quantities whose peak may rise inside, located after the events clear.
         let mut rising = Vec::new();
+        // What the first pass clears, the per-quantity tests would clear.
+        let errors = |k: usize| bounds.errors(k, size);
+        let pass = &mut self.pass;
+        pass.ask((&start, &end), errors, h, (&self.config, &self.envelope));
+        let pass = &self.pass;
         let verdict = (|| {
             let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
             for (k, &d) in self.layout.gaps.iter().enumerate() {
-                if !ends(base + k).clears(0, |(_, hi)| hi < d) {
+                if !pass.open(k) && !ends(base + k).clears(0, |(_, hi)| hi < d) {
                     return Err(Cause::Onset);
                 }
             }
             let env = &self.envelope;
             let base = 3 * n;
             for (k, s) in self.layout.storeys.iter().enumerate() {
+                // Below its running peak (and so its collapse drift, which
+                // it has not reached), nothing more to ask.
+                let peak = env.drift[k];
+                if pass.storey_quiet(k) && pass.drift_below(k) && peak < s.collapse_drift {
+                    continue;
+                }
                 let q = ends(base + k);
                 let (quiet, cause) = match self.config.branch[k] {
                     Branch::Elastic => {
@@ -503,9 +518,6 @@ impl Run<'_> {
                 if !quiet {
                     return Err(cause);
                 }
-                // Below its running peak (and so its collapse drift, which
-                // it has not reached), nothing more to ask.
-                let peak = env.drift[k];
                 if peak < s.collapse_drift && q.clears(0, |(lo, hi)| lo.abs().max(hi.abs()) <= peak)
                 {
                     continue;
@@ -523,16 +535,16 @@ impl Run<'_> {
             for (order, peaks) in floors.into_iter().enumerate() {
                 for (i, &peak) in peaks.iter().enumerate() {
                     let k = order * n + i;
-                    let error = bounds.errors(k, size).0;
-                    if !floor_below((&start, &end), (order, i), error, peak, h)
-                        && !ends(k).below(peak)
-                    {
+                    if !pass.floor(order, i) && !ends(k).below(peak) {
                         rising.push(k);
                     }
                 }
             }
             let base = base + self.layout.storeys.len();
             for k in 0..self.layout.facing.len() {
+                if pass.relative_below(k) {
+                    continue;
+                }
                 let q = ends(base + k);
                 let peak = env.relative[k];
                 if !q.clears(0, |(_, hi)| hi <= peak) && !q.monotone() {

@@ -19,10 +19,21 @@
 /// every θ), so (min, max) of the four holds the cubic's range. A watched
 /// quantity far from its limit is cleared on it, before the exact range
 /// is asked for: whatever the hull clears, the range clears.
+///
+/// The least and largest are taken by plain comparisons (one `minsd` or
+/// `maxsd` each), not by `f64::min`/`f64::max`, whose care for a NaN
+/// costs more: the control points of a finite state's cubic are finite,
+/// and on finite values both pick the same (up to the sign of a zero,
+/// which no comparison sees).
 #[inline]
 pub fn hull(q0: f64, d0: f64, q1: f64, d1: f64, h: f64) -> (f64, f64) {
     let (b1, b2) = (q0 + d0 * h / 3.0, q1 - d1 * h / 3.0);
-    (q0.min(q1).min(b1.min(b2)), q0.max(q1).max(b1.max(b2)))
+    let least = |x: f64, y: f64| if x < y { x } else { y };
+    let largest = |x: f64, y: f64| if x > y { x } else { y };
+    (
+        least(least(q0, q1), least(b1, b2)),
+        largest(largest(q0, q1), largest(b1, b2)),
+    )
 }
 
 /// (min, max) of the cubic through (0, q0, d0) and (h, q1, d1) over the

@@ -1,0 +1,511 @@
+//! The first pass of the quiet test (SPEC §13) over the watched quantities
+//! of [`super::watched`] at once: every floor's u, u̇ and ü + a_g, every
+//! storey's drift (against its yield drift or, yielding, its rate against
+//! unloading, and against its running peak), every facing pair's relative
+//! displacement and every contact element's gap, each asked its question
+//! on the widened hull of its Hermite cubic, straight from the two ends'
+//! stacks, in blocks of [`LANES`] quantities.
+//!
+//! Each question asks whether the rigorous range of q (or of q̇) lies
+//! within limits. On the hull of the control points c ∈ {q0, q0 + d0h/3,
+//! q1 − d1h/3, q1} of the cubic ([`super::super::hermite::hull`]), widened
+//! by the error bound e of [`super::super::bound::Bounds::errors`] and
+//! measured from an offset p (a storey's plastic drift, else 0), it is
+//!
+//! ```text
+//! lower ≤ fl(fl(c − e) − p)   and   fl(fl(c + e) − p) ≤ upper   for all four c:
+//! ```
+//!
+//! since rounding is monotone, min over c of fl(fl(c − e) − p) is
+//! fl(fl(min c − e) − p), so the four comparisons are the hull's own. A
+//! strict limit x < d is x ≤ d⁻ (the float below d), which is the same
+//! test for every float x; the questions become
+//!
+//! | quantity                  | offset | lower      | upper      |
+//! |---------------------------|--------|------------|------------|
+//! | |q| within its peak P     | 0      | −P         | P          |
+//! | elastic drift, Δ_y        | p      | (−Δ_y)⁺    | Δ_y⁻       |
+//! | yielding drift's rate     | 0      | 0⁺ or −∞   | ∞ or 0⁻    |
+//! | gap d (no onset)          | 0      | −∞         | d⁻         |
+//! | relative displacement     | 0      | −∞         | P          |
+//!
+//! A comparison with a NaN is false, so nothing a NaN touches is cleared.
+//! On finite values the verdicts are those of [`super::ranges::Ends`]'s
+//! hull, the first test [`super::ranges::Ends::clears`] asks, bit for bit
+//! (the differences u_a − u_b are Probe::at's, up to the sign of a zero,
+//! which no comparison sees): what this pass clears, the per-quantity
+//! path clears, and only what it cannot clear goes on to that path and
+//! its exact ranges.
+
+use super::super::bound::Stack;
+use super::super::config::{Branch, Config};
+use super::super::lanes::LANES;
+use super::super::layout::Layout;
+use super::super::peaks::Envelope;
+
+/// A difference of two floors' rates, x_a − w·x_b (w = 0 for a storey on
+/// the ground, whose drift is its floor's own u).
+#[derive(Debug, Clone, Copy)]
+struct Difference {
+    a: usize,
+    b: usize,
+    w: f64,
+}
+
+impl Difference {
+    /// (q, q̇) of x^(order) at the instant of `stack`.
+    #[inline]
+    fn at(self, stack: &Stack, order: usize) -> (f64, f64) {
+        let (x, y) = (&stack.rates[order], &stack.rates[order + 1]);
+        (
+            x[self.a] - self.w * x[self.b],
+            y[self.a] - self.w * y[self.b],
+        )
+    }
+}
+
+/// f of the [`LANES`] entries of `v` from `first`, `pad` past its end.
+#[inline(always)]
+fn lane(v: &[f64], first: usize, pad: f64, f: impl Fn(f64) -> f64) -> [f64; LANES] {
+    match v.get(first..first + LANES) {
+        Some(v) => std::array::from_fn(|l| f(v[l])),
+        None => std::array::from_fn(|l| v.get(first + l).map_or(pad, |&x| f(x))),
+    }
+}
+
+/// Eight questions side by side: each one's q (or q̇) and its rate at
+/// both ends, its error bound, offset and limits, one lane each.
+#[derive(Debug, Clone, Copy)]
+struct Block {
+    q0: [f64; LANES],
+    d0: [f64; LANES],
+    q1: [f64; LANES],
+    d1: [f64; LANES],
+    error: [f64; LANES],
+    offset: [f64; LANES],
+    lower: [f64; LANES],
+    upper: [f64; LANES],
+}
+
+impl Block {
+    /// A block of questions that nothing clears (a lower limit of +∞): the
+    /// padding of the last block stays so.
+    const CLOSED: Block = Block {
+        q0: [0.0; LANES],
+        d0: [0.0; LANES],
+        q1: [0.0; LANES],
+        d1: [0.0; LANES],
+        error: [0.0; LANES],
+        offset: [0.0; LANES],
+        lower: [f64::INFINITY; LANES],
+        upper: [0.0; LANES],
+    };
+
+    /// Each lane's verdict on its widened hull over a sub-step of length
+    /// `h`: lower ≤ fl(fl(c − e) − p) and fl(fl(c + e) − p) ≤ upper for
+    /// the four control points c, made as [`super::super::hermite::hull`]
+    /// makes them.
+    #[inline(always)]
+    fn verdicts(&self, h: f64) -> [bool; LANES] {
+        std::array::from_fn(|l| {
+            let (q0, q1) = (self.q0[l], self.q1[l]);
+            let (b1, b2) = (q0 + self.d0[l] * h / 3.0, q1 - self.d1[l] * h / 3.0);
+            let (e, p) = (self.error[l], self.offset[l]);
+            let (lo, hi) = (self.lower[l], self.upper[l]);
+            let ok = |c: f64| (lo <= (c - e) - p) & ((c + e) - p <= hi);
+            ok(q0) & ok(b1) & ok(b2) & ok(q1)
+        })
+    }
+
+    /// Lane `l`: ((q0, q̇0), (q1, q̇1)), error, offset, (lower, upper).
+    #[inline]
+    fn set(
+        &mut self,
+        l: usize,
+        ((q0, d0), (q1, d1)): ((f64, f64), (f64, f64)),
+        (error, offset): (f64, f64),
+        (lower, upper): (f64, f64),
+    ) {
+        self.q0[l] = q0;
+        self.d0[l] = d0;
+        self.q1[l] = q1;
+        self.d1[l] = d1;
+        self.error[l] = error;
+        self.offset[l] = offset;
+        self.lower[l] = lower;
+        self.upper[l] = upper;
+    }
+}
+
+/// The first pass: the watched quantities' differences, laid out once per
+/// run, and each sub-step's verdicts.
+#[derive(Debug, Default)]
+pub(super) struct WatchPass {
+    /// Floors n.
+    dofs: usize,
+    storeys: Vec<Difference>,
+    facing: Vec<Difference>,
+    gaps: Vec<Difference>,
+    /// Each storey's limits while elastic, ((−Δ_y)⁺, Δ_y⁻), and each gap's
+    /// d⁻: constants of the run, made once.
+    yield_limits: Vec<(f64, f64)>,
+    gap_limits: Vec<f64>,
+    /// The questions past the floors' (each storey's peak and event, each
+    /// facing pair's peak, each gap), in blocks of [`LANES`].
+    blocks: Vec<Block>,
+    /// Each question's verdict: the floors' 3n, then the blocks' lanes.
+    cleared: Vec<bool>,
+}
+
+impl WatchPass {
+    pub fn new(layout: &Layout) -> WatchPass {
+        let pair = |p: &crate::model::buildings::FloorPair| Difference {
+            a: p.left_dof,
+            b: p.right_dof,
+            w: 1.0,
+        };
+        let n = layout.dofs;
+        let questions = 2 * layout.storeys.len() + layout.facing.len() + layout.pairs.len();
+        WatchPass {
+            dofs: n,
+            storeys: layout
+                .storeys
+                .iter()
+                .map(|s| Difference {
+                    a: s.upper,
+                    b: s.lower.unwrap_or(s.upper),
+                    w: if s.lower.is_some() { 1.0 } else { 0.0 },
+                })
+                .collect(),
+            facing: layout.facing.iter().map(pair).collect(),
+            gaps: layout.pairs.iter().map(pair).collect(),
+            yield_limits: layout
+                .storeys
+                .iter()
+                .map(|s| ((-s.yield_drift).next_up(), s.yield_drift.next_down()))
+                .collect(),
+            gap_limits: layout.gaps.iter().map(|d| d.next_down()).collect(),
+            blocks: vec![Block::CLOSED; questions.div_ceil(LANES)],
+            cleared: vec![false; 3 * n + questions.next_multiple_of(LANES)],
+        }
+    }
+
+    /// Asks every question of the sub-step of length `h` from `start` to
+    /// `end`, with `errors`(k) the bounds on the errors of the cubics of q
+    /// and q̇ of quantity k ([`super::super::bound::Bounds::errors`]).
+    pub fn ask(
+        &mut self,
+        (start, end): (&Stack, &Stack),
+        errors: impl Fn(usize) -> (f64, f64),
+        h: f64,
+        (config, env): (&Config, &Envelope),
+    ) {
+        let n = self.dofs;
+        let storeys = self.storeys.len();
+        // Every floor's u, u̇, ü + a_g against its running peak, read in
+        // blocks straight from the stacks (the ground added to ü).
+        let peaks = [&env.displacement, &env.velocity, &env.acceleration];
+        for (order, peaks) in peaks.into_iter().enumerate() {
+            let (g0, g1) = match order {
+                2 => (start.ground, end.ground),
+                _ => ([0.0; 3], [0.0; 3]),
+            };
+            let (x0, y0) = (&start.rates[order], &start.rates[order + 1]);
+            let (x1, y1) = (&end.rates[order], &end.rates[order + 1]);
+            for first in (0..n).step_by(LANES) {
+                let k = order * n + first;
+                let block =
+                    Block {
+                        q0: lane(x0, first, 0.0, |x| x + g0[0]),
+                        d0: lane(y0, first, 0.0, |x| x + g0[1]),
+                        q1: lane(x1, first, 0.0, |x| x + g1[0]),
+                        d1: lane(y1, first, 0.0, |x| x + g1[1]),
+                        error: std::array::from_fn(|l| {
+                            if first + l < n { errors(k + l).0 } else { 0.0 }
+                        }),
+                        offset: [0.0; LANES],
+                        lower: lane(peaks, first, f64::INFINITY, |p| -p),
+                        upper: lane(peaks, first, 0.0, |p| p),
+                    };
+                let verdicts = block.verdicts(h);
+                for (out, &verdict) in self.cleared[k..order * n + n].iter_mut().zip(&verdicts) {
+                    *out = verdict;
+                }
+            }
+        }
+        // Every storey's drift against its running peak, then its event;
+        // every facing pair's u_A − u_B under its running peak; every
+        // contact element's u_A − u_B under its gap.
+        let blocks = &mut self.blocks;
+        let mut set = |j: usize, ends, errors, limits| {
+            blocks[j / LANES].set(j % LANES, ends, errors, limits);
+        };
+        let base = 3 * n;
+        for (k, d) in self.storeys.iter().enumerate() {
+            let ends = (d.at(start, 0), d.at(end, 0));
+            let peak = env.drift[k];
+            set(k, ends, (errors(base + k).0, 0.0), (-peak, peak));
+        }
+        for (k, (d, &limits)) in self.storeys.iter().zip(&self.yield_limits).enumerate() {
+            let (error, rate_error) = errors(base + k);
+            let j = storeys + k;
+            match config.branch[k] {
+                Branch::Elastic => {
+                    let ends = (d.at(start, 0), d.at(end, 0));
+                    set(j, ends, (error, config.plastic[k]), limits);
+                }
+                branch => {
+                    let ends = (d.at(start, 1), d.at(end, 1));
+                    let limits = if branch == Branch::Plus {
+                        (0f64.next_up(), f64::INFINITY)
+                    } else {
+                        (f64::NEG_INFINITY, 0f64.next_down())
+                    };
+                    set(j, ends, (rate_error, 0.0), limits);
+                }
+            }
+        }
+        for (k, d) in self.facing.iter().enumerate() {
+            let ends = (d.at(start, 0), d.at(end, 0));
+            let limits = (f64::NEG_INFINITY, env.relative[k]);
+            set(
+                2 * storeys + k,
+                ends,
+                (errors(base + storeys + k).0, 0.0),
+                limits,
+            );
+        }
+        let (j, base) = (
+            2 * storeys + self.facing.len(),
+            base + storeys + self.facing.len(),
+        );
+        for (k, (d, &gap)) in self.gaps.iter().zip(&self.gap_limits).enumerate() {
+            let ends = (d.at(start, 0), d.at(end, 0));
+            let limits = (f64::NEG_INFINITY, gap);
+            set(j + k, ends, (errors(base + k).0, 0.0), limits);
+        }
+        let out = self.cleared[3 * n..].chunks_exact_mut(LANES);
+        for (block, out) in self.blocks.iter().zip(out) {
+            for (out, verdict) in out.iter_mut().zip(block.verdicts(h)) {
+                *out = verdict;
+            }
+        }
+    }
+
+    /// Whether floor i's u (`order` 0), u̇ (1) or ü + a_g (2) stays within
+    /// its running peak.
+    pub fn floor(&self, order: usize, i: usize) -> bool {
+        self.cleared[order * self.dofs + i]
+    }
+
+    /// Whether storey k's drift stays within its running peak.
+    pub fn drift_below(&self, k: usize) -> bool {
+        self.cleared[3 * self.dofs + k]
+    }
+
+    /// Whether storey k neither yields (elastic) nor unloads (yielding).
+    pub fn storey_quiet(&self, k: usize) -> bool {
+        self.cleared[3 * self.dofs + self.storeys.len() + k]
+    }
+
+    /// Whether facing pair k's u_A − u_B stays under its running peak.
+    pub fn relative_below(&self, k: usize) -> bool {
+        self.cleared[3 * self.dofs + 2 * self.storeys.len() + k]
+    }
+
+    /// Whether contact element k stays open.
+    pub fn open(&self, k: usize) -> bool {
+        self.cleared[3 * self.dofs + 2 * self.storeys.len() + self.facing.len() + k]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::super::bound::Stack;
+    use super::super::super::config::{Branch, Config};
+    use super::super::super::hermite::hull;
+    use super::super::super::layout::Layout;
+    use super::super::super::peaks::Envelope;
+    use super::super::ranges::{Ends, Probe};
+    use super::super::watched;
+    use super::WatchPass;
+    use crate::model::buildings;
+    use proptest::prelude::*;
+
+    /// Rows of up to 17 floors (three-in-series, two joints) and 11
+    /// (block-and-frame, one joint of three floor pairs).
+    const ROWS: [&str; 2] = ["three-in-series", "block-and-frame"];
+    const FLOORS: usize = 17;
+
+    /// A question of the quiet test on a range (lo, hi).
+    type Question = Box<dyn Fn((f64, f64)) -> bool>;
+
+    /// A stack of `FLOORS` floors' rates and a ground (a, ȧ, ä).
+    fn stack() -> impl Strategy<Value = Stack> {
+        let rates = || prop::collection::vec(-1.0f64..1.0, FLOORS);
+        (
+            [rates(), rates(), rates(), rates(), rates()],
+            prop::array::uniform3(-1.0f64..1.0),
+        )
+            .prop_map(|(rates, ground)| Stack { rates, ground })
+    }
+
+    /// Each storey's branch (0 elastic, 1 plus, 2 minus), plastic drift,
+    /// yield drift and running peak.
+    fn storeys() -> impl Strategy<Value = Vec<(u8, f64, f64, f64)>> {
+        prop::collection::vec((0u8..3, -0.3f64..0.3, 0.0f64..2.0, 0.0f64..2.0), FLOORS)
+    }
+
+    /// What the hull of `ends`' cubic of q (`order` 0) or q̇ (1), widened
+    /// by its error, says of `within`.
+    fn on_hull(ends: &Ends, order: usize, within: impl Fn((f64, f64)) -> bool) -> bool {
+        let (a, b) = (ends.start, ends.end);
+        let e = [ends.errors.0, ends.errors.1][order];
+        let (lo, hi) = hull(a[order], a[order + 1], b[order], b[order + 1], ends.h);
+        within((lo - e, hi + e))
+    }
+
+    proptest! {
+        /// On random ends, errors, peaks, branches, yield drifts and gaps,
+        /// every verdict of the pass is the widened hull's on the values
+        /// Probe::at reads (the per-quantity path's first test), for each
+        /// question the quiet test asks, and what it clears the
+        /// per-quantity path ([`Ends::clears`], [`Ends::below`]) clears.
+        #[test]
+        fn every_verdict_is_the_per_quantity_hulls(
+            (start, end) in (stack(), stack()),
+            errors in prop::collection::vec((0.0f64..0.2, 0.0f64..0.2), 6 * FLOORS),
+            floor_peaks in prop::collection::vec(0.0f64..2.5, 3 * FLOORS),
+            storeys in storeys(),
+            gaps in prop::collection::vec(0.0f64..2.0, FLOORS),
+            relative in prop::collection::vec(-0.5f64..2.0, FLOORS),
+            h in 0.01f64..1.0,
+        ) {
+            for name in ROWS {
+                let mut layout = Layout::of(&buildings::load(name).expect("shipped"));
+                let (n, ns) = (layout.dofs, layout.storeys.len());
+                let (nf, np) = (layout.facing.len(), layout.pairs.len());
+                let cut = |s: &Stack| Stack {
+                    rates: s.rates.clone().map(|mut r| {
+                        r.truncate(n);
+                        r
+                    }),
+                    ground: s.ground,
+                };
+                let (start, end) = (cut(&start), cut(&end));
+                let mut config = Config::at_rest(ns, np);
+                let mut env = Envelope::new(n, ns, nf);
+                for (k, &(branch, plastic, dy, peak)) in storeys.iter().take(ns).enumerate() {
+                    let branches = [Branch::Elastic, Branch::Plus, Branch::Minus];
+                    config.branch[k] = branches[branch as usize];
+                    config.plastic[k] = plastic;
+                    layout.storeys[k].yield_drift = dy;
+                    env.drift[k] = peak;
+                }
+                for (g, &d) in layout.gaps.iter_mut().zip(&gaps) {
+                    *g = d;
+                }
+                env.relative.copy_from_slice(&relative[..nf]);
+                let peaks = [&mut env.displacement, &mut env.velocity, &mut env.acceleration];
+                for (order, peaks) in peaks.into_iter().enumerate() {
+                    peaks.copy_from_slice(&floor_peaks[order * FLOORS..order * FLOORS + n]);
+                }
+                let mut pass = WatchPass::new(&layout);
+                pass.ask((&start, &end), |k| errors[k], h, (&config, &env));
+                let probes = watched(&layout);
+                let ends = |k: usize| {
+                    let p: &Probe = &probes[k];
+                    Ends { start: p.at(&start), end: p.at(&end), errors: errors[k], h }
+                };
+                let below =
+                    |peak: f64| move |(lo, hi): (f64, f64)| lo.abs().max(hi.abs()) <= peak;
+                for order in 0..3 {
+                    for i in 0..n {
+                        let peaks = [&env.displacement, &env.velocity, &env.acceleration];
+                        let (k, peak) = (order * n + i, peaks[order][i]);
+                        let q = ends(k);
+                        prop_assert_eq!(pass.floor(order, i), on_hull(&q, 0, below(peak)));
+                        prop_assert!(!pass.floor(order, i) || q.below(peak));
+                    }
+                }
+                for (k, s) in layout.storeys.iter().enumerate() {
+                    let q = ends(3 * n + k);
+                    let peak = env.drift[k];
+                    prop_assert_eq!(pass.drift_below(k), on_hull(&q, 0, below(peak)));
+                    prop_assert!(!pass.drift_below(k) || q.clears(0, below(peak)));
+                    let (p, dy) = (config.plastic[k], s.yield_drift);
+                    let (order, quiet): (usize, Question) = match config.branch[k] {
+                        Branch::Elastic => (
+                            0,
+                            Box::new(move |(lo, hi)| (lo - p).abs().max((hi - p).abs()) < dy),
+                        ),
+                        Branch::Plus => (1, Box::new(|(lo, _)| lo > 0.0)),
+                        Branch::Minus => (1, Box::new(|(_, hi)| hi < 0.0)),
+                    };
+                    prop_assert_eq!(pass.storey_quiet(k), on_hull(&q, order, &quiet));
+                    prop_assert!(!pass.storey_quiet(k) || q.clears(order, quiet));
+                }
+                for k in 0..nf {
+                    let q = ends(3 * n + ns + k);
+                    let peak = env.relative[k];
+                    let under = |(_, hi): (f64, f64)| hi <= peak;
+                    prop_assert_eq!(pass.relative_below(k), on_hull(&q, 0, under));
+                }
+                for (k, &d) in layout.gaps.iter().enumerate() {
+                    let q = ends(3 * n + ns + nf + k);
+                    let open = |(_, hi): (f64, f64)| hi < d;
+                    prop_assert_eq!(pass.open(k), on_hull(&q, 0, open));
+                }
+            }
+        }
+    }
+
+    /// The limits themselves: a quantity at rest exactly at its peak stays
+    /// within it, one float above does not; exactly at its gap it touches
+    /// (an onset), one float below it stays open; exactly at its yield
+    /// drift from the plastic offset it yields; a NaN clears nothing.
+    #[test]
+    fn strict_and_loose_limits_and_nan() {
+        let mut layout = Layout::of(&buildings::load("block-and-frame").expect("shipped"));
+        let (n, ns, nf) = (layout.dofs, layout.storeys.len(), layout.facing.len());
+        let np = layout.pairs.len();
+        let mut config = Config::at_rest(ns, np);
+        let mut env = Envelope::new(n, ns, nf);
+        // Floor 0 of the block, the block's base storey, the first pair.
+        let pair = layout.pairs[0];
+        let a = pair.left_dof;
+        assert_eq!(
+            (layout.storeys[0].upper, layout.storeys[0].lower),
+            (a, None)
+        );
+        let x = 0.3;
+        let mut rest = Stack {
+            rates: std::array::from_fn(|_| vec![0.0; n]),
+            ground: [0.0; 3],
+        };
+        rest.rates[0][a] = x;
+        layout.gaps[0] = x;
+        config.plastic[0] = 0.1;
+        layout.storeys[0].yield_drift = x - 0.1;
+        env.displacement[a] = x;
+        env.drift[0] = x.next_down();
+        let ask = |layout: &Layout, config: &Config, env: &Envelope, s: &Stack| {
+            let mut pass = WatchPass::new(layout);
+            pass.ask((s, s), |_| (0.0, 0.0), 0.5, (config, env));
+            pass
+        };
+        let pass = ask(&layout, &config, &env, &rest);
+        assert!(pass.floor(0, a), "at its peak");
+        assert!(!pass.drift_below(0), "a float above its peak");
+        assert!(!pass.open(0), "at its gap");
+        assert!(!pass.storey_quiet(0), "at its yield drift from p");
+        layout.gaps[0] = x.next_up();
+        layout.storeys[0].yield_drift = (x - 0.1).next_up();
+        let pass = ask(&layout, &config, &env, &rest);
+        assert!(pass.open(0) && pass.storey_quiet(0));
+        rest.rates[1][a] = f64::NAN;
+        let pass = ask(&layout, &config, &env, &rest);
+        assert!(!pass.floor(0, a) && !pass.open(0) && !pass.storey_quiet(0));
+        assert!(!pass.drift_below(0));
+    }
+}
