@@ -453,6 +453,7 @@ pub fn series(
         ground: ground_coefficients(ground),
         radius: step.h,
         degree: 5,
+        ..Series::default()
     }
 }
 

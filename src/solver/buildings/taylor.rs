@@ -84,6 +84,48 @@ pub struct Series {
     /// Highest order of u held (coefficients above it are zero):
     /// [`ORDER`] for the series, less for a polynomial written as one.
     pub degree: usize,
+    /// The recurrence's buffers, reused from fill to fill.
+    pub work: Workspace,
+}
+
+/// The buffers of [`Series::fill`]'s recurrence, kept so that a run's
+/// thousands of steps allocate nothing: the coefficients order by order
+/// (u_k of every floor side by side), ü's coefficient being summed, and
+/// each product's δ_k and δ̇_k. They hold nothing between fills: a clone
+/// starts empty.
+#[derive(Debug, Default)]
+pub struct Workspace {
+    u: Vec<f64>,
+    v: Vec<f64>,
+    acc: Vec<f64>,
+    delta: Vec<f64>,
+    rate_d: Vec<f64>,
+}
+
+impl Clone for Workspace {
+    fn clone(&self) -> Workspace {
+        Workspace::default()
+    }
+}
+
+impl Workspace {
+    /// Room for orders 0 to `top` of n floors and `products` products.
+    /// Every entry up to the order reached is written before it is read:
+    /// the buffers are grown, never cleared.
+    fn size(&mut self, n: usize, products: usize, top: usize) {
+        let w = top + 1;
+        for (buffer, len) in [
+            (&mut self.u, w * n),
+            (&mut self.v, w * n),
+            (&mut self.acc, n),
+            (&mut self.delta, products * w),
+            (&mut self.rate_d, products * w),
+        ] {
+            if buffer.len() < len {
+                buffer.resize(len, 0.0);
+            }
+        }
+    }
 }
 
 impl Default for Series {
@@ -95,6 +137,7 @@ impl Default for Series {
             ground: [0.0; MAX_ORDER + 1],
             radius: 0.0,
             degree: 0,
+            work: Workspace::default(),
         }
     }
 }
@@ -181,6 +224,13 @@ impl Series {
     /// The series with the products `products` in place of the system's,
     /// to [`ORDER`], or with `want` to the order that carries it over
     /// [0, want].
+    ///
+    /// The recurrence runs order by order on the [`Workspace`]'s columns
+    /// (all floors' coefficient k side by side), so that u_{k+1} = u̇_k/(k+1)
+    /// and the norms of the test run over contiguous memory; the
+    /// coefficients are then written out floor by floor. Each sum is taken
+    /// in the same order as floor by floor: the series is the same to the
+    /// bit.
     #[allow(clippy::too_many_arguments)]
     fn fill_with(
         &mut self,
@@ -193,45 +243,47 @@ impl Series {
         want: Option<f64>,
     ) {
         let top = if want.is_some() { MAX_ORDER } else { ORDER };
-        let w = top + 1;
         let n = u0.len();
-        let mut u = std::mem::take(&mut self.u);
-        let mut v = std::mem::take(&mut self.v);
-        // Every coefficient up to the order reached is written below
-        // before it is read: the vectors are not zeroed first.
-        u.resize(w * n, 0.0);
-        v.resize(w * n, 0.0);
-        for i in 0..n {
-            u[i * w] = u0[i];
-            v[i * w] = v0[i];
-        }
         let g = ground_coefficients(ground);
-        let np = products.len();
-        let mut delta = vec![0.0; np * w];
-        let mut rate_d = vec![0.0; np * w];
-        let mut acc = vec![0.0; n];
+        let work = &mut self.work;
+        work.size(n, products.len(), top);
+        let Workspace {
+            u,
+            v,
+            acc,
+            delta,
+            rate_d,
+        } = work;
+        u[..n].copy_from_slice(u0);
+        v[..n].copy_from_slice(v0);
+        // max_i |u_k,i| / scale_u against max_i |u̇_k,i| / scale_v.
         let norm = |u: &[f64], v: &[f64], k: usize| {
-            let nu = (0..n).fold(0.0f64, |m, i| m.max(u[i * w + k].abs())) / scale.0;
-            let nv = (0..n).fold(0.0f64, |m, i| m.max(v[i * w + k].abs())) / scale.1;
+            let column = k * n..(k + 1) * n;
+            let nu = u[column.clone()].iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale.0;
+            let nv = v[column].iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale.1;
             nu.max(nv)
         };
+        let w = top + 1;
         let mut degree = top;
+        // The norm of order k, kept from the step before (the test asks for
+        // orders k and k + 1).
+        let mut last = norm(u, v, 0);
         for k in 0..top {
-            for (i, acc) in acc.iter_mut().enumerate() {
+            let (uk, vk) = (&u[k * n..(k + 1) * n], &v[k * n..(k + 1) * n]);
+            for (i, acc) in acc[..n].iter_mut().enumerate() {
                 let mut s = -g[k];
                 if k == 0 {
                     s += system.load[i];
                 }
                 for &(j, kij, cij) in system.row(i) {
-                    s -= kij * u[j * w + k] + cij * v[j * w + k];
+                    s -= kij * uk[j] + cij * vk[j];
                 }
                 *acc = s;
             }
             for (pi, p) in products.iter().enumerate() {
                 let row = pi * w;
-                let (l, r) = (p.left * w + k, p.right * w + k);
-                delta[row + k] = u[l] - u[r] - if k == 0 { p.gap } else { 0.0 };
-                rate_d[row + k] = v[l] - v[r];
+                delta[row + k] = uk[p.left] - uk[p.right] - if k == 0 { p.gap } else { 0.0 };
+                rate_d[row + k] = vk[p.left] - vk[p.right];
                 let conv: f64 = (0..=k).map(|j| delta[row + j] * rate_d[row + k - j]).sum();
                 acc[p.left] -= p.left_rate * conv;
                 acc[p.right] += p.right_rate * conv;
@@ -243,25 +295,31 @@ impl Series {
                 }
             }
             let inv = 1.0 / (k + 1) as f64;
-            for i in 0..n {
-                u[i * w + k + 1] = v[i * w + k] * inv;
-                v[i * w + k + 1] = acc[i] * inv;
+            let (done, next) = v.split_at_mut((k + 1) * n);
+            for ((x, &y), (z, &a)) in u[(k + 1) * n..(k + 2) * n]
+                .iter_mut()
+                .zip(&done[k * n..])
+                .zip(next[..n].iter_mut().zip(&acc[..n]))
+            {
+                *x = y * inv;
+                *z = a * inv;
             }
+            let now = norm(u, v, k + 1);
             // The last two terms within the tolerance at `want`: enough.
             if let Some(want) = want
                 && k + 1 >= MIN_ORDER
-                && [k, k + 1]
-                    .iter()
-                    .all(|&j| norm(&u, &v, j) * want.powi(j as i32) <= TOLERANCE)
+                && last * want.powi(k as i32) <= TOLERANCE
+                && now * want.powi(k as i32 + 1) <= TOLERANCE
             {
                 degree = k + 1;
                 break;
             }
+            last = now;
         }
         let radius = [degree - 1, degree]
             .iter()
             .map(|&k| {
-                let nk = norm(&u, &v, k);
+                let nk = norm(u, v, k);
                 if nk > 0.0 {
                     (TOLERANCE / nk).powf(1.0 / k as f64)
                 } else {
@@ -276,24 +334,18 @@ impl Series {
             _ => radius,
         };
         // Floor by floor, blocks of degree + 1 coefficients.
-        if degree < top {
+        let floors = |columns: &[f64], out: &mut Vec<f64>| {
+            out.clear();
             for i in 0..n {
-                for j in 0..=degree {
-                    u[i * (degree + 1) + j] = u[i * w + j];
-                    v[i * (degree + 1) + j] = v[i * w + j];
-                }
+                out.extend((0..=degree).map(|k| columns[k * n + i]));
             }
-            u.truncate(n * (degree + 1));
-            v.truncate(n * (degree + 1));
-        }
-        *self = Series {
-            n,
-            u,
-            v,
-            ground: g,
-            radius,
-            degree,
         };
+        floors(u, &mut self.u);
+        floors(v, &mut self.v);
+        self.n = n;
+        self.ground = g;
+        self.radius = radius;
+        self.degree = degree;
     }
 
     /// The coefficients of u_i, orders 0 to [`Series::degree`].
@@ -425,6 +477,29 @@ mod tests {
             assert!((a[i] - c[i]).abs() <= 1e-15 * sc.0, "u_{i}");
             assert!((b[i] - d[i]).abs() <= 1e-15 * sc.1, "u̇_{i}");
         }
+    }
+
+    /// A fill over buffers left by earlier fills (a longer one, and one of
+    /// another configuration, without the product) gives the series a
+    /// fresh one gives, to the bit: nothing of the earlier fills is read.
+    #[test]
+    fn a_reused_workspace_leaves_no_trace() {
+        let (system, (u, v), sc, fixed) = roof_contact();
+        let want = 0.3 * fixed.radius;
+        let mut fresh = Series::default();
+        fresh.fill_over(&system, (&u, &v), GROUND, sc, want);
+        let mut reused = Series::default();
+        reused.fill_over(&system, (&u, &v), GROUND, sc, 10.0 * fixed.radius);
+        let linear: Vec<f64> = v.iter().map(|x| -x).collect();
+        reused.fill_linear(&system, (&v, &linear), (0.3, -5.0, -40.0), sc);
+        reused.fill_over(&system, (&u, &v), GROUND, sc, want);
+        assert!(fresh.degree < MAX_ORDER, "degree {}", fresh.degree);
+        assert_eq!(reused.degree, fresh.degree);
+        assert_eq!(reused.radius.to_bits(), fresh.radius.to_bits());
+        assert_eq!(reused.u, fresh.u);
+        assert_eq!(reused.v, fresh.v);
+        let clone = reused.clone();
+        assert_eq!((clone.u, clone.v), (fresh.u, fresh.v));
     }
 
     /// In improved Kelvin contact the fixed order's radius is short (its
