@@ -491,7 +491,7 @@ mod tests {
         let mut reused = Series::default();
         reused.fill_over(&system, (&u, &v), GROUND, sc, 10.0 * fixed.radius);
         let linear: Vec<f64> = v.iter().map(|x| -x).collect();
-        reused.fill_linear(&system, (&v, &linear), (0.3, -5.0, -40.0), sc);
+        reused.fill_linear(&system, (&v, &linear), (0.3, -5.0, -40.0), sc, fixed.radius);
         reused.fill_over(&system, (&u, &v), GROUND, sc, want);
         assert!(fresh.degree < MAX_ORDER, "degree {}", fresh.degree);
         assert_eq!(reused.degree, fresh.degree);
