@@ -97,7 +97,12 @@ pub fn row_seconds(row: &Row, duration: f64, newmark_step: Option<f64>) -> f64 {
 /// damper takes: block-and-frame-retrofit with `link1.exponent = 0.35`
 /// ran 202–214 ms under `synthetic:2000` against the bare row's 7.3–9.8 ms
 /// side by side (21–28×), and 1.24 s under a 30 s sine (3 m/s², ω = 6)
-/// against 36–43 ms (29–34×); rounded up to 35.
+/// against 36–43 ms (29–34×); rounded up to 35. The damper's step control
+/// became honest since (its estimate bounds the local error), and the
+/// same row now runs 272–310 ms against 6.6–7.2 ms (38–47×, `cargo bench
+/// --bench row_speed`): still below 35 times the estimate of the bare row
+/// (35 × 11.3 ms = 396 ms), whose 6.4 µs × n² per second is 1.7 times what
+/// the bare row now takes.
 pub const FLUID_DAMPER_EXACT: f64 = 35.0;
 
 #[cfg(test)]
