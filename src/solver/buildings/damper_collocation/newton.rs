@@ -1,0 +1,201 @@
+//! The nodes' forces of one collocated step by Newton's method (SPEC §14),
+//! and its first guess from the last step's forces.
+
+use nalgebra::{DMatrix, DVector, Dyn, LU};
+
+use super::basis::quadratic;
+use super::responses::{AtNodes, Responses};
+use super::{Collocation, Element, Law, NEWTON, NODES, POWERS, Row, values};
+use crate::model::buildings::retrofit::dashpot_velocity_slope;
+use crate::solver::buildings::poly;
+use crate::solver::buildings::taylor::{ORDER, Series};
+
+/// The forces of the last step: its start and end, its length, and each
+/// element's force (the quadratic through its nodes and its defect model)
+/// as a polynomial in s. A step from the same start (retried shorter, or
+/// retaken) starts Newton from their values at its nodes, the next step
+/// from their extrapolation past the end: O(h³) from the solution where
+/// the force is smooth, so Newton needs fewer iterations than from the
+/// force at the start held over the step, O(h) from it.
+#[derive(Debug)]
+pub(super) struct Forces {
+    start: Vec<f64>,
+    end: Vec<f64>,
+    h: f64,
+    polynomials: Vec<[f64; POWERS]>,
+}
+
+impl Collocation {
+    /// Keeps a step's forces ([`Forces`]): from y0 to `end` over h, each
+    /// element's quadratic through the nodes' X plus its defect model.
+    pub(super) fn remember(
+        &mut self,
+        y0: &[f64],
+        end: &[f64],
+        h: f64,
+        x: &DVector<f64>,
+        model: &[[f64; POWERS]],
+    ) {
+        let ne = self.elements.len();
+        let polynomials = (0..ne)
+            .map(|e| {
+                let mut p = quadratic(x, ne, e, h);
+                for (p, q) in p.iter_mut().zip(model[e]) {
+                    *p += q;
+                }
+                p
+            })
+            .collect();
+        self.forces = Some(Forces {
+            start: y0.to_vec(),
+            end: end.to_vec(),
+            h,
+            polynomials,
+        });
+    }
+
+    /// Newton's first guess for a step of length h from y0 ([`Forces`]):
+    /// the last step's forces at the nodes, from its start where y0 is its
+    /// start, past its end where y0 is its end, with the same elements;
+    /// else None (each force as at the start).
+    pub(super) fn guess(&self, y0: &[f64], h: f64) -> Option<DVector<f64>> {
+        let forces = self.forces.as_ref()?;
+        let ne = self.elements.len();
+        if forces.polynomials.len() != ne {
+            return None;
+        }
+        let offset = if forces.end == y0 {
+            forces.h
+        } else if forces.start == y0 {
+            0.0
+        } else {
+            return None;
+        };
+        Some(DVector::from_fn(3 * ne, |r, _| {
+            let (i, e) = (r / ne, r % ne);
+            poly::eval(&forces.polynomials[e], offset + NODES[i] * h)
+        }))
+    }
+}
+
+/// A solve's end (u, u̇), its nodes' forces X, and its equations
+/// linearized there.
+pub(super) type Solved = (Vec<f64>, DVector<f64>, Linearized);
+
+/// The LU factors of the collocated equations' Jacobian at a solve's last
+/// iterate, and each element's Δu, Δv at the nodes there (row i·E + e).
+pub(super) struct Linearized {
+    pub(super) jacobian: LU<f64, Dyn, Dyn>,
+    pub(super) stroke: DVector<f64>,
+    pub(super) rate: DVector<f64>,
+}
+
+/// The nodes' forces over a step of length h on the free motion `free`
+/// (from y0), by Newton's method: the end (u, u̇) when it converged (to
+/// 1e-15 of each damper's force at the motion's speed, 1e-14 of each
+/// product), and the iterations taken.
+pub(super) fn solve(
+    row: &Row,
+    elements: &[Element],
+    responses: &Responses,
+    (free, y0): (&Series, &[f64]),
+    h: f64,
+    guess: Option<DVector<f64>>,
+) -> (Option<Solved>, usize) {
+    let n = y0.len() / 2;
+    let ne = elements.len();
+    let m = 3 * ne;
+    let nodes = AtNodes::of(responses, ne, h);
+    // The free motion's Δu, Δv at the nodes.
+    let mut free_stroke = DVector::zeros(m);
+    let mut free_rate = DVector::zeros(m);
+    let mut p = [0.0; ORDER + 1];
+    for (i, &c) in NODES.iter().enumerate() {
+        poly::powers(c * h, &mut p);
+        for (e, el) in elements.iter().enumerate() {
+            let (ul, ur) = (free.displacement(el.left), free.displacement(el.right));
+            let (vl, vr) = (free.velocity(el.left), free.velocity(el.right));
+            free_stroke[i * ne + e] = poly::dot(ul, &p) - poly::dot(ur, &p);
+            free_rate[i * ne + e] = poly::dot(vl, &p) - poly::dot(vr, &p);
+        }
+    }
+    // First guess: each force as at the start.
+    let (u0, v0) = y0.split_at(n);
+    let x = guess.unwrap_or_else(|| {
+        let start = values(elements, u0, v0);
+        DVector::from_fn(m, |r, _| start[r % ne])
+    });
+    let mut x = x;
+    // Each damper's bound on Newton's update: 1e-15 of its force at the
+    // motion's speed, and never below the smallest normal number. A
+    // vanishing damper (c = 1e-300) would otherwise ask for updates among
+    // the subnormals, whose precision falls with their size, so that
+    // whether Newton converges would rest on rounding; a force that small
+    // moves no floor.
+    let bounds: Vec<f64> = elements
+        .iter()
+        .map(|el| match el.law {
+            Law::Damper { damping, exponent } => {
+                (1e-15 * damping * row.scale.1.powf(exponent)).max(f64::MIN_POSITIVE)
+            }
+            Law::Product { .. } => 0.0,
+        })
+        .collect();
+    let mut residual = DVector::zeros(m);
+    let (mut stroke, mut rate) = (DVector::zeros(m), DVector::zeros(m));
+    for iteration in 1..=NEWTON {
+        nodes.stroke.mul_to(&x, &mut stroke);
+        stroke += &free_stroke;
+        nodes.rate.mul_to(&x, &mut rate);
+        rate += &free_rate;
+        let mut jacobian = DMatrix::zeros(m, m);
+        for r in 0..m {
+            match elements[r % ne].law {
+                Law::Damper { damping, exponent } => {
+                    // ψ(F) = α F ψ'(F): one power for both.
+                    let slope = dashpot_velocity_slope(damping, exponent, x[r]);
+                    residual[r] = exponent * x[r] * slope - rate[r];
+                    for q in 0..m {
+                        jacobian[(r, q)] = -nodes.rate[(r, q)];
+                    }
+                    jacobian[(r, r)] += slope;
+                }
+                Law::Product { gap, coefficient } => {
+                    let delta = stroke[r] - gap;
+                    residual[r] = x[r] - coefficient * delta * rate[r];
+                    for q in 0..m {
+                        jacobian[(r, q)] = -coefficient
+                            * (rate[r] * nodes.stroke[(r, q)] + delta * nodes.rate[(r, q)]);
+                    }
+                    jacobian[(r, r)] += 1.0;
+                }
+            }
+        }
+        let jacobian = jacobian.lu();
+        let Some(delta) = jacobian.solve(&residual) else {
+            return (None, iteration);
+        };
+        x -= &delta;
+        let converged = (0..m).all(|r| {
+            let bound = match elements[r % ne].law {
+                Law::Damper { .. } => bounds[r % ne],
+                Law::Product { .. } => 1e-14 * x[r].abs().max(1e-300),
+            };
+            delta[r].abs() <= bound
+        });
+        if converged {
+            let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
+            free.state(h, &mut u, &mut v);
+            let w = responses.weights(ne, |e| quadratic(&x, ne, e, h));
+            responses.add_state(&w, (h, free.degree), (&mut u, &mut v));
+            u.extend(v);
+            let linearized = Linearized {
+                jacobian,
+                stroke,
+                rate,
+            };
+            return (Some((u, x, linearized)), iteration);
+        }
+    }
+    (None, NEWTON)
+}

@@ -1,0 +1,175 @@
+//! The responses from rest of one configuration to each element's force
+//! s^k (SPEC §14), made once and serving every step length, and their
+//! values at one step's nodes.
+
+use nalgebra::DMatrix;
+
+use super::basis::basis;
+use super::{Element, NODES, POWERS};
+use crate::solver::buildings::poly;
+use crate::solver::buildings::system::System;
+use crate::solver::buildings::taylor::{Forcing, ORDER, Series};
+
+/// The responses from rest of one configuration to each element's force
+/// x_f = s^k, k = 0 … 4 (response r = k·E + f, E elements): its series,
+/// and Δu_e and Δv_e of every element e as polynomials in s (row r·E + e).
+/// They hold for every step length: the response to ℓ_j(s/h) is
+/// Σ_k ℓ_{j,k} h^(−k) times the k-th, and to π(s/h) likewise.
+#[derive(Debug, Clone)]
+pub(super) struct Responses {
+    pub(super) series: Vec<Series>,
+    pub(super) stroke: Vec<Vec<f64>>,
+    pub(super) rate: Vec<Vec<f64>>,
+}
+
+/// The responses of one step length h at its nodes: Δu and Δv of every
+/// element at every node (row i·E + e) under x_f = ℓ_j (column j·E + f).
+pub(super) struct AtNodes {
+    pub(super) stroke: DMatrix<f64>,
+    pub(super) rate: DMatrix<f64>,
+}
+
+/// The response from rest to x = s^k from the response to s^(k−1):
+/// the system being linear and its coefficients constant, the response to
+/// ∫₀^s x is ∫₀^s of the response to x (Duhamel), and s^k = k ∫₀^s σ^(k−1),
+/// so that
+///
+/// ```text
+/// u_k(s) = k ∫₀^s u_{k−1},   u̇_k(s) = k u_{k−1}(s),
+/// ```
+///
+/// coefficient by coefficient; the one above the series' order is left
+/// out, as the series itself leaves out its own.
+pub(super) fn integrated(previous: &Series, k: usize) -> Series {
+    let width = previous.degree + 1;
+    let scale = k as f64;
+    let mut response = previous.clone();
+    for i in 0..previous.n {
+        let u = previous.displacement(i);
+        let at = i * width;
+        response.u[at] = 0.0;
+        for j in 1..width {
+            response.u[at + j] = scale * u[j - 1] / j as f64;
+        }
+        for (v, &u) in response.v[at..at + width].iter_mut().zip(u) {
+            *v = scale * u;
+        }
+    }
+    response
+}
+
+impl Responses {
+    /// From rest in `rest` (K and C of the configuration, no load), one
+    /// Taylor series per element and power of s.
+    pub(super) fn make(rest: &System, elements: &[Element]) -> Responses {
+        let n = rest.load.len();
+        let zero = vec![0.0; n];
+        let mut series = Vec::with_capacity(POWERS * elements.len());
+        let (mut stroke, mut rate) = (Vec::new(), Vec::new());
+        let mut buffer = Vec::new();
+        for k in 0..POWERS {
+            for (f, el) in elements.iter().enumerate() {
+                let response = if k < 4 {
+                    let mut force = [0.0; 4];
+                    force[k] = 1.0;
+                    let forcing = Forcing {
+                        left: el.left,
+                        right: el.right,
+                        left_rate: el.left_rate,
+                        right_rate: el.right_rate,
+                        force,
+                    };
+                    Series::forced(
+                        rest,
+                        (&zero, &zero),
+                        (0.0, 0.0, 0.0),
+                        (1.0, 1.0),
+                        &[forcing],
+                    )
+                } else {
+                    integrated(&series[(k - 1) * elements.len() + f], k)
+                };
+                for other in elements {
+                    let (a, b) = (other.left, other.right);
+                    response.combine(&[(a, 1.0), (b, -1.0)], &[], &mut buffer);
+                    stroke.push(buffer.clone());
+                    response.combine(&[], &[(a, 1.0), (b, -1.0)], &mut buffer);
+                    rate.push(buffer.clone());
+                }
+                series.push(response);
+            }
+        }
+        Responses {
+            series,
+            stroke,
+            rate,
+        }
+    }
+
+    /// The weights w_r of the responses whose sum is the motion from rest
+    /// under x_f = Σ_k p_{f,k} s^k, `power(f)` = p_f.
+    pub(super) fn weights(&self, ne: usize, power: impl Fn(usize) -> [f64; POWERS]) -> Vec<f64> {
+        let mut w = vec![0.0; POWERS * ne];
+        for f in 0..ne {
+            for (k, p) in power(f).into_iter().enumerate() {
+                w[k * ne + f] = p;
+            }
+        }
+        w
+    }
+
+    /// Σ_r w_r (u, u̇)_r(s), added to (u, v): each floor's coefficients
+    /// against the powers of s, to the degree `degree` of the free motion
+    /// of the step, which carries it to the series' tolerance (the
+    /// responses' terms past it are as small as its own).
+    pub(super) fn add_state(
+        &self,
+        w: &[f64],
+        (s, degree): (f64, usize),
+        (u, v): (&mut [f64], &mut [f64]),
+    ) {
+        let mut p = [0.0; ORDER + 1];
+        poly::powers(s, &mut p);
+        let p = &p[..=degree.min(ORDER)];
+        for (series, &wr) in self.series.iter().zip(w) {
+            if wr == 0.0 {
+                continue;
+            }
+            for (x, c) in u.iter_mut().zip(series.u.chunks_exact(ORDER + 1)) {
+                *x += wr * poly::dot(&c[..p.len()], p);
+            }
+            for (x, c) in v.iter_mut().zip(series.v.chunks_exact(ORDER + 1)) {
+                *x += wr * poly::dot(&c[..p.len()], p);
+            }
+        }
+    }
+}
+
+impl AtNodes {
+    /// The responses to x_f = ℓ_j(s/h) at the nodes c_i h, from the
+    /// responses to s^k: ℓ_j(s/h) = Σ_k ℓ_{j,k} s^k ([`basis`]).
+    pub(super) fn of(responses: &Responses, ne: usize, h: f64) -> AtNodes {
+        let m = 3 * ne;
+        let mut stroke = DMatrix::zeros(m, m);
+        let mut rate = DMatrix::zeros(m, m);
+        let bases = [basis(0, h), basis(1, h), basis(2, h)];
+        let mut p = [0.0; ORDER + 1];
+        for (i, &c) in NODES.iter().enumerate() {
+            poly::powers(c * h, &mut p);
+            for k in 0..3 {
+                for f in 0..ne {
+                    for e in 0..ne {
+                        let row = (k * ne + f) * ne + e;
+                        let du = poly::dot(&responses.stroke[row], &p);
+                        let dv = poly::dot(&responses.rate[row], &p);
+                        for (j, b) in bases.iter().enumerate() {
+                            stroke[(i * ne + e, j * ne + f)] += b[k] * du;
+                            rate[(i * ne + e, j * ne + f)] += b[k] * dv;
+                        }
+                    }
+                }
+            }
+        }
+        AtNodes { stroke, rate }
+    }
+}
