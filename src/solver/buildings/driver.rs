@@ -38,7 +38,7 @@ use super::config::{Branch, Closed, Config};
 use super::contact_rk::{self, Contact, Taken, by_steps};
 use super::damper;
 use super::damper_collocation::Collocation;
-use super::energy::{NODES, RowEnergy, gauss_legendre};
+use super::energy::RowEnergy;
 use super::event_function::EventFunction;
 use super::layout::Layout;
 use super::link::{self, LinkResult};
@@ -50,7 +50,7 @@ use super::propagator::{Propagator, apply};
 use super::reach::Reach;
 use super::result::{Collapse, FloorPeaks, ForceHistory, PairImpact, PairResult, RowRun, RowTrace};
 use super::system::System;
-use super::taylor::{ORDER, Series};
+use super::taylor::Series;
 
 #[cfg(test)]
 mod cache_check;
@@ -59,9 +59,11 @@ mod quiet_check;
 mod ranges;
 mod rising;
 mod watch_pass;
+mod work;
 
 use ranges::{Ends, Probe};
 use watch_pass::WatchPass;
+use work::Balance;
 
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -70,8 +72,10 @@ pub struct RowOptions {
     pub duration: f64,
     /// Longest sub-step (s); default one radian of the fastest mode out of contact.
     pub max_substep: Option<f64>,
-    /// Take the energy balance ([`super::energy`]): every sub-step then goes
-    /// by the series, on which the integrals are taken.
+    /// Take the energy balance ([`super::energy`]): its integrals are taken
+    /// on every step, by quadrature on the series and in closed form on the
+    /// maps ([`super::propagator::WorkForms`]), so the run takes the same
+    /// steps as without it.
     pub energy: bool,
     /// Keep every floor's displacement at the end of every sub-step
     /// ([`super::result::RowTrace`]), for drawing the row in time.
@@ -224,7 +228,7 @@ struct Run<'a> {
     /// The stack at the end of the last quiet sub-step, with its ground
     /// (a, ȧ, σ); dropped whenever the state moves otherwise.
     stack: Option<((f64, f64, f64), Stack)>,
-    energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
+    energy: Option<Balance>,
     /// Suggested length of the next Runge–Kutta step in contact (0: none yet).
     next_contact_step: f64,
     /// The pairs' forces over time, when asked for.
@@ -327,14 +331,9 @@ pub fn run_row_cached(
         probes,
         pass: WatchPass::default(),
         stack: None,
-        energy: options.energy.then(|| {
-            let (x, w) = gauss_legendre(NODES);
-            let start = RowEnergy {
-                initial_kinetic,
-                ..RowEnergy::default()
-            };
-            (start, x, w)
-        }),
+        energy: options
+            .energy
+            .then(|| Balance::new(initial_kinetic, layout_links)),
         next_contact_step: 0.0,
         forces: options.forces.then(|| ForceHistory {
             pairs: vec![Vec::new(); n_pairs],
@@ -367,9 +366,7 @@ pub fn run_row_cached(
                 piece.t0 + (j + 1) as f64 * h
             };
             let clock = run.timed.then(Instant::now);
-            let cause = if run.energy.is_some() {
-                Some(Cause::Energy)
-            } else if run.config.any_contact() {
+            let cause = if run.config.any_contact() {
                 Some(Cause::Contact)
             } else if !run.layout.dampers.is_empty() {
                 Some(Cause::Damper)
@@ -586,6 +583,7 @@ impl Run<'_> {
         }
         #[cfg(test)]
         self.check_quiet(piece, h, (&u1, &v1));
+        self.work_on_map((a0, r0), &u1);
         self.spare.push(start);
         self.next = (
             std::mem::replace(&mut self.u, u1),
@@ -986,65 +984,6 @@ impl Run<'_> {
         self.buf = std::mem::take(c);
     }
 
-    /// The work terms of SPEC §6 on [0, end] of a Taylor step, by the
-    /// Gauss–Legendre rule ([`super::energy`]).
-    fn work_on(&mut self, series: &Series, end: f64) {
-        let n = self.layout.dofs;
-        let Some((mut e, x, w)) = self.energy.take() else {
-            return;
-        };
-        let mut u = vec![0.0; n];
-        let mut v = vec![0.0; n];
-        for (xi, wi) in x.iter().zip(&w) {
-            let s = 0.5 * end * (1.0 + xi);
-            let weight = 0.5 * end * wi;
-            series.state(s, &mut u, &mut v);
-            let ag = series.ground[..=ORDER]
-                .iter()
-                .rev()
-                .fold(0.0, |acc, &c| acc * s + c);
-            let mut damping = 0.0;
-            let mut input = 0.0;
-            for i in 0..n {
-                let cv: f64 = (0..n).map(|j| self.layout.damping[(i, j)] * v[j]).sum();
-                damping += self.layout.mass[i] * v[i] * cv;
-                input -= self.layout.mass[i] * v[i] * ag;
-            }
-            let mut spring = 0.0;
-            for (k, st) in self.layout.storeys.iter().enumerate() {
-                let d = self.layout.drift(st, &u);
-                let rate = self.layout.drift(st, &v);
-                let z = self.config.z(k, d, st.yield_drift);
-                spring += (st.alpha * st.stiffness * d + (1.0 - st.alpha) * st.stiffness * z
-                    - st.geometric * d)
-                    * rate;
-            }
-            // The joints' own elements, then the bumpers' (SPEC §14).
-            let mut contact = [0.0; 2];
-            for (pi, p) in self.layout.pairs.iter().enumerate() {
-                if let Some(closed) = &self.config.contact[pi] {
-                    let delta = u[p.left_dof] - u[p.right_dof] - self.layout.gaps[pi];
-                    let rate = v[p.left_dof] - v[p.right_dof];
-                    contact[usize::from(pi >= self.layout.hard)] +=
-                        closed.law.force(delta, rate).force * rate;
-                }
-            }
-            for (l, r) in self.layout.links.iter().zip(&mut self.links) {
-                let (a, b) = (l.pair.left_dof, l.pair.right_dof);
-                let rate = v[a] - v[b];
-                e.link += weight * l.force(u[a] - u[b], rate) * rate;
-                r.energy = r.energy.max(0.0) + weight * l.dissipation(rate);
-            }
-            e.damping += weight * damping;
-            e.input += weight * input;
-            e.spring += weight * spring;
-            e.contact += weight * contact[0];
-            e.bumper += weight * contact[1];
-        }
-        e.max_input = e.max_input.max(e.input.abs());
-        self.energy = Some((e, x, w));
-    }
-
     fn apply(&mut self, event: Event) {
         let events = &mut self.profile.events;
         match &event {
@@ -1149,7 +1088,7 @@ impl Run<'_> {
             }
             floors.push(list);
         }
-        let energy = self.energy.as_ref().map(|(e, _, _)| RowEnergy {
+        let energy = self.energy.as_ref().map(|b| RowEnergy {
             kinetic: 0.5
                 * self
                     .layout
@@ -1158,7 +1097,7 @@ impl Run<'_> {
                     .zip(&self.v)
                     .map(|(m, v)| m * v * v)
                     .sum::<f64>(),
-            ..*e
+            ..b.sums
         });
         let (mut pairs, mut forces) = (self.pairs, self.forces);
         let bumpers = pairs.split_off(self.layout.hard);

@@ -11,10 +11,13 @@
 //! with E_kin(0) the kinetic energy the floors start with (a type B pulse's
 //! ground moving under them, SPEC §9; 0 from rest).
 //!
-//! The integrals are taken on each Taylor step of the exact method by
-//! Gauss–Legendre quadrature: inside a step the motion is one analytic
-//! function (fixed configuration), so the rule converges geometrically, to
-//! rounding with [`NODES`] points on the steps the series allows.
+//! The integrals are taken on each Taylor or Runge–Kutta step of the exact
+//! method by Gauss–Legendre quadrature: inside a step the motion is one
+//! analytic function (fixed configuration), so the rule converges
+//! geometrically, to rounding with [`NODES`] points on the steps the series
+//! allows. On a map step they are closed forms of the state at its ends
+//! ([`super::propagator::WorkForms`]), so that a run with its balance takes
+//! the steps of one without it.
 
 use serde::{Deserialize, Serialize};
 

@@ -24,8 +24,6 @@ pub enum Cause {
     Peak,
     /// A floor pair is in contact (a contact phase).
     Contact,
-    /// The energy balance is asked for: every sub-step by the series.
-    Energy,
     /// The row has a fluid viscous damper (SPEC §14): its force is
     /// nonlinear at every instant, so no sub-step goes by the map.
     Damper,
@@ -37,7 +35,7 @@ pub enum Cause {
 
 /// Counts per [`Cause`], in its order.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct PerCause(pub [usize; 9]);
+pub struct PerCause(pub [usize; 8]);
 
 impl PerCause {
     pub fn add(&mut self, cause: Cause, count: usize) {
@@ -107,6 +105,6 @@ pub struct RowProfile {
 }
 
 /// Names of the causes, in [`Cause`]'s order, for tables.
-pub const CAUSES: [&str; 9] = [
-    "onset", "yield", "unload", "collapse", "peak", "contact", "energy", "damper", "fresh",
+pub const CAUSES: [&str; 8] = [
+    "onset", "yield", "unload", "collapse", "peak", "contact", "damper", "fresh",
 ];

@@ -18,7 +18,9 @@
 //! quiet test ([`super::bound`]) depend on the same data and are cached
 //! with it, and so does the stack's response to a jump of the ground
 //! ([`GroundJump`]), which carries a sub-step's end stack into the next
-//! piece.
+//! piece. A run that takes its energy balance asks, beside, for the
+//! quadratic forms of its integrals over the step ([`WorkForms`]), made on
+//! first request and kept with the map.
 
 use std::collections::HashMap;
 use std::time::Instant;
@@ -26,10 +28,13 @@ use std::time::Instant;
 use nalgebra::DMatrix;
 
 use super::bound::{Bounds, GroundJump, Watch};
+use super::layout::Layout;
 use super::system::System;
 
+mod energy;
 mod map;
 
+pub use energy::{DAMPING, FIRST_LINK, INPUT, WorkForms};
 pub use map::{Map, apply};
 
 /// Cache key: the branches, h and σ (as bits).
@@ -42,6 +47,8 @@ pub struct Propagator {
     /// Where each key's map is in `entries`.
     index: HashMap<Key, usize>,
     entries: Vec<(Map, Bounds, GroundJump)>,
+    /// The energy's forms of each entry, once asked for.
+    work_forms: Vec<Option<WorkForms>>,
     /// The key asked for last and its entry: a run asks for the same map
     /// sub-step after sub-step, which then costs a comparison of a few
     /// bytes instead of hashing the key.
@@ -50,7 +57,7 @@ pub struct Propagator {
     pub made: usize,
     /// Sub-steps taken with a cached map.
     pub used: usize,
-    /// Seconds spent making maps and their bounds.
+    /// Seconds spent making maps and their bounds, and the energy's forms.
     pub seconds: f64,
 }
 
@@ -112,6 +119,25 @@ impl Propagator {
         };
         let (map, bounds, jump) = &self.entries[at];
         (map, bounds, jump)
+    }
+
+    /// The energy balance's forms ([`WorkForms`]) over the step of the map
+    /// asked for last ([`Propagator::map`], for `system`), made on first
+    /// request.
+    pub fn last_work_forms(&mut self, system: &System, layout: &Layout) -> &WorkForms {
+        let ((_, h, sigma), at) = self.last.as_ref().expect("a map asked for first");
+        let at = *at;
+        if self.work_forms.len() < self.entries.len() {
+            self.work_forms.resize(self.entries.len(), None);
+        }
+        if self.work_forms[at].is_none() {
+            let clock = Instant::now();
+            let a = augmented(system, f64::from_bits(*sigma));
+            let forms = WorkForms::of(&a, layout, f64::from_bits(*h), layout.rate);
+            self.seconds += clock.elapsed().as_secs_f64();
+            self.work_forms[at] = Some(forms);
+        }
+        self.work_forms[at].as_ref().expect("made above")
     }
 
     /// Distinct maps held.

@@ -1,0 +1,200 @@
+//! The energy balance's terms step by step (SPEC §6 summed over buildings,
+//! §13; bumpers and links §14), when a run takes it
+//! ([`super::RowOptions::energy`]):
+//!
+//! - on a series or Runge–Kutta step, the integrals of the power of each
+//!   term by the Gauss–Legendre rule ([`super::super::energy`]): inside a
+//!   step the motion is one analytic function, so the rule converges
+//!   geometrically, to rounding with its 12 points;
+//! - on a map step, in closed form ([`super::super::propagator::WorkForms`]):
+//!   E_damp, E_in and each link's dashpot as quadratic forms of the state
+//!   at the start, the storeys' and the links' springs as the trapezoid of
+//!   a force linear in its stroke, (Δ₁ − Δ₀)(F₀ + F₁)/2; out of contact the
+//!   contact and bumper terms are zero.
+//!
+//! So a run with its balance takes the steps of a run without it, bit for
+//! bit; E_kin is taken from the state at the end ([`super::Run::finish`]).
+
+use super::super::energy::{NODES, RowEnergy, gauss_legendre};
+use super::super::layout::Storey;
+use super::super::propagator::{DAMPING, FIRST_LINK, INPUT};
+use super::super::taylor::{ORDER, Series};
+use super::Run;
+
+/// The sums of the balance so far, the quadrature rule, and the buffers
+/// of the map steps.
+#[derive(Debug, Clone)]
+pub(super) struct Balance {
+    pub(super) sums: RowEnergy,
+    /// The Gauss–Legendre rule on [−1, 1].
+    nodes: Vec<f64>,
+    weights: Vec<f64>,
+    /// Each link's dissipated power at one node.
+    dissipation: Vec<f64>,
+    /// w₀ = (u, u̇, a_g, ȧ_g, M⁻¹q) of a map step, its products w_i w_j, and
+    /// the forms' values.
+    state: Vec<f64>,
+    pairs: Vec<f64>,
+    values: Vec<f64>,
+}
+
+impl Balance {
+    /// Zero work, with the floors' kinetic energy at the start.
+    pub(super) fn new(initial_kinetic: f64, links: usize) -> Balance {
+        let (nodes, weights) = gauss_legendre(NODES);
+        Balance {
+            sums: RowEnergy {
+                initial_kinetic,
+                ..RowEnergy::default()
+            },
+            nodes,
+            weights,
+            dissipation: vec![0.0; links],
+            state: Vec::new(),
+            pairs: Vec::new(),
+            values: Vec::new(),
+        }
+    }
+}
+
+/// The work terms of one step, J: E_in, E_damp, E_spring, E_contact,
+/// E_bumper and E_link in the fields of [`RowEnergy`] (the others zero).
+fn add(sums: &mut RowEnergy, step: &RowEnergy, weight: f64) {
+    sums.input += weight * step.input;
+    sums.damping += weight * step.damping;
+    sums.spring += weight * step.spring;
+    sums.contact += weight * step.contact;
+    sums.bumper += weight * step.bumper;
+    sums.link += weight * step.link;
+}
+
+impl Run<'_> {
+    /// Storey `k`'s shear at drift Δ in the configuration in force:
+    /// V = αkΔ + (1 − α)k z − (P/h)Δ (SPEC §13, §15).
+    fn shear(&self, k: usize, s: &Storey, drift: f64) -> f64 {
+        let z = self.config.z(k, drift, s.yield_drift);
+        s.alpha * s.stiffness * drift + (1.0 - s.alpha) * s.stiffness * z - s.geometric * drift
+    }
+
+    /// The power of each term of the balance at (u, u̇) under ground
+    /// acceleration `ag` (W, in [`RowEnergy`]'s fields), and each link's
+    /// dissipated power c_l|Δv|^(α+1) into `dissipation`.
+    pub(super) fn power(
+        &self,
+        (u, v): (&[f64], &[f64]),
+        ag: f64,
+        dissipation: &mut [f64],
+    ) -> RowEnergy {
+        let layout = &self.layout;
+        let n = layout.dofs;
+        let mut p = RowEnergy::default();
+        for i in 0..n {
+            let cv: f64 = (0..n).map(|j| layout.damping[(i, j)] * v[j]).sum();
+            p.damping += layout.mass[i] * v[i] * cv;
+            p.input -= layout.mass[i] * v[i] * ag;
+        }
+        for (k, st) in layout.storeys.iter().enumerate() {
+            let d = layout.drift(st, u);
+            p.spring += self.shear(k, st, d) * layout.drift(st, v);
+        }
+        // The joints' own elements, then the bumpers' (SPEC §14).
+        for (pi, pair) in layout.pairs.iter().enumerate() {
+            if let Some(closed) = &self.config.contact[pi] {
+                let delta = u[pair.left_dof] - u[pair.right_dof] - layout.gaps[pi];
+                let rate = v[pair.left_dof] - v[pair.right_dof];
+                let work = closed.law.force(delta, rate).force * rate;
+                if pi < layout.hard {
+                    p.contact += work;
+                } else {
+                    p.bumper += work;
+                }
+            }
+        }
+        for (l, out) in layout.links.iter().zip(dissipation) {
+            let (a, b) = (l.pair.left_dof, l.pair.right_dof);
+            let rate = v[a] - v[b];
+            p.link += l.force(u[a] - u[b], rate) * rate;
+            *out = l.dissipation(rate);
+        }
+        p
+    }
+
+    /// The work terms on [0, end] of a Taylor or Runge–Kutta step, by the
+    /// Gauss–Legendre rule.
+    pub(super) fn work_on(&mut self, series: &Series, end: f64) {
+        let Some(mut b) = self.energy.take() else {
+            return;
+        };
+        let n = self.layout.dofs;
+        let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
+        for (xi, wi) in b.nodes.iter().zip(&b.weights) {
+            let s = 0.5 * end * (1.0 + xi);
+            let weight = 0.5 * end * wi;
+            series.state(s, &mut u, &mut v);
+            let ag = series.ground[..=ORDER]
+                .iter()
+                .rev()
+                .fold(0.0, |acc, &c| acc * s + c);
+            let p = self.power((&u, &v), ag, &mut b.dissipation);
+            add(&mut b.sums, &p, weight);
+            for (r, d) in self.links.iter_mut().zip(&b.dissipation) {
+                r.energy = r.energy.max(0.0) + weight * d;
+            }
+        }
+        b.sums.max_input = b.sums.max_input.max(b.sums.input.abs());
+        self.energy = Some(b);
+    }
+
+    /// The work terms of the map step from the current state, under ground
+    /// (a_g, ȧ_g) at its start, to displacements u₁, in closed form: the map
+    /// asked for last is this step's
+    /// ([`super::super::propagator::Propagator::last_work_forms`]). The end's
+    /// velocities enter only E_kin, taken at the run's end.
+    pub(super) fn work_on_map(&mut self, ground: (f64, f64), u1: &[f64]) {
+        let Some(mut b) = self.energy.take() else {
+            return;
+        };
+        let step = self.map_work(ground, u1, &mut b);
+        add(&mut b.sums, &step, 1.0);
+        for (r, d) in self.links.iter_mut().zip(&b.dissipation) {
+            r.energy = r.energy.max(0.0) + d;
+        }
+        b.sums.max_input = b.sums.max_input.max(b.sums.input.abs());
+        self.energy = Some(b);
+    }
+
+    /// The terms of [`Run::work_on_map`] (J), and each link's dissipated
+    /// energy into `b.dissipation`.
+    pub(super) fn map_work(
+        &mut self,
+        (a, rate): (f64, f64),
+        u1: &[f64],
+        b: &mut Balance,
+    ) -> RowEnergy {
+        let forms = self.propagator.last_work_forms(&self.system, &self.layout);
+        b.state.clear();
+        b.state.extend_from_slice(&self.u);
+        b.state.extend_from_slice(&self.v);
+        b.state.extend([a, rate]);
+        b.state.extend_from_slice(&self.system.load);
+        b.values.resize(forms.len(), 0.0);
+        forms.on(&b.state, &mut b.pairs, &mut b.values);
+        let mut step = RowEnergy {
+            damping: b.values[DAMPING],
+            input: b.values[INPUT],
+            ..RowEnergy::default()
+        };
+        let (u0, layout) = (&self.u, &self.layout);
+        for (k, st) in layout.storeys.iter().enumerate() {
+            let (d0, d1) = (layout.drift(st, u0), layout.drift(st, u1));
+            step.spring += 0.5 * (d1 - d0) * (self.shear(k, st, d0) + self.shear(k, st, d1));
+        }
+        for (k, (l, out)) in layout.links.iter().zip(&mut b.dissipation).enumerate() {
+            let (i, j) = (l.pair.left_dof, l.pair.right_dof);
+            let (s0, s1) = (u0[i] - u0[j], u1[i] - u1[j]);
+            *out = b.values[FIRST_LINK + k];
+            step.link += 0.5 * (s1 - s0) * l.link.stiffness * (s0 + s1) + *out;
+        }
+        step
+    }
+}
