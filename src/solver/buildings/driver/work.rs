@@ -19,7 +19,8 @@ use super::super::energy::{NODES, RowEnergy, gauss_legendre};
 use super::super::layout::Storey;
 use super::super::propagator::{DAMPING, FIRST_LINK, INPUT};
 use super::super::taylor::{ORDER, Series};
-use super::Run;
+use super::{Run, ground_at};
+use crate::model::buildings::ground::Piece;
 
 /// The sums of the balance so far, the quadrature rule, and the buffers
 /// of the map steps.
@@ -29,10 +30,10 @@ pub(super) struct Balance {
     /// The Gauss–Legendre rule on [−1, 1].
     nodes: Vec<f64>,
     weights: Vec<f64>,
-    /// Each link's dissipated power at one node.
+    /// Each link's dissipated energy over a map step.
     dissipation: Vec<f64>,
-    /// w₀ = (u, u̇, a_g, ȧ_g, M⁻¹q) of a map step, its products w_i w_j, and
-    /// the forms' values.
+    /// A map step's state measured from its rest point, its products
+    /// ([`super::super::propagator::WorkForms::on`]), and the forms' values.
     state: Vec<f64>,
     pairs: Vec<f64>,
     values: Vec<f64>,
@@ -71,7 +72,7 @@ fn add(sums: &mut RowEnergy, step: &RowEnergy, weight: f64) {
 impl Run<'_> {
     /// Storey `k`'s shear at drift Δ in the configuration in force:
     /// V = αkΔ + (1 − α)k z − (P/h)Δ (SPEC §13, §15).
-    fn shear(&self, k: usize, s: &Storey, drift: f64) -> f64 {
+    pub(super) fn shear(&self, k: usize, s: &Storey, drift: f64) -> f64 {
         let z = self.config.z(k, drift, s.yield_drift);
         s.alpha * s.stiffness * drift + (1.0 - s.alpha) * s.stiffness * z - s.geometric * drift
     }
@@ -125,9 +126,31 @@ impl Run<'_> {
         let Some(mut b) = self.energy.take() else {
             return;
         };
+        let mut dissipated = vec![0.0; self.layout.links.len()];
+        let rule = (&b.nodes[..], &b.weights[..]);
+        self.quadrature(series, end, rule, &mut b.sums, &mut dissipated);
+        for (r, d) in self.links.iter_mut().zip(&dissipated) {
+            r.energy = r.energy.max(0.0) + d;
+        }
+        b.sums.max_input = b.sums.max_input.max(b.sums.input.abs());
+        self.energy = Some(b);
+    }
+
+    /// The work terms on [0, end] of `series` by the Gauss–Legendre rule
+    /// (nodes, weights) on [−1, 1], added to `sums`, and each link's
+    /// dissipated energy to `dissipated`.
+    pub(super) fn quadrature(
+        &self,
+        series: &Series,
+        end: f64,
+        (nodes, weights): (&[f64], &[f64]),
+        sums: &mut RowEnergy,
+        dissipated: &mut [f64],
+    ) {
         let n = self.layout.dofs;
         let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
-        for (xi, wi) in b.nodes.iter().zip(&b.weights) {
+        let mut power = vec![0.0; dissipated.len()];
+        for (xi, wi) in nodes.iter().zip(weights) {
             let s = 0.5 * end * (1.0 + xi);
             let weight = 0.5 * end * wi;
             series.state(s, &mut u, &mut v);
@@ -135,26 +158,31 @@ impl Run<'_> {
                 .iter()
                 .rev()
                 .fold(0.0, |acc, &c| acc * s + c);
-            let p = self.power((&u, &v), ag, &mut b.dissipation);
-            add(&mut b.sums, &p, weight);
-            for (r, d) in self.links.iter_mut().zip(&b.dissipation) {
-                r.energy = r.energy.max(0.0) + weight * d;
+            let p = self.power((&u, &v), ag, &mut power);
+            add(sums, &p, weight);
+            for (d, p) in dissipated.iter_mut().zip(&power) {
+                *d += weight * p;
             }
         }
-        b.sums.max_input = b.sums.max_input.max(b.sums.input.abs());
-        self.energy = Some(b);
     }
 
-    /// The work terms of the map step from the current state, under ground
-    /// (a_g, ȧ_g) at its start, to displacements u₁, in closed form: the map
-    /// asked for last is this step's
+    /// The work terms of the map step of length h on `piece` from the
+    /// current state to displacements u₁, in closed form: the map asked
+    /// for last is this step's
     /// ([`super::super::propagator::Propagator::last_work_forms`]). The end's
     /// velocities enter only E_kin, taken at the run's end.
-    pub(super) fn work_on_map(&mut self, ground: (f64, f64), u1: &[f64]) {
+    pub(super) fn work_on_map(&mut self, piece: &Piece, h: f64, u1: &[f64]) {
         let Some(mut b) = self.energy.take() else {
             return;
         };
-        let step = self.map_work(ground, u1, &mut b);
+        let step = self.map_work(ground_at(piece, self.t), u1, &mut b);
+        #[cfg(test)]
+        if super::work_check::checking() {
+            self.check_work(piece, h, &step, &b.dissipation);
+        }
+        // The step's length serves the check alone.
+        #[cfg(not(test))]
+        let _ = h;
         add(&mut b.sums, &step, 1.0);
         for (r, d) in self.links.iter_mut().zip(&b.dissipation) {
             r.energy = r.energy.max(0.0) + d;
@@ -167,18 +195,19 @@ impl Run<'_> {
     /// energy into `b.dissipation`.
     pub(super) fn map_work(
         &mut self,
-        (a, rate): (f64, f64),
+        ground: (f64, f64),
         u1: &[f64],
         b: &mut Balance,
     ) -> RowEnergy {
         let forms = self.propagator.last_work_forms(&self.system, &self.layout);
-        b.state.clear();
-        b.state.extend_from_slice(&self.u);
-        b.state.extend_from_slice(&self.v);
-        b.state.extend([a, rate]);
-        b.state.extend_from_slice(&self.system.load);
         b.values.resize(forms.len(), 0.0);
-        forms.on(&b.state, &mut b.pairs, &mut b.values);
+        forms.on(
+            (&self.u, &self.v),
+            ground,
+            (&self.system.load, u1),
+            (&mut b.state, &mut b.pairs),
+            &mut b.values,
+        );
         let mut step = RowEnergy {
             damping: b.values[DAMPING],
             input: b.values[INPUT],

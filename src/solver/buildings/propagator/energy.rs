@@ -39,7 +39,25 @@
 //! the trapezoid (Δ₁ − Δ₀)(V₀ + V₁)/2, exact for a linear V; E_kin is taken
 //! from the state; the contact and bumper terms are zero.
 //!
-//! Per step the forms cost one product w_i w_j per pair i ≤ j, and one sum
+//! **Measured from a rest point.** After a storey yields the row swings
+//! about its residual drift: u and M⁻¹q are then large and their effects
+//! on u̇ cancel, and a quadratic form of w would lose the digits of that
+//! cancellation squared. As in [`super::super::bound::Equilibrium`], any
+//! w* with 𝒜w* = 0 stays put, w* = (u*, 0, a*, 0, K u* + a* 1) (K here
+//! M⁻¹K, a* = a_g on a line, σ = 0, else 0), so w(s) = w* + e^{𝒜s}δ with
+//! δ = w₀ − w*, taking u* = K⁻¹(M⁻¹q − a* 1), the static displacement (none
+//! where K is singular). w* moves no floor, so the damping and dashpot
+//! integrals are δᵀWδ; E_in's a_g holds a* beside δ's part, whose work is
+//! −a* Σ m_i ∫ u̇_i ds = −a* Σ m_i (u_i(h) − u_i(0)):
+//!
+//! ```text
+//! E_in = δᵀW_in δ − a* Σ m_i (u_i(h) − u_i(0)).
+//! ```
+//!
+//! δ's last part, M⁻¹q − K u* − a* 1, is the solve's residual as computed,
+//! so w* + δ = w₀ whatever the rounding of u*.
+//!
+//! Per step the forms cost one product δ_i δ_j per pair i ≤ j, and one sum
 //! of as many terms per form ([`WorkForms::on`]).
 
 use nalgebra::DMatrix;
@@ -64,6 +82,13 @@ pub struct WorkForms {
     size: usize,
     /// The forms one after another, each size (size + 1)/2 long.
     packed: Vec<f64>,
+    /// M⁻¹K and its inverse (none where K is singular), for the rest point.
+    stiffness: DMatrix<f64>,
+    inverse: Option<DMatrix<f64>>,
+    /// Whether the ground's a_g stays put on the piece (σ = 0).
+    line: bool,
+    /// The floors' masses (kg).
+    mass: Vec<f64>,
 }
 
 /// The matrices Q of the integrands above on w = (u, u̇, a_g, ȧ_g, M⁻¹q), in
@@ -143,23 +168,68 @@ impl WorkForms {
                 packed.extend((i + 1..d).map(|j| 2.0 * w[(i, j)]));
             }
         }
-        WorkForms { size: d, packed }
+        let n = layout.dofs;
+        let stiffness = DMatrix::from_fn(n, n, |i, j| -a[(n + i, j)]);
+        let inverse = stiffness
+            .clone()
+            .try_inverse()
+            .filter(|k| k.iter().all(|x| x.is_finite()));
+        WorkForms {
+            size: d,
+            packed,
+            stiffness,
+            inverse,
+            line: a[(2 * n + 1, 2 * n)] == 0.0,
+            mass: layout.mass.clone(),
+        }
     }
 
-    /// The forms' values w₀ᵀWw₀ at the step's start w₀ = (u, u̇, a_g, ȧ_g,
-    /// M⁻¹q), into `out` (one per form), with `pairs` a buffer for the
-    /// products w_i w_j.
-    pub fn on(&self, w: &[f64], pairs: &mut Vec<f64>, out: &mut [f64]) {
-        let d = self.size;
-        debug_assert_eq!(w.len(), d);
+    /// The integrals over the step (J, one per form, into `out`) from its
+    /// start (u, u̇) under ground (a_g, ȧ_g) with load M⁻¹q, to
+    /// displacements `u1`: δᵀWδ, and E_in's part of the rest point (module
+    /// doc). `w` and `pairs` are buffers for δ and the products δ_i δ_j.
+    pub fn on(
+        &self,
+        (u, v): (&[f64], &[f64]),
+        (a, rate): (f64, f64),
+        (load, u1): (&[f64], &[f64]),
+        (w, pairs): (&mut Vec<f64>, &mut Vec<f64>),
+        out: &mut [f64],
+    ) {
+        let (d, n) = (self.size, self.mass.len());
+        let rest = if self.line { a } else { 0.0 };
+        w.clear();
+        w.resize(d, 0.0);
+        let (us, tail) = w.split_at_mut(n);
+        let residual = &mut tail[n + 2..];
+        // u* = K⁻¹(M⁻¹q − a* 1), then the residual M⁻¹q − a* 1 − K u*.
+        for (r, q) in residual.iter_mut().zip(load) {
+            *r = q - rest;
+        }
+        if let Some(inverse) = &self.inverse {
+            for (i, us) in us.iter_mut().enumerate() {
+                *us = (0..n).map(|j| inverse[(i, j)] * residual[j]).sum();
+            }
+            for (i, r) in residual.iter_mut().enumerate() {
+                *r -= (0..n).map(|j| self.stiffness[(i, j)] * us[j]).sum::<f64>();
+            }
+        }
+        for (x, u) in us.iter_mut().zip(u) {
+            *x = u - *x;
+        }
+        tail[..n].copy_from_slice(v);
+        tail[n] = a - rest;
+        tail[n + 1] = rate;
         pairs.clear();
         for i in 0..d {
             pairs.extend(w[i..].iter().map(|x| w[i] * x));
         }
         let len = pairs.len();
-        for (form, out) in self.packed.chunks_exact(len).zip(out) {
+        for (form, out) in self.packed.chunks_exact(len).zip(out.iter_mut()) {
             *out = dot(form, pairs);
         }
+        let moved: f64 = (0..n).map(|i| self.mass[i] * (u1[i] - u[i])).sum();
+        out[INPUT] -= rest * moved;
     }
 
     /// How many forms: 2 and one per link.
@@ -189,4 +259,134 @@ fn dot(x: &[f64], y: &[f64]) -> f64 {
         }
     }
     sums.iter().sum::<f64>() + tail
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{DAMPING, INPUT, WorkForms};
+    use crate::model::buildings::parse;
+    use crate::solver::buildings::config::Config;
+    use crate::solver::buildings::layout::Layout;
+    use crate::solver::buildings::propagator::augmented;
+    use crate::solver::buildings::system::System;
+
+    /// Two one-storey buildings that never touch: two independent SDOF
+    /// oscillators (SPEC §13's reduction), with Rayleigh damping c = 2ξmω.
+    fn pair() -> Layout {
+        let text = "model = \"kelvin\"\nrestitution = 0.5\n\
+             [[building]]\nname = \"soft\"\nstoreys = 1\nmass = 2e5\nstiffness = 3e7\nheight = 3\ndamping = 0.05\n\
+             [[building]]\nname = \"stiff\"\nstoreys = 1\nmass = 1e5\nstiffness = 8e7\nheight = 3\ndamping = 0.12\n\
+             [[joint]]\ngap = \"inf\"\nstiffness = 1e10\n";
+        Layout::of(&parse("two.toml", text).expect("a row"))
+    }
+
+    /// ∫₀ʰ e^{−βt} (1, cos γt, sin γt) dt.
+    fn exponential_integrals(beta: f64, gamma: f64, h: f64) -> [f64; 3] {
+        let (e, (s, c)) = ((-beta * h).exp(), (gamma * h).sin_cos());
+        let r = beta * beta + gamma * gamma;
+        [
+            (1.0 - e) / beta,
+            (e * (-beta * c + gamma * s) + beta) / r,
+            (e * (-beta * s - gamma * c) + gamma) / r,
+        ]
+    }
+
+    /// Per floor: (m, c, ω, ζ, ω_d).
+    fn oscillators(layout: &Layout) -> Vec<(f64, f64, f64, f64, f64)> {
+        (0..2)
+            .map(|i| {
+                let m = layout.mass[i];
+                let c = m * layout.damping[(i, i)];
+                let w = (layout.storeys[i].stiffness / m).sqrt();
+                let zeta = c / (2.0 * m * w);
+                (m, c, w, zeta, w * (1.0 - zeta * zeta).sqrt())
+            })
+            .collect()
+    }
+
+    /// Free damped vibration from (u₀, u̇₀): u̇ = e^{−ζωt}(P cos ω_d t +
+    /// R sin ω_d t) with P = u̇₀, R = −u₀ω_d − ζω(u̇₀ + ζωu₀)/ω_d, so
+    /// ∫ c u̇² dt = c[(P² + R²)/2 I₀ + (P² − R²)/2 I_c + PR I_s] with the
+    /// integrals of e^{−2ζωt} against 1, cos 2ω_d t, sin 2ω_d t. Over one
+    /// sub-step and over 3 s (several periods, many squarings), E_damp's
+    /// form gives it to 1e-12, and E_in's is zero without ground.
+    #[test]
+    fn the_damping_form_is_the_closed_form_of_free_vibration() {
+        let layout = pair();
+        let system = System::of(&layout, &Config::at_rest(2, layout.pairs.len()));
+        let a = augmented(&system, 0.0);
+        let (u0, v0) = ([0.012, -0.004], [-0.05, 0.21]);
+        for h in [1.0 / layout.rate, 3.0] {
+            let forms = WorkForms::of(&a, &layout, h, layout.rate);
+            let mut values = vec![0.0; forms.len()];
+            let buffers = (&mut Vec::new(), &mut Vec::new());
+            let zero = [0.0; 2];
+            forms.on((&u0, &v0), (0.0, 0.0), (&zero, &u0), buffers, &mut values);
+            let mut want = 0.0;
+            for (i, &(_, c, omega, zeta, wd)) in oscillators(&layout).iter().enumerate() {
+                let p = v0[i];
+                let r = -u0[i] * wd - zeta * omega * (v0[i] + zeta * omega * u0[i]) / wd;
+                let [i0, ic, is] = exponential_integrals(2.0 * zeta * omega, 2.0 * wd, h);
+                want += c * (0.5 * (p * p + r * r) * i0 + 0.5 * (p * p - r * r) * ic + p * r * is);
+            }
+            let got = values[DAMPING];
+            assert!(
+                (got - want).abs() < 1e-12 * want,
+                "h {h}: {got} against {want}"
+            );
+            assert!(values[INPUT].abs() < 1e-15 * want, "{}", values[INPUT]);
+        }
+    }
+
+    /// From rest under a constant ground acceleration a: u̇ = −(a/ω_d)
+    /// e^{−ζωt} sin ω_d t, so E_in = −∫ m u̇ a dt = (m a²/ω_d) ∫ e^{−ζωt}
+    /// sin ω_d t dt; E_in's form (measured from the static displacement
+    /// −a/ω², with the rest point's part from the end's u(h)) gives it to
+    /// 1e-12, and the damping form c(a/ω_d)² ∫ e^{−2ζωt} sin² ω_d t dt the
+    /// same.
+    #[test]
+    fn the_input_form_is_the_closed_form_of_a_step_in_the_ground() {
+        let layout = pair();
+        let system = System::of(&layout, &Config::at_rest(2, layout.pairs.len()));
+        let a = augmented(&system, 0.0);
+        let ground = 2.5;
+        for h in [1.0 / layout.rate, 3.0] {
+            let forms = WorkForms::of(&a, &layout, h, layout.rate);
+            // u(h) = −(a/ω²)(1 − e^{−ζωh}(cos ω_d h + (ζω/ω_d) sin ω_d h)).
+            let end: Vec<f64> = oscillators(&layout)
+                .iter()
+                .map(|&(_, _, omega, zeta, wd)| {
+                    let decay = (-zeta * omega * h).exp();
+                    let (s, c) = (wd * h).sin_cos();
+                    -ground / (omega * omega) * (1.0 - decay * (c + zeta * omega / wd * s))
+                })
+                .collect();
+            let mut values = vec![0.0; forms.len()];
+            let buffers = (&mut Vec::new(), &mut Vec::new());
+            let zero = [0.0; 2];
+            forms.on(
+                (&zero, &zero),
+                (ground, 0.0),
+                (&zero, &end),
+                buffers,
+                &mut values,
+            );
+            let (mut input, mut damping) = (0.0, 0.0);
+            for &(m, c, omega, zeta, wd) in &oscillators(&layout) {
+                let [_, _, is] = exponential_integrals(zeta * omega, wd, h);
+                input += m * ground * ground / wd * is;
+                let [i0, ic, _] = exponential_integrals(2.0 * zeta * omega, 2.0 * wd, h);
+                damping += c * (ground / wd).powi(2) * 0.5 * (i0 - ic);
+            }
+            let (gi, gd) = (values[INPUT], values[DAMPING]);
+            assert!(
+                (gi - input).abs() < 1e-12 * input,
+                "h {h}: {gi} against {input}"
+            );
+            assert!(
+                (gd - damping).abs() < 1e-12 * damping,
+                "h {h}: {gd} against {damping}"
+            );
+        }
+    }
 }
