@@ -66,17 +66,6 @@ mod work_check;
 use ranges::{Ends, Probe};
 use watch_pass::WatchPass;
 use work::Balance;
-#[cfg(test)]
-use work_check::series_only;
-
-/// Whether every sub-step goes by the series: in tests, to take the
-/// balance the way it was taken before the map steps carried it
-/// ([`work_check`]); never otherwise.
-#[cfg(not(test))]
-#[inline(always)]
-fn series_only() -> bool {
-    false
-}
 
 /// Knobs of a row run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -90,6 +79,10 @@ pub struct RowOptions {
     /// maps ([`super::propagator::WorkForms`]), so the run takes the same
     /// steps as without it.
     pub energy: bool,
+    /// Take every sub-step by the series, never by the cached map: the
+    /// reference the map path is checked against (slower, and the same
+    /// motion to round-off).
+    pub series_only: bool,
     /// Keep every floor's displacement at the end of every sub-step
     /// ([`super::result::RowTrace`]), for drawing the row in time.
     pub trace: bool,
@@ -108,6 +101,7 @@ impl RowOptions {
             duration,
             max_substep: None,
             energy: false,
+            series_only: false,
             trace: false,
             forces: false,
             profile: false,
@@ -383,8 +377,8 @@ pub fn run_row_cached(
                 Some(Cause::Contact)
             } else if !run.layout.dampers.is_empty() {
                 Some(Cause::Damper)
-            } else if series_only() {
-                Some(Cause::Fresh)
+            } else if options.series_only {
+                Some(Cause::SeriesOnly)
             } else {
                 run.quiet_step(&piece, h).err()
             };

@@ -31,11 +31,14 @@ pub enum Cause {
     /// [`super::driver::FRESH`] times in this run: over so few sub-steps a
     /// map costs more than the series.
     Fresh,
+    /// Every sub-step by the series was asked for
+    /// ([`super::RowOptions::series_only`]).
+    SeriesOnly,
 }
 
 /// Counts per [`Cause`], in its order.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct PerCause(pub [usize; 8]);
+pub struct PerCause(pub [usize; 9]);
 
 impl PerCause {
     pub fn add(&mut self, cause: Cause, count: usize) {
@@ -105,6 +108,14 @@ pub struct RowProfile {
 }
 
 /// Names of the causes, in [`Cause`]'s order, for tables.
-pub const CAUSES: [&str; 8] = [
-    "onset", "yield", "unload", "collapse", "peak", "contact", "damper", "fresh",
+pub const CAUSES: [&str; 9] = [
+    "onset",
+    "yield",
+    "unload",
+    "collapse",
+    "peak",
+    "contact",
+    "damper",
+    "fresh",
+    "series-only",
 ];

@@ -8,9 +8,9 @@
 //!   to 1e-12 of the energy the row holds at the step's start (or of the
 //!   step's largest term, if larger): the springs' terms are differences
 //!   of stored energy, whose rounding is relative to it;
-//! - a run under [`series_only`] takes every sub-step by the series, the
-//!   way the balance was taken before the closed forms, to compare whole
-//!   runs' balances against.
+//! - a run with [`super::RowOptions::series_only`] takes every sub-step by
+//!   the series, the way the balance was taken before the closed forms, to
+//!   compare whole runs' balances against.
 
 use std::cell::Cell;
 
@@ -35,18 +35,12 @@ pub(super) struct Checked {
 
 thread_local! {
     static CHECKING: Cell<bool> = const { Cell::new(false) };
-    static SERIES_ONLY: Cell<bool> = const { Cell::new(false) };
     static CHECKED: Cell<Checked> = Cell::new(Checked::default());
 }
 
 /// Whether map steps are checked against the series on this thread.
 pub(super) fn checking() -> bool {
     CHECKING.with(Cell::get)
-}
-
-/// Whether runs on this thread take every sub-step by the series.
-pub(super) fn series_only() -> bool {
-    SERIES_ONLY.with(Cell::get)
 }
 
 impl Run<'_> {
@@ -136,7 +130,7 @@ impl Run<'_> {
 
 #[cfg(test)]
 mod tests {
-    use super::{CHECKED, CHECKING, Checked, SERIES_ONLY};
+    use super::{CHECKED, CHECKING, Checked};
     use crate::model::buildings::matrices::default_tail;
     use crate::model::buildings::{self, Ground, Row};
     use crate::model::simulated::Simulation;
@@ -157,22 +151,19 @@ mod tests {
 
     /// `row` under synthetic:2000 at `scale`, for the record's length and
     /// the row's tail (as `run --buildings`), with its balance or without.
-    fn run_with(row: &Row, scale: f64, energy: bool) -> RowRun {
+    fn run_with(row: &Row, scale: f64, (energy, series_only): (bool, bool)) -> RowRun {
         let record = Simulation::synthetic("synthetic:2000", 2000).expect("a record");
         let ground = Ground::from_record(&record, scale);
         let options = RowOptions {
             energy,
+            series_only,
             ..RowOptions::lasting(ground.end() + default_tail(row))
         };
         run_row(row, &ground, &options).expect("runs")
     }
 
     fn run(row: &Row, scale: f64) -> RowRun {
-        run_with(row, scale, true)
-    }
-
-    fn run_without(row: &Row, scale: f64) -> RowRun {
-        run_with(row, scale, false)
+        run_with(row, scale, (true, false))
     }
 
     /// On [`CASES`]' every map step the closed forms give the series'
@@ -208,7 +199,7 @@ mod tests {
         for (name, scale) in CASES {
             let row = buildings::load(name).expect("shipped");
             let new = run(&row, scale);
-            let bare = run_without(&row, scale);
+            let bare = run_with(&row, scale, (false, false));
             assert_eq!(new.final_displacement, bare.final_displacement);
             assert_eq!(new.final_velocity, bare.final_velocity);
             // By their printing, exact for floats, where an open impact's
@@ -219,9 +210,7 @@ mod tests {
                 (new.map_steps, new.series_steps),
                 (bare.map_steps, bare.series_steps)
             );
-            SERIES_ONLY.with(|c| c.set(true));
-            let old = run(&row, scale);
-            SERIES_ONLY.with(|c| c.set(false));
+            let old = run_with(&row, scale, (true, true));
             assert_eq!(old.map_steps, 0, "{name}");
             assert!(new.map_steps > 100, "{name} {scale}: {}", new.map_steps);
             let (e, f) = (new.energy.expect("asked"), old.energy.expect("asked"));
