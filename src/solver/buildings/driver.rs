@@ -863,7 +863,7 @@ impl Run<'_> {
         reach.set(series, *end);
         self.watched_events(|e, g| {
             // g cannot turn positive on the step: first_rise finds nothing.
-            if reach.upper(series, (&g.on_u, &g.on_v), g.constant) < 0.0 {
+            if reach.upper((&g.on_u, &g.on_v), g.constant) < 0.0 {
                 return;
             }
             g.on(series, &mut c);
@@ -897,13 +897,13 @@ impl Run<'_> {
             // |u_i| and |u̇_i| cannot pass their peaks on the step ([`Reach`]),
             // or their polynomials' bounds decide.
             let u = series.displacement(i);
-            if self.reach.magnitude(series, &[(i, 1.0)]) > env.displacement[i]
+            if self.reach.magnitude(&[(i, 1.0)]) > env.displacement[i]
                 && poly::magnitude_bound(u, end) > env.displacement[i]
             {
                 raise(&mut env.displacement[i], poly::max_abs(u, end));
             }
             let v = series.velocity(i);
-            if self.reach.speed(series, i) > env.velocity[i]
+            if self.reach.speed(i) > env.velocity[i]
                 && poly::magnitude_bound(v, end) > env.velocity[i]
             {
                 raise(&mut env.velocity[i], poly::max_abs(v, end));
@@ -938,7 +938,7 @@ impl Run<'_> {
             let du = [(s.upper, 1.0), (s.lower.unwrap_or(s.upper), -1.0)];
             let terms = if s.lower.is_some() { &du[..] } else { &du[..1] };
             // |Δ| cannot pass its peak on the step ([`Reach`]).
-            if reach.magnitude(series, terms) <= env.drift[k] {
+            if reach.magnitude(terms) <= env.drift[k] {
                 continue;
             }
             series.combine(terms, &[], c);
@@ -948,7 +948,7 @@ impl Run<'_> {
         }
         for (k, p) in self.layout.facing.iter().enumerate() {
             let terms = [(p.left_dof, 1.0), (p.right_dof, -1.0)];
-            if reach.upper(series, (&terms, &[]), 0.0) <= env.relative[k] {
+            if reach.upper((&terms, &[]), 0.0) <= env.relative[k] {
                 continue;
             }
             series.combine(&terms, &[], c);
@@ -963,7 +963,22 @@ impl Run<'_> {
             let (a, b) = (p.left_dof, p.right_dof);
             series.combine(&[(a, 1.0), (b, -1.0)], &[], c);
             c[0] -= d;
-            let penetration = poly::max(c, end);
+            // Without a force history, a step's largest penetration and
+            // force are located only where their upper bounds on the step
+            // (the quadratic part exactly, the rest by Σ|c_k|s^k) pass the
+            // impact's peaks so far.
+            let last = self.pairs[pi]
+                .impacts
+                .last()
+                .filter(|_| self.forces.is_none());
+            let passes = |p: &[f64], peak: fn(&PairImpact) -> f64| {
+                last.is_none_or(|last| poly::upper_bound(p, end) > peak(last))
+            };
+            let penetration = if passes(c, |l| l.max_penetration) {
+                poly::max(c, end)
+            } else {
+                f64::NEG_INFINITY
+            };
             let dd = &mut self.buf2;
             series.combine(&[], &[(a, 1.0), (b, -1.0)], dd);
             let law = &closed.law;
@@ -976,7 +991,11 @@ impl Run<'_> {
                     })
                     .collect(),
             };
-            let (at, f) = poly::argmax(&force, end);
+            let (at, f) = if passes(&force, |l| l.max_force) {
+                poly::argmax(&force, end)
+            } else {
+                (0.0, f64::NEG_INFINITY)
+            };
             if let Some(history) = self.forces.as_mut() {
                 // The step's start, its largest force, its end.
                 history.push(pi, self.t, force[0]);

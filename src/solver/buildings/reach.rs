@@ -33,12 +33,14 @@ pub type Terms<'a> = &'a [(usize, f64)];
 /// Relative allowance for the round-off of the reaches and of q(0).
 const ROUNDING: f64 = 1e-12;
 
-/// R_u and R_v of every floor over [0, s] of one step, reused from step
-/// to step.
+/// R_u and R_v of every floor over [0, s] of one step, with u_0 and u̇_0
+/// (where they start), reused from step to step.
 #[derive(Debug, Clone, Default)]
 pub struct Reach {
     u: Vec<f64>,
     v: Vec<f64>,
+    start_u: Vec<f64>,
+    start_v: Vec<f64>,
 }
 
 impl Reach {
@@ -56,20 +58,25 @@ impl Reach {
         self.u.extend((0..n).map(|i| reach(series.displacement(i))));
         self.v.clear();
         self.v.extend((0..n).map(|i| reach(series.velocity(i))));
+        self.start_u.clear();
+        self.start_u
+            .extend((0..n).map(|i| series.displacement(i)[0]));
+        self.start_v.clear();
+        self.start_v.extend((0..n).map(|i| series.velocity(i)[0]));
     }
 
     /// An upper bound over the step of q = Σ w_i u_i + Σ w'_i u̇_i + c
     /// (terms on u, terms on u̇, the constant), from its value at the start.
-    pub fn upper(&self, series: &Series, (on_u, on_v): (Terms, Terms), constant: f64) -> f64 {
+    pub fn upper(&self, (on_u, on_v): (Terms, Terms), constant: f64) -> f64 {
         let (mut start, mut size, mut reach) = (constant, constant.abs(), 0.0);
         for &(i, w) in on_u {
-            let x = w * series.displacement(i)[0];
+            let x = w * self.start_u[i];
             start += x;
             size += x.abs();
             reach += w.abs() * self.u[i];
         }
         for &(i, w) in on_v {
-            let x = w * series.velocity(i)[0];
+            let x = w * self.start_v[i];
             start += x;
             size += x.abs();
             reach += w.abs() * self.v[i];
@@ -78,18 +85,18 @@ impl Reach {
     }
 
     /// An upper bound over the step of |u̇_i|.
-    pub fn speed(&self, series: &Series, i: usize) -> f64 {
-        let start = series.velocity(i)[0].abs();
+    pub fn speed(&self, i: usize) -> f64 {
+        let start = self.start_v[i].abs();
         start + self.v[i] + ROUNDING * (start + self.v[i])
     }
 
     /// An upper bound over the step of |q|, q as in [`Reach::upper`] with
     /// terms on u alone.
-    pub fn magnitude(&self, series: &Series, on_u: Terms) -> f64 {
+    pub fn magnitude(&self, on_u: Terms) -> f64 {
         let negated: [(usize, f64); 2] =
             std::array::from_fn(|k| on_u.get(k).map_or((0, 0.0), |&(i, w)| (i, -w)));
-        let up = self.upper(series, (on_u, &[]), 0.0);
-        let down = self.upper(series, (&negated[..on_u.len().min(2)], &[]), 0.0);
+        let up = self.upper((on_u, &[]), 0.0);
+        let down = self.upper((&negated[..on_u.len().min(2)], &[]), 0.0);
         up.max(down)
     }
 }
@@ -133,7 +140,7 @@ mod tests {
                 let du = [(s.upper, 1.0), (s.lower.unwrap_or(s.upper), -1.0)];
                 let terms = if s.lower.is_some() { &du[..] } else { &du[..1] };
                 series.combine(terms, &[], &mut c);
-                let top = reach.magnitude(&series, terms);
+                let top = reach.magnitude(terms);
                 assert!(poly::magnitude_bound(&c, end) <= top);
                 for p in 0..=200 {
                     assert!(poly::eval(&c, end * f64::from(p) / 200.0).abs() <= top);
@@ -143,14 +150,14 @@ mod tests {
             for p in &layout.facing {
                 let terms = [(p.left_dof, 1.0), (p.right_dof, -1.0)];
                 series.combine(&terms, &[], &mut c);
-                let top = reach.upper(&series, (&terms, &[]), 0.0);
+                let top = reach.upper((&terms, &[]), 0.0);
                 assert!(poly::upper_bound(&c, end) <= top);
                 checked += 1;
             }
             for i in 0..n {
-                let top = reach.speed(&series, i);
+                let top = reach.speed(i);
                 assert!(poly::magnitude_bound(series.velocity(i), end) <= top);
-                let top = reach.magnitude(&series, &[(i, 1.0)]);
+                let top = reach.magnitude(&[(i, 1.0)]);
                 assert!(poly::magnitude_bound(series.displacement(i), end) <= top);
                 checked += 1;
             }

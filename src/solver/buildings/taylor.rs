@@ -90,13 +90,13 @@ pub struct Series {
 
 /// The buffers of [`Series::fill`]'s recurrence, kept so that a run's
 /// thousands of steps allocate nothing: the coefficients order by order
-/// (u_k of every floor side by side), ü's coefficient being summed, and
-/// each product's δ_k and δ̇_k. They hold nothing between fills: a clone
-/// starts empty.
+/// ((u_k, u̇_k) of every floor side by side, so that a row of (M⁻¹K, M⁻¹C)
+/// reads both of a floor's in one place), ü's coefficient being summed,
+/// and each product's δ_k and δ̇_k. They hold nothing between fills: a
+/// clone starts empty.
 #[derive(Debug, Default)]
 pub struct Workspace {
-    u: Vec<f64>,
-    v: Vec<f64>,
+    state: Vec<[f64; 2]>,
     acc: Vec<f64>,
     delta: Vec<f64>,
     rate_d: Vec<f64>,
@@ -114,9 +114,10 @@ impl Workspace {
     /// the buffers are grown, never cleared.
     fn size(&mut self, n: usize, products: usize, top: usize) {
         let w = top + 1;
+        if self.state.len() < w * n {
+            self.state.resize(w * n, [0.0; 2]);
+        }
         for (buffer, len) in [
-            (&mut self.u, w * n),
-            (&mut self.v, w * n),
             (&mut self.acc, n),
             (&mut self.delta, products * w),
             (&mut self.rate_d, products * w),
@@ -226,8 +227,9 @@ impl Series {
     /// [0, want].
     ///
     /// The recurrence runs order by order on the [`Workspace`]'s columns
-    /// (all floors' coefficient k side by side), so that u_{k+1} = u̇_k/(k+1)
-    /// and the norms of the test run over contiguous memory; the
+    /// (all floors' (u_k, u̇_k) side by side), so that u_{k+1} = u̇_k/(k+1),
+    /// each row of (M⁻¹K, M⁻¹C) and the norms of the test run over
+    /// contiguous memory; the
     /// coefficients are then written out floor by floor. Each sum is taken
     /// in the same order as floor by floor: the series is the same to the
     /// bit.
@@ -248,43 +250,52 @@ impl Series {
         let work = &mut self.work;
         work.size(n, products.len(), top);
         let Workspace {
-            u,
-            v,
+            state,
             acc,
             delta,
             rate_d,
         } = work;
-        u[..n].copy_from_slice(u0);
-        v[..n].copy_from_slice(v0);
+        for ((x, &u), &v) in state[..n].iter_mut().zip(u0).zip(v0) {
+            *x = [u, v];
+        }
         // max_i |u_k,i| / scale_u against max_i |u̇_k,i| / scale_v.
-        let norm = |u: &[f64], v: &[f64], k: usize| {
-            let column = k * n..(k + 1) * n;
-            let nu = u[column.clone()].iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale.0;
-            let nv = v[column].iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale.1;
-            nu.max(nv)
+        let norm = |column: &[[f64; 2]]| {
+            let (nu, nv) = column.iter().fold((0.0f64, 0.0f64), |(nu, nv), &[u, v]| {
+                (nu.max(u.abs()), nv.max(v.abs()))
+            });
+            (nu / scale.0).max(nv / scale.1)
         };
         let w = top + 1;
         let mut degree = top;
         // The norm of order k, kept from the step before (the test asks for
         // orders k and k + 1).
-        let mut last = norm(u, v, 0);
+        let mut last = norm(&state[..n]);
         for k in 0..top {
-            let (uk, vk) = (&u[k * n..(k + 1) * n], &v[k * n..(k + 1) * n]);
-            for (i, acc) in acc[..n].iter_mut().enumerate() {
-                let mut s = -g[k];
+            let (done, next) = state.split_at_mut((k + 1) * n);
+            let (column, next) = (&done[k * n..], &mut next[..n]);
+            let ground_k = -g[k];
+            for ((acc, row), &load) in acc[..n].iter_mut().zip(system.rows()).zip(&system.load) {
+                let mut s = ground_k;
                 if k == 0 {
-                    s += system.load[i];
+                    s += load;
                 }
-                for &(j, kij, cij) in system.row(i) {
-                    s -= kij * uk[j] + cij * vk[j];
+                for &(j, kij, cij) in row {
+                    let [uj, vj] = column[j];
+                    s -= kij * uj + cij * vj;
                 }
                 *acc = s;
             }
             for (pi, p) in products.iter().enumerate() {
                 let row = pi * w;
-                delta[row + k] = uk[p.left] - uk[p.right] - if k == 0 { p.gap } else { 0.0 };
-                rate_d[row + k] = vk[p.left] - vk[p.right];
-                let conv: f64 = (0..=k).map(|j| delta[row + j] * rate_d[row + k - j]).sum();
+                let ([ul, vl], [ur, vr]) = (column[p.left], column[p.right]);
+                delta[row + k] = ul - ur - if k == 0 { p.gap } else { 0.0 };
+                rate_d[row + k] = vl - vr;
+                // Σ_j δ_j δ̇_{k−j}, j rising.
+                let conv: f64 = delta[row..=row + k]
+                    .iter()
+                    .zip(rate_d[row..=row + k].iter().rev())
+                    .map(|(d, r)| d * r)
+                    .sum();
                 acc[p.left] -= p.left_rate * conv;
                 acc[p.right] += p.right_rate * conv;
             }
@@ -295,16 +306,10 @@ impl Series {
                 }
             }
             let inv = 1.0 / (k + 1) as f64;
-            let (done, next) = v.split_at_mut((k + 1) * n);
-            for ((x, &y), (z, &a)) in u[(k + 1) * n..(k + 2) * n]
-                .iter_mut()
-                .zip(&done[k * n..])
-                .zip(next[..n].iter_mut().zip(&acc[..n]))
-            {
-                *x = y * inv;
-                *z = a * inv;
+            for ((x, &[_, v]), &a) in next.iter_mut().zip(column).zip(&acc[..n]) {
+                *x = [v * inv, a * inv];
             }
-            let now = norm(u, v, k + 1);
+            let now = norm(next);
             // The last two terms within the tolerance at `want`: enough.
             if let Some(want) = want
                 && k + 1 >= MIN_ORDER
@@ -319,7 +324,7 @@ impl Series {
         let radius = [degree - 1, degree]
             .iter()
             .map(|&k| {
-                let nk = norm(u, v, k);
+                let nk = norm(&state[k * n..(k + 1) * n]);
                 if nk > 0.0 {
                     (TOLERANCE / nk).powf(1.0 / k as f64)
                 } else {
@@ -334,14 +339,14 @@ impl Series {
             _ => radius,
         };
         // Floor by floor, blocks of degree + 1 coefficients.
-        let floors = |columns: &[f64], out: &mut Vec<f64>| {
+        let width = degree + 1;
+        for (half, out) in [&mut self.u, &mut self.v].into_iter().enumerate() {
             out.clear();
             for i in 0..n {
-                out.extend((0..=degree).map(|k| columns[k * n + i]));
+                let floor = state[i..].iter().step_by(n).take(width);
+                out.extend(floor.map(|pair| pair[half]));
             }
-        };
-        floors(u, &mut self.u);
-        floors(v, &mut self.v);
+        }
         self.n = n;
         self.ground = g;
         self.radius = radius;
@@ -394,15 +399,15 @@ impl Series {
     /// Coefficients of the absolute acceleration ü_i + ü_g (one order fewer).
     pub fn absolute_acceleration(&self, i: usize, out: &mut Vec<f64>) {
         out.clear();
-        let v = self.velocity(i);
-        out.extend((0..ORDER.max(self.degree)).map(|k| {
-            let rate = if k < self.degree {
-                (k + 1) as f64 * v[k + 1]
-            } else {
-                0.0
-            };
-            rate + self.ground[k]
-        }));
+        // (k + 1) u̇_{k+1} + a_k up to the degree, then the ground's alone.
+        let rates = self.velocity(i)[1..].iter().zip(1..);
+        out.extend(
+            rates
+                .zip(&self.ground)
+                .map(|((&v, k), &a)| k as f64 * v + a),
+        );
+        let top = ORDER.max(self.degree);
+        out.extend(self.ground[self.degree..top].iter().map(|&a| 0.0 + a));
     }
 }
 
