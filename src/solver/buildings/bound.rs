@@ -41,6 +41,8 @@
 
 use nalgebra::DMatrix;
 
+use crate::numerics::extremes::largest;
+
 use super::sparse::Sparse;
 use super::sweep::sweep;
 use super::system::System;
@@ -48,7 +50,7 @@ use super::system::System;
 mod equilibrium;
 mod ground_jump;
 
-pub use equilibrium::Equilibrium;
+pub use equilibrium::{Equilibrium, Rest};
 pub use ground_jump::GroundJump;
 
 /// Relative allowance for the round-off of the exponential and the norms
@@ -243,22 +245,24 @@ impl Bounds {
 
     /// ‖D w‖∞ of the augmented state at (u, u̇) under ground (a, ȧ) with
     /// load M⁻¹q, or ‖D(w − w*)‖∞ from the configuration's rest point w*
-    /// when smaller ([`Equilibrium`]); `rest` is scratch space.
+    /// when smaller ([`Equilibrium`]), in the configuration of `branches`
+    /// whose rest point `rest` keeps.
     pub fn size(
         &self,
         (u, v): (&[f64], &[f64]),
         (a, rate): (f64, f64),
         load: &[f64],
-        rest: &mut Vec<f64>,
+        rest: (&[u8], &mut Rest),
     ) -> f64 {
         let n = u.len();
         let s = &self.scale;
-        let mut m = (a * s[2 * n]).abs().max((rate * s[2 * n + 1]).abs());
+        let (on_u, on_v, on_load) = (&s[..n], &s[n..2 * n], &s[2 * n + 2..3 * n + 2]);
+        let (v, load) = (&v[..n], &load[..n]);
+        let mut m = largest((a * s[2 * n]).abs(), (rate * s[2 * n + 1]).abs());
         for i in 0..n {
-            m = m
-                .max((u[i] * s[i]).abs())
-                .max((v[i] * s[n + i]).abs())
-                .max((load[i] * s[2 * n + 2 + i]).abs());
+            m = largest(m, (u[i] * on_u[i]).abs());
+            m = largest(m, (v[i] * on_v[i]).abs());
+            m = largest(m, (load[i] * on_load[i]).abs());
         }
         match &self.equilibrium {
             Some(e) => m.min(e.size((u, v), (a, rate), load, s, rest)),
@@ -270,5 +274,11 @@ impl Bounds {
     /// sub-step starting from a state of size `size` ([`Bounds::size`]).
     pub fn errors(&self, k: usize, size: f64) -> (f64, f64) {
         (self.value_error[k] * size, self.rate_error[k] * size)
+    }
+
+    /// The bounds of [`Bounds::errors`] per unit size, of every quantity:
+    /// those of the cubics of q, then of q̇.
+    pub fn unit_errors(&self) -> (&[f64], &[f64]) {
+        (&self.value_error, &self.rate_error)
     }
 }

@@ -33,7 +33,7 @@ use crate::model::buildings::contact::element_law;
 use crate::model::buildings::ground::Piece;
 use crate::model::buildings::{Ground, Row};
 
-use super::bound::{Stack, Watch};
+use super::bound::{Rest, Stack, Watch};
 use super::config::{Branch, Closed, Config};
 use super::contact_rk::{self, Contact, Taken, by_steps};
 use super::damper;
@@ -224,6 +224,8 @@ struct Run<'a> {
     /// The stack at the end of the last quiet sub-step, with its ground
     /// (a, ȧ, σ); dropped whenever the state moves otherwise.
     stack: Option<((f64, f64, f64), Stack)>,
+    /// The rest point the quiet test measures the state from ([`Rest`]).
+    rest: Rest,
     energy: Option<(RowEnergy, Vec<f64>, Vec<f64>)>,
     /// Suggested length of the next Runge–Kutta step in contact (0: none yet).
     next_contact_step: f64,
@@ -327,6 +329,7 @@ pub fn run_row_cached(
         probes,
         pass: WatchPass::default(),
         stack: None,
+        rest: Rest::default(),
         energy: options.energy.then(|| {
             let (x, w) = gauss_legendre(NODES);
             let start = RowEnergy {
@@ -474,7 +477,7 @@ impl Run<'_> {
             (&self.u, &self.v),
             (a0, r0),
             &self.system.load,
-            &mut self.buf,
+            (&self.key, &mut self.rest),
         );
         let ends = |k: usize| Ends {
             start: self.probes[k].at(&start),
@@ -485,9 +488,14 @@ impl Run<'_> {
         // Quantities whose peak may rise inside, located after the events clear.
         let mut rising = Vec::new();
         // What the first pass clears, the per-quantity tests would clear.
-        let errors = |k: usize| bounds.errors(k, size);
+        let (value, rate) = bounds.unit_errors();
         let pass = &mut self.pass;
-        pass.ask((&start, &end), errors, h, (&self.config, &self.envelope));
+        pass.ask(
+            (&start, &end),
+            (value, rate, size),
+            h,
+            (&self.config, &self.envelope),
+        );
         let pass = &self.pass;
         let verdict = (|| {
             let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
