@@ -86,6 +86,11 @@ pub struct Bounds {
 pub struct Stack {
     pub rates: [Vec<f64>; 5],
     pub ground: [f64; 3],
+    /// Whether u⁗ is made: [`Stack::set_to_jerk`] leaves it to
+    /// [`Stack::make_snap`], since the quiet test reads it only for a
+    /// floor's ü + a_g that its first pass cannot clear (the rate of its
+    /// cubic), which most sub-steps never ask for.
+    pub snap: bool,
 }
 
 impl Stack {
@@ -109,9 +114,21 @@ impl Stack {
         (u, v): (&[f64], &[f64]),
         (a, rate, sigma): (f64, f64, f64),
     ) {
+        self.set_to_jerk(system, (u, v), (a, rate, sigma));
+        self.make_snap(system);
+    }
+
+    /// [`Stack::set`] but u⁗, left for [`Stack::make_snap`].
+    pub fn set_to_jerk(
+        &mut self,
+        system: &System,
+        (u, v): (&[f64], &[f64]),
+        (a, rate, sigma): (f64, f64, f64),
+    ) {
         self.ground = [a, rate, sigma * a];
+        self.snap = false;
         // By columns of M⁻¹K and M⁻¹C ([`System::columns`]).
-        let [x, y, acc, jerk, snap] = &mut self.rates;
+        let [x, y, acc, jerk, _] = &mut self.rates;
         x.clear();
         x.extend_from_slice(u);
         y.clear();
@@ -119,7 +136,16 @@ impl Stack {
         let columns = &system.columns;
         columns.rate((u, v), Some(&system.load), a, acc);
         columns.rate((v, acc), None, rate, jerk);
-        columns.rate((acc, jerk), None, sigma * a, snap);
+    }
+
+    /// u⁗ = −ä_g 1 − M⁻¹K ü − M⁻¹C u⃛ of `system`, unless made already.
+    pub fn make_snap(&mut self, system: &System) {
+        if self.snap {
+            return;
+        }
+        let [_, _, acc, jerk, snap] = &mut self.rates;
+        system.columns.rate((acc, jerk), None, self.ground[2], snap);
+        self.snap = true;
     }
 
     /// q, q̇, q̈ of `w`.

@@ -340,7 +340,11 @@ mod tests {
             [rates(), rates(), rates(), rates(), rates()],
             prop::array::uniform3(-1.0f64..1.0),
         )
-            .prop_map(|(rates, ground)| Stack { rates, ground })
+            .prop_map(|(rates, ground)| Stack {
+                rates,
+                ground,
+                snap: true,
+            })
     }
 
     /// Each storey's branch (0 elastic, 1 plus, 2 minus), plastic drift,
@@ -384,6 +388,7 @@ mod tests {
                         r
                     }),
                     ground: s.ground,
+                    snap: true,
                 };
                 let (start, end) = (cut(&start), cut(&end));
                 let mut config = Config::at_rest(ns, np);
@@ -476,6 +481,7 @@ mod tests {
         let mut rest = Stack {
             rates: std::array::from_fn(|_| vec![0.0; n]),
             ground: [0.0; 3],
+            snap: true,
         };
         rest.rates[0][a] = x;
         layout.gaps[0] = x;
