@@ -23,9 +23,11 @@
 //! values on a grid of the sub-step, the last of which is the map
 //! ([`super::sweep`]). The row norms and B depend only on the
 //! configuration, h and σ, so they are made with its map and cached. A
-//! sub-step then costs one ∞-norm of the state and, at each end, ü and its
-//! next two rates for every floor (three products by M⁻¹K and M⁻¹C,
-//! O(dofs²)), of which each quantity's q, q̇, q̈ are a few terms. The bound
+//! sub-step then costs one ∞-norm of the state (O(dofs) from the rest point
+//! too, [`Equilibrium`]) and, at each end, ü and u⃛ for every floor (two
+//! products by M⁻¹K and M⁻¹C, O(dofs²); u⁗, a third, only where an
+//! acceleration's rate is asked for), of which each quantity's q, q̇, q̈
+//! are a few terms. The bound
 //! follows the whole state (a high mode's swing shows in q⁗ even when q's
 //! own end values are small), which is what the Hermite estimate alone
 //! cannot see. B is widened by a relative 1e-6 for the round-off of the
