@@ -1,5 +1,6 @@
 //! Generic numerical building blocks that know nothing of structures or
-//! contact: the multiply-add of the hot loops ([`madd`]), the
+//! contact: the multiply-add of the hot loops ([`madd`]), their one-instruction
+//! extremes ([`extremes`]), the
 //! Dormand–Prince 5(4) pair with dense output ([`dopri5`]), and the standard
 //! normal distribution of the risk statistics ([`normal`]).
 //! The reference integrates every phase with the pair; the exact method uses it
@@ -7,6 +8,7 @@
 //! analytic at onset (δ^{3/2}), so a Taylor series in τ does not apply there.
 
 pub mod dopri5;
+pub mod extremes;
 pub mod normal;
 
 /// a·b + c: fused, with one rounding, where the build's target has a fused

@@ -23,9 +23,11 @@
 //! values on a grid of the sub-step, the last of which is the map
 //! ([`super::sweep`]). The row norms and B depend only on the
 //! configuration, h and σ, so they are made with its map and cached. A
-//! sub-step then costs one ∞-norm of the state and, at each end, ü and its
-//! next two rates for every floor (three products by M⁻¹K and M⁻¹C,
-//! O(dofs²)), of which each quantity's q, q̇, q̈ are a few terms. The bound
+//! sub-step then costs one ∞-norm of the state (O(dofs) from the rest point
+//! too, [`Equilibrium`]) and, at each end, ü and u⃛ for every floor (two
+//! products by M⁻¹K and M⁻¹C, O(dofs²); u⁗, a third, only where an
+//! acceleration's rate is asked for), of which each quantity's q, q̇, q̈
+//! are a few terms. The bound
 //! follows the whole state (a high mode's swing shows in q⁗ even when q's
 //! own end values are small), which is what the Hermite estimate alone
 //! cannot see. B is widened by a relative 1e-6 for the round-off of the
@@ -41,6 +43,8 @@
 
 use nalgebra::DMatrix;
 
+use crate::numerics::extremes::largest;
+
 use super::sparse::Sparse;
 use super::sweep::sweep;
 use super::system::System;
@@ -48,7 +52,7 @@ use super::system::System;
 mod equilibrium;
 mod ground_jump;
 
-pub use equilibrium::Equilibrium;
+pub use equilibrium::{Equilibrium, Rest};
 pub use ground_jump::GroundJump;
 
 /// Relative allowance for the round-off of the exponential and the norms
@@ -84,6 +88,11 @@ pub struct Bounds {
 pub struct Stack {
     pub rates: [Vec<f64>; 5],
     pub ground: [f64; 3],
+    /// Whether u⁗ is made: [`Stack::set_to_jerk`] leaves it to
+    /// [`Stack::make_snap`], since the quiet test reads it only for a
+    /// floor's ü + a_g that its first pass cannot clear (the rate of its
+    /// cubic), which most sub-steps never ask for.
+    pub snap: bool,
 }
 
 impl Stack {
@@ -107,9 +116,21 @@ impl Stack {
         (u, v): (&[f64], &[f64]),
         (a, rate, sigma): (f64, f64, f64),
     ) {
+        self.set_to_jerk(system, (u, v), (a, rate, sigma));
+        self.make_snap(system);
+    }
+
+    /// [`Stack::set`] but u⁗, left for [`Stack::make_snap`].
+    pub fn set_to_jerk(
+        &mut self,
+        system: &System,
+        (u, v): (&[f64], &[f64]),
+        (a, rate, sigma): (f64, f64, f64),
+    ) {
         self.ground = [a, rate, sigma * a];
+        self.snap = false;
         // By columns of M⁻¹K and M⁻¹C ([`System::columns`]).
-        let [x, y, acc, jerk, snap] = &mut self.rates;
+        let [x, y, acc, jerk, _] = &mut self.rates;
         x.clear();
         x.extend_from_slice(u);
         y.clear();
@@ -117,7 +138,16 @@ impl Stack {
         let columns = &system.columns;
         columns.rate((u, v), Some(&system.load), a, acc);
         columns.rate((v, acc), None, rate, jerk);
-        columns.rate((acc, jerk), None, sigma * a, snap);
+    }
+
+    /// u⁗ = −ä_g 1 − M⁻¹K ü − M⁻¹C u⃛ of `system`, unless made already.
+    pub fn make_snap(&mut self, system: &System) {
+        if self.snap {
+            return;
+        }
+        let [_, _, acc, jerk, snap] = &mut self.rates;
+        system.columns.rate((acc, jerk), None, self.ground[2], snap);
+        self.snap = true;
     }
 
     /// q, q̇, q̈ of `w`.
@@ -243,22 +273,24 @@ impl Bounds {
 
     /// ‖D w‖∞ of the augmented state at (u, u̇) under ground (a, ȧ) with
     /// load M⁻¹q, or ‖D(w − w*)‖∞ from the configuration's rest point w*
-    /// when smaller ([`Equilibrium`]); `rest` is scratch space.
+    /// when smaller ([`Equilibrium`]), in the configuration of `branches`
+    /// whose rest point `rest` keeps.
     pub fn size(
         &self,
         (u, v): (&[f64], &[f64]),
         (a, rate): (f64, f64),
         load: &[f64],
-        rest: &mut Vec<f64>,
+        rest: (&[u8], &mut Rest),
     ) -> f64 {
         let n = u.len();
         let s = &self.scale;
-        let mut m = (a * s[2 * n]).abs().max((rate * s[2 * n + 1]).abs());
+        let (on_u, on_v, on_load) = (&s[..n], &s[n..2 * n], &s[2 * n + 2..3 * n + 2]);
+        let (v, load) = (&v[..n], &load[..n]);
+        let mut m = largest((a * s[2 * n]).abs(), (rate * s[2 * n + 1]).abs());
         for i in 0..n {
-            m = m
-                .max((u[i] * s[i]).abs())
-                .max((v[i] * s[n + i]).abs())
-                .max((load[i] * s[2 * n + 2 + i]).abs());
+            m = largest(m, (u[i] * on_u[i]).abs());
+            m = largest(m, (v[i] * on_v[i]).abs());
+            m = largest(m, (load[i] * on_load[i]).abs());
         }
         match &self.equilibrium {
             Some(e) => m.min(e.size((u, v), (a, rate), load, s, rest)),
@@ -270,5 +302,11 @@ impl Bounds {
     /// sub-step starting from a state of size `size` ([`Bounds::size`]).
     pub fn errors(&self, k: usize, size: f64) -> (f64, f64) {
         (self.value_error[k] * size, self.rate_error[k] * size)
+    }
+
+    /// The bounds of [`Bounds::errors`] per unit size, of every quantity:
+    /// those of the cubics of q, then of q̇.
+    pub fn unit_errors(&self) -> (&[f64], &[f64]) {
+        (&self.value_error, &self.rate_error)
     }
 }

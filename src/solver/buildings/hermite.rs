@@ -13,6 +13,8 @@
 //! by that bound therefore holds q's range; [`super::bound`] supplies
 //! max|q⁗|.
 
+use crate::numerics::extremes::{largest, least};
+
 /// An enclosure of [`range`] without its turning points: the cubic in
 /// Bernstein form on [0, h] has the control points q0, q0 + d0h/3,
 /// q1 − d1h/3, q1, and lies in their hull (a convex combination of them at
@@ -20,16 +22,14 @@
 /// quantity far from its limit is cleared on it, before the exact range
 /// is asked for: whatever the hull clears, the range clears.
 ///
-/// The least and largest are taken by plain comparisons (one `minsd` or
-/// `maxsd` each), not by `f64::min`/`f64::max`, whose care for a NaN
-/// costs more: the control points of a finite state's cubic are finite,
-/// and on finite values both pick the same (up to the sign of a zero,
-/// which no comparison sees).
+/// The least and largest are taken by plain comparisons
+/// ([`crate::numerics::extremes`]): the control points of a finite
+/// state's cubic are finite, and on finite values both pick the same as
+/// `f64::min`/`f64::max` (up to the sign of a zero, which no comparison
+/// sees).
 #[inline]
 pub fn hull(q0: f64, d0: f64, q1: f64, d1: f64, h: f64) -> (f64, f64) {
     let (b1, b2) = (q0 + d0 * h / 3.0, q1 - d1 * h / 3.0);
-    let least = |x: f64, y: f64| if x < y { x } else { y };
-    let largest = |x: f64, y: f64| if x > y { x } else { y };
     (
         least(least(q0, q1), least(b1, b2)),
         largest(largest(q0, q1), largest(b1, b2)),

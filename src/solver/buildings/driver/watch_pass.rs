@@ -4,7 +4,9 @@
 //! unloading, and against its running peak), every facing pair's relative
 //! displacement and every contact element's gap, each asked its question
 //! on the widened hull of its Hermite cubic, straight from the two ends'
-//! stacks, in blocks of [`LANES`] quantities.
+//! stacks, in plain loops over arrays that the compiler turns into vector
+//! operations: the floors' questions read the stacks' rates in place, the
+//! others are gathered first into one array per operand.
 //!
 //! Each question asks whether the rigorous range of q (or of q̇) lies
 //! within limits. On the hull of the control points c ∈ {q0, q0 + d0h/3,
@@ -17,7 +19,9 @@
 //! ```
 //!
 //! since rounding is monotone, min over c of fl(fl(c − e) − p) is
-//! fl(fl(min c − e) − p), so the four comparisons are the hull's own. A
+//! fl(fl(min c − e) − p), so the four comparisons are the hull's own, and
+//! they are asked as two, of the least and the largest c (with each c
+//! asked to be a number, as a comparison with a NaN would be false). A
 //! strict limit x < d is x ≤ d⁻ (the float below d), which is the same
 //! test for every float x; the questions become
 //!
@@ -37,9 +41,10 @@
 //! path clears, and only what it cannot clear goes on to that path and
 //! its exact ranges.
 
+use crate::numerics::extremes::{largest, least};
+
 use super::super::bound::Stack;
 use super::super::config::{Branch, Config};
-use super::super::lanes::LANES;
 use super::super::layout::Layout;
 use super::super::peaks::Envelope;
 
@@ -64,76 +69,88 @@ impl Difference {
     }
 }
 
-/// f of the [`LANES`] entries of `v` from `first`, `pad` past its end.
+/// Whether the hull of the cubic through (q0, d0) and (q1, d1) over a
+/// sub-step of length `h`, widened by `e` and measured from `p`, lies in
+/// [lower, upper]: lower ≤ fl(fl(min c − e) − p) and fl(fl(max c + e) − p)
+/// ≤ upper over its control points c, made as
+/// [`super::super::hermite::hull`] makes them, each a number.
 #[inline(always)]
-fn lane(v: &[f64], first: usize, pad: f64, f: impl Fn(f64) -> f64) -> [f64; LANES] {
-    match v.get(first..first + LANES) {
-        Some(v) => std::array::from_fn(|l| f(v[l])),
-        None => std::array::from_fn(|l| v.get(first + l).map_or(pad, |&x| f(x))),
-    }
+fn clears(
+    ((q0, d0), (q1, d1)): ((f64, f64), (f64, f64)),
+    h: f64,
+    (e, p): (f64, f64),
+    (lower, upper): (f64, f64),
+) -> bool {
+    let (b1, b2) = (q0 + d0 * h / 3.0, q1 - d1 * h / 3.0);
+    let low = least(least(q0, q1), least(b1, b2));
+    let high = largest(largest(q0, q1), largest(b1, b2));
+    let numbers = !q0.is_nan() & !q1.is_nan() & !b1.is_nan() & !b2.is_nan();
+    numbers & (lower <= (low - e) - p) & ((high + e) - p <= upper)
 }
 
-/// Eight questions side by side: each one's q (or q̇) and its rate at
-/// both ends, its error bound, offset and limits, one lane each.
-#[derive(Debug, Clone, Copy)]
-struct Block {
-    q0: [f64; LANES],
-    d0: [f64; LANES],
-    q1: [f64; LANES],
-    d1: [f64; LANES],
-    error: [f64; LANES],
-    offset: [f64; LANES],
-    lower: [f64; LANES],
-    upper: [f64; LANES],
+/// The questions past the floors' (each storey's peak and event, each
+/// facing pair's peak, each gap), one array per operand: each one's q (or
+/// q̇) and its rate at both ends, its error bound, offset and limits.
+#[derive(Debug, Clone, Default)]
+struct Questions {
+    q0: Vec<f64>,
+    d0: Vec<f64>,
+    q1: Vec<f64>,
+    d1: Vec<f64>,
+    error: Vec<f64>,
+    offset: Vec<f64>,
+    lower: Vec<f64>,
+    upper: Vec<f64>,
 }
 
-impl Block {
-    /// A block of questions that nothing clears (a lower limit of +∞): the
-    /// padding of the last block stays so.
-    const CLOSED: Block = Block {
-        q0: [0.0; LANES],
-        d0: [0.0; LANES],
-        q1: [0.0; LANES],
-        d1: [0.0; LANES],
-        error: [0.0; LANES],
-        offset: [0.0; LANES],
-        lower: [f64::INFINITY; LANES],
-        upper: [0.0; LANES],
-    };
-
-    /// Each lane's verdict on its widened hull over a sub-step of length
-    /// `h`: lower ≤ fl(fl(c − e) − p) and fl(fl(c + e) − p) ≤ upper for
-    /// the four control points c, made as [`super::super::hermite::hull`]
-    /// makes them.
-    #[inline(always)]
-    fn verdicts(&self, h: f64) -> [bool; LANES] {
-        std::array::from_fn(|l| {
-            let (q0, q1) = (self.q0[l], self.q1[l]);
-            let (b1, b2) = (q0 + self.d0[l] * h / 3.0, q1 - self.d1[l] * h / 3.0);
-            let (e, p) = (self.error[l], self.offset[l]);
-            let (lo, hi) = (self.lower[l], self.upper[l]);
-            let ok = |c: f64| (lo <= (c - e) - p) & ((c + e) - p <= hi);
-            ok(q0) & ok(b1) & ok(b2) & ok(q1)
-        })
+impl Questions {
+    fn new(count: usize) -> Questions {
+        let zeros = vec![0.0; count];
+        Questions {
+            q0: zeros.clone(),
+            d0: zeros.clone(),
+            q1: zeros.clone(),
+            d1: zeros.clone(),
+            error: zeros.clone(),
+            offset: zeros.clone(),
+            lower: zeros.clone(),
+            upper: zeros,
+        }
     }
 
-    /// Lane `l`: ((q0, q̇0), (q1, q̇1)), error, offset, (lower, upper).
+    /// Question `j`: ((q0, q̇0), (q1, q̇1)), error, offset, (lower, upper).
     #[inline]
     fn set(
         &mut self,
-        l: usize,
+        j: usize,
         ((q0, d0), (q1, d1)): ((f64, f64), (f64, f64)),
         (error, offset): (f64, f64),
         (lower, upper): (f64, f64),
     ) {
-        self.q0[l] = q0;
-        self.d0[l] = d0;
-        self.q1[l] = q1;
-        self.d1[l] = d1;
-        self.error[l] = error;
-        self.offset[l] = offset;
-        self.lower[l] = lower;
-        self.upper[l] = upper;
+        self.q0[j] = q0;
+        self.d0[j] = d0;
+        self.q1[j] = q1;
+        self.d1[j] = d1;
+        self.error[j] = error;
+        self.offset[j] = offset;
+        self.lower[j] = lower;
+        self.upper[j] = upper;
+    }
+
+    /// Each question's verdict ([`clears`]) over a sub-step of length `h`.
+    fn verdicts(&self, h: f64, out: &mut [bool]) {
+        let m = out.len();
+        let (q0, d0, q1, d1) = (&self.q0[..m], &self.d0[..m], &self.q1[..m], &self.d1[..m]);
+        let (error, offset) = (&self.error[..m], &self.offset[..m]);
+        let (lower, upper) = (&self.lower[..m], &self.upper[..m]);
+        for j in 0..m {
+            out[j] = clears(
+                ((q0[j], d0[j]), (q1[j], d1[j])),
+                h,
+                (error[j], offset[j]),
+                (lower[j], upper[j]),
+            );
+        }
     }
 }
 
@@ -150,10 +167,8 @@ pub(super) struct WatchPass {
     /// d⁻: constants of the run, made once.
     yield_limits: Vec<(f64, f64)>,
     gap_limits: Vec<f64>,
-    /// The questions past the floors' (each storey's peak and event, each
-    /// facing pair's peak, each gap), in blocks of [`LANES`].
-    blocks: Vec<Block>,
-    /// Each question's verdict: the floors' 3n, then the blocks' lanes.
+    questions: Questions,
+    /// Each question's verdict: the floors' 3n, then the others'.
     cleared: Vec<bool>,
 }
 
@@ -185,74 +200,61 @@ impl WatchPass {
                 .map(|s| ((-s.yield_drift).next_up(), s.yield_drift.next_down()))
                 .collect(),
             gap_limits: layout.gaps.iter().map(|d| d.next_down()).collect(),
-            blocks: vec![Block::CLOSED; questions.div_ceil(LANES)],
-            cleared: vec![false; 3 * n + questions.next_multiple_of(LANES)],
+            questions: Questions::new(questions),
+            cleared: vec![false; 3 * n + questions],
         }
     }
 
     /// Asks every question of the sub-step of length `h` from `start` to
-    /// `end`, with `errors`(k) the bounds on the errors of the cubics of q
-    /// and q̇ of quantity k ([`super::super::bound::Bounds::errors`]).
+    /// `end`, with the bounds on the errors of the cubics of q and q̇ of
+    /// quantity k the products value[k] · size and rate[k] · size
+    /// ([`super::super::bound::Bounds::errors`]).
     pub fn ask(
         &mut self,
         (start, end): (&Stack, &Stack),
-        errors: impl Fn(usize) -> (f64, f64),
+        (value, rate, size): (&[f64], &[f64], f64),
         h: f64,
         (config, env): (&Config, &Envelope),
     ) {
         let n = self.dofs;
         let storeys = self.storeys.len();
-        // Every floor's u, u̇, ü + a_g against its running peak, read in
-        // blocks straight from the stacks (the ground added to ü).
+        // Every floor's u, u̇, ü + a_g against its running peak, read
+        // straight from the stacks (the ground added to ü).
         let peaks = [&env.displacement, &env.velocity, &env.acceleration];
         for (order, peaks) in peaks.into_iter().enumerate() {
             let (g0, g1) = match order {
                 2 => (start.ground, end.ground),
                 _ => ([0.0; 3], [0.0; 3]),
             };
-            let (x0, y0) = (&start.rates[order], &start.rates[order + 1]);
-            let (x1, y1) = (&end.rates[order], &end.rates[order + 1]);
-            for first in (0..n).step_by(LANES) {
-                let k = order * n + first;
-                let block =
-                    Block {
-                        q0: lane(x0, first, 0.0, |x| x + g0[0]),
-                        d0: lane(y0, first, 0.0, |x| x + g0[1]),
-                        q1: lane(x1, first, 0.0, |x| x + g1[0]),
-                        d1: lane(y1, first, 0.0, |x| x + g1[1]),
-                        error: std::array::from_fn(|l| {
-                            if first + l < n { errors(k + l).0 } else { 0.0 }
-                        }),
-                        offset: [0.0; LANES],
-                        lower: lane(peaks, first, f64::INFINITY, |p| -p),
-                        upper: lane(peaks, first, 0.0, |p| p),
-                    };
-                let verdicts = block.verdicts(h);
-                for (out, &verdict) in self.cleared[k..order * n + n].iter_mut().zip(&verdicts) {
-                    *out = verdict;
-                }
+            let (x0, y0) = (&start.rates[order][..n], &start.rates[order + 1][..n]);
+            let (x1, y1) = (&end.rates[order][..n], &end.rates[order + 1][..n]);
+            let (errors, peaks) = (&value[order * n..order * n + n], &peaks[..n]);
+            let out = &mut self.cleared[order * n..order * n + n];
+            for i in 0..n {
+                let ends = (
+                    (x0[i] + g0[0], y0[i] + g0[1]),
+                    (x1[i] + g1[0], y1[i] + g1[1]),
+                );
+                out[i] = clears(ends, h, (errors[i] * size, 0.0), (-peaks[i], peaks[i]));
             }
         }
         // Every storey's drift against its running peak, then its event;
         // every facing pair's u_A − u_B under its running peak; every
         // contact element's u_A − u_B under its gap.
-        let blocks = &mut self.blocks;
-        let mut set = |j: usize, ends, errors, limits| {
-            blocks[j / LANES].set(j % LANES, ends, errors, limits);
-        };
+        let questions = &mut self.questions;
         let base = 3 * n;
         for (k, d) in self.storeys.iter().enumerate() {
             let ends = (d.at(start, 0), d.at(end, 0));
             let peak = env.drift[k];
-            set(k, ends, (errors(base + k).0, 0.0), (-peak, peak));
+            questions.set(k, ends, (value[base + k] * size, 0.0), (-peak, peak));
         }
         for (k, (d, &limits)) in self.storeys.iter().zip(&self.yield_limits).enumerate() {
-            let (error, rate_error) = errors(base + k);
             let j = storeys + k;
             match config.branch[k] {
                 Branch::Elastic => {
                     let ends = (d.at(start, 0), d.at(end, 0));
-                    set(j, ends, (error, config.plastic[k]), limits);
+                    let error = value[base + k] * size;
+                    questions.set(j, ends, (error, config.plastic[k]), limits);
                 }
                 branch => {
                     let ends = (d.at(start, 1), d.at(end, 1));
@@ -261,19 +263,15 @@ impl WatchPass {
                     } else {
                         (f64::NEG_INFINITY, 0f64.next_down())
                     };
-                    set(j, ends, (rate_error, 0.0), limits);
+                    questions.set(j, ends, (rate[base + k] * size, 0.0), limits);
                 }
             }
         }
         for (k, d) in self.facing.iter().enumerate() {
             let ends = (d.at(start, 0), d.at(end, 0));
             let limits = (f64::NEG_INFINITY, env.relative[k]);
-            set(
-                2 * storeys + k,
-                ends,
-                (errors(base + storeys + k).0, 0.0),
-                limits,
-            );
+            let error = value[base + storeys + k] * size;
+            questions.set(2 * storeys + k, ends, (error, 0.0), limits);
         }
         let (j, base) = (
             2 * storeys + self.facing.len(),
@@ -282,14 +280,9 @@ impl WatchPass {
         for (k, (d, &gap)) in self.gaps.iter().zip(&self.gap_limits).enumerate() {
             let ends = (d.at(start, 0), d.at(end, 0));
             let limits = (f64::NEG_INFINITY, gap);
-            set(j + k, ends, (errors(base + k).0, 0.0), limits);
+            questions.set(j + k, ends, (value[base + k] * size, 0.0), limits);
         }
-        let out = self.cleared[3 * n..].chunks_exact_mut(LANES);
-        for (block, out) in self.blocks.iter().zip(out) {
-            for (out, verdict) in out.iter_mut().zip(block.verdicts(h)) {
-                *out = verdict;
-            }
-        }
+        questions.verdicts(h, &mut self.cleared[3 * n..]);
     }
 
     /// Whether floor i's u (`order` 0), u̇ (1) or ü + a_g (2) stays within
@@ -347,7 +340,11 @@ mod tests {
             [rates(), rates(), rates(), rates(), rates()],
             prop::array::uniform3(-1.0f64..1.0),
         )
-            .prop_map(|(rates, ground)| Stack { rates, ground })
+            .prop_map(|(rates, ground)| Stack {
+                rates,
+                ground,
+                snap: true,
+            })
     }
 
     /// Each storey's branch (0 elastic, 1 plus, 2 minus), plastic drift,
@@ -391,6 +388,7 @@ mod tests {
                         r
                     }),
                     ground: s.ground,
+                    snap: true,
                 };
                 let (start, end) = (cut(&start), cut(&end));
                 let mut config = Config::at_rest(ns, np);
@@ -411,7 +409,8 @@ mod tests {
                     peaks.copy_from_slice(&floor_peaks[order * FLOORS..order * FLOORS + n]);
                 }
                 let mut pass = WatchPass::new(&layout);
-                pass.ask((&start, &end), |k| errors[k], h, (&config, &env));
+                let (value, rate): (Vec<f64>, Vec<f64>) = errors.iter().copied().unzip();
+                pass.ask((&start, &end), (&value, &rate, 1.0), h, (&config, &env));
                 let probes = watched(&layout);
                 let ends = |k: usize| {
                     let p: &Probe = &probes[k];
@@ -482,6 +481,7 @@ mod tests {
         let mut rest = Stack {
             rates: std::array::from_fn(|_| vec![0.0; n]),
             ground: [0.0; 3],
+            snap: true,
         };
         rest.rates[0][a] = x;
         layout.gaps[0] = x;
@@ -491,7 +491,8 @@ mod tests {
         env.drift[0] = x.next_down();
         let ask = |layout: &Layout, config: &Config, env: &Envelope, s: &Stack| {
             let mut pass = WatchPass::new(layout);
-            pass.ask((s, s), |_| (0.0, 0.0), 0.5, (config, env));
+            let zeros = vec![0.0; 6 * FLOORS];
+            pass.ask((s, s), (&zeros, &zeros, 0.0), 0.5, (config, env));
             pass
         };
         let pass = ask(&layout, &config, &env, &rest);
