@@ -3,8 +3,6 @@
 //! the forces' collocated polynomials and defect models written in powers
 //! of s.
 
-use std::sync::LazyLock;
-
 use nalgebra::DVector;
 
 use super::{MODEL, NODES, POWERS, STAGES};
@@ -41,27 +39,19 @@ fn in_powers_of_s<const N: usize>(mut p: [f64; N], h: f64) -> [f64; N] {
     p
 }
 
-/// Each ℓ_j(θ) in powers of θ, expanded once: every step's basis is
-/// these scaled by h.
-static LAGRANGE: LazyLock<[[f64; STAGES]; STAGES]> = LazyLock::new(|| {
-    std::array::from_fn(|j| {
-        let others = (0..STAGES).filter(|&k| k != j).map(|k| NODES[k]);
-        let w: f64 = (0..STAGES)
-            .filter(|&k| k != j)
-            .map(|k| 1.0 / (NODES[j] - NODES[k]))
-            .product();
-        let mut p: [f64; STAGES] = expanded(others);
-        for c in p.iter_mut() {
-            *c *= w;
-        }
-        p
-    })
-});
-
 /// The Lagrange polynomial ℓ_j(s/h) in powers of s, of degree
 /// [`STAGES`] − 1.
 pub(super) fn basis(j: usize, h: f64) -> [f64; STAGES] {
-    in_powers_of_s(LAGRANGE[j], h)
+    let others = (0..STAGES).filter(|&k| k != j).map(|k| NODES[k]);
+    let w: f64 = (0..STAGES)
+        .filter(|&k| k != j)
+        .map(|k| 1.0 / (NODES[j] - NODES[k]))
+        .product();
+    let mut p: [f64; STAGES] = expanded(others);
+    for c in p.iter_mut() {
+        *c *= w;
+    }
+    in_powers_of_s(p, h)
 }
 
 /// The node polynomial π(θ) = Π_i (θ − c_i), θ = s/h, in powers of s:
@@ -78,14 +68,11 @@ pub(super) fn node_value(theta: f64) -> f64 {
 /// Element e's collocated polynomial Σ_j X_{e,j} ℓ_j(s/h) in powers of s.
 pub(super) fn collocated(x: &DVector<f64>, ne: usize, e: usize, h: f64) -> [f64; POWERS] {
     let mut p = [0.0; POWERS];
-    for (j, l) in LAGRANGE.iter().enumerate() {
-        for (p, b) in p.iter_mut().zip(l) {
+    for j in 0..STAGES {
+        for (p, b) in p.iter_mut().zip(basis(j, h)) {
             *p += x[j * ne + e] * b;
         }
     }
-    let mut q = [0.0; STAGES];
-    q.copy_from_slice(&p[..STAGES]);
-    p[..STAGES].copy_from_slice(&in_powers_of_s(q, h));
     p
 }
 
