@@ -6,8 +6,9 @@
 //! Out of Hertz-type contact the row is linear but for its dampers' forces
 //! F_d = c_l |Δv_d|^α sgn Δv_d and, in a contact of the improved Kelvin law,
 //! the term h δ_p δ̇_p (SPEC §4). Over a step of length h each such force
-//! x_e(s) is the quadratic through its values X_{e,j} at the nodes c_j h of
-//! Radau IIA (c = (4 − √6)/10, (4 + √6)/10, 1),
+//! x_e(s) is the cubic through its values X_{e,j} at the S = 4 nodes c_j h
+//! of Radau IIA (c the roots of d³/dθ³[θ³(θ − 1)⁴]: 0.0886, 0.4095, 0.7877
+//! and 1),
 //!
 //! ```text
 //! x_e(s) = Σ_j X_{e,j} ℓ_j(s/h),   ℓ_j the Lagrange basis on c,
@@ -18,7 +19,7 @@
 //! motion from the start under the ground, plus the response from rest to
 //! each x_e = ℓ_j, which depends only on the configuration's K and C and
 //! on h, and is cached by them ([`Collocation`]). Δu_e and Δv_e at the
-//! nodes are then linear in the 3 × (elements) unknowns X, which solve
+//! nodes are then linear in the 4 × (elements) unknowns X, which solve
 //!
 //! ```text
 //! damper:   ψ(X_{d,i}) = Δv_d(c_i h),   ψ(F) = sgn F (|F|/c_l)^(1/α),
@@ -32,48 +33,38 @@
 //! IIA's on Δv (∫₀^{c_i} ℓ_j = a_ij), so the step is L-stable there; the
 //! last node is the end, so the end satisfies the damper's law.
 //!
-//! **Order.** The quadratic through the Radau nodes misses x by
-//! x[c₁, c₂, c₃, s] π(s), π(s) = Π(s − c_i h), and π is orthogonal on
-//! [0, h] to polynomials of degree ≤ 1 (the 3-point Radau rule is exact to
-//! degree 4): the end carries a local error O(h⁶) as Radau IIA's does, the
-//! nodes O(h⁴). The local error is the response to the defect of the
-//! collocated force, d = −x[c₁, c₂, c₃, s] π(s), in the row with each
+//! **Order.** The cubic through the Radau nodes misses x by
+//! x[c₁, …, c₄, s] π(s), π(s) = Π(s − c_i h), and π is orthogonal on
+//! [0, h] to polynomials of degree ≤ 2 (the 4-point Radau rule is exact to
+//! degree 6): the end carries a local error O(h⁸) as Radau IIA's does, the
+//! nodes O(h⁵). The local error is the response to the defect of the
+//! collocated force, d = −x[c₁, …, c₄, s] π(s), in the row with each
 //! force's law linearized about the step: its divided difference is fitted
-//! as a quadratic in s where the force is smooth, the forces' own answer
+//! as a cubic in s where the force is smooth, the forces' own answer
 //! to the motion it moves added (which, where a damper is stiff over the
 //! step, is the larger part: the linear row's response alone can miss
 //! the true local error by a decade or two), and by step doubling near a
 //! damper's reversal, where the force is not smooth ([`Collocation::step`]).
 //!
+//! **Why four stages.** The force c_l|Δv|^α is analytic in time only as
+//! far as the nearest (complex) zero of Δv, at a distance ρ of the order
+//! of Δv/Δv̇; its derivatives grow as k!/ρ^k, so a step of local error
+//! O(h^(2S)) held to 1e-12 is some ρ·1e-12^(1/(2S)) long. Three stages
+//! (O(h⁶)) took 25,705 steps on block-and-frame-retrofit with its damper
+//! at α = 0.35 under synthetic:2000, nearly all of 0.3 to 1 ms and held by
+//! their error, not by events; four (O(h⁸)) take 9,200 for the same
+//! tolerance, each a cubic's solve instead of a quadratic's.
+//!
 //! **Tolerance.** The estimate is held to [`super::contact_rk::TOLERANCE`]
 //! (1e-12 of the motion's scales), as the Hertz-type contact phases' steps
 //! are. It is honest there: on block-and-frame-retrofit with its damper at
 //! α = 0.35 under the first 2 s of presets/synthetic.at2, accepted steps'
-//! end errors against sixteen collocated sub-steps are a median 0.17 of
-//! the tolerance at c = 4e6 (90th percentile 0.38, largest 67) and 0.015
-//! at c = 1e5 (0.50, 25), the few above it starting at a reversal. The
-//! run's error is the sum of its steps' errors, so a looser tolerance
-//! costs accuracy in proportion: measured on the row's accuracy tests
-//! (against the independent reference at c = 1e5, limit 1e-9; at c = 4e6,
-//! limit 5e-9; the vanishing damper, limit 1e-9), with the steps over
-//! synthetic:2000,
-//!
-//! ```text
-//! factor   steps   c = 1e5    c = 4e6    vanishing   energy residual
-//!  0.1    40,067   3.9e-10    2.7e-10    8.5e-12     2.5e-12
-//!  0.3    32,517   4.5e-10    2.7e-10    2.2e-11     4.6e-12
-//!  1      25,702   5.7e-10    2.5e-10    6.1e-11     1.6e-11
-//!  3      20,834   8.8e-10    2.3e-10    1.9e-10     3.4e-11
-//!  10     16,505   2.1e-9     –          3.9e-10     8.8e-11
-//!  100    10,668   1.4e-8     –          3.7e-9      6.6e-10
-//!  1000    7,017   8.7e-8     –          1.8e-8      5.4e-9
-//! ```
-//!
-//! (the worst of c = 4e6 and 1e5 for the residual, limit 1e-9): ten times
-//! looser fails the reference at c = 1e5, and three times looser puts it
-//! at 0.88 of its limit, so the factor stays 1. Against the reference at
-//! c = 1e5 the error does not fall below 3.9e-10 at any tolerance: that
-//! part is not the steps'.
+//! end errors against sixteen collocated sub-steps are a median 0.16 of
+//! the tolerance at c = 4e6 (90th percentile 0.58, largest 1.8) and 0.001
+//! at c = 1e5 (0.07, 1.4). The run's error is the sum of its steps'
+//! errors, so the tolerance is not looser: with three stages, ten times
+//! looser put the peaks 2.1e-9 from the independent reference at c = 1e5,
+//! past its limit of 1e-9.
 //!
 //! **Cost.** A step's free motion is filled to the order that carries it
 //! over the step (not the fixed order's radius), and kept for the steps
@@ -84,13 +75,13 @@
 //! fast, lost the vanishing damper's run: its inverse law's slope changes
 //! by orders of magnitude over an update.)
 //!
-//! The responses to x_e = s^k (k = 0 … 5) from rest depend only on the
+//! The responses to x_e = s^k (k = 0 … 7) from rest depend only on the
 //! configuration's K and C and the elements, and are made once per
 //! configuration and reused for every step length h, the response to
-//! ℓ_j(s/h) being Σ_k ℓ_{j,k} h^(−k) times the k-th (those to s⁴ and s⁵
+//! ℓ_j(s/h) being Σ_k ℓ_{j,k} h^(−k) times the k-th (those to s⁴ … s⁷
 //! by integrating the one before, `integrated`): a step then costs one
-//! Taylor series of the free motion and a Newton solve on 3 × (elements)
-//! unknowns instead of 3 × (n + elements).
+//! Taylor series of the free motion and a Newton solve on 4 × (elements)
+//! unknowns instead of 4 × (n + elements).
 
 mod basis;
 mod estimate;
@@ -107,20 +98,50 @@ use super::damper::Damper;
 use super::system::System;
 use super::taylor::{ORDER, Series};
 use crate::model::buildings::retrofit::dashpot_force;
-use basis::{defect_polynomial, lagrange, quadratic};
+use basis::{collocated, defect_polynomial, lagrange};
 use estimate::kappa;
 use newton::{Forces, Solved, solve};
 use responses::Responses;
 
-/// The nodes c_j of Radau IIA, 3 stages: (4 − √6)/10, (4 + √6)/10, 1.
-pub const NODES: [f64; 3] = super::damper_radau::C;
+/// Stages S of the collocation.
+pub const STAGES: usize = 4;
+
+/// The nodes c_j of Radau IIA, 4 stages: the roots of
+/// d³/dθ³ [θ³ (θ − 1)⁴], the last 1.
+pub const NODES: [f64; STAGES] = [
+    0.088_587_959_512_703_94,
+    0.409_466_864_440_734_7,
+    0.787_659_461_760_847_1,
+    1.0,
+];
+
+/// Coefficients a_1 … a_{S−1} of the defect model past κ ([`basis::defect_polynomial`]).
+const MODEL: usize = STAGES - 1;
 
 /// Newton iterations at most on one step.
 const NEWTON: usize = 50;
 
-/// Powers of s whose responses are kept: s⁰ … s⁵, the quadratic's and
-/// the defect model's (κ + λθ + μθ²)π(θ), of degree 5.
-const POWERS: usize = 6;
+/// Powers of s whose responses are kept: s⁰ … s⁷, the collocated
+/// cubic's and the defect model's (κ + a₁θ + a₂θ² + a₃θ³)π(θ), of
+/// degree 2S − 1 = 7.
+const POWERS: usize = 2 * STAGES;
+
+/// The step-doubling estimate's divisor 2^p − 1 for the elements: a step
+/// is doubled where the defect model fails, next to a damper's reversal
+/// at s₀, where F ∝ |s − s₀|^α puts an error O(h^(1+α)) into Δv, not the
+/// O(h^(2S)) of a smooth force; so p = 1 + α of the smallest exponent
+/// (the error of the two halves is then the difference over 2^(1+α) − 1,
+/// between 1.4 and 3 times smaller than the difference itself).
+fn doubling(elements: &[Element]) -> f64 {
+    let order = elements
+        .iter()
+        .filter_map(|el| match el.law {
+            Law::Damper { exponent, .. } => Some(1.0 + exponent),
+            Law::Product { .. } => None,
+        })
+        .fold((2 * STAGES - 1) as f64, f64::min);
+    order.exp2() - 1.0
+}
 
 /// Response sets kept at most; past it the cache starts afresh (one set
 /// per configuration met).
@@ -341,11 +362,12 @@ impl Collocation {
     }
 
     /// The dense output of a step of length h from y0: the motion under
-    /// each force's quadratic through the nodes plus its defect model
-    /// (`model`, in powers of s: (κ_e + λ_e θ)π(θ), [`defect_polynomial`]),
-    /// so that its interior misses the force by the model's remainder
-    /// where the quadratic alone misses it by O(h³): `free` plus each
-    /// response's series times its coefficient. Its end is the step's.
+    /// each force's cubic through the nodes plus its defect model
+    /// (`model`, in powers of s: (κ_e + Σ_q a_{e,q} θ^q)π(θ),
+    /// [`defect_polynomial`]), so that its interior misses the force by the
+    /// model's remainder where the cubic alone misses it by O(h⁴): `free`
+    /// plus each response's series times its coefficient. Its end is the
+    /// step's.
     fn motion(
         &self,
         set: usize,
@@ -357,7 +379,7 @@ impl Collocation {
         let ne = self.elements.len();
         let responses = &self.sets[set];
         let w = responses.weights(ne, |e| {
-            let mut p = quadratic(x, ne, e, h);
+            let mut p = collocated(x, ne, e, h);
             for (p, q) in p.iter_mut().zip(model[e]) {
                 *p += q;
             }
@@ -400,30 +422,30 @@ impl Collocation {
     /// motion's series.
     ///
     /// The collocated force misses the law on the collocated motion by the
-    /// defect d_e(s) = Σ_j X_{e,j} ℓ_j(s/h) − F_e(s), zero at the three
-    /// nodes: d_e(θh) = −x_e[c₁, c₂, c₃, θh] π(θ). Where the force is
-    /// smooth over the step the divided difference is nearly a quadratic
-    /// in θ,
+    /// defect d_e(s) = Σ_j X_{e,j} ℓ_j(s/h) − x_e(s), zero at the four
+    /// nodes: d_e(θh) = −x_e[c₁, …, c₄, θh] π(θ). Where the force is
+    /// smooth over the step the divided difference is nearly a cubic in θ,
     ///
     /// ```text
-    /// d_e(θh) ≈ −(κ_e + λ_e θ + μ_e θ²) π(θ),
+    /// d_e(θh) ≈ −(κ_e + a_{e,1}θ + a_{e,2}θ² + a_{e,3}θ³) π(θ),
     /// ```
     ///
-    /// κ_e from the defect at the start (`kappa`), λ_e and μ_e from the
-    /// defect at θ = 1/2 and 7/8 on the collocated motion, and the model
-    /// checked against the defect at θ = 1/4 (`defect_model`).
-    /// The end's error is then the response to the model plus the forces'
-    /// own answer to it (`feedback`), O(h⁶): the step
-    /// returns the end under the corrected force, y_h + E with E that
-    /// response at h, the dense output's own end, and E as its error
-    /// estimate (a result of the quadratic's order against one of higher
-    /// order, as an embedded pair's). Only π's orthogonality to 1 and θ
-    /// makes the response to κπ small beside the defect, which is why the
-    /// terms in θ and θ² and the forces' answer all count: the θ² term's
-    /// response is of the defect's own size times h. Where the check fails
-    /// (a damper's Δv near 0, where F is not analytic in time), the error
-    /// is estimated by step doubling, (y_h − y_{h/2,h/2})/31, and the step
-    /// returns y_{h/2,h/2}.
+    /// κ_e from the defect at the start (`kappa`), the a_{e,q} from the
+    /// defect at θ = 1/4, 3/5 and 9/10 on the collocated motion, and the
+    /// model checked against the defect at θ = 1/2 (`defect_model`), for
+    /// a damper and a contact's product alike. The end's error is then
+    /// the response to the model plus the forces' own answer to it
+    /// (`feedback`), O(h⁸): the step returns the end under the corrected
+    /// force, y_h + E with E that response at h, the dense output's own
+    /// end, and E as its error estimate (a result of the cubic's order
+    /// against one of higher order, as an embedded pair's). Only π's
+    /// orthogonality to 1, θ and θ² makes the response to those terms
+    /// small beside the defect, which is why the term in θ³ and the
+    /// forces' answer count: the θ³ term's response is of the defect's
+    /// own size times h. Where the check fails (a damper's Δv near 0,
+    /// where F is not analytic in time), the error is estimated by step
+    /// doubling, (y_h − y_{h/2,h/2})/(2^(1+α) − 1) (`doubling`), and the
+    /// step returns y_{h/2,h/2}.
     pub fn step(
         &mut self,
         row: &Row,
@@ -458,10 +480,6 @@ impl Collocation {
         let (whole, x, linearized) = self.solve(row, set, (free, y0), h, guess)?;
         let ne = self.elements.len();
         let kappa = kappa(&self.elements, y0, &x);
-        // With a contact's product the quintic through the ends is the
-        // better dense output (the product's cubic term is not the force's
-        // own); without, the step's motion under the corrected force.
-        let dense = dense && row.system.products.is_empty();
         if let Some(slope) = self.defect_model(set, free, h, &x, &kappa, row.scale.1) {
             let model: Vec<[f64; POWERS]> = (0..ne)
                 .map(|e| defect_polynomial(kappa[e], slope[e], h))
@@ -470,7 +488,7 @@ impl Collocation {
             let model: Vec<[f64; POWERS]> = (0..ne)
                 .map(|e| {
                     let mut p = model[e];
-                    for (p, q) in p.iter_mut().zip(quadratic(&feedback, ne, e, h)) {
+                    for (p, q) in p.iter_mut().zip(collocated(&feedback, ne, e, h)) {
                         *p += q;
                     }
                     p
@@ -498,20 +516,22 @@ impl Collocation {
             self.remember(y0, &end, h, &x, &model);
             return Some((end, error));
         }
-        // The dense output under the cubic alone: the slope λ is not
+        // The dense output under κπ alone: the fitted terms are not
         // checked here.
         let last = dense.then(|| {
             let model: Vec<[f64; POWERS]> = (0..ne)
-                .map(|e| defect_polynomial(kappa[e], [0.0; 2], h))
+                .map(|e| defect_polynomial(kappa[e], [0.0; MODEL], h))
                 .collect();
             self.motion(set, free, h, &x, &model)
         });
         // The halves start from the whole step's forces, interpolated.
         let guess = |offset: f64| {
-            DVector::from_fn(3 * ne, |r, _| {
+            DVector::from_fn(STAGES * ne, |r, _| {
                 let (i, e) = (r / ne, r % ne);
                 let theta = offset + 0.5 * NODES[i];
-                (0..3).map(|j| x[j * ne + e] * lagrange(j, theta)).sum()
+                (0..STAGES)
+                    .map(|j| x[j * ne + e] * lagrange(j, theta))
+                    .sum()
             })
         };
         let (half, ..) = self.solve(row, set, (free, y0), 0.5 * h, Some(guess(0.0)))?;
@@ -525,14 +545,15 @@ impl Collocation {
             0.5 * h,
         );
         let (twice, ..) = self.solve(row, set, (&middle, &half), 0.5 * h, Some(guess(0.5)))?;
+        let divisor = doubling(&self.elements);
         let error = whole
             .iter()
             .zip(&twice)
-            .map(|(a, b)| (a - b) / 31.0)
+            .map(|(a, b)| (a - b) / divisor)
             .collect();
         self.last = last;
         let model: Vec<[f64; POWERS]> = (0..ne)
-            .map(|e| defect_polynomial(kappa[e], [0.0; 2], h))
+            .map(|e| defect_polynomial(kappa[e], [0.0; MODEL], h))
             .collect();
         self.remember(y0, &twice, h, &x, &model);
         Some((twice, error))
@@ -541,7 +562,7 @@ impl Collocation {
     /// The end of `parts` collocated steps of length h/parts from y0, each
     /// from the free motion at its own start: the reference against which
     /// a step's true local error is measured (that of the parts is
-    /// parts⁵ times smaller where the force is smooth over the step).
+    /// parts⁷ times smaller where the force is smooth over the step).
     /// None where a part's Newton's method fails.
     #[cfg(test)]
     pub(super) fn substepped(

@@ -1,33 +1,37 @@
 //! The collocated step's error estimate (SPEC §14): the defect of the
-//! collocated force modelled as (κ + λθ + μθ²)π(θ), and the forces' own
-//! answer to the motion it moves.
+//! collocated force modelled as (κ + a₁θ + a₂θ² + a₃θ³)π(θ), and the
+//! forces' own answer to the motion it moves.
 
-use nalgebra::DVector;
+use nalgebra::{DVector, SMatrix, SVector};
 
-use super::basis::{lagrange, quadratic};
+use super::basis::{collocated, lagrange, node_value};
 use super::newton::Linearized;
-use super::{Collocation, Element, Law, NODES, POWERS, values};
+use super::{Collocation, Element, Law, MODEL, NODES, POWERS, STAGES, values};
 use crate::model::buildings::retrofit::dashpot_force;
 use crate::solver::buildings::poly;
 use crate::solver::buildings::taylor::{ORDER, Series};
 
+/// Where the defect model is fitted (three points) and checked (the
+/// last), as fractions θ of the step: between the nodes, where π is not
+/// small.
+const FIT: [f64; MODEL + 1] = [0.25, 0.6, 0.9, 0.5];
+
 /// κ_e = (x_e(0) − Σ_j X_{e,j} ℓ_j(0))/π(0) of each element: the start's
-/// force against the quadratic's there, over the node polynomial's.
+/// force against the collocated cubic's there, over the node polynomial's.
 pub(super) fn kappa(elements: &[Element], y0: &[f64], x: &DVector<f64>) -> Vec<f64> {
     let n = y0.len() / 2;
     let ne = elements.len();
     let start = values(elements, &y0[..n], &y0[n..]);
-    let [a, b, _] = NODES;
     (0..ne)
         .map(|e| {
-            let at_zero: f64 = (0..3).map(|j| x[j * ne + e] * lagrange(j, 0.0)).sum();
-            (start[e] - at_zero) / (-a * b)
+            let at_zero: f64 = (0..STAGES).map(|j| x[j * ne + e] * lagrange(j, 0.0)).sum();
+            (start[e] - at_zero) / node_value(0.0)
         })
         .collect()
 }
 
 impl Collocation {
-    /// The forces' own answer to the defect model: the quadratic through
+    /// The forces' own answer to the defect model: the cubic through
     /// P at the nodes by which each element's force follows the motion the
     /// model moves, its law linearized there,
     ///
@@ -52,7 +56,7 @@ impl Collocation {
         let responses = &self.sets[set];
         let ne = self.elements.len();
         let w = responses.weights(ne, |e| model[e]);
-        let mut b = DVector::zeros(3 * ne);
+        let mut b = DVector::zeros(STAGES * ne);
         let mut p = [0.0; ORDER + 1];
         for (i, &c) in NODES.iter().enumerate() {
             poly::powers(c * h, &mut p);
@@ -79,16 +83,19 @@ impl Collocation {
         linearized.jacobian.solve(&b)
     }
 
-    /// Each element's (λ_e, μ_e) of the defect model d_e(θh) ≈
-    /// −(κ_e + λ_e θ + μ_e θ²)π(θ), or None where a damper's defect does not
-    /// follow it. For each damper, d(θh) = Σ_j X_j ℓ_j(θ) − F(Δv(θh)) on
-    /// the collocated motion: λ and μ from d at θ = 1/2 and 7/8, and the
-    /// model checked at θ = 1/4, to within a tenth of it (or to 1e-12 of
-    /// the damper's force at the motion's speed): the force's divided
-    /// difference x[c₁, c₂, c₃, θh] is then nearly quadratic over the step, as where F
-    /// is analytic over a disc some steps wide; near a reversal of Δv
-    /// (F ∝ |s − s₀|^α) it is not, at any h. A contact's product, a
-    /// polynomial in the motion, keeps λ = μ = 0.
+    /// Each element's (a_{e,1}, a_{e,2}, a_{e,3}) of the defect model
+    /// d_e(θh) ≈ −(κ_e + a_{e,1}θ + a_{e,2}θ² + a_{e,3}θ³)π(θ), or None
+    /// where an element's defect does not follow it. For each element,
+    /// d(θh) = Σ_j X_j ℓ_j(θ) − x(θh), x the law's value on the collocated
+    /// motion (the damper's F(Δv), the product's h δ δ̇): the a_q from d
+    /// at θ = 1/4, 3/5 and 9/10, and the model checked at θ = 1/2, to
+    /// within a tenth of it (or to 1e-12 of the damper's force at the
+    /// motion's speed, of the product's largest node value): the force's
+    /// divided difference x[c₁, …, c₄, θh] is then nearly a cubic over the
+    /// step, as where x is analytic over a disc some steps wide; near a
+    /// reversal of Δv (F ∝ |s − s₀|^α) it is not, at any h. π being
+    /// orthogonal on [0, 1] to 1, θ and θ² only, the cubic term carries
+    /// the end's error: a product's defect is fitted as a damper's is.
     pub(super) fn defect_model(
         &self,
         set: usize,
@@ -97,21 +104,17 @@ impl Collocation {
         x: &DVector<f64>,
         kappa: &[f64],
         speed: f64,
-    ) -> Option<Vec<[f64; 2]>> {
+    ) -> Option<Vec<[f64; MODEL]>> {
         let responses = &self.sets[set];
         let ne = self.elements.len();
-        let w = responses.weights(ne, |f| quadratic(x, ne, f, h));
-        let pi = |theta: f64| {
-            let [a, b, _] = NODES;
-            (theta - a) * (theta - b) * (theta - 1.0)
-        };
+        let w = responses.weights(ne, |f| collocated(x, ne, f, h));
+        // g(θ) − κ = Σ_q a_q θ^q at the fitting points.
+        let powers = SMatrix::<f64, MODEL, MODEL>::from_fn(|k, q| FIT[k].powi(q as i32 + 1));
+        let powers = powers.lu();
         self.elements
             .iter()
             .enumerate()
             .map(|(e, el)| {
-                let Law::Damper { damping, exponent } = el.law else {
-                    return Some([0.0; 2]);
-                };
                 let defect = |theta: f64| {
                     let s = theta * h;
                     let (vl, vr) = (free.velocity(el.left), free.velocity(el.right));
@@ -121,18 +124,40 @@ impl Collocation {
                             rate += wr * poly::eval(&responses.rate[r * ne + e], s);
                         }
                     }
-                    let force: f64 = (0..3).map(|j| x[j * ne + e] * lagrange(j, theta)).sum();
-                    force - dashpot_force(damping, exponent, rate)
+                    let force: f64 = (0..STAGES)
+                        .map(|j| x[j * ne + e] * lagrange(j, theta))
+                        .sum();
+                    let law = match el.law {
+                        Law::Damper { damping, exponent } => dashpot_force(damping, exponent, rate),
+                        Law::Product { gap, coefficient } => {
+                            let (ul, ur) =
+                                (free.displacement(el.left), free.displacement(el.right));
+                            let mut stroke = poly::eval(ul, s) - poly::eval(ur, s);
+                            for (r, &wr) in w.iter().enumerate() {
+                                if wr != 0.0 {
+                                    stroke += wr * poly::eval(&responses.stroke[r * ne + e], s);
+                                }
+                            }
+                            coefficient * (stroke - gap) * rate
+                        }
+                    };
+                    force - law
                 };
-                // g(θ) = −d(θh)/π(θ) = κ + λθ + μθ² through θ = 0, 1/2, 7/8.
-                let (a, b) = (0.5, 0.875);
-                let (ga, gb) = (-defect(a) / pi(a) - kappa[e], -defect(b) / pi(b) - kappa[e]);
-                let mu = (gb / b - ga / a) / (b - a);
-                let lambda = ga / a - mu * a;
-                let floor = 1e-12 * damping * speed.powf(exponent);
-                let theta = 0.25;
-                let model = -(kappa[e] + (lambda + mu * theta) * theta) * pi(theta);
-                ((defect(theta) - model).abs() <= 0.1 * model.abs() + floor).then_some([lambda, mu])
+                let g = SVector::<f64, MODEL>::from_fn(|k, _| {
+                    -defect(FIT[k]) / node_value(FIT[k]) - kappa[e]
+                });
+                let a = powers.solve(&g)?;
+                let floor = match el.law {
+                    Law::Damper { damping, exponent } => 1e-12 * damping * speed.powf(exponent),
+                    Law::Product { .. } => {
+                        1e-12 * (0..STAGES).fold(0.0f64, |m, j| m.max(x[j * ne + e].abs()))
+                    }
+                };
+                let theta = FIT[MODEL];
+                let fitted = a.iter().rev().fold(0.0, |acc, q| (acc + q) * theta);
+                let model = -(kappa[e] + fitted) * node_value(theta);
+                ((defect(theta) - model).abs() <= 0.1 * model.abs() + floor)
+                    .then(|| std::array::from_fn(|q| a[q]))
             })
             .collect()
     }

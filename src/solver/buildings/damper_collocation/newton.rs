@@ -3,18 +3,18 @@
 
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
-use super::basis::quadratic;
+use super::basis::collocated;
 use super::responses::{AtNodes, Responses};
-use super::{Collocation, Element, Law, NEWTON, NODES, POWERS, Row, values};
+use super::{Collocation, Element, Law, NEWTON, NODES, POWERS, Row, STAGES, values};
 use crate::model::buildings::retrofit::dashpot_velocity_slope;
 use crate::solver::buildings::poly;
 use crate::solver::buildings::taylor::{ORDER, Series};
 
 /// The forces of the last step: its start and end, its length, and each
-/// element's force (the quadratic through its nodes and its defect model)
+/// element's force (the cubic through its nodes and its defect model)
 /// as a polynomial in s. A step from the same start (retried shorter, or
 /// retaken) starts Newton from their values at its nodes, the next step
-/// from their extrapolation past the end: O(h³) from the solution where
+/// from their extrapolation past the end: O(h⁴) from the solution where
 /// the force is smooth, so Newton needs fewer iterations than from the
 /// force at the start held over the step, O(h) from it.
 #[derive(Debug)]
@@ -27,7 +27,7 @@ pub(super) struct Forces {
 
 impl Collocation {
     /// Keeps a step's forces ([`Forces`]): from y0 to `end` over h, each
-    /// element's quadratic through the nodes' X plus its defect model.
+    /// element's cubic through the nodes' X plus its defect model.
     pub(super) fn remember(
         &mut self,
         y0: &[f64],
@@ -39,7 +39,7 @@ impl Collocation {
         let ne = self.elements.len();
         let polynomials = (0..ne)
             .map(|e| {
-                let mut p = quadratic(x, ne, e, h);
+                let mut p = collocated(x, ne, e, h);
                 for (p, q) in p.iter_mut().zip(model[e]) {
                     *p += q;
                 }
@@ -71,7 +71,7 @@ impl Collocation {
         } else {
             return None;
         };
-        Some(DVector::from_fn(3 * ne, |r, _| {
+        Some(DVector::from_fn(STAGES * ne, |r, _| {
             let (i, e) = (r / ne, r % ne);
             poly::eval(&forces.polynomials[e], offset + NODES[i] * h)
         }))
@@ -104,7 +104,7 @@ pub(super) fn solve(
 ) -> (Option<Solved>, usize) {
     let n = y0.len() / 2;
     let ne = elements.len();
-    let m = 3 * ne;
+    let m = STAGES * ne;
     let nodes = AtNodes::of(responses, ne, h);
     // The free motion's Δu, Δv at the nodes.
     let mut free_stroke = DVector::zeros(m);
@@ -186,7 +186,7 @@ pub(super) fn solve(
         if converged {
             let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
             free.state(h, &mut u, &mut v);
-            let w = responses.weights(ne, |e| quadratic(&x, ne, e, h));
+            let w = responses.weights(ne, |e| collocated(&x, ne, e, h));
             responses.add_state(&w, (h, free.degree), (&mut u, &mut v));
             u.extend(v);
             let linearized = Linearized {

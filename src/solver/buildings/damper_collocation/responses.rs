@@ -5,13 +5,13 @@
 use nalgebra::DMatrix;
 
 use super::basis::basis;
-use super::{Element, NODES, POWERS};
+use super::{Element, NODES, POWERS, STAGES};
 use crate::solver::buildings::poly;
 use crate::solver::buildings::system::System;
 use crate::solver::buildings::taylor::{Forcing, ORDER, Series};
 
 /// The responses from rest of one configuration to each element's force
-/// x_f = s^k, k = 0 … 4 (response r = k·E + f, E elements): its series,
+/// x_f = s^k, k = 0 … 2S − 1 (response r = k·E + f, E elements): its series,
 /// and Δu_e and Δv_e of every element e as polynomials in s (row r·E + e).
 /// They hold for every step length: the response to ℓ_j(s/h) is
 /// Σ_k ℓ_{j,k} h^(−k) times the k-th, and to π(s/h) likewise.
@@ -149,14 +149,14 @@ impl AtNodes {
     /// The responses to x_f = ℓ_j(s/h) at the nodes c_i h, from the
     /// responses to s^k: ℓ_j(s/h) = Σ_k ℓ_{j,k} s^k ([`basis`]).
     pub(super) fn of(responses: &Responses, ne: usize, h: f64) -> AtNodes {
-        let m = 3 * ne;
+        let m = STAGES * ne;
         let mut stroke = DMatrix::zeros(m, m);
         let mut rate = DMatrix::zeros(m, m);
-        let bases = [basis(0, h), basis(1, h), basis(2, h)];
+        let bases: [[f64; STAGES]; STAGES] = std::array::from_fn(|j| basis(j, h));
         let mut p = [0.0; ORDER + 1];
         for (i, &c) in NODES.iter().enumerate() {
             poly::powers(c * h, &mut p);
-            for k in 0..3 {
+            for k in 0..STAGES {
                 for f in 0..ne {
                     for e in 0..ne {
                         let row = (k * ne + f) * ne + e;
