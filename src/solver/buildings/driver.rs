@@ -236,7 +236,8 @@ struct Run<'a> {
     /// The stack at the end of the last quiet sub-step, with its ground
     /// (a, ȧ, σ); dropped whenever the state moves otherwise.
     stack: Option<((f64, f64, f64), Stack)>,
-    /// The rest point the quiet test measures the state from ([`Rest`]).
+    /// The rest point the quiet test and the energy balance's forms
+    /// measure the state from ([`Rest`]).
     rest: Rest,
     energy: Option<Balance>,
     /// Suggested length of the next Runge–Kutta step in contact (0: none yet).

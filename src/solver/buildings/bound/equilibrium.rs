@@ -87,6 +87,27 @@ impl Equilibrium {
         })
     }
 
+    /// The rest point u* of the configuration of `branches` under `load`
+    /// and the ground's a* = `still` (module doc), into `point`, and the
+    /// residual M⁻¹q − a* 1 − K u* as computed, into `residual`: w* + (w −
+    /// w*) is w itself whatever rounding u* carries.
+    pub fn point(
+        &self,
+        (branches, rest): (&[u8], &mut Rest),
+        load: &[f64],
+        still: f64,
+        (point, residual): (&mut [f64], &mut [f64]),
+    ) {
+        let n = point.len();
+        point.copy_from_slice(&rest.point(self, branches, load, still)[..n]);
+        for (i, r) in residual.iter_mut().enumerate() {
+            *r = load[i] - still;
+            for &(j, k) in &self.entries[self.start[i]..self.start[i + 1]] {
+                *r -= k * point[j];
+            }
+        }
+    }
+
     /// ‖D(w − w*)‖∞ (module doc) at (u, u̇) under ground (a, ȧ) with load
     /// M⁻¹q, for the scaling `scale` (the diagonal of D), in the
     /// configuration of `branches`, whose K⁻¹M⁻¹q `rest` keeps.

@@ -208,6 +208,7 @@ impl Run<'_> {
             (&self.u, &self.v),
             ground,
             (&self.system.load, u1),
+            (&self.key, &mut self.rest),
             (&mut b.state, &mut b.pairs),
             &mut b.values,
         );

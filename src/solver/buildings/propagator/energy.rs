@@ -45,9 +45,11 @@
 //! cancellation squared. As in [`super::super::bound::Equilibrium`], any
 //! w* with 𝒜w* = 0 stays put, w* = (u*, 0, a*, 0, K u* + a* 1) (K here
 //! M⁻¹K, a* = a_g on a line, σ = 0, else 0), so w(s) = w* + e^{𝒜s}δ with
-//! δ = w₀ − w*, taking u* = K⁻¹(M⁻¹q − a* 1), the static displacement (none
-//! where K is singular). w* moves no floor, so the damping and dashpot
-//! integrals are δᵀWδ; E_in's a_g holds a* beside δ's part, whose work is
+//! δ = w₀ − w*, taking u* = K⁻¹(M⁻¹q − a* 1), the static displacement, as
+//! the quiet test takes it and from the same kept vectors
+//! ([`Equilibrium::point`]; none where K is singular). w* moves no floor,
+//! so the damping and dashpot integrals are δᵀWδ; E_in's a_g holds a*
+//! beside δ's part, whose work is
 //! −a* Σ m_i ∫ u̇_i ds = −a* Σ m_i (u_i(h) − u_i(0)):
 //!
 //! ```text
@@ -62,7 +64,7 @@
 
 use nalgebra::DMatrix;
 
-use super::super::bound::scaled;
+use super::super::bound::{Equilibrium, Rest, scaled};
 use super::super::expm::exponential_blocks;
 use super::super::layout::Layout;
 use super::super::sparse::Sparse;
@@ -82,9 +84,8 @@ pub struct WorkForms {
     size: usize,
     /// The forms one after another, each size (size + 1)/2 long.
     packed: Vec<f64>,
-    /// M⁻¹K and its inverse (none where K is singular), for the rest point.
-    stiffness: DMatrix<f64>,
-    inverse: Option<DMatrix<f64>>,
+    /// The configuration's rest points (none where K is singular).
+    equilibrium: Option<Equilibrium>,
     /// Whether the ground's a_g stays put on the piece (σ = 0).
     line: bool,
     /// The floors' masses (kg).
@@ -169,16 +170,10 @@ impl WorkForms {
             }
         }
         let n = layout.dofs;
-        let stiffness = DMatrix::from_fn(n, n, |i, j| -a[(n + i, j)]);
-        let inverse = stiffness
-            .clone()
-            .try_inverse()
-            .filter(|k| k.iter().all(|x| x.is_finite()));
         WorkForms {
             size: d,
             packed,
-            stiffness,
-            inverse,
+            equilibrium: Equilibrium::of(a, n),
             line: a[(2 * n + 1, 2 * n)] == 0.0,
             mass: layout.mass.clone(),
         }
@@ -187,38 +182,38 @@ impl WorkForms {
     /// The integrals over the step (J, one per form, into `out`) from its
     /// start (u, u̇) under ground (a_g, ȧ_g) with load M⁻¹q, to
     /// displacements `u1`: δᵀWδ, and E_in's part of the rest point (module
-    /// doc). `w` and `pairs` are buffers for δ and the products δ_i δ_j.
+    /// doc), which `rest` keeps for the configuration of its branches.
+    /// `w` and `pairs` are buffers for δ and the products δ_i δ_j.
     pub fn on(
         &self,
         (u, v): (&[f64], &[f64]),
         (a, rate): (f64, f64),
         (load, u1): (&[f64], &[f64]),
+        rest: (&[u8], &mut Rest),
         (w, pairs): (&mut Vec<f64>, &mut Vec<f64>),
         out: &mut [f64],
     ) {
         let (d, n) = (self.size, self.mass.len());
-        let rest = if self.line { a } else { 0.0 };
+        let still = if self.line { a } else { 0.0 };
         w.clear();
         w.resize(d, 0.0);
         let (us, tail) = w.split_at_mut(n);
         let residual = &mut tail[n + 2..];
-        // u* = K⁻¹(M⁻¹q − a* 1), then the residual M⁻¹q − a* 1 − K u*.
-        for (r, q) in residual.iter_mut().zip(load) {
-            *r = q - rest;
-        }
-        if let Some(inverse) = &self.inverse {
-            for (i, us) in us.iter_mut().enumerate() {
-                *us = (0..n).map(|j| inverse[(i, j)] * residual[j]).sum();
-            }
-            for (i, r) in residual.iter_mut().enumerate() {
-                *r -= (0..n).map(|j| self.stiffness[(i, j)] * us[j]).sum::<f64>();
+        // u* and the residual M⁻¹q − a* 1 − K u* (none where K is singular:
+        // u* = 0).
+        match &self.equilibrium {
+            Some(e) => e.point(rest, load, still, (us, residual)),
+            None => {
+                for (r, q) in residual.iter_mut().zip(load) {
+                    *r = q - still;
+                }
             }
         }
         for (x, u) in us.iter_mut().zip(u) {
             *x = u - *x;
         }
         tail[..n].copy_from_slice(v);
-        tail[n] = a - rest;
+        tail[n] = a - still;
         tail[n + 1] = rate;
         pairs.clear();
         for i in 0..d {
@@ -229,7 +224,7 @@ impl WorkForms {
             *out = dot(form, pairs);
         }
         let moved: f64 = (0..n).map(|i| self.mass[i] * (u1[i] - u[i])).sum();
-        out[INPUT] -= rest * moved;
+        out[INPUT] -= still * moved;
     }
 
     /// How many forms: 2 and one per link.
@@ -263,7 +258,7 @@ fn dot(x: &[f64], y: &[f64]) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::{DAMPING, INPUT, WorkForms};
+    use super::{DAMPING, INPUT, Rest, WorkForms};
     use crate::model::buildings::parse;
     use crate::solver::buildings::config::Config;
     use crate::solver::buildings::layout::Layout;
@@ -321,7 +316,14 @@ mod tests {
             let mut values = vec![0.0; forms.len()];
             let buffers = (&mut Vec::new(), &mut Vec::new());
             let zero = [0.0; 2];
-            forms.on((&u0, &v0), (0.0, 0.0), (&zero, &u0), buffers, &mut values);
+            forms.on(
+                (&u0, &v0),
+                (0.0, 0.0),
+                (&zero, &u0),
+                (&[], &mut Rest::default()),
+                buffers,
+                &mut values,
+            );
             let mut want = 0.0;
             for (i, &(_, c, omega, zeta, wd)) in oscillators(&layout).iter().enumerate() {
                 let p = v0[i];
@@ -368,6 +370,7 @@ mod tests {
                 (&zero, &zero),
                 (ground, 0.0),
                 (&zero, &end),
+                (&[], &mut Rest::default()),
                 buffers,
                 &mut values,
             );
