@@ -11,8 +11,10 @@ use std::cell::Cell;
 
 use crate::model::buildings::ground::Piece;
 
+use super::super::bound::Watch;
 use super::super::config::Branch;
 use super::super::peaks::Envelope;
+use super::super::poly;
 use super::super::taylor::Series;
 use super::{Run, ground_at};
 
@@ -119,7 +121,11 @@ impl Run<'_> {
     /// raised value is the largest of its quantity on a dense walk of the
     /// series from the start (64 points, then the best one refined by
     /// golden sections on its neighbours), with ü from the equation of
-    /// motion at each point, not from the series' own polynomial.
+    /// motion at each point, not from the series' own polynomial; and it
+    /// is, to 1e-13 of its size, the largest value of the quantity's
+    /// polynomial on the fixed order's series ([`super::super::taylor::ORDER`]),
+    /// where [`Run::locate_rising`] takes the series to the order the
+    /// sub-step's length needs.
     pub(super) fn check_located(&self, piece: &Piece, h: f64, before: &Envelope) {
         let n = self.layout.dofs;
         let ground = ground_at(piece, self.t);
@@ -168,6 +174,7 @@ impl Run<'_> {
             p
         };
         let (old, new) = (peaks(before), peaks(&self.envelope));
+        let storeys = self.layout.storeys.len();
         for k in 0..old.len() {
             if new[k] == old[k] {
                 continue;
@@ -197,8 +204,31 @@ impl Run<'_> {
                 "located peak {} of quantity {k} against {dense} on the dense walk",
                 new[k]
             );
+            let fixed = fixed_order_peak(&series, &self.watch[k], k, 3 * n + storeys, h);
+            assert!(
+                (new[k] - old[k].max(fixed)).abs() <= 1e-13 * scale,
+                "located peak {} of quantity {k} against {fixed} on the fixed order",
+                new[k]
+            );
         }
         LOCATED.set(LOCATED.get() + 1);
+    }
+}
+
+/// The largest value on [0, h] of watched quantity `k` (|·|, but the signed
+/// relative displacements from index `signed` on) as a polynomial of
+/// `series`: what [`Run::locate_rising`] takes on its own series.
+fn fixed_order_peak(series: &Series, watch: &Watch, k: usize, signed: usize, h: f64) -> f64 {
+    let mut c = Vec::new();
+    match watch.order {
+        2 => series.absolute_acceleration(watch.terms[0].0, &mut c),
+        1 => series.combine(&[], &watch.terms, &mut c),
+        _ => series.combine(&watch.terms, &[], &mut c),
+    }
+    if k < signed {
+        poly::max_abs(&c, h)
+    } else {
+        poly::max(&c, h)
     }
 }
 

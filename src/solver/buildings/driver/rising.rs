@@ -4,23 +4,35 @@
 //! Out of contact the motion over the sub-step is x(s) = e^{As} x₀ plus the
 //! particular part of the piece's linear ground (ä_g = σ a_g): an entire
 //! function of s, whose Taylor series at s = 0 is the series of
-//! [`super::super::taylor`] from the sub-step's start. Where that series'
-//! radius covers the whole sub-step, one series gives every watched
-//! quantity q(s) on [0, h] as a polynomial exact to its tolerance, and a
-//! peak of |q| inside is the largest turning point of that polynomial
-//! ([`poly::max_abs`], [`poly::max`] for the signed relative
-//! displacement): the same value the series path records, without its
-//! event search or the other quantities. Its end state is that series' at
-//! h too, as the series path takes it, so that the run stays bit-close to
-//! one that walks such sub-steps by the series (the map's end differs from
-//! it by rounding only, but rounding that events then magnify). A sub-step
-//! whose series does not reach its end goes by the series path.
+//! [`super::super::taylor`] from the sub-step's start. That series is
+//! taken to the lowest order K that carries it over the sub-step
+//! ([`fill_over`](super::super::taylor::Series::fill_over): its last two
+//! terms within the tolerance at h,
+//!
+//! ```text
+//! ‖u_k, u̇_k‖ h^k ≤ TOLERANCE · scale,   k = K − 1, K,
+//! ```
+//!
+//! the truncation the fixed order leaves at its radius): a sub-step is at
+//! most one radian of the fastest mode, where the coefficients fall like
+//! (ωh)^k/k!, so K is 17 or 18 (block-and-frame's IDA, ωh = 0.84) against
+//! the fixed order's 24, and each quantity's polynomial, its turning
+//! points and the end state cost that much less. One series then gives every watched quantity q(s) on [0, h]
+//! as a polynomial exact to its tolerance, and a peak of |q| inside is the
+//! largest turning point of that polynomial ([`poly::max_abs`],
+//! [`poly::max`] for the signed relative displacement): the same value the
+//! series path records, without its event search or the other quantities.
+//! Its end state is that series' at h too, as the series path takes it,
+//! so that the run stays close to one that walks such sub-steps by the
+//! series (the map's end differs from it by rounding only, but rounding
+//! that events then magnify). A sub-step whose series does not reach its
+//! end goes by the series path. The series' vectors are the series steps'
+//! spare ones, reused.
 
 use crate::model::buildings::ground::Piece;
 
 use super::super::peaks::raise;
 use super::super::poly;
-use super::super::taylor::Series;
 use super::{Run, ground_at};
 
 impl Run<'_> {
@@ -38,14 +50,11 @@ impl Run<'_> {
         let (a, rate) = ground_at(piece, self.t);
         let size = |x: &[f64]| x.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
         let scale = (size(&self.u), size(&self.v));
-        let series = Series::new(
-            &self.system,
-            &self.u,
-            &self.v,
-            (a, rate, piece.sigma),
-            scale,
-        );
+        let mut series = std::mem::take(&mut self.spare_series);
+        let ground = (a, rate, piece.sigma);
+        series.fill_over(&self.system, (&self.u, &self.v), ground, scale, h);
         if series.radius < h {
+            self.spare_series = series;
             return false;
         }
         series.state(h, end.0, end.1);
@@ -72,6 +81,7 @@ impl Run<'_> {
             }
         }
         self.buf = c;
+        self.spare_series = series;
         true
     }
 }
