@@ -1100,7 +1100,7 @@ impl Run<'_> {
                 }
             }
         }
-        self.system = System::of(&self.layout, &self.config);
+        self.system = self.propagator.systems.of(&self.layout, &self.config);
     }
 
     fn finish(mut self, duration: f64) -> RowRun {

@@ -1,5 +1,6 @@
 //! The closed-form map over one sub-step out of contact (SPEC §13), cached
-//! by (configuration, h, σ).
+//! by (configuration, h, σ), and the systems of the configurations out of
+//! contact ([`Systems`]).
 //!
 //! With w = (u, u̇, a_g, ȧ_g, M⁻¹q) the motion is w' = 𝒜w,
 //!
@@ -29,7 +30,7 @@ use nalgebra::DMatrix;
 
 use super::bound::{Bounds, GroundJump, Watch};
 use super::layout::Layout;
-use super::system::System;
+use super::system::{System, Systems};
 
 mod energy;
 mod map;
@@ -59,6 +60,9 @@ pub struct Propagator {
     pub used: usize,
     /// Seconds spent making maps and their bounds, and the energy's forms.
     pub seconds: f64,
+    /// The systems of the configurations met out of contact ([`Systems`]),
+    /// which events switch to.
+    pub systems: Systems,
 }
 
 /// The augmented matrix 𝒜 of `system` (no contact) on a piece with σ.

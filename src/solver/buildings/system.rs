@@ -19,10 +19,12 @@
 use nalgebra::DMatrix;
 
 use super::config::{Branch, Config};
-use super::layout::Layout;
+use super::layout::{Layout, Storey};
 
+mod cache;
 mod columns;
 
+pub use cache::Systems;
 pub use columns::Columns;
 
 /// The nonlinear term of one closed pair: h δ δ̇.
@@ -53,36 +55,65 @@ pub struct System {
     pub columns: Columns,
 }
 
+/// Storey `i`'s stiffness k_e on its branch of `config`, less its P-Δ
+/// stiffness P/h, and its constant shear V₀, with V = k_eΔ + V₀: elastic,
+/// k and −(1 − α)k p; yielding, αk and ±(1 − α)kΔ_y.
+fn storey_terms(s: &Storey, config: &Config, i: usize) -> (f64, f64) {
+    let (ke, v0) = match config.branch[i] {
+        Branch::Elastic => (
+            s.stiffness,
+            -(1.0 - s.alpha) * s.stiffness * config.plastic[i],
+        ),
+        Branch::Plus => (
+            s.alpha * s.stiffness,
+            (1.0 - s.alpha) * s.stiffness * s.yield_drift,
+        ),
+        Branch::Minus => (
+            s.alpha * s.stiffness,
+            -(1.0 - s.alpha) * s.stiffness * s.yield_drift,
+        ),
+    };
+    (ke - s.geometric, v0)
+}
+
+/// M⁻¹q of `config`: each storey's −V₀ on its upper floor and +V₀ on its
+/// lower one, and each closed pair's k̄d on A and −k̄d on B, divided by
+/// the floor's mass.
+fn load(layout: &Layout, config: &Config) -> Vec<f64> {
+    let mut q = vec![0.0; layout.dofs];
+    for (i, s) in layout.storeys.iter().enumerate() {
+        let (_, v0) = storey_terms(s, config, i);
+        q[s.upper] -= v0;
+        if let Some(lo) = s.lower {
+            q[lo] += v0;
+        }
+    }
+    for (pi, (p, closed)) in layout.pairs.iter().zip(&config.contact).enumerate() {
+        if let Some(closed) = closed {
+            let kd = closed.law.stiffness * layout.gaps[pi];
+            q[p.left_dof] += kd;
+            q[p.right_dof] -= kd;
+        }
+    }
+    for (q, m) in q.iter_mut().zip(&layout.mass) {
+        *q /= m;
+    }
+    q
+}
+
 impl System {
     pub fn of(layout: &Layout, config: &Config) -> System {
         let n = layout.dofs;
         let mut k = DMatrix::<f64>::zeros(n, n);
         let mut c = layout.damping.clone();
-        let mut q = vec![0.0; n];
         for (i, s) in layout.storeys.iter().enumerate() {
-            let (ke, v0) = match config.branch[i] {
-                Branch::Elastic => (
-                    s.stiffness,
-                    -(1.0 - s.alpha) * s.stiffness * config.plastic[i],
-                ),
-                Branch::Plus => (
-                    s.alpha * s.stiffness,
-                    (1.0 - s.alpha) * s.stiffness * s.yield_drift,
-                ),
-                Branch::Minus => (
-                    s.alpha * s.stiffness,
-                    -(1.0 - s.alpha) * s.stiffness * s.yield_drift,
-                ),
-            };
-            let ke = ke - s.geometric;
+            let (ke, _) = storey_terms(s, config, i);
             let up = s.upper;
             k[(up, up)] += ke;
-            q[up] -= v0;
             if let Some(lo) = s.lower {
                 k[(lo, lo)] += ke;
                 k[(up, lo)] -= ke;
                 k[(lo, up)] -= ke;
-                q[lo] += v0;
             }
         }
         let mut products = Vec::new();
@@ -102,8 +133,6 @@ impl System {
             c[(a, b)] -= cc / ma;
             c[(b, b)] += cc / mb;
             c[(b, a)] -= cc / mb;
-            q[a] += kk * d;
-            q[b] -= kk * d;
             if law.hertz_damping != 0.0 {
                 products.push(Product {
                     left: a,
@@ -120,7 +149,6 @@ impl System {
             for j in 0..n {
                 k[(i, j)] /= m;
             }
-            q[i] /= m;
         }
         let mut entries = Vec::new();
         let mut row_start = vec![0];
@@ -137,10 +165,25 @@ impl System {
             columns: Columns::of(&k, &c),
             stiffness: k,
             damping: c,
-            load: q,
+            load: load(layout, config),
             products,
             entries,
             row_start,
+        }
+    }
+
+    /// This system with the load M⁻¹q of `config` in place of its own: the
+    /// system of `config` when it has this one's branches and contacts
+    /// (the plastic offsets enter M⁻¹q alone), bit for bit.
+    pub fn with_load_of(&self, layout: &Layout, config: &Config) -> System {
+        System {
+            stiffness: self.stiffness.clone(),
+            damping: self.damping.clone(),
+            load: load(layout, config),
+            products: self.products.clone(),
+            entries: self.entries.clone(),
+            row_start: self.row_start.clone(),
+            columns: self.columns.clone(),
         }
     }
 
