@@ -691,6 +691,7 @@ impl Run<'_> {
                 (series, None)
             };
             let mut end = rem.min(series.radius);
+            let whole = end;
             let mut event = None;
             if events {
                 self.find_events(&series, &mut end, &mut event);
@@ -707,7 +708,9 @@ impl Run<'_> {
                 *step = contact.settle((y0, f0), g, end, sv);
                 end = step.h;
             }
-            self.peaks_on(&series, end, rk.is_some().then_some(piece));
+            // The events' search left the reach over [0, whole] of this series.
+            let reached = events && end == whole;
+            self.peaks_on(&series, end, rk.is_some().then_some(piece), reached);
             if self.energy.is_some() {
                 self.work_on(&series, end);
             }
@@ -910,11 +913,14 @@ impl Run<'_> {
     /// shortest steps (near an event) swamps ü: there the acceleration's
     /// largest point is located on the polynomial and its value taken from
     /// the equation of motion at the interpolated state; the ends are the
-    /// recorded points.
-    fn peaks_on(&mut self, series: &Series, end: f64, rk: Option<&Piece>) {
+    /// recorded points. With `reached`, the run's reach already holds
+    /// that of `series` over [0, end].
+    fn peaks_on(&mut self, series: &Series, end: f64, rk: Option<&Piece>, reached: bool) {
         let mut c = std::mem::take(&mut self.buf);
         let n = self.layout.dofs;
-        self.reach.set(series, end);
+        if !reached {
+            self.reach.set(series, end);
+        }
         for i in 0..n {
             let env = &mut self.envelope;
             // |u_i| and |u̇_i| cannot pass their peaks on the step ([`Reach`]),

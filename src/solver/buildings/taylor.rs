@@ -258,11 +258,19 @@ impl Series {
         for ((x, &u), &v) in state[..n].iter_mut().zip(u0).zip(v0) {
             *x = [u, v];
         }
-        // max_i |u_k,i| / scale_u against max_i |u̇_k,i| / scale_v.
+        // max_i |u_k,i| / scale_u against max_i |u̇_k,i| / scale_v (a NaN
+        // passed over, as f64::max does, without its test for one).
         let norm = |column: &[[f64; 2]]| {
-            let (nu, nv) = column.iter().fold((0.0f64, 0.0f64), |(nu, nv), &[u, v]| {
-                (nu.max(u.abs()), nv.max(v.abs()))
-            });
+            let (mut nu, mut nv) = (0.0f64, 0.0f64);
+            for &[u, v] in column {
+                let (u, v) = (u.abs(), v.abs());
+                if u > nu {
+                    nu = u;
+                }
+                if v > nv {
+                    nv = v;
+                }
+            }
             (nu / scale.0).max(nv / scale.1)
         };
         let w = top + 1;
@@ -338,13 +346,16 @@ impl Series {
             Some(want) if degree < top => radius.max(want),
             _ => radius,
         };
-        // Floor by floor, blocks of degree + 1 coefficients.
+        // Floor by floor, blocks of degree + 1 coefficients: each order's
+        // column read in turn and scattered to its place in every block.
         let width = degree + 1;
-        for (half, out) in [&mut self.u, &mut self.v].into_iter().enumerate() {
-            out.clear();
-            for i in 0..n {
-                let floor = state[i..].iter().step_by(n).take(width);
-                out.extend(floor.map(|pair| pair[half]));
+        let (u, v) = (&mut self.u, &mut self.v);
+        u.resize(n * width, 0.0);
+        v.resize(n * width, 0.0);
+        for (k, column) in state[..width * n].chunks_exact(n).enumerate() {
+            for (i, &[x, y]) in column.iter().enumerate() {
+                u[i * width + k] = x;
+                v[i * width + k] = y;
             }
         }
         self.n = n;
