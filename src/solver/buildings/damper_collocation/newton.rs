@@ -1,7 +1,7 @@
 //! The nodes' forces of one collocated step by Newton's method (SPEC §14),
 //! and its first guess from the last step's forces.
 
-use nalgebra::{DMatrix, DVector, Dyn, LU};
+use nalgebra::{DMatrix, DVector, Dyn, LU, Matrix4, U4, Vector4};
 
 use super::basis::collocated;
 use super::responses::{AtNodes, Responses};
@@ -85,9 +85,42 @@ pub(super) type Solved = (Vec<f64>, DVector<f64>, Linearized);
 /// The LU factors of the collocated equations' Jacobian at a solve's last
 /// iterate, and each element's Δu, Δv at the nodes there (row i·E + e).
 pub(super) struct Linearized {
-    pub(super) jacobian: LU<f64, Dyn, Dyn>,
+    pub(super) jacobian: Factors,
     pub(super) stroke: DVector<f64>,
     pub(super) rate: DVector<f64>,
+}
+
+/// LU factors with partial pivoting of a Jacobian of order S·E: on the
+/// stack for one element (4 × 4, the row with one damper and no improved
+/// Kelvin contact), else on the heap. nalgebra's LU is one algorithm over
+/// both sizes, so both give the same factors and solutions to the bit.
+pub(super) enum Factors {
+    One(LU<f64, U4, U4>),
+    Any(LU<f64, Dyn, Dyn>),
+}
+
+impl Factors {
+    /// The factors of the m × m matrix of entries `entry(r, q)`.
+    fn of(m: usize, entry: impl Fn(usize, usize) -> f64) -> Factors {
+        if m == STAGES {
+            Factors::One(Matrix4::from_fn(entry).lu())
+        } else {
+            Factors::Any(DMatrix::from_fn(m, m, entry).lu())
+        }
+    }
+
+    /// b ← J⁻¹ b; false where J is singular.
+    pub(super) fn solve_mut(&self, b: &mut DVector<f64>) -> bool {
+        match self {
+            Factors::One(lu) => {
+                let mut fixed = Vector4::from_column_slice(b.as_slice());
+                let solved = lu.solve_mut(&mut fixed);
+                b.copy_from(&fixed);
+                solved
+            }
+            Factors::Any(lu) => lu.solve_mut(b),
+        }
+    }
 }
 
 /// The nodes' forces over a step of length h on the free motion `free`
@@ -141,40 +174,43 @@ pub(super) fn solve(
             Law::Product { .. } => 0.0,
         })
         .collect();
-    let mut residual = DVector::zeros(m);
+    let mut delta = DVector::zeros(m);
     let (mut stroke, mut rate) = (DVector::zeros(m), DVector::zeros(m));
+    // Each row's term on the diagonal: a damper's ψ'(X), a product's 1.
+    let mut diagonal = vec![0.0; m];
     for iteration in 1..=NEWTON {
         nodes.stroke.mul_to(&x, &mut stroke);
         stroke += &free_stroke;
         nodes.rate.mul_to(&x, &mut rate);
         rate += &free_rate;
-        let mut jacobian = DMatrix::zeros(m, m);
         for r in 0..m {
             match elements[r % ne].law {
                 Law::Damper { damping, exponent } => {
                     // ψ(F) = α F ψ'(F): one power for both.
                     let slope = dashpot_velocity_slope(damping, exponent, x[r]);
-                    residual[r] = exponent * x[r] * slope - rate[r];
-                    for q in 0..m {
-                        jacobian[(r, q)] = -nodes.rate[(r, q)];
-                    }
-                    jacobian[(r, r)] += slope;
+                    delta[r] = exponent * x[r] * slope - rate[r];
+                    diagonal[r] = slope;
                 }
                 Law::Product { gap, coefficient } => {
-                    let delta = stroke[r] - gap;
-                    residual[r] = x[r] - coefficient * delta * rate[r];
-                    for q in 0..m {
-                        jacobian[(r, q)] = -coefficient
-                            * (rate[r] * nodes.stroke[(r, q)] + delta * nodes.rate[(r, q)]);
-                    }
-                    jacobian[(r, r)] += 1.0;
+                    delta[r] = x[r] - coefficient * (stroke[r] - gap) * rate[r];
+                    diagonal[r] = 1.0;
                 }
             }
         }
-        let jacobian = jacobian.lu();
-        let Some(delta) = jacobian.solve(&residual) else {
+        let jacobian = Factors::of(m, |r, q| {
+            let entry = match elements[r % ne].law {
+                Law::Damper { .. } => -nodes.rate[(r, q)],
+                Law::Product { gap, coefficient } => {
+                    let delta = stroke[r] - gap;
+                    -coefficient * (rate[r] * nodes.stroke[(r, q)] + delta * nodes.rate[(r, q)])
+                }
+            };
+            if r == q { entry + diagonal[r] } else { entry }
+        });
+        // The update, the residual solved in place.
+        if !jacobian.solve_mut(&mut delta) {
             return (None, iteration);
-        };
+        }
         x -= &delta;
         let converged = (0..m).all(|r| {
             let bound = match elements[r % ne].law {
