@@ -100,12 +100,12 @@ pub(super) enum Factors {
 }
 
 impl Factors {
-    /// The factors of the m × m matrix of entries `entry(r, q)`.
-    fn of(m: usize, entry: impl Fn(usize, usize) -> f64) -> Factors {
-        if m == STAGES {
-            Factors::One(Matrix4::from_fn(entry).lu())
+    /// The factors of the m × m matrix `jacobian` (column by column).
+    fn of(jacobian: DMatrix<f64>) -> Factors {
+        if jacobian.nrows() == STAGES {
+            Factors::One(Matrix4::from_column_slice(jacobian.as_slice()).lu())
         } else {
-            Factors::Any(DMatrix::from_fn(m, m, entry).lu())
+            Factors::Any(jacobian.lu())
         }
     }
 
@@ -123,6 +123,45 @@ impl Factors {
     }
 }
 
+/// One row of the collocated equations linearized at an iterate: a
+/// damper's ψ'(X_r), a product's (h, δ̇_r, δ_r).
+#[derive(Debug, Clone, Copy)]
+enum Linear {
+    Damper(f64),
+    Product(f64, f64, f64),
+}
+
+/// The Jacobian of the collocated equations, column by column:
+///
+/// ```text
+/// damper:   J_rq = −Δv_r[ℓ_q] + ψ'(X_r) [r = q],
+/// product:  J_rq = −h(δ̇_r Δu_r[ℓ_q] + δ_r Δv_r[ℓ_q]) + [r = q],
+/// ```
+///
+/// Δu_r[ℓ_q], Δv_r[ℓ_q] the responses at the nodes ([`AtNodes`]).
+fn jacobian(nodes: &AtNodes, rows: &[Linear]) -> DMatrix<f64> {
+    let m = rows.len();
+    let mut jacobian = DMatrix::zeros(m, m);
+    let columns = jacobian.as_mut_slice().chunks_exact_mut(m);
+    let strokes = nodes.stroke.as_slice().chunks_exact(m);
+    let rates = nodes.rate.as_slice().chunks_exact(m);
+    for (q, ((column, stroke), rate)) in columns.zip(strokes).zip(rates).enumerate() {
+        for (((j, row), s), v) in column.iter_mut().zip(rows).zip(stroke).zip(rate) {
+            *j = match *row {
+                Linear::Damper(_) => -v,
+                Linear::Product(coefficient, rate, stretch) => {
+                    -coefficient * (rate * s + stretch * v)
+                }
+            };
+        }
+        column[q] += match rows[q] {
+            Linear::Damper(slope) => slope,
+            Linear::Product(..) => 1.0,
+        };
+    }
+    jacobian
+}
+
 /// The nodes' forces over a step of length h on the free motion `free`
 /// (from y0), by Newton's method: the end (u, u̇) when it converged (to
 /// 1e-15 of each damper's force at the motion's speed, 1e-14 of each
@@ -138,7 +177,7 @@ pub(super) fn solve(
     let n = y0.len() / 2;
     let ne = elements.len();
     let m = STAGES * ne;
-    let nodes = AtNodes::of(responses, ne, h);
+    let nodes = AtNodes::of(responses, elements, h);
     // The free motion's Δu, Δv at the nodes.
     let mut free_stroke = DVector::zeros(m);
     let mut free_rate = DVector::zeros(m);
@@ -176,8 +215,9 @@ pub(super) fn solve(
         .collect();
     let mut delta = DVector::zeros(m);
     let (mut stroke, mut rate) = (DVector::zeros(m), DVector::zeros(m));
-    // Each row's term on the diagonal: a damper's ψ'(X), a product's 1.
-    let mut diagonal = vec![0.0; m];
+    // Each row's law linearized at the iterate: a damper's ψ'(X) on the
+    // diagonal, a product's (h, δ̇, δ) and 1 there.
+    let mut rows = vec![Linear::Damper(0.0); m];
     for iteration in 1..=NEWTON {
         nodes.stroke.mul_to(&x, &mut stroke);
         stroke += &free_stroke;
@@ -189,26 +229,18 @@ pub(super) fn solve(
                     // ψ(F) = α F ψ'(F): one power for both.
                     let slope = dashpot_velocity_slope(damping, exponent, x[r]);
                     delta[r] = exponent * x[r] * slope - rate[r];
-                    diagonal[r] = slope;
+                    rows[r] = Linear::Damper(slope);
                 }
                 Law::Product { gap, coefficient } => {
-                    delta[r] = x[r] - coefficient * (stroke[r] - gap) * rate[r];
-                    diagonal[r] = 1.0;
+                    let stretch = stroke[r] - gap;
+                    delta[r] = x[r] - coefficient * stretch * rate[r];
+                    rows[r] = Linear::Product(coefficient, rate[r], stretch);
                 }
             }
         }
-        let jacobian = Factors::of(m, |r, q| {
-            let entry = match elements[r % ne].law {
-                Law::Damper { .. } => -nodes.rate[(r, q)],
-                Law::Product { gap, coefficient } => {
-                    let delta = stroke[r] - gap;
-                    -coefficient * (rate[r] * nodes.stroke[(r, q)] + delta * nodes.rate[(r, q)])
-                }
-            };
-            if r == q { entry + diagonal[r] } else { entry }
-        });
+        let factors = Factors::of(jacobian(&nodes, &rows));
         // The update, the residual solved in place.
-        if !jacobian.solve_mut(&mut delta) {
+        if !factors.solve_mut(&mut delta) {
             return (None, iteration);
         }
         x -= &delta;
@@ -226,7 +258,7 @@ pub(super) fn solve(
             responses.add_state(&w, (h, free.degree), (&mut u, &mut v));
             u.extend(v);
             let linearized = Linearized {
-                jacobian,
+                jacobian: factors,
                 stroke,
                 rate,
             };
