@@ -515,9 +515,9 @@ impl Collocation {
             // difference: from the dense output where it is made.
             let (end, error): (Vec<f64>, Vec<f64>) = if dense {
                 let motion = self.motion(set, free, h, &x, &model);
-                let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
-                motion.state(h, &mut u, &mut v);
-                u.extend(v);
+                let mut u = vec![0.0; 2 * n];
+                let (eu, ev) = u.split_at_mut(n);
+                motion.state(h, eu, ev);
                 let error = u.iter().zip(&whole).map(|(e, y)| e - y).collect();
                 self.last = Some(motion);
                 (u, error)

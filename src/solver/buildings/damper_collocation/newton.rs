@@ -37,21 +37,26 @@ impl Collocation {
         model: &[[f64; POWERS]],
     ) {
         let ne = self.elements.len();
-        let polynomials = (0..ne)
-            .map(|e| {
-                let mut p = collocated(x, ne, e, h);
-                for (p, q) in p.iter_mut().zip(model[e]) {
-                    *p += q;
-                }
-                p
-            })
-            .collect();
-        self.forces = Some(Forces {
-            start: y0.to_vec(),
-            end: end.to_vec(),
+        // The last step's vectors, written over.
+        let forces = self.forces.get_or_insert_with(|| Forces {
+            start: Vec::new(),
+            end: Vec::new(),
             h,
-            polynomials,
+            polynomials: Vec::new(),
         });
+        forces.polynomials.clear();
+        forces.polynomials.extend((0..ne).map(|e| {
+            let mut p = collocated(x, ne, e, h);
+            for (p, q) in p.iter_mut().zip(model[e]) {
+                *p += q;
+            }
+            p
+        }));
+        forces.start.clear();
+        forces.start.extend_from_slice(y0);
+        forces.end.clear();
+        forces.end.extend_from_slice(end);
+        forces.h = h;
     }
 
     /// Newton's first guess for a step of length h from y0 ([`Forces`]):
@@ -100,11 +105,17 @@ pub(super) enum Factors {
 }
 
 impl Factors {
-    /// The factors of the m × m matrix `jacobian` (column by column).
-    fn of(jacobian: DMatrix<f64>) -> Factors {
-        if jacobian.nrows() == STAGES {
-            Factors::One(Matrix4::from_column_slice(jacobian.as_slice()).lu())
+    /// The factors of the Jacobian at the linearized rows `rows`
+    /// ([`fill`]): one element's 4 × 4 on the stack.
+    fn of(nodes: &AtNodes, rows: &[Linear]) -> Factors {
+        let m = rows.len();
+        if m == STAGES {
+            let mut jacobian = [0.0; STAGES * STAGES];
+            fill(nodes, rows, &mut jacobian);
+            Factors::One(Matrix4::from_column_slice(&jacobian).lu())
         } else {
+            let mut jacobian = DMatrix::zeros(m, m);
+            fill(nodes, rows, jacobian.as_mut_slice());
             Factors::Any(jacobian.lu())
         }
     }
@@ -138,11 +149,11 @@ enum Linear {
 /// product:  J_rq = −h(δ̇_r Δu_r[ℓ_q] + δ_r Δv_r[ℓ_q]) + [r = q],
 /// ```
 ///
-/// Δu_r[ℓ_q], Δv_r[ℓ_q] the responses at the nodes ([`AtNodes`]).
-fn jacobian(nodes: &AtNodes, rows: &[Linear]) -> DMatrix<f64> {
+/// Δu_r[ℓ_q], Δv_r[ℓ_q] the responses at the nodes ([`AtNodes`]), into
+/// `jacobian` (m × m, column-major).
+fn fill(nodes: &AtNodes, rows: &[Linear], jacobian: &mut [f64]) {
     let m = rows.len();
-    let mut jacobian = DMatrix::zeros(m, m);
-    let columns = jacobian.as_mut_slice().chunks_exact_mut(m);
+    let columns = jacobian.chunks_exact_mut(m);
     let strokes = nodes.stroke.as_slice().chunks_exact(m);
     let rates = nodes.rate.as_slice().chunks_exact(m);
     for (q, ((column, stroke), rate)) in columns.zip(strokes).zip(rates).enumerate() {
@@ -159,7 +170,6 @@ fn jacobian(nodes: &AtNodes, rows: &[Linear]) -> DMatrix<f64> {
             Linear::Product(..) => 1.0,
         };
     }
-    jacobian
 }
 
 /// The nodes' forces over a step of length h on the free motion `free`
@@ -238,7 +248,7 @@ pub(super) fn solve(
                 }
             }
         }
-        let factors = Factors::of(jacobian(&nodes, &rows));
+        let factors = Factors::of(&nodes, &rows);
         // The update, the residual solved in place.
         if !factors.solve_mut(&mut delta) {
             return (None, iteration);
@@ -252,11 +262,12 @@ pub(super) fn solve(
             delta[r].abs() <= bound
         });
         if converged {
-            let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
-            free.state(h, &mut u, &mut v);
+            // (u, u̇) side by side.
+            let mut u = vec![0.0; 2 * n];
+            let (eu, ev) = u.split_at_mut(n);
+            free.state(h, eu, ev);
             let w = responses.weights(ne, |e| collocated(&x, ne, e, h));
-            responses.add_state(&w, (h, free.degree), (&mut u, &mut v));
-            u.extend(v);
+            responses.add_state(&w, (h, free.degree), (eu, ev));
             let linearized = Linearized {
                 jacobian: factors,
                 stroke,
