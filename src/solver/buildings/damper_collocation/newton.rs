@@ -1,7 +1,11 @@
 //! The nodes' forces of one collocated step by Newton's method (SPEC §14),
 //! and its first guess from the last step's forces.
 
-use nalgebra::{DMatrix, DVector, Dyn, LU, Matrix4, U4, Vector4};
+use nalgebra::allocator::Allocator;
+use nalgebra::{
+    DMatrix, DVector, DefaultAllocator, DimMin, DimName, Dyn, LU, OMatrix, OVector, U4, U8, U12,
+    U16,
+};
 
 use super::basis::collocated;
 use super::responses::{AtNodes, Responses};
@@ -96,39 +100,70 @@ pub(super) struct Linearized {
 }
 
 /// LU factors with partial pivoting of a Jacobian of order S·E: on the
-/// stack for one element (4 × 4, the row with one damper and no improved
-/// Kelvin contact), else on the heap. nalgebra's LU is one algorithm over
-/// both sizes, so both give the same factors and solutions to the bit.
+/// stack for one to four elements (a damper and up to three contacts of
+/// the improved Kelvin law closed), else on the heap. nalgebra's LU is
+/// one algorithm over every size, so all give the same factors and
+/// solutions to the bit. (The variants differ in size by design: boxing
+/// the larger would bring back the allocation per Newton iteration that
+/// the fixed sizes remove.)
+#[allow(clippy::large_enum_variant)]
 pub(super) enum Factors {
     One(LU<f64, U4, U4>),
+    Two(LU<f64, U8, U8>),
+    Three(LU<f64, U12, U12>),
+    Four(LU<f64, U16, U16>),
     Any(LU<f64, Dyn, Dyn>),
+}
+
+/// The factors of the Jacobian at `rows` ([`fill`]) of the fixed order D.
+fn fixed<D>(nodes: &AtNodes, rows: &[Linear]) -> LU<f64, D, D>
+where
+    D: DimName + DimMin<D, Output = D>,
+    DefaultAllocator: Allocator<D, D> + Allocator<D>,
+{
+    let mut jacobian = OMatrix::<f64, D, D>::zeros();
+    fill(nodes, rows, jacobian.as_mut_slice());
+    jacobian.lu()
+}
+
+/// b ← J⁻¹ b by the factors `lu` of the fixed order D; false where J is
+/// singular.
+fn solve_fixed<D>(lu: &LU<f64, D, D>, b: &mut DVector<f64>) -> bool
+where
+    D: DimName + DimMin<D, Output = D>,
+    DefaultAllocator: Allocator<D, D> + Allocator<D>,
+{
+    let mut fixed = OVector::<f64, D>::from_column_slice(b.as_slice());
+    let solved = lu.solve_mut(&mut fixed);
+    b.copy_from(&fixed);
+    solved
 }
 
 impl Factors {
     /// The factors of the Jacobian at the linearized rows `rows`
-    /// ([`fill`]): one element's 4 × 4 on the stack.
+    /// ([`fill`]).
     fn of(nodes: &AtNodes, rows: &[Linear]) -> Factors {
-        let m = rows.len();
-        if m == STAGES {
-            let mut jacobian = [0.0; STAGES * STAGES];
-            fill(nodes, rows, &mut jacobian);
-            Factors::One(Matrix4::from_column_slice(&jacobian).lu())
-        } else {
-            let mut jacobian = DMatrix::zeros(m, m);
-            fill(nodes, rows, jacobian.as_mut_slice());
-            Factors::Any(jacobian.lu())
+        match rows.len() / STAGES {
+            1 => Factors::One(fixed(nodes, rows)),
+            2 => Factors::Two(fixed(nodes, rows)),
+            3 => Factors::Three(fixed(nodes, rows)),
+            4 => Factors::Four(fixed(nodes, rows)),
+            _ => {
+                let m = rows.len();
+                let mut jacobian = DMatrix::zeros(m, m);
+                fill(nodes, rows, jacobian.as_mut_slice());
+                Factors::Any(jacobian.lu())
+            }
         }
     }
 
     /// b ← J⁻¹ b; false where J is singular.
     pub(super) fn solve_mut(&self, b: &mut DVector<f64>) -> bool {
         match self {
-            Factors::One(lu) => {
-                let mut fixed = Vector4::from_column_slice(b.as_slice());
-                let solved = lu.solve_mut(&mut fixed);
-                b.copy_from(&fixed);
-                solved
-            }
+            Factors::One(lu) => solve_fixed(lu, b),
+            Factors::Two(lu) => solve_fixed(lu, b),
+            Factors::Three(lu) => solve_fixed(lu, b),
+            Factors::Four(lu) => solve_fixed(lu, b),
             Factors::Any(lu) => lu.solve_mut(b),
         }
     }
