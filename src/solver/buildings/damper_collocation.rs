@@ -98,7 +98,7 @@ use super::damper::Damper;
 use super::system::System;
 use super::taylor::{ORDER, Series};
 use crate::model::buildings::retrofit::dashpot_force;
-use basis::{collocated, defect_polynomial, lagrange};
+use basis::{collocated, defect_polynomial, lagrange_at};
 use estimate::kappa;
 use newton::{Forces, Solved, solve};
 use responses::Responses;
@@ -113,6 +113,23 @@ pub const NODES: [f64; STAGES] = [
     0.409_466_864_440_734_7,
     0.787_659_461_760_847_1,
     1.0,
+];
+
+/// ℓ_j at the nodes of the first half of a step and of the second,
+/// θ = c_i/2 and 1/2 + c_i/2 (row i): the halves' first guess.
+const AT_HALVES: [[[f64; STAGES]; STAGES]; 2] = [
+    lagrange_at([
+        0.5 * NODES[0],
+        0.5 * NODES[1],
+        0.5 * NODES[2],
+        0.5 * NODES[3],
+    ]),
+    lagrange_at([
+        0.5 + 0.5 * NODES[0],
+        0.5 + 0.5 * NODES[1],
+        0.5 + 0.5 * NODES[2],
+        0.5 + 0.5 * NODES[3],
+    ]),
 ];
 
 /// Coefficients a_1 … a_{S−1} of the defect model past κ ([`basis::defect_polynomial`]).
@@ -498,9 +515,9 @@ impl Collocation {
             // difference: from the dense output where it is made.
             let (end, error): (Vec<f64>, Vec<f64>) = if dense {
                 let motion = self.motion(set, free, h, &x, &model);
-                let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
-                motion.state(h, &mut u, &mut v);
-                u.extend(v);
+                let mut u = vec![0.0; 2 * n];
+                let (eu, ev) = u.split_at_mut(n);
+                motion.state(h, eu, ev);
                 let error = u.iter().zip(&whole).map(|(e, y)| e - y).collect();
                 self.last = Some(motion);
                 (u, error)
@@ -525,16 +542,15 @@ impl Collocation {
             self.motion(set, free, h, &x, &model)
         });
         // The halves start from the whole step's forces, interpolated.
-        let guess = |offset: f64| {
+        let guess = |half: usize| {
             DVector::from_fn(STAGES * ne, |r, _| {
                 let (i, e) = (r / ne, r % ne);
-                let theta = offset + 0.5 * NODES[i];
                 (0..STAGES)
-                    .map(|j| x[j * ne + e] * lagrange(j, theta))
+                    .map(|j| x[j * ne + e] * AT_HALVES[half][i][j])
                     .sum()
             })
         };
-        let (half, ..) = self.solve(row, set, (free, y0), 0.5 * h, Some(guess(0.0)))?;
+        let (half, ..) = self.solve(row, set, (free, y0), 0.5 * h, Some(guess(0)))?;
         let (u, v) = half.split_at(n);
         let mut middle = Series::default();
         middle.fill_linear(
@@ -544,7 +560,7 @@ impl Collocation {
             row.scale,
             0.5 * h,
         );
-        let (twice, ..) = self.solve(row, set, (&middle, &half), 0.5 * h, Some(guess(0.5)))?;
+        let (twice, ..) = self.solve(row, set, (&middle, &half), 0.5 * h, Some(guess(1)))?;
         let divisor = doubling(&self.elements);
         let error = whole
             .iter()

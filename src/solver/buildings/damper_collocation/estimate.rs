@@ -4,7 +4,7 @@
 
 use nalgebra::{DVector, SMatrix, SVector};
 
-use super::basis::{collocated, lagrange, node_value};
+use super::basis::{collocated, lagrange_at, node_value};
 use super::newton::Linearized;
 use super::{Collocation, Element, Law, MODEL, NODES, POWERS, STAGES, values};
 use crate::model::buildings::retrofit::dashpot_force;
@@ -16,6 +16,20 @@ use crate::solver::buildings::taylor::{ORDER, Series};
 /// small.
 const FIT: [f64; MODEL + 1] = [0.25, 0.6, 0.9, 0.5];
 
+/// ℓ_j at the start, θ = 0.
+const AT_START: [[f64; STAGES]; 1] = lagrange_at([0.0]);
+
+/// ℓ_j at the points of [`FIT`] (row k).
+const AT_FIT: [[f64; STAGES]; MODEL + 1] = lagrange_at(FIT);
+
+/// π at the points of [`FIT`].
+const NODE_AT_FIT: [f64; MODEL + 1] = [
+    node_value(FIT[0]),
+    node_value(FIT[1]),
+    node_value(FIT[2]),
+    node_value(FIT[3]),
+];
+
 /// κ_e = (x_e(0) − Σ_j X_{e,j} ℓ_j(0))/π(0) of each element: the start's
 /// force against the collocated cubic's there, over the node polynomial's.
 pub(super) fn kappa(elements: &[Element], y0: &[f64], x: &DVector<f64>) -> Vec<f64> {
@@ -24,7 +38,7 @@ pub(super) fn kappa(elements: &[Element], y0: &[f64], x: &DVector<f64>) -> Vec<f
     let start = values(elements, &y0[..n], &y0[n..]);
     (0..ne)
         .map(|e| {
-            let at_zero: f64 = (0..STAGES).map(|j| x[j * ne + e] * lagrange(j, 0.0)).sum();
+            let at_zero: f64 = (0..STAGES).map(|j| x[j * ne + e] * AT_START[0][j]).sum();
             (start[e] - at_zero) / node_value(0.0)
         })
         .collect()
@@ -80,7 +94,7 @@ impl Collocation {
                 };
             }
         }
-        linearized.jacobian.solve(&b)
+        linearized.jacobian.solve_mut(&mut b).then_some(b)
     }
 
     /// Each element's (a_{e,1}, a_{e,2}, a_{e,3}) of the defect model
@@ -115,8 +129,9 @@ impl Collocation {
             .iter()
             .enumerate()
             .map(|(e, el)| {
-                let defect = |theta: f64| {
-                    let s = theta * h;
+                // d at the point FIT[k].
+                let defect = |k: usize| {
+                    let s = FIT[k] * h;
                     let (vl, vr) = (free.velocity(el.left), free.velocity(el.right));
                     let mut rate = poly::eval(vl, s) - poly::eval(vr, s);
                     for (r, &wr) in w.iter().enumerate() {
@@ -124,9 +139,7 @@ impl Collocation {
                             rate += wr * poly::eval(&responses.rate[r * ne + e], s);
                         }
                     }
-                    let force: f64 = (0..STAGES)
-                        .map(|j| x[j * ne + e] * lagrange(j, theta))
-                        .sum();
+                    let force: f64 = (0..STAGES).map(|j| x[j * ne + e] * AT_FIT[k][j]).sum();
                     let law = match el.law {
                         Law::Damper { damping, exponent } => dashpot_force(damping, exponent, rate),
                         Law::Product { gap, coefficient } => {
@@ -143,9 +156,8 @@ impl Collocation {
                     };
                     force - law
                 };
-                let g = SVector::<f64, MODEL>::from_fn(|k, _| {
-                    -defect(FIT[k]) / node_value(FIT[k]) - kappa[e]
-                });
+                let g =
+                    SVector::<f64, MODEL>::from_fn(|k, _| -defect(k) / NODE_AT_FIT[k] - kappa[e]);
                 let a = powers.solve(&g)?;
                 let floor = match el.law {
                     Law::Damper { damping, exponent } => 1e-12 * damping * speed.powf(exponent),
@@ -155,8 +167,8 @@ impl Collocation {
                 };
                 let theta = FIT[MODEL];
                 let fitted = a.iter().rev().fold(0.0, |acc, q| (acc + q) * theta);
-                let model = -(kappa[e] + fitted) * node_value(theta);
-                ((defect(theta) - model).abs() <= 0.1 * model.abs() + floor)
+                let model = -(kappa[e] + fitted) * NODE_AT_FIT[MODEL];
+                ((defect(MODEL) - model).abs() <= 0.1 * model.abs() + floor)
                     .then(|| std::array::from_fn(|q| a[q]))
             })
             .collect()

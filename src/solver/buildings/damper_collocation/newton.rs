@@ -1,7 +1,11 @@
 //! The nodes' forces of one collocated step by Newton's method (SPEC §14),
 //! and its first guess from the last step's forces.
 
-use nalgebra::{DMatrix, DVector, Dyn, LU};
+use nalgebra::allocator::Allocator;
+use nalgebra::{
+    DMatrix, DVector, DefaultAllocator, DimMin, DimName, Dyn, LU, OMatrix, OVector, U4, U8, U12,
+    U16,
+};
 
 use super::basis::collocated;
 use super::responses::{AtNodes, Responses};
@@ -37,21 +41,26 @@ impl Collocation {
         model: &[[f64; POWERS]],
     ) {
         let ne = self.elements.len();
-        let polynomials = (0..ne)
-            .map(|e| {
-                let mut p = collocated(x, ne, e, h);
-                for (p, q) in p.iter_mut().zip(model[e]) {
-                    *p += q;
-                }
-                p
-            })
-            .collect();
-        self.forces = Some(Forces {
-            start: y0.to_vec(),
-            end: end.to_vec(),
+        // The last step's vectors, written over.
+        let forces = self.forces.get_or_insert_with(|| Forces {
+            start: Vec::new(),
+            end: Vec::new(),
             h,
-            polynomials,
+            polynomials: Vec::new(),
         });
+        forces.polynomials.clear();
+        forces.polynomials.extend((0..ne).map(|e| {
+            let mut p = collocated(x, ne, e, h);
+            for (p, q) in p.iter_mut().zip(model[e]) {
+                *p += q;
+            }
+            p
+        }));
+        forces.start.clear();
+        forces.start.extend_from_slice(y0);
+        forces.end.clear();
+        forces.end.extend_from_slice(end);
+        forces.h = h;
     }
 
     /// Newton's first guess for a step of length h from y0 ([`Forces`]):
@@ -85,9 +94,117 @@ pub(super) type Solved = (Vec<f64>, DVector<f64>, Linearized);
 /// The LU factors of the collocated equations' Jacobian at a solve's last
 /// iterate, and each element's Δu, Δv at the nodes there (row i·E + e).
 pub(super) struct Linearized {
-    pub(super) jacobian: LU<f64, Dyn, Dyn>,
+    pub(super) jacobian: Factors,
     pub(super) stroke: DVector<f64>,
     pub(super) rate: DVector<f64>,
+}
+
+/// LU factors with partial pivoting of a Jacobian of order S·E: on the
+/// stack for one to four elements (a damper and up to three contacts of
+/// the improved Kelvin law closed), else on the heap. nalgebra's LU is
+/// one algorithm over every size, so all give the same factors and
+/// solutions to the bit. (The variants differ in size by design: boxing
+/// the larger would bring back the allocation per Newton iteration that
+/// the fixed sizes remove.)
+#[allow(clippy::large_enum_variant)]
+pub(super) enum Factors {
+    One(LU<f64, U4, U4>),
+    Two(LU<f64, U8, U8>),
+    Three(LU<f64, U12, U12>),
+    Four(LU<f64, U16, U16>),
+    Any(LU<f64, Dyn, Dyn>),
+}
+
+/// The factors of the Jacobian at `rows` ([`fill`]) of the fixed order D.
+fn fixed<D>(nodes: &AtNodes, rows: &[Linear]) -> LU<f64, D, D>
+where
+    D: DimName + DimMin<D, Output = D>,
+    DefaultAllocator: Allocator<D, D> + Allocator<D>,
+{
+    let mut jacobian = OMatrix::<f64, D, D>::zeros();
+    fill(nodes, rows, jacobian.as_mut_slice());
+    jacobian.lu()
+}
+
+/// b ← J⁻¹ b by the factors `lu` of the fixed order D; false where J is
+/// singular.
+fn solve_fixed<D>(lu: &LU<f64, D, D>, b: &mut DVector<f64>) -> bool
+where
+    D: DimName + DimMin<D, Output = D>,
+    DefaultAllocator: Allocator<D, D> + Allocator<D>,
+{
+    let mut fixed = OVector::<f64, D>::from_column_slice(b.as_slice());
+    let solved = lu.solve_mut(&mut fixed);
+    b.copy_from(&fixed);
+    solved
+}
+
+impl Factors {
+    /// The factors of the Jacobian at the linearized rows `rows`
+    /// ([`fill`]).
+    fn of(nodes: &AtNodes, rows: &[Linear]) -> Factors {
+        match rows.len() / STAGES {
+            1 => Factors::One(fixed(nodes, rows)),
+            2 => Factors::Two(fixed(nodes, rows)),
+            3 => Factors::Three(fixed(nodes, rows)),
+            4 => Factors::Four(fixed(nodes, rows)),
+            _ => {
+                let m = rows.len();
+                let mut jacobian = DMatrix::zeros(m, m);
+                fill(nodes, rows, jacobian.as_mut_slice());
+                Factors::Any(jacobian.lu())
+            }
+        }
+    }
+
+    /// b ← J⁻¹ b; false where J is singular.
+    pub(super) fn solve_mut(&self, b: &mut DVector<f64>) -> bool {
+        match self {
+            Factors::One(lu) => solve_fixed(lu, b),
+            Factors::Two(lu) => solve_fixed(lu, b),
+            Factors::Three(lu) => solve_fixed(lu, b),
+            Factors::Four(lu) => solve_fixed(lu, b),
+            Factors::Any(lu) => lu.solve_mut(b),
+        }
+    }
+}
+
+/// One row of the collocated equations linearized at an iterate: a
+/// damper's ψ'(X_r), a product's (h, δ̇_r, δ_r).
+#[derive(Debug, Clone, Copy)]
+enum Linear {
+    Damper(f64),
+    Product(f64, f64, f64),
+}
+
+/// The Jacobian of the collocated equations, column by column:
+///
+/// ```text
+/// damper:   J_rq = −Δv_r[ℓ_q] + ψ'(X_r) [r = q],
+/// product:  J_rq = −h(δ̇_r Δu_r[ℓ_q] + δ_r Δv_r[ℓ_q]) + [r = q],
+/// ```
+///
+/// Δu_r[ℓ_q], Δv_r[ℓ_q] the responses at the nodes ([`AtNodes`]), into
+/// `jacobian` (m × m, column-major).
+fn fill(nodes: &AtNodes, rows: &[Linear], jacobian: &mut [f64]) {
+    let m = rows.len();
+    let columns = jacobian.chunks_exact_mut(m);
+    let strokes = nodes.stroke.as_slice().chunks_exact(m);
+    let rates = nodes.rate.as_slice().chunks_exact(m);
+    for (q, ((column, stroke), rate)) in columns.zip(strokes).zip(rates).enumerate() {
+        for (((j, row), s), v) in column.iter_mut().zip(rows).zip(stroke).zip(rate) {
+            *j = match *row {
+                Linear::Damper(_) => -v,
+                Linear::Product(coefficient, rate, stretch) => {
+                    -coefficient * (rate * s + stretch * v)
+                }
+            };
+        }
+        column[q] += match rows[q] {
+            Linear::Damper(slope) => slope,
+            Linear::Product(..) => 1.0,
+        };
+    }
 }
 
 /// The nodes' forces over a step of length h on the free motion `free`
@@ -105,7 +222,7 @@ pub(super) fn solve(
     let n = y0.len() / 2;
     let ne = elements.len();
     let m = STAGES * ne;
-    let nodes = AtNodes::of(responses, ne, h);
+    let nodes = AtNodes::of(responses, elements, h);
     // The free motion's Δu, Δv at the nodes.
     let mut free_stroke = DVector::zeros(m);
     let mut free_rate = DVector::zeros(m);
@@ -141,40 +258,36 @@ pub(super) fn solve(
             Law::Product { .. } => 0.0,
         })
         .collect();
-    let mut residual = DVector::zeros(m);
+    let mut delta = DVector::zeros(m);
     let (mut stroke, mut rate) = (DVector::zeros(m), DVector::zeros(m));
+    // Each row's law linearized at the iterate: a damper's ψ'(X) on the
+    // diagonal, a product's (h, δ̇, δ) and 1 there.
+    let mut rows = vec![Linear::Damper(0.0); m];
     for iteration in 1..=NEWTON {
         nodes.stroke.mul_to(&x, &mut stroke);
         stroke += &free_stroke;
         nodes.rate.mul_to(&x, &mut rate);
         rate += &free_rate;
-        let mut jacobian = DMatrix::zeros(m, m);
         for r in 0..m {
             match elements[r % ne].law {
                 Law::Damper { damping, exponent } => {
                     // ψ(F) = α F ψ'(F): one power for both.
                     let slope = dashpot_velocity_slope(damping, exponent, x[r]);
-                    residual[r] = exponent * x[r] * slope - rate[r];
-                    for q in 0..m {
-                        jacobian[(r, q)] = -nodes.rate[(r, q)];
-                    }
-                    jacobian[(r, r)] += slope;
+                    delta[r] = exponent * x[r] * slope - rate[r];
+                    rows[r] = Linear::Damper(slope);
                 }
                 Law::Product { gap, coefficient } => {
-                    let delta = stroke[r] - gap;
-                    residual[r] = x[r] - coefficient * delta * rate[r];
-                    for q in 0..m {
-                        jacobian[(r, q)] = -coefficient
-                            * (rate[r] * nodes.stroke[(r, q)] + delta * nodes.rate[(r, q)]);
-                    }
-                    jacobian[(r, r)] += 1.0;
+                    let stretch = stroke[r] - gap;
+                    delta[r] = x[r] - coefficient * stretch * rate[r];
+                    rows[r] = Linear::Product(coefficient, rate[r], stretch);
                 }
             }
         }
-        let jacobian = jacobian.lu();
-        let Some(delta) = jacobian.solve(&residual) else {
+        let factors = Factors::of(&nodes, &rows);
+        // The update, the residual solved in place.
+        if !factors.solve_mut(&mut delta) {
             return (None, iteration);
-        };
+        }
         x -= &delta;
         let converged = (0..m).all(|r| {
             let bound = match elements[r % ne].law {
@@ -184,13 +297,14 @@ pub(super) fn solve(
             delta[r].abs() <= bound
         });
         if converged {
-            let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
-            free.state(h, &mut u, &mut v);
+            // (u, u̇) side by side.
+            let mut u = vec![0.0; 2 * n];
+            let (eu, ev) = u.split_at_mut(n);
+            free.state(h, eu, ev);
             let w = responses.weights(ne, |e| collocated(&x, ne, e, h));
-            responses.add_state(&w, (h, free.degree), (&mut u, &mut v));
-            u.extend(v);
+            responses.add_state(&w, (h, free.degree), (eu, ev));
             let linearized = Linearized {
-                jacobian,
+                jacobian: factors,
                 stroke,
                 rate,
             };

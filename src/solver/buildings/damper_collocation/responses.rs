@@ -5,7 +5,7 @@
 use nalgebra::DMatrix;
 
 use super::basis::basis;
-use super::{Element, NODES, POWERS, STAGES};
+use super::{Element, Law, NODES, POWERS, STAGES};
 use crate::solver::buildings::poly;
 use crate::solver::buildings::system::System;
 use crate::solver::buildings::taylor::{Forcing, ORDER, Series};
@@ -147,8 +147,11 @@ impl Responses {
 
 impl AtNodes {
     /// The responses to x_f = ℓ_j(s/h) at the nodes c_i h, from the
-    /// responses to s^k: ℓ_j(s/h) = Σ_k ℓ_{j,k} s^k ([`basis`]).
-    pub(super) fn of(responses: &Responses, ne: usize, h: f64) -> AtNodes {
+    /// responses to s^k: ℓ_j(s/h) = Σ_k ℓ_{j,k} s^k ([`basis`]). Δu is
+    /// made for the contacts' products alone (a damper's law reads Δv
+    /// only; its rows of `stroke` are left zero).
+    pub(super) fn of(responses: &Responses, elements: &[Element], h: f64) -> AtNodes {
+        let ne = elements.len();
         let m = STAGES * ne;
         let mut stroke = DMatrix::zeros(m, m);
         let mut rate = DMatrix::zeros(m, m);
@@ -158,9 +161,12 @@ impl AtNodes {
             poly::powers(c * h, &mut p);
             for k in 0..STAGES {
                 for f in 0..ne {
-                    for e in 0..ne {
+                    for (e, el) in elements.iter().enumerate() {
                         let row = (k * ne + f) * ne + e;
-                        let du = poly::dot(&responses.stroke[row], &p);
+                        let du = match el.law {
+                            Law::Damper { .. } => 0.0,
+                            Law::Product { .. } => poly::dot(&responses.stroke[row], &p),
+                        };
                         let dv = poly::dot(&responses.rate[row], &p);
                         for (j, b) in bases.iter().enumerate() {
                             stroke[(i * ne + e, j * ne + f)] += b[k] * du;
