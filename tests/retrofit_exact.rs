@@ -11,7 +11,7 @@ use nalgebra::{DMatrix, DVector};
 use pounding::model::buildings::matrices::RowMatrices;
 use pounding::model::buildings::{self, Ground, Row, parse};
 use pounding::reference::row::reference_row;
-use pounding::solver::buildings::{RowOptions, RowRun, run_row};
+use pounding::solver::buildings::{FloorPeaks, RowOptions, RowRun, run_row};
 
 /// The state (u, u̇) at t of M ü + C u̇ + K u = −M 1 A sin ωt from rest, by
 /// the matrix exponential of the augmented first-order system
@@ -233,7 +233,11 @@ fn the_energy_balance_closes_with_links_and_bumpers() {
 /// The row reversed and the record negated: the same peaks, bumper forces
 /// and link forces, with a linear link (to 1e-12) and with a fluid viscous
 /// damper of exponent 0.35 (to 1e-9: its adaptive steps see the mirrored
-/// state's rounding, and its tolerance is 1e-12 a step).
+/// state's rounding, and its tolerance is 1e-12 a step). Floor peaks are
+/// compared in the norm the reference tests hold the method to, each
+/// building's largest peak: the two runs take different step sequences,
+/// so a small peak carries the rounding of the building's scale, not its
+/// own (the block's first floor, 9.3 mm, under a 0.145 m scale).
 #[test]
 fn the_mirror_image_gives_the_same_peaks_and_retrofit_forces() {
     for (exponent, tolerance) in [(1.0, 1e-12), (0.35, 1e-9)] {
@@ -253,9 +257,20 @@ fn the_mirror_image_gives_the_same_peaks_and_retrofit_forces() {
         assert!(a.impacts() + a.bumpers.iter().map(|p| p.impacts.len()).sum::<usize>() > 5);
         let close = |p: f64, q: f64| (p - q).abs() <= tolerance * p.abs().max(1e-3);
         for (fa, fb) in a.floors.iter().zip(b.floors.iter().rev()) {
+            let largest = |f: fn(&FloorPeaks) -> f64| fa.iter().map(f).fold(0.0, f64::max);
+            let (su, sa) = (
+                largest(|x| x.displacement),
+                largest(|x| x.absolute_acceleration),
+            );
             for (x, y) in fa.iter().zip(fb) {
-                assert!(close(x.displacement, y.displacement), "α = {exponent}");
-                assert!(close(x.absolute_acceleration, y.absolute_acceleration));
+                let (du, da) = (
+                    (x.displacement - y.displacement).abs() / su,
+                    (x.absolute_acceleration - y.absolute_acceleration).abs() / sa,
+                );
+                assert!(
+                    du <= tolerance && da <= tolerance,
+                    "α = {exponent}: {du:e} {da:e}"
+                );
             }
         }
         assert_eq!(a.bumpers.len(), 2);
