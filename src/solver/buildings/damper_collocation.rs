@@ -501,7 +501,7 @@ impl Collocation {
             let model: Vec<[f64; POWERS]> = (0..ne)
                 .map(|e| defect_polynomial(kappa[e], slope[e], h))
                 .collect();
-            let feedback = self.feedback(set, h, &model, &linearized)?;
+            let feedback = self.feedback(set, (h, free.degree), &model, &linearized)?;
             let model: Vec<[f64; POWERS]> = (0..ne)
                 .map(|e| {
                     let mut p = model[e];

@@ -59,11 +59,13 @@ impl Collocation {
     /// product, h(δ̇ Δu + δ Δv)) at the nodes. Where a damper is stiff
     /// over the step (ψ' small) it holds Δv at the nodes, as Radau IIA's
     /// stages do, and the end's error is far below the model's response
-    /// alone; where it is soft, P is small. None where J is singular.
+    /// alone; where it is soft, P is small. None where J is singular. The
+    /// responses are summed to the free motion's degree `degree`, as the
+    /// step's own are ([`super::responses::AtNodes::of`]).
     pub(super) fn feedback(
         &self,
         set: usize,
-        h: f64,
+        (h, degree): (f64, usize),
         model: &[[f64; POWERS]],
         linearized: &Linearized,
     ) -> Option<DVector<f64>> {
@@ -72,15 +74,16 @@ impl Collocation {
         let w = responses.weights(ne, |e| model[e]);
         let mut b = DVector::zeros(STAGES * ne);
         let mut p = [0.0; ORDER + 1];
+        let p = &mut p[..=degree.min(ORDER)];
         for (i, &c) in NODES.iter().enumerate() {
-            poly::powers(c * h, &mut p);
+            poly::powers(c * h, p);
             for (e, el) in self.elements.iter().enumerate() {
                 let (mut du, mut dv) = (0.0, 0.0);
                 for (r, &wr) in w.iter().enumerate() {
                     if wr != 0.0 {
-                        dv += wr * poly::dot(&responses.rate[r * ne + e], &p);
+                        dv += wr * poly::dot(&responses.rate[r * ne + e][..p.len()], p);
                         if let Law::Product { .. } = el.law {
-                            du += wr * poly::dot(&responses.stroke[r * ne + e], &p);
+                            du += wr * poly::dot(&responses.stroke[r * ne + e][..p.len()], p);
                         }
                     }
                 }
@@ -122,6 +125,8 @@ impl Collocation {
         let responses = &self.sets[set];
         let ne = self.elements.len();
         let w = responses.weights(ne, |f| collocated(x, ne, f, h));
+        // The responses to the free motion's degree, as the step's own.
+        let width = (free.degree + 1).min(ORDER + 1);
         // g(θ) − κ = Σ_q a_q θ^q at the fitting points.
         let powers = SMatrix::<f64, MODEL, MODEL>::from_fn(|k, q| FIT[k].powi(q as i32 + 1));
         let powers = powers.lu();
@@ -136,7 +141,7 @@ impl Collocation {
                     let mut rate = poly::eval(vl, s) - poly::eval(vr, s);
                     for (r, &wr) in w.iter().enumerate() {
                         if wr != 0.0 {
-                            rate += wr * poly::eval(&responses.rate[r * ne + e], s);
+                            rate += wr * poly::eval(&responses.rate[r * ne + e][..width], s);
                         }
                     }
                     let force: f64 = (0..STAGES).map(|j| x[j * ne + e] * AT_FIT[k][j]).sum();
@@ -148,7 +153,8 @@ impl Collocation {
                             let mut stroke = poly::eval(ul, s) - poly::eval(ur, s);
                             for (r, &wr) in w.iter().enumerate() {
                                 if wr != 0.0 {
-                                    stroke += wr * poly::eval(&responses.stroke[r * ne + e], s);
+                                    stroke +=
+                                        wr * poly::eval(&responses.stroke[r * ne + e][..width], s);
                                 }
                             }
                             coefficient * (stroke - gap) * rate

@@ -222,7 +222,7 @@ pub(super) fn solve(
     let n = y0.len() / 2;
     let ne = elements.len();
     let m = STAGES * ne;
-    let nodes = AtNodes::of(responses, elements, h);
+    let nodes = AtNodes::of(responses, elements, (h, free.degree));
     // The free motion's Δu, Δv at the nodes.
     let mut free_stroke = DVector::zeros(m);
     let mut free_rate = DVector::zeros(m);

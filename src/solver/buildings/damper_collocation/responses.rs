@@ -149,25 +149,32 @@ impl AtNodes {
     /// The responses to x_f = ℓ_j(s/h) at the nodes c_i h, from the
     /// responses to s^k: ℓ_j(s/h) = Σ_k ℓ_{j,k} s^k ([`basis`]). Δu is
     /// made for the contacts' products alone (a damper's law reads Δv
-    /// only; its rows of `stroke` are left zero).
-    pub(super) fn of(responses: &Responses, elements: &[Element], h: f64) -> AtNodes {
+    /// only; its rows of `stroke` are left zero). The responses are
+    /// summed to the degree `degree` of the step's free motion, as in
+    /// [`Responses::add_state`].
+    pub(super) fn of(
+        responses: &Responses,
+        elements: &[Element],
+        (h, degree): (f64, usize),
+    ) -> AtNodes {
         let ne = elements.len();
         let m = STAGES * ne;
         let mut stroke = DMatrix::zeros(m, m);
         let mut rate = DMatrix::zeros(m, m);
         let bases: [[f64; STAGES]; STAGES] = std::array::from_fn(|j| basis(j, h));
         let mut p = [0.0; ORDER + 1];
+        let p = &mut p[..=degree.min(ORDER)];
         for (i, &c) in NODES.iter().enumerate() {
-            poly::powers(c * h, &mut p);
+            poly::powers(c * h, p);
             for k in 0..STAGES {
                 for f in 0..ne {
                     for (e, el) in elements.iter().enumerate() {
                         let row = (k * ne + f) * ne + e;
                         let du = match el.law {
                             Law::Damper { .. } => 0.0,
-                            Law::Product { .. } => poly::dot(&responses.stroke[row], &p),
+                            Law::Product { .. } => poly::dot(&responses.stroke[row][..p.len()], p),
                         };
-                        let dv = poly::dot(&responses.rate[row], &p);
+                        let dv = poly::dot(&responses.rate[row][..p.len()], p);
                         for (j, b) in bases.iter().enumerate() {
                             stroke[(i * ne + e, j * ne + f)] += b[k] * du;
                             rate[(i * ne + e, j * ne + f)] += b[k] * dv;

@@ -2,7 +2,7 @@ use super::super::config::Config;
 use super::super::damper::Damper;
 use super::super::layout::Layout;
 use super::super::system::System;
-use super::super::taylor::{Forcing, Series};
+use super::super::taylor::{Forcing, ORDER, Series};
 use super::basis::{basis, lagrange, node_polynomial};
 use super::responses::{AtNodes, integrated};
 use super::{Collocation, NODES, Row, STAGES, elements_into};
@@ -62,7 +62,7 @@ fn the_responses_to_powers_of_s_serve_every_step_length() {
     let zero = vec![0.0; n];
     let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
     for h in [1e-4, 1.3e-3, 2e-2] {
-        let nodes = AtNodes::of(&cache.sets[set], &cache.elements, h);
+        let nodes = AtNodes::of(&cache.sets[set], &cache.elements, (h, ORDER));
         let largest = nodes.rate.amax();
         for j in 0..STAGES {
             let forcing = Forcing {
