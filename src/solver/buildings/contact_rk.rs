@@ -47,6 +47,23 @@ use super::taylor::{Series, ground_coefficients};
 /// row's peaks are checked.
 pub const TOLERANCE: f64 = 1e-12;
 
+/// The largest |d_i| / σ_i of a difference d of two motions of n floors,
+/// d = (Δu₁ … Δu_n, Δu̇₁ … Δu̇_n), with σ_i = `scale`.0 for the
+/// displacements and `scale`.1 for the velocities: the norm in which a
+/// step's local error is held. A NaN never counts (`f64::max`).
+pub(super) fn scaled_norm(d: impl IntoIterator<Item = f64>, n: usize, scale: (f64, f64)) -> f64 {
+    d.into_iter()
+        .enumerate()
+        .map(|(i, e)| (e / if i < n { scale.0 } else { scale.1 }).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The motion's scales times [`TOLERANCE`]: the σ of [`scaled_norm`] in
+/// which a step's error estimate is 1 at the tolerance.
+fn tolerated(scale: (f64, f64)) -> (f64, f64) {
+    (TOLERANCE * scale.0, TOLERANCE * scale.1)
+}
+
 #[cfg(test)]
 thread_local! {
     /// Where a test sets it, each accepted collocated step's true local
@@ -291,12 +308,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
                 None if self.stiff(y0, h) => self.implicit((y0, f0), h, scale.1),
                 None => dopri5::step(&|s, y| self.rate(s, y), 0.0, y0, f0, h),
             };
-            let err = step
-                .error
-                .iter()
-                .enumerate()
-                .map(|(i, e)| (e / (TOLERANCE * if i < n { scale.0 } else { scale.1 })).abs())
-                .fold(0.0, f64::max);
+            let err = scaled_norm(step.error.iter().copied(), n, tolerated(scale));
             let factor = if err > 0.0 {
                 (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
             } else {
@@ -353,15 +365,11 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         let Some(reference) = cache.borrow_mut().substepped(&row, y0, step.h, 16) else {
             return;
         };
-        let ratio = step
-            .y1
-            .iter()
-            .zip(&reference)
-            .enumerate()
-            .map(|(i, (a, b))| {
-                ((a - b) / (TOLERANCE * if i < n { scale.0 } else { scale.1 })).abs()
-            })
-            .fold(0.0, f64::max);
+        let ratio = scaled_norm(
+            step.y1.iter().zip(&reference).map(|(a, b)| a - b),
+            n,
+            tolerated(scale),
+        );
         AUDIT.with(|a| a.borrow_mut().as_mut().map(|r| r.push(ratio)));
     }
 

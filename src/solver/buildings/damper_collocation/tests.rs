@@ -1,4 +1,5 @@
 use super::super::config::Config;
+use super::super::contact_rk::scaled_norm;
 use super::super::damper::Damper;
 use super::super::layout::Layout;
 use super::super::system::System;
@@ -173,12 +174,7 @@ fn the_error_estimate_holds_the_local_error() {
     let n = layout.dofs;
     let (at, y0) = sliding(&layout, &system, &dampers);
     let scale = at.scale;
-    let norm = |d: &[f64]| {
-        d.iter()
-            .enumerate()
-            .map(|(i, e)| (e / if i < n { scale.0 } else { scale.1 }).abs())
-            .fold(0.0, f64::max)
-    };
+    let norm = |d: &[f64]| scaled_norm(d.iter().copied(), n, scale);
     let mut checked = 0;
     for h in [2e-3, 4e-3, 8e-3, 1.6e-2] {
         let mut cache = Collocation::default();
@@ -271,12 +267,7 @@ fn the_last_steps_forces_start_newton_near_the_solution() {
     let mut cold = Collocation::default();
     let (cold_end, _) = cold.step(&at, &y1, (h, true)).expect("converges");
     assert_eq!((warm.solves, cold.solves), (2, 1), "a step was doubled");
-    let worst = warm_end
-        .iter()
-        .zip(&cold_end)
-        .enumerate()
-        .map(|(i, (a, b))| ((a - b) / if i < n { scale.0 } else { scale.1 }).abs())
-        .fold(0.0, f64::max);
+    let worst = scaled_norm(warm_end.iter().zip(&cold_end).map(|(a, b)| a - b), n, scale);
     println!(
         "warm {warm_iterations} iterations, cold {}, ends {worst:e} apart",
         cold.newton
