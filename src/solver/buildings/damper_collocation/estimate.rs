@@ -134,29 +134,29 @@ impl Collocation {
             .iter()
             .enumerate()
             .map(|(e, el)| {
+                // The element's Δu or Δv at s on the collocated motion: the
+                // free motion's (left less right) and the forces' responses.
+                let along = |(left, right): (&[f64], &[f64]), response: &[Vec<f64>], s: f64| {
+                    let mut x = poly::eval(left, s) - poly::eval(right, s);
+                    for (r, &wr) in w.iter().enumerate() {
+                        if wr != 0.0 {
+                            x += wr * poly::eval(&response[r * ne + e][..width], s);
+                        }
+                    }
+                    x
+                };
                 // d at the point FIT[k].
                 let defect = |k: usize| {
                     let s = FIT[k] * h;
-                    let (vl, vr) = (free.velocity(el.left), free.velocity(el.right));
-                    let mut rate = poly::eval(vl, s) - poly::eval(vr, s);
-                    for (r, &wr) in w.iter().enumerate() {
-                        if wr != 0.0 {
-                            rate += wr * poly::eval(&responses.rate[r * ne + e][..width], s);
-                        }
-                    }
+                    let velocities = (free.velocity(el.left), free.velocity(el.right));
+                    let rate = along(velocities, &responses.rate, s);
                     let force: f64 = (0..STAGES).map(|j| x[j * ne + e] * AT_FIT[k][j]).sum();
                     let law = match el.law {
                         Law::Damper { damping, exponent } => dashpot_force(damping, exponent, rate),
                         Law::Product { gap, coefficient } => {
-                            let (ul, ur) =
+                            let displacements =
                                 (free.displacement(el.left), free.displacement(el.right));
-                            let mut stroke = poly::eval(ul, s) - poly::eval(ur, s);
-                            for (r, &wr) in w.iter().enumerate() {
-                                if wr != 0.0 {
-                                    stroke +=
-                                        wr * poly::eval(&responses.stroke[r * ne + e][..width], s);
-                                }
-                            }
+                            let stroke = along(displacements, &responses.stroke, s);
                             coefficient * (stroke - gap) * rate
                         }
                     };
