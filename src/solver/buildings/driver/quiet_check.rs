@@ -16,6 +16,7 @@ use super::super::config::Branch;
 use super::super::peaks::Envelope;
 use super::super::poly;
 use super::super::taylor::Series;
+use super::rising::quantity;
 use super::{Run, ground_at};
 
 /// Points per series step.
@@ -220,11 +221,7 @@ impl Run<'_> {
 /// `series`: what [`Run::locate_rising`] takes on its own series.
 fn fixed_order_peak(series: &Series, watch: &Watch, k: usize, signed: usize, h: f64) -> f64 {
     let mut c = Vec::new();
-    match watch.order {
-        2 => series.absolute_acceleration(watch.terms[0].0, &mut c),
-        1 => series.combine(&[], &watch.terms, &mut c),
-        _ => series.combine(&watch.terms, &[], &mut c),
-    }
+    quantity(series, watch, &mut c);
     if k < signed {
         poly::max_abs(&c, h)
     } else {

@@ -17,8 +17,9 @@
 //! most one radian of the fastest mode, where the coefficients fall like
 //! (ωh)^k/k!, so K is 17 or 18 (block-and-frame's IDA, ωh = 0.84) against
 //! the fixed order's 24, and each quantity's polynomial, its turning
-//! points and the end state cost that much less. One series then gives every watched quantity q(s) on [0, h]
-//! as a polynomial exact to its tolerance, and a peak of |q| inside is the
+//! points and the end state cost that much less. One series then gives
+//! every watched quantity q(s) on [0, h] as a polynomial exact to its
+//! tolerance ([`quantity`]), and a peak of |q| inside is the
 //! largest turning point of that polynomial ([`poly::max_abs`],
 //! [`poly::max`] for the signed relative displacement): the same value the
 //! series path records, without its event search or the other quantities.
@@ -31,8 +32,10 @@
 
 use crate::model::buildings::ground::Piece;
 
+use super::super::bound::Watch;
 use super::super::peaks::raise;
 use super::super::poly;
+use super::super::taylor::Series;
 use super::{Run, ground_at};
 
 impl Run<'_> {
@@ -63,12 +66,7 @@ impl Run<'_> {
         let mut c = std::mem::take(&mut self.buf);
         let env = &mut self.envelope;
         for &k in rising {
-            let w = &self.watch[k];
-            match w.order {
-                2 => series.absolute_acceleration(k - 2 * n, &mut c),
-                1 => series.combine(&[], &w.terms, &mut c),
-                _ => series.combine(&w.terms, &[], &mut c),
-            }
+            quantity(&series, &self.watch[k], &mut c);
             match k {
                 k if k < n => raise(&mut env.displacement[k], poly::max_abs(&c, h)),
                 k if k < 2 * n => raise(&mut env.velocity[k - n], poly::max_abs(&c, h)),
@@ -83,5 +81,16 @@ impl Run<'_> {
         self.buf = c;
         self.spare_series = series;
         true
+    }
+}
+
+/// The coefficients of watched quantity `watch` on `series`: the
+/// absolute acceleration of its floor (order 2), or its terms on the
+/// velocities (order 1) or on the displacements (order 0).
+pub(super) fn quantity(series: &Series, watch: &Watch, out: &mut Vec<f64>) {
+    match watch.order {
+        2 => series.absolute_acceleration(watch.terms[0].0, out),
+        1 => series.combine(&[], &watch.terms, out),
+        _ => series.combine(&watch.terms, &[], out),
     }
 }
