@@ -205,7 +205,12 @@ fn scan_values(c: &[f64], end: f64) -> [f64; SCAN + 1] {
 /// caught by the sign change of p' between them. A p already positive at 0
 /// counts at 0 if rising there; if falling (it was just switched on, at its
 /// own root, and rounding put it a hair above zero) only after it has been
-/// non-positive again.
+/// non-positive again. That dip may lie wholly between two scan points: a
+/// pair that separates with a small relative velocity can touch again a
+/// fraction of a millisecond later, p ≤ 0 only on (0, s_r). So until p has
+/// been seen non-positive, a minimum between two scan points (p' turning
+/// from negative to positive) is located, and if p ≤ 0 there, p's rise
+/// after it is the root.
 pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
     // When p's upper bound on [0, end] stays ≤ 0, nothing to scan.
     if c[0] <= 0.0 && upper_bound(c, end) <= 0.0 {
@@ -238,6 +243,12 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
             }
         } else if fs <= 0.0 {
             armed = true;
+        } else if d_lo < 0.0 && ds > 0.0 {
+            // A minimum inside (lo, s): is p non-positive there?
+            let bottom = bisect(&df, &ddf, lo, s);
+            if f(bottom) <= 0.0 {
+                return Some(bisect(f, df, bottom, s));
+            }
         }
         lo = s;
         f_lo = fs;
@@ -351,6 +362,25 @@ mod tests {
         let (at, top) = argmax(&neg, 1.0);
         assert!((at - 0.5).abs() < 1e-12 && top == max(&neg, 1.0));
         assert!(first_rise(&c[..1].iter().map(|x| -x).collect::<Vec<_>>(), 1.0).is_none());
+    }
+
+    #[test]
+    fn finds_a_touch_again_inside_the_first_scan_interval() {
+        // p = s(s − r) + ε: switched on at its own root with a hair of
+        // rounding above zero, falling, non-positive only on (≈0, ≈r), r far
+        // inside the first of the 16 scan intervals of [0, 1]: the root
+        // near r is the first rise (ε shifts it by ε/r = 1e-15).
+        let r = 0.01;
+        let c = [1e-19, -r, 1.0];
+        let s = first_rise(&c, 1.0).expect("the touch again is found");
+        assert!((s - r).abs() < 1e-14, "{s}");
+        // Without the dip below zero (p's minimum −r²/4 + ε > 0) nothing rises.
+        let c = [r * r / 4.0 * (1.0 + 1e-9), -r, 1.0];
+        assert!(first_rise(&c, 1.0).is_none());
+        // Falling from a real positive value through zero is not a rise,
+        // but its return above zero is.
+        let c = [0.21, -1.0, 1.0];
+        assert!((first_rise(&c, 1.0).unwrap() - 0.7).abs() < 1e-15);
     }
 
     #[test]
