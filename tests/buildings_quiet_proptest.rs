@@ -3,16 +3,21 @@
 //! and by the Taylor series otherwise; with `series_only`, every sub-step
 //! goes by the series. Over random rows (stiffness, yield
 //! drift, gap, contact law), simulated records and scales, both give the
-//! same peaks within 5e-12 of each kind's largest, the same end state within
-//! 5e-12 of the run's peak displacement or velocity (the scale of the
+//! same peaks within 2e-11 of each kind's largest, the same end state within
+//! 2e-11 of the run's peak displacement or velocity (the scale of the
 //! motion, at which round-off accumulates: the end state itself may have
 //! decayed far below it), and the same impacts at every floor pair.
 //!
-//! The two paths round differently over a few hundred sub-steps: over 1,500
-//! random cases the largest difference seen was 1.2e-12 (a peak floor
-//! acceleration), so 5e-12 is round-off with a margin, and far below any
-//! difference a wrong bound would make (a missed peak or event is of the
-//! order of the motion itself).
+//! The two paths round differently over a few hundred sub-steps. Over
+//! 30,000 random cases the largest difference seen was 6.1e-12, an end
+//! velocity after an improved-Kelvin contact of 0.26 s released at 9 mm/s:
+//! the force there falls to zero slowly, so the separation's time carries
+//! the rounding of the state divided by the force's rate (the two runs put
+//! it 6.4e-12 s apart), and the motion after it inherits that. The next
+//! largest were 3.1e-12 and 2.0e-12 (peak floor accelerations). So 2e-11 is
+//! round-off with a margin, and far below any difference a wrong bound or
+//! a missed event makes (a missed touch again right after a separation put
+//! the end state 1.2e-3 of the motion off).
 
 use proptest::prelude::*;
 
@@ -21,7 +26,7 @@ use pounding::model::buildings::{self, Ground, Row};
 use pounding::model::simulated::Simulation;
 use pounding::solver::buildings::{RowOptions, RowRun, run_row};
 
-const TOLERANCE: f64 = 5e-12;
+const TOLERANCE: f64 = 2e-11;
 
 /// Largest relative difference of `a` from `b` over `pick`, relative to
 /// the largest of `b`'s values.
