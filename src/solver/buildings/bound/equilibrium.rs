@@ -61,11 +61,22 @@ pub struct Equilibrium {
 
 impl Equilibrium {
     /// From the augmented matrix `a` of [`super::super::propagator`] (dofs
-    /// `n`), whose rows n … 2n begin with −K; none where K is singular.
+    /// `n`), whose rows n … 2n begin with −K; none where K is singular, or
+    /// singular to working precision: where κ∞(K) = ‖K‖∞‖K⁻¹‖∞ ≥ 1/ε
+    /// (a yielding storey whose post-yield ratio is 1e-300, say) u* has no
+    /// correct digit and may be astronomically far, where products of it
+    /// overflow; such a K is taken as the singular one it rounds to.
     pub fn of(a: &DMatrix<f64>, n: usize) -> Option<Equilibrium> {
         let k = DMatrix::from_fn(n, n, |i, j| -a[(n + i, j)]);
         let inverse = k.clone().try_inverse()?;
-        if !inverse.iter().all(|x| x.is_finite()) {
+        let norm = |m: &DMatrix<f64>| {
+            m.row_iter()
+                .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+                .fold(0.0, f64::max)
+        };
+        let kappa = norm(&k) * norm(&inverse);
+        // A NaN or ∞ in K⁻¹ fails it too.
+        if kappa.is_nan() || kappa * f64::EPSILON >= 1.0 {
             return None;
         }
         let mut entries = Vec::new();
@@ -295,6 +306,29 @@ mod tests {
                 assert!(d5[row].abs() <= rate * factor, "q⁽⁵⁾ of {k} at {t}");
             }
         }
+    }
+
+    /// A K singular to working precision has no rest point, as a singular
+    /// one has none: two one-storey buildings, one yielding with the
+    /// post-yield ratio 1e-300 (κ∞ about 1e304, where u* would be of the
+    /// order 1e299 and its products overflow), the other elastic; with a
+    /// ratio of 1e-6 (κ∞ about 1e8) the rest point is kept.
+    #[test]
+    fn a_stiffness_singular_to_working_precision_has_no_rest_point() {
+        let augmented = |soft: f64| {
+            let (n, k) = (2, [soft, 7.4e4]);
+            // (u, u̇, a_g, ȧ_g, M⁻¹q): only −K's block matters here.
+            DMatrix::from_fn(3 * n + 2, 3 * n + 2, |i, j| {
+                if (n..2 * n).contains(&i) && j == i - n {
+                    -k[j]
+                } else {
+                    0.0
+                }
+            })
+        };
+        assert!(super::Equilibrium::of(&augmented(2e-300), 2).is_none());
+        assert!(super::Equilibrium::of(&augmented(0.0), 2).is_none());
+        assert!(super::Equilibrium::of(&augmented(2e-3), 2).is_some());
     }
 
     /// The rest point a kept [`Rest`] gives is K⁻¹(M⁻¹q − a*1) by
