@@ -211,3 +211,28 @@ pub fn against_reference(
     let (fe, fr) = (exact.links[0].max_force, reference.link_force[0]);
     worst.max((fe - fr).abs() / fr)
 }
+
+/// block-and-frame with every storey's stiffness and yield drift scaled by
+/// `stiffness` and `yield_factor`, every joint's gap `gap` (m) and the
+/// contact law `model`: the random rows of the solver's proptests.
+pub fn scaled_block_and_frame(
+    stiffness: f64,
+    yield_factor: f64,
+    gap: f64,
+    model: ContactModel,
+) -> pounding::model::buildings::Row {
+    let mut row = pounding::model::buildings::load("block-and-frame").expect("shipped");
+    for b in &mut row.buildings {
+        for k in &mut b.stiffness {
+            *k *= stiffness;
+        }
+        for y in &mut b.yield_drift {
+            *y *= yield_factor;
+        }
+    }
+    for j in &mut row.joints {
+        j.gap = gap;
+    }
+    row.model = model;
+    row
+}

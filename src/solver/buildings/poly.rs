@@ -245,7 +245,7 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
             armed = true;
         } else if d_lo < 0.0 && ds > 0.0 {
             // A minimum inside (lo, s): is p non-positive there?
-            let bottom = bisect(&df, &ddf, lo, s);
+            let bottom = bisect(df, ddf, lo, s);
             if f(bottom) <= 0.0 {
                 return Some(bisect(f, df, bottom, s));
             }
