@@ -24,6 +24,10 @@
 //! event function reaches zero and no quantity can pass its running peak
 //! inside; a quiet sub-step's interior then holds no event and no new
 //! peak, so its end is all that is recorded.
+//!
+//! A run can keep its state just before its first contact onset, from which
+//! the run of the same buildings apart continues instead of repeating the
+//! motion up to there ([`Checkpoint`], [`run_row_keeping`], [`run_row_from`]).
 
 use std::cell::RefCell;
 use std::collections::HashMap;
