@@ -28,78 +28,13 @@ use pounding::model::ContactModel;
 use pounding::model::buildings::{self, Ground, Row};
 use pounding::model::simulated::Simulation;
 use pounding::solver::buildings::{
-    Checkpoint, FloorPeaks, MapCache, PairResult, RowOptions, RowRun, run_row, run_row_from,
-    run_row_keeping,
+    Checkpoint, MapCache, PairResult, RowOptions, RowRun, run_row, run_row_from, run_row_keeping,
 };
 
 /// Relative agreement of every peak.
 const PEAKS: f64 = 1e-12;
 /// Absolute agreement of the residual drifts (m).
 const RESIDUAL: f64 = 1e-14;
-
-/// |a − b| relative to the larger of the two (0 when both are 0).
-fn relative(a: f64, b: f64) -> f64 {
-    if a == b {
-        return 0.0;
-    }
-    (a - b).abs() / a.abs().max(b.abs())
-}
-
-/// The largest differences of `a` from `b`: of the peaks (relative), of the
-/// residual drifts (m), and of the end state (relative to the peaks).
-fn differences(a: &RowRun, b: &RowRun) -> (f64, f64, f64) {
-    let pick: [fn(&FloorPeaks) -> f64; 6] = [
-        |f| f.displacement,
-        |f| f.velocity,
-        |f| f.absolute_acceleration,
-        |f| f.drift,
-        |f| f.drift_ratio,
-        |f| f.ductility,
-    ];
-    let floors = || a.floors.iter().flatten().zip(b.floors.iter().flatten());
-    let mut peaks = floors()
-        .flat_map(|(x, y)| pick.map(|p| relative(p(x), p(y))))
-        .fold(0.0, f64::max);
-    for (x, y) in a.max_relative.iter().zip(&b.max_relative) {
-        peaks = peaks.max(relative(*x, *y));
-    }
-    for (x, y) in a.links.iter().zip(&b.links) {
-        for (p, q) in [
-            (x.max_force, y.max_force),
-            (x.stroke, y.stroke),
-            (x.max_rate, y.max_rate),
-        ] {
-            peaks = peaks.max(relative(p, q));
-        }
-    }
-    let residual = floors()
-        .map(|(x, y)| (x.residual_drift - y.residual_drift).abs())
-        .fold(0.0, f64::max);
-    let largest = |f: fn(&FloorPeaks) -> f64| {
-        b.floors
-            .iter()
-            .flatten()
-            .map(f)
-            .fold(f64::MIN_POSITIVE, f64::max)
-    };
-    let end = |x: &[f64], y: &[f64], scale: f64| {
-        x.iter()
-            .zip(y)
-            .map(|(p, q)| (p - q).abs() / scale)
-            .fold(0.0, f64::max)
-    };
-    let state = end(
-        &a.final_displacement,
-        &b.final_displacement,
-        largest(|f| f.displacement),
-    )
-    .max(end(
-        &a.final_velocity,
-        &b.final_velocity,
-        largest(|f| f.velocity),
-    ));
-    (peaks, residual, state)
-}
 
 /// The run of a row with contact and its checkpoint, and the runs of its
 /// buildings apart continued from it and from t = 0.
@@ -185,7 +120,7 @@ fn check(row: &Row, seed: u64, scale: f64) -> Runs {
         continued.collapse.map(|c| (c.building, c.storey)),
         fresh.collapse.map(|c| (c.building, c.storey))
     );
-    let d = differences(continued, fresh);
+    let d = common::motion_differences(continued, fresh);
     assert!(d.0 < PEAKS, "peaks differ by {:e}", d.0);
     assert!(d.1 < RESIDUAL, "residual drifts differ by {:e} m", d.1);
     assert!(d.2 < PEAKS, "end states differ by {:e}", d.2);
@@ -265,7 +200,7 @@ fn the_energy_and_the_trace_continue() {
         ..
     } = runs(&row, &ground, &options);
     assert!(checkpoint.is_some());
-    let d = differences(&continued, &fresh);
+    let d = common::motion_differences(&continued, &fresh);
     assert!(d.0 < PEAKS && d.1 < RESIDUAL && d.2 < PEAKS, "{d:?}");
     let (a, b) = (continued.trace.expect("kept"), fresh.trace.expect("kept"));
     assert_eq!(a.times, b.times);
