@@ -1,6 +1,9 @@
 //! The risk picture at one joint of a row (SPEC §12 with §13) against runs
 //! made one by one: each record's gap that prevents pounding at the design
-//! level is `gap --buildings` of that record at that scale (bit for bit),
+//! level is `gap --buildings` of that record at that scale (within 1e-12:
+//! the study's run apart continues from its run with contact's state at the
+//! first onset, [`pounding::solver::buildings::Checkpoint`]; bit for bit
+//! where the record does not pound),
 //! the drift IDA summarises each run's largest storey drift of the
 //! building followed, the counts are the records whose joint had an
 //! impact, and the fragility is the maximum-likelihood fit of those counts.
@@ -47,7 +50,12 @@ fn the_row_picture_is_made_of_the_runs_one_by_one() {
     for (m, &d) in members.iter().zip(&p.min_gaps_m) {
         let (ground, duration) = run_at(m, design);
         let report = row_gap(&row, &ground, duration, &m.name).unwrap();
-        assert_eq!(d, report.joints[0].min_gap, "{}", m.name);
+        let gap = report.joints[0].min_gap;
+        assert!(
+            (d - gap).abs() <= 1e-12 * gap,
+            "{}: {d} against {gap}",
+            m.name
+        );
     }
     // Each level: the counts and the drift summaries of the runs one by one.
     let mut some_pound = false;

@@ -211,3 +211,95 @@ pub fn against_reference(
     let (fe, fr) = (exact.links[0].max_force, reference.link_force[0]);
     worst.max((fe - fr).abs() / fr)
 }
+
+/// block-and-frame with every storey's stiffness and yield drift scaled by
+/// `stiffness` and `yield_factor`, every joint's gap `gap` (m) and the
+/// contact law `model`: the random rows of the solver's proptests.
+pub fn scaled_block_and_frame(
+    stiffness: f64,
+    yield_factor: f64,
+    gap: f64,
+    model: ContactModel,
+) -> pounding::model::buildings::Row {
+    let mut row = pounding::model::buildings::load("block-and-frame").expect("shipped");
+    for b in &mut row.buildings {
+        for k in &mut b.stiffness {
+            *k *= stiffness;
+        }
+        for y in &mut b.yield_drift {
+            *y *= yield_factor;
+        }
+    }
+    for j in &mut row.joints {
+        j.gap = gap;
+    }
+    row.model = model;
+    row
+}
+
+/// |a − b| relative to the larger of the two (0 when both are 0).
+pub fn relative(a: f64, b: f64) -> f64 {
+    if a == b {
+        return 0.0;
+    }
+    (a - b).abs() / a.abs().max(b.abs())
+}
+
+/// The largest differences of two runs' motions, `a` from `b`: of the peaks (relative), of the
+/// residual drifts (m), and of the end state (relative to the peaks).
+pub fn motion_differences(
+    a: &pounding::solver::buildings::RowRun,
+    b: &pounding::solver::buildings::RowRun,
+) -> (f64, f64, f64) {
+    let pick: [fn(&pounding::solver::buildings::FloorPeaks) -> f64; 6] = [
+        |f| f.displacement,
+        |f| f.velocity,
+        |f| f.absolute_acceleration,
+        |f| f.drift,
+        |f| f.drift_ratio,
+        |f| f.ductility,
+    ];
+    let floors = || a.floors.iter().flatten().zip(b.floors.iter().flatten());
+    let mut peaks = floors()
+        .flat_map(|(x, y)| pick.map(|p| relative(p(x), p(y))))
+        .fold(0.0, f64::max);
+    for (x, y) in a.max_relative.iter().zip(&b.max_relative) {
+        peaks = peaks.max(relative(*x, *y));
+    }
+    for (x, y) in a.links.iter().zip(&b.links) {
+        for (p, q) in [
+            (x.max_force, y.max_force),
+            (x.stroke, y.stroke),
+            (x.max_rate, y.max_rate),
+        ] {
+            peaks = peaks.max(relative(p, q));
+        }
+    }
+    let residual = floors()
+        .map(|(x, y)| (x.residual_drift - y.residual_drift).abs())
+        .fold(0.0, f64::max);
+    let largest = |f: fn(&pounding::solver::buildings::FloorPeaks) -> f64| {
+        b.floors
+            .iter()
+            .flatten()
+            .map(f)
+            .fold(f64::MIN_POSITIVE, f64::max)
+    };
+    let end = |x: &[f64], y: &[f64], scale: f64| {
+        x.iter()
+            .zip(y)
+            .map(|(p, q)| (p - q).abs() / scale)
+            .fold(0.0, f64::max)
+    };
+    let state = end(
+        &a.final_displacement,
+        &b.final_displacement,
+        largest(|f| f.displacement),
+    )
+    .max(end(
+        &a.final_velocity,
+        &b.final_velocity,
+        largest(|f| f.velocity),
+    ));
+    (peaks, residual, state)
+}

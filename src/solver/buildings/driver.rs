@@ -24,6 +24,10 @@
 //! event function reaches zero and no quantity can pass its running peak
 //! inside; a quiet sub-step's interior then holds no event and no new
 //! peak, so its end is all that is recorded.
+//!
+//! A run can keep its state just before its first contact onset, from which
+//! the run of the same buildings apart continues instead of repeating the
+//! motion up to there ([`Checkpoint`], [`run_row_keeping`], [`run_row_from`]).
 
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -55,6 +59,7 @@ use super::taylor::Series;
 
 #[cfg(test)]
 mod cache_check;
+mod checkpoint;
 #[cfg(test)]
 mod quiet_check;
 mod ranges;
@@ -64,6 +69,8 @@ mod work;
 #[cfg(test)]
 mod work_check;
 
+pub use checkpoint::Checkpoint;
+use checkpoint::Snapshot;
 use ranges::{Ends, Probe};
 use watch_pass::WatchPass;
 use work::Balance;
@@ -213,6 +220,12 @@ struct Run<'a> {
     /// Maps made and used before this run (a cache kept across runs), and
     /// the seconds spent making them.
     counts_before: (usize, usize, f64),
+    /// Maps made and used, and seconds spent, by the run a continuation
+    /// starts from before its checkpoint ([`checkpoint`]).
+    carried: (usize, usize, f64),
+    /// Whether to keep the state before the first onset, and that state.
+    keep: bool,
+    snapshot: Option<Snapshot>,
     series_steps: usize,
     /// Each configuration met, with the quiet tests it asked for ([`FRESH`]).
     configurations: HashMap<Vec<u8>, usize>,
@@ -267,6 +280,35 @@ pub fn run_row(row: &Row, ground: &Ground, options: &RowOptions) -> Result<RowRu
     run_row_cached(row, ground, options, &mut MapCache::default())
 }
 
+/// [`run_row_cached`], keeping the state just before the first contact
+/// onset ([`Checkpoint`]; none when no contact closed, or the row has a
+/// fluid viscous damper): the run is the same to the bit.
+pub fn run_row_keeping(
+    row: &Row,
+    ground: &Ground,
+    options: &RowOptions,
+    cache: &mut MapCache,
+) -> Result<(RowRun, Option<Checkpoint>), RowError> {
+    let (run, snapshot) = drive(row, ground, options, cache, (true, None))?;
+    let checkpoint = snapshot.map(|s| Checkpoint::new(row, ground, options, s));
+    Ok((run, checkpoint))
+}
+
+/// [`run_row_cached`] of `twin` continued from `from`, a checkpoint of a run
+/// of the same buildings with contact ([`Checkpoint`]), when it fits
+/// ([`Checkpoint::fits`]), else from t = 0: the same results to rounding.
+pub fn run_row_from(
+    twin: &Row,
+    ground: &Ground,
+    options: &RowOptions,
+    cache: &mut MapCache,
+    from: Option<&Checkpoint>,
+) -> Result<RowRun, RowError> {
+    let from = from.filter(|c| c.fits(twin, ground, options));
+    let resume = from.map(Checkpoint::state);
+    Ok(drive(twin, ground, options, cache, (false, resume))?.0)
+}
+
 /// The linear maps of one row's configurations, kept from run to run: a
 /// study runs the same row under many records, whose configurations and
 /// sub-step lengths recur. A map is a function of its key (configuration,
@@ -297,6 +339,19 @@ pub fn run_row_cached(
     options: &RowOptions,
     cache: &mut MapCache,
 ) -> Result<RowRun, RowError> {
+    Ok(drive(row, ground, options, cache, (false, None))?.0)
+}
+
+/// The run, from t = 0 or from a snapshot of a run of the same equations
+/// (`resume`), keeping the state before its first onset when asked to
+/// (`keep`).
+fn drive(
+    row: &Row,
+    ground: &Ground,
+    options: &RowOptions,
+    cache: &mut MapCache,
+    (keep, resume): (bool, Option<&Snapshot>),
+) -> Result<(RowRun, Option<Snapshot>), RowError> {
     let propagator = cache.of(row);
     let counts_before = (propagator.made, propagator.used, propagator.seconds);
     let layout = Layout::of(row);
@@ -329,6 +384,9 @@ pub fn run_row_cached(
         t: 0.0,
         propagator,
         counts_before,
+        carried: (0, 0, 0.0),
+        keep,
+        snapshot: None,
         series_steps: 0,
         configurations: HashMap::new(),
         key: Vec::new(),
@@ -364,9 +422,10 @@ pub fn run_row_cached(
     run.pass = WatchPass::new(&run.layout);
     run.record_start(ground);
     let mut trace = options.trace.then(|| RowTrace::new(n));
+    let mut resume = resume;
     'pieces: for piece in ground.pieces(options.duration) {
         let length = piece.length;
-        if length <= 0.0 {
+        if length <= 0.0 || resume.is_some_and(|s| piece.t1 < s.time) {
             continue;
         }
         let m = (length / h_max).ceil().max(1.0) as usize;
@@ -377,8 +436,23 @@ pub fn run_row_cached(
             } else {
                 piece.t0 + (j + 1) as f64 * h
             };
+            // A continuation skips the sub-steps before its snapshot's
+            // instant, and takes the one holding it from there by the series
+            // (nothing of it when the instant ends it).
+            let mut continued = false;
+            if let Some(s) = resume.take() {
+                if tb < s.time {
+                    resume = Some(s);
+                    continue;
+                }
+                run.resume(s, &piece);
+                trace.clone_from(&s.trace);
+                continued = true;
+            }
             let clock = run.timed.then(Instant::now);
-            let cause = if run.config.any_contact() {
+            let cause = if continued {
+                (run.t < tb).then_some(Cause::Continued)
+            } else if run.config.any_contact() {
                 Some(Cause::Contact)
             } else if !run.layout.dampers.is_empty() {
                 Some(Cause::Damper)
@@ -394,13 +468,19 @@ pub fn run_row_cached(
                 run.careful(&piece, tb, cause != Cause::Peak)?;
                 run.profile.careful.add(cause, 1);
                 run.profile.series.add(cause, run.series_steps - before);
-            } else {
+            } else if !continued {
                 run.profile.map_steps += 1;
             }
             if let (Some(c), Some(m)) = (clock, mapped) {
                 let p = &mut run.profile;
                 p.map_seconds += (m - c).as_secs_f64();
                 p.series_seconds += m.elapsed().as_secs_f64();
+            }
+            // The trace a continuation starts from: up to this sub-step.
+            if let (Some(s), Some(trace)) = (run.snapshot.as_mut(), &trace)
+                && s.trace.is_none()
+            {
+                s.trace = Some(trace.clone());
             }
             if run.collapse.is_some() {
                 if let Some(trace) = trace.as_mut() {
@@ -414,9 +494,10 @@ pub fn run_row_cached(
             }
         }
     }
+    let snapshot = run.snapshot.take();
     let mut done = run.finish(options.duration);
     done.trace = trace;
-    Ok(done)
+    Ok((done, snapshot))
 }
 
 impl Run<'_> {
@@ -1042,6 +1123,9 @@ impl Run<'_> {
     }
 
     fn apply(&mut self, event: Event) {
+        if let Event::Onset(_) = event {
+            self.keep_before_onset();
+        }
         let events = &mut self.profile.events;
         match &event {
             Event::Yield(..) => events.yields += 1,
@@ -1110,7 +1194,9 @@ impl Run<'_> {
     }
 
     fn finish(mut self, duration: f64) -> RowRun {
-        self.profile.maps_made = self.propagator.made - self.counts_before.0;
+        let (before, carried) = (self.counts_before, self.carried);
+        let maps_made = carried.0 + self.propagator.made - before.0;
+        self.profile.maps_made = maps_made;
         let c = self.collocation.borrow();
         self.profile.collocation = CollocationSteps {
             accepted: c.accepted,
@@ -1121,7 +1207,7 @@ impl Run<'_> {
         };
         drop(c);
         if self.timed {
-            self.profile.exponential_seconds = self.propagator.seconds - self.counts_before.2;
+            self.profile.exponential_seconds = carried.2 + self.propagator.seconds - before.2;
         }
         let mut floors = Vec::new();
         let mut k = 0;
@@ -1171,8 +1257,8 @@ impl Run<'_> {
             duration,
             final_displacement: self.u,
             final_velocity: self.v,
-            maps_made: self.propagator.made - self.counts_before.0,
-            map_steps: self.propagator.used - self.counts_before.1,
+            maps_made,
+            map_steps: carried.1 + self.propagator.used - before.1,
             series_steps: self.series_steps,
             configurations: self.configurations.len(),
             trace: None,

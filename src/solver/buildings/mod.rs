@@ -75,7 +75,10 @@ pub mod sweep;
 pub mod system;
 pub mod taylor;
 
-pub use driver::{MapCache, RowError, RowOptions, run_row, run_row_cached};
+pub use driver::{
+    Checkpoint, MapCache, RowError, RowOptions, run_row, run_row_cached, run_row_from,
+    run_row_keeping,
+};
 pub use energy::RowEnergy;
 pub use link::LinkResult;
 pub use newmark::{default_step, max_step, run_newmark};

@@ -34,11 +34,15 @@ pub enum Cause {
     /// Every sub-step by the series was asked for
     /// ([`super::RowOptions::series_only`]).
     SeriesOnly,
+    /// The sub-step in which a run continued from a checkpoint starts
+    /// ([`super::driver::Checkpoint`]): from the checkpoint's instant
+    /// inside it, by the series.
+    Continued,
 }
 
 /// Counts per [`Cause`], in its order.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct PerCause(pub [usize; 9]);
+pub struct PerCause(pub [usize; 10]);
 
 impl PerCause {
     pub fn add(&mut self, cause: Cause, count: usize) {
@@ -108,7 +112,7 @@ pub struct RowProfile {
 }
 
 /// Names of the causes, in [`Cause`]'s order, for tables.
-pub const CAUSES: [&str; 9] = [
+pub const CAUSES: [&str; 10] = [
     "onset",
     "yield",
     "unload",
@@ -118,4 +122,5 @@ pub const CAUSES: [&str; 9] = [
     "damper",
     "fresh",
     "series-only",
+    "continued",
 ];
