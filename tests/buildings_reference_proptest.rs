@@ -18,36 +18,17 @@
 //! reference's own accuracy with a margin; a missed event moves the motion
 //! by a part of itself.
 
+mod common;
+
 use proptest::prelude::*;
 
 use pounding::model::ContactModel;
-use pounding::model::buildings::{self, Ground, Row};
+use pounding::model::buildings::Ground;
 use pounding::model::simulated::Simulation;
 use pounding::reference::row::reference_row;
 use pounding::solver::buildings::{RowOptions, run_row};
 
 const TOLERANCE: f64 = 1e-8;
-
-fn row(stiffness: f64, yield_factor: f64, gap: f64, kelvin: bool) -> Row {
-    let mut row = buildings::load("block-and-frame").expect("shipped");
-    for b in &mut row.buildings {
-        for k in &mut b.stiffness {
-            *k *= stiffness;
-        }
-        for y in &mut b.yield_drift {
-            *y *= yield_factor;
-        }
-    }
-    for j in &mut row.joints {
-        j.gap = gap;
-    }
-    row.model = if kelvin {
-        ContactModel::Kelvin
-    } else {
-        ContactModel::ImprovedKelvin
-    };
-    row
-}
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: 8, ..ProptestConfig::default() })]
@@ -61,7 +42,8 @@ proptest! {
         seed in 1u64..1000,
         scale in 0.3f64..3.0,
     ) {
-        let row = row(stiffness, yield_factor, gap, kelvin);
+        let model = if kelvin { ContactModel::Kelvin } else { ContactModel::ImprovedKelvin };
+        let row = common::scaled_block_and_frame(stiffness, yield_factor, gap, model);
         let record = Simulation { dt: 0.005, duration: 2.0, ..Default::default() }
             .record("random", seed, 1);
         let ground = Ground::from_record(&record, scale);
