@@ -271,3 +271,27 @@ fn each_worker_keeps_its_state_and_the_order_is_kept() {
     assert_eq!(runs.len(), 3);
     assert_eq!(runs[2], [20, 21, 22, 23, 24]);
 }
+
+/// A record whose only contacts are a bumper's has its run apart made, as
+/// every record with contact has: the bumper's forces acted, so the run
+/// with contact is not the buildings' run apart. The retrofit preset (a
+/// 4 mm bumper in a 5 mm gap) at 0.05 g: records that touch the bumper and
+/// never the hard face.
+#[test]
+fn a_record_that_touches_only_a_bumper_has_its_run_apart() {
+    let c = case("block-and-frame-retrofit", 0.05);
+    let m = members(4);
+    let scales = plan(&c, &m).unwrap();
+    let runs = run_suite(&c, &m, &scales, &|_| {}).unwrap();
+    let apart = c.row.apart();
+    let mut seen = 0;
+    for (r, member) in runs.iter().zip(&m) {
+        if r.run.impacts() == 0 && r.run.contacts() > 0 {
+            seen += 1;
+            assert!(!r.demands.pounded);
+            close_motion(&r.free, &own_run(&apart, member, r.scale));
+            assert_ne!(r.free.floors, r.run.floors, "the bumper's forces acted");
+        }
+    }
+    assert!(seen > 0, "no record touched only the bumper");
+}

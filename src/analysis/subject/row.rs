@@ -182,7 +182,7 @@ pub struct RowCaches {
 }
 
 /// The two runs of one member at scale `scale`: with contact, and apart
-/// (the run with contact itself when it had no impact). Up to the first
+/// (the run with contact itself when it had no contact, hard or bumper). Up to the first
 /// contact onset the two have the same motion, so the run apart continues
 /// from the run with contact's state there ([`run_row_from`]): the same
 /// results to rounding, without the repeated part.
@@ -200,7 +200,9 @@ pub fn member_runs(
     let options = RowOptions::lasting(run_length(row, &ground));
     let (run, checkpoint) =
         run_row_keeping(row, &ground, &options, &mut caches.with_contact).map_err(failed)?;
-    let free = if run.impacts() == 0 {
+    // Without any contact (a bumper's counts: its forces act) the run is
+    // the buildings' run apart.
+    let free = if run.contacts() == 0 {
         run.clone()
     } else {
         let apart = row.apart();

@@ -195,7 +195,14 @@ impl RowTrace {
 }
 
 impl RowRun {
+    /// Hard impacts at every floor pair (the bumpers' contacts aside).
     pub fn impacts(&self) -> usize {
         self.pairs.iter().map(|p| p.impacts.len()).sum()
+    }
+
+    /// Contacts of every kind: hard impacts and bumper contacts (SPEC §14).
+    /// A run with none is the run of its buildings apart.
+    pub fn contacts(&self) -> usize {
+        self.impacts() + self.bumpers.iter().map(|p| p.impacts.len()).sum::<usize>()
     }
 }
