@@ -52,7 +52,7 @@
 //! O(h^(2S)) held to 1e-12 is some ρ·1e-12^(1/(2S)) long. Three stages
 //! (O(h⁶)) took 25,705 steps on block-and-frame-retrofit with its damper
 //! at α = 0.35 under synthetic:2000, nearly all of 0.3 to 1 ms and held by
-//! their error, not by events; four (O(h⁸)) take 8,800 for the same
+//! their error, not by events; four (O(h⁸)) take 9,100 for the same
 //! tolerance, each a cubic's solve instead of a quadratic's.
 //!
 //! **Why not more.** S is one constant, [`STAGES`]: the nodes are tabled
@@ -79,9 +79,9 @@
 //! (1e-12 of the motion's scales), as the Hertz-type contact phases' steps
 //! are. It is honest there: on block-and-frame-retrofit with its damper at
 //! α = 0.35 under the first 2 s of presets/synthetic.at2, accepted steps'
-//! end errors against sixteen collocated sub-steps are a median 0.15 of
-//! the tolerance at c = 4e6 (90th percentile 0.56, largest 1.8) and 0.001
-//! at c = 1e5 (0.08, 5.3, the largest at a reversal). The run's error is the sum of its steps'
+//! end errors against sixteen collocated sub-steps are a median 0.14 of
+//! the tolerance at c = 4e6 (90th percentile 0.42, largest 1.2) and 0.002
+//! at c = 1e5 (0.07, 4.1, the largest at a reversal). The run's error is the sum of its steps'
 //! errors, so the tolerance is not looser: with three stages, ten times
 //! looser put the peaks 2.1e-9 from the independent reference at c = 1e5,
 //! past its limit of 1e-9.
