@@ -287,8 +287,14 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
     /// `h_min` are accepted (round-off floor). A step rejected while some
     /// damper's Δv changes sign inside it is retried to that reversal, as
     /// its dense output places it ([`damper::first_reversal`]): its error
-    /// came from the kink, which no step should straddle. Returns the step
-    /// and the suggested length of the next.
+    /// came from the kink, which no step should straddle. The next length
+    /// is h·0.9 err^(−1/p) (within 0.2 h and 5 h), p the order of the
+    /// error estimate in h: 2S for a collocated step, whose estimate is
+    /// O(h^(2S)) where the force is smooth (with 1/5 there, a step after a
+    /// small error grew past the tolerance: 2,333 of 11,132 rejected on
+    /// block-and-frame-retrofit at α = 0.35 under synthetic:2000, 1,522 of
+    /// 10,656 with 1/8), 5 for the Dormand–Prince pair and the implicit
+    /// step. Returns the step and the suggested length of the next.
     pub fn step(
         &self,
         (y0, f0): (&Vec<f64>, &Vec<f64>),
@@ -301,8 +307,15 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         let mut cut = h_try > h_max;
         loop {
             let collocated = self.collocated((y0, f0), (h, true), scale);
-            #[cfg(test)]
-            let audited = collocated.is_some();
+            // The order of the error estimate in h: 2S for a collocated
+            // step (its end's error where the force is smooth), 5 for the
+            // Dormand–Prince pair's and the implicit step's.
+            let collocates = collocated.is_some();
+            let order = if collocates {
+                2 * damper_collocation::STAGES
+            } else {
+                5
+            };
             let step = match collocated {
                 Some(step) => step,
                 None if self.stiff(y0, h) => self.implicit((y0, f0), h, scale.1),
@@ -310,7 +323,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
             };
             let err = scaled_norm(step.error.iter().copied(), n, tolerated(scale));
             let factor = if err > 0.0 {
-                (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
+                (0.9 * err.powf(-1.0 / order as f64)).clamp(0.2, 5.0)
             } else {
                 5.0
             };
@@ -324,7 +337,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
                 }
             }
             #[cfg(test)]
-            if accepted && audited {
+            if accepted && collocates {
                 self.audit(y0, &step, scale);
             }
             if accepted {

@@ -52,16 +52,36 @@
 //! O(h^(2S)) held to 1e-12 is some ρ·1e-12^(1/(2S)) long. Three stages
 //! (O(h⁶)) took 25,705 steps on block-and-frame-retrofit with its damper
 //! at α = 0.35 under synthetic:2000, nearly all of 0.3 to 1 ms and held by
-//! their error, not by events; four (O(h⁸)) take 9,200 for the same
+//! their error, not by events; four (O(h⁸)) take 9,100 for the same
 //! tolerance, each a cubic's solve instead of a quadratic's.
+//!
+//! **Why not more.** S is one constant, [`STAGES`]: the nodes are tabled
+//! for 4, 5 and 6 stages (`damper_collocation/nodes.rs`), and every table (the basis, π, the
+//! halves' nodes, the estimate's points, the powers kept, the Newton
+//! step's sizes on the stack) follows it. By the model above five stages
+//! would take half the steps of four; they take six times more (56,759
+//! accepted and 32,796 rejected on the run above): the estimate, not the
+//! motion, holds them, most likely through rounding. At five stages the
+//! Lagrange basis' coefficients
+//! in powers of θ sum to 270 (55 at four), and a stiff damper reads the
+//! collocated force through its Δv, which magnifies the rounding of the
+//! force by h over its relaxation time; the defect model fitted to that
+//! rounding (π is five times smaller between the nodes) answers with an
+//! estimate near the tolerance at any step length. Writing each force
+//! from its last node's value (Σ_j ℓ_j = 1), which cuts the first of
+//! these roundings, is not enough: on the first 2 s of
+//! presets/synthetic.at2 at c = 4e6 five stages so written took 7,473
+//! steps against four stages' 1,496, seven in ten with an estimate above
+//! 0.05 and twenty times their uncorrected end's true error (one in
+//! thirteen at four stages).
 //!
 //! **Tolerance.** The estimate is held to [`super::contact_rk::TOLERANCE`]
 //! (1e-12 of the motion's scales), as the Hertz-type contact phases' steps
 //! are. It is honest there: on block-and-frame-retrofit with its damper at
 //! α = 0.35 under the first 2 s of presets/synthetic.at2, accepted steps'
-//! end errors against sixteen collocated sub-steps are a median 0.16 of
-//! the tolerance at c = 4e6 (90th percentile 0.58, largest 1.8) and 0.001
-//! at c = 1e5 (0.07, 1.4). The run's error is the sum of its steps'
+//! end errors against sixteen collocated sub-steps are a median 0.14 of
+//! the tolerance at c = 4e6 (90th percentile 0.42, largest 1.2) and 0.002
+//! at c = 1e5 (0.07, 4.1, the largest at a reversal). The run's error is the sum of its steps'
 //! errors, so the tolerance is not looser: with three stages, ten times
 //! looser put the peaks 2.1e-9 from the independent reference at c = 1e5,
 //! past its limit of 1e-9.
@@ -86,6 +106,7 @@
 mod basis;
 mod estimate;
 mod newton;
+mod nodes;
 mod responses;
 #[cfg(test)]
 mod tests;
@@ -103,34 +124,29 @@ use estimate::kappa;
 use newton::{Forces, Solved, solve};
 use responses::Responses;
 
-/// Stages S of the collocation.
+/// Stages S of the collocation: 4, 5 or 6 (the tabled nodes); four, for
+/// the reason in the module's doc ("Why not more").
 pub const STAGES: usize = 4;
 
-/// The nodes c_j of Radau IIA, 4 stages: the roots of
-/// d³/dθ³ [θ³ (θ − 1)⁴], the last 1.
-pub const NODES: [f64; STAGES] = [
-    0.088_587_959_512_703_94,
-    0.409_466_864_440_734_7,
-    0.787_659_461_760_847_1,
-    1.0,
-];
+/// The nodes c_j of Radau IIA, the roots of
+/// d^(S−1)/dθ^(S−1) [θ^(S−1) (θ − 1)^S], the last 1 (tabled in `damper_collocation/nodes.rs`).
+pub const NODES: [f64; STAGES] = nodes::radau();
+
+/// The nodes of a half of a step, θ = `offset` + c_i/2.
+const fn halved(offset: f64) -> [f64; STAGES] {
+    let mut points = [0.0; STAGES];
+    let mut i = 0;
+    while i < STAGES {
+        points[i] = offset + 0.5 * NODES[i];
+        i += 1;
+    }
+    points
+}
 
 /// ℓ_j at the nodes of the first half of a step and of the second,
 /// θ = c_i/2 and 1/2 + c_i/2 (row i): the halves' first guess.
-const AT_HALVES: [[[f64; STAGES]; STAGES]; 2] = [
-    lagrange_at([
-        0.5 * NODES[0],
-        0.5 * NODES[1],
-        0.5 * NODES[2],
-        0.5 * NODES[3],
-    ]),
-    lagrange_at([
-        0.5 + 0.5 * NODES[0],
-        0.5 + 0.5 * NODES[1],
-        0.5 + 0.5 * NODES[2],
-        0.5 + 0.5 * NODES[3],
-    ]),
-];
+const AT_HALVES: [[[f64; STAGES]; STAGES]; 2] =
+    [lagrange_at(halved(0.0)), lagrange_at(halved(0.5))];
 
 /// Coefficients a_1 … a_{S−1} of the defect model past κ ([`basis::defect_polynomial`]).
 const MODEL: usize = STAGES - 1;
@@ -138,9 +154,9 @@ const MODEL: usize = STAGES - 1;
 /// Newton iterations at most on one step.
 const NEWTON: usize = 50;
 
-/// Powers of s whose responses are kept: s⁰ … s⁷, the collocated
-/// cubic's and the defect model's (κ + a₁θ + a₂θ² + a₃θ³)π(θ), of
-/// degree 2S − 1 = 7.
+/// Powers of s whose responses are kept: s⁰ … s^(2S−1), the collocated
+/// polynomial's (degree S − 1) and the defect model's
+/// (κ + a₁θ + … + a_{S−1}θ^(S−1))π(θ), of degree 2S − 1.
 const POWERS: usize = 2 * STAGES;
 
 /// The step-doubling estimate's divisor 2^p − 1 for the elements: a step
@@ -448,8 +464,9 @@ impl Collocation {
     /// ```
     ///
     /// κ_e from the defect at the start (`kappa`), the a_{e,q} from the
-    /// defect at θ = 1/4, 3/5 and 9/10 on the collocated motion, and the
-    /// model checked against the defect at θ = 1/2 (`defect_model`), for
+    /// defect midway between consecutive nodes on the collocated motion,
+    /// and the model checked against the defect at θ = 1/2
+    /// (`defect_model`), for
     /// a damper and a contact's product alike. The end's error is then
     /// the response to the model plus the forces' own answer to it
     /// (`feedback`), O(h⁸): the step returns the end under the corrected

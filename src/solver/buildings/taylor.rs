@@ -65,8 +65,9 @@ pub struct Forcing {
     /// 1/m_A and 1/m_B.
     pub left_rate: f64,
     pub right_rate: f64,
-    /// x_0 … x_3 (N, N/s, N/s², N/s³).
-    pub force: [f64; 4],
+    /// x_0 … x_5 (N, N/s, …, N/s⁵): up to the quintic of a force
+    /// collocated at six nodes.
+    pub force: [f64; 6],
 }
 
 /// Coefficients of u and u̇, floor by floor (each a block of

@@ -11,10 +11,18 @@ use crate::model::buildings::retrofit::dashpot_force;
 use crate::solver::buildings::poly;
 use crate::solver::buildings::taylor::{ORDER, Series};
 
-/// Where the defect model is fitted (three points) and checked (the
-/// last), as fractions θ of the step: between the nodes, where π is not
-/// small.
-const FIT: [f64; MODEL + 1] = [0.25, 0.6, 0.9, 0.5];
+/// Where the defect model is fitted (the first S − 1 points) and
+/// checked (the last), as fractions θ of the step: the middle of each gap
+/// between consecutive nodes, where π is not small, and θ = 1/2.
+const FIT: [f64; MODEL + 1] = {
+    let mut points = [0.5; MODEL + 1];
+    let mut k = 0;
+    while k < MODEL {
+        points[k] = 0.5 * (NODES[k] + NODES[k + 1]);
+        k += 1;
+    }
+    points
+};
 
 /// ℓ_j at the start, θ = 0.
 const AT_START: [[f64; STAGES]; 1] = lagrange_at([0.0]);
@@ -23,12 +31,15 @@ const AT_START: [[f64; STAGES]; 1] = lagrange_at([0.0]);
 const AT_FIT: [[f64; STAGES]; MODEL + 1] = lagrange_at(FIT);
 
 /// π at the points of [`FIT`].
-const NODE_AT_FIT: [f64; MODEL + 1] = [
-    node_value(FIT[0]),
-    node_value(FIT[1]),
-    node_value(FIT[2]),
-    node_value(FIT[3]),
-];
+const NODE_AT_FIT: [f64; MODEL + 1] = {
+    let mut values = [0.0; MODEL + 1];
+    let mut k = 0;
+    while k <= MODEL {
+        values[k] = node_value(FIT[k]);
+        k += 1;
+    }
+    values
+};
 
 /// κ_e = (x_e(0) − Σ_j X_{e,j} ℓ_j(0))/π(0) of each element: the start's
 /// force against the collocated cubic's there, over the node polynomial's.
@@ -105,7 +116,8 @@ impl Collocation {
     /// where an element's defect does not follow it. For each element,
     /// d(θh) = Σ_j X_j ℓ_j(θ) − x(θh), x the law's value on the collocated
     /// motion (the damper's F(Δv), the product's h δ δ̇): the a_q from d
-    /// at θ = 1/4, 3/5 and 9/10, and the model checked at θ = 1/2, to
+    /// midway between consecutive nodes ([`FIT`]), and the model checked
+    /// at θ = 1/2, to
     /// within a tenth of it (or to 1e-12 of the damper's force at the
     /// motion's speed, of the product's largest node value): the force's
     /// divided difference x[c₁, …, c₄, θh] is then nearly a cubic over the

@@ -3,8 +3,7 @@
 
 use nalgebra::allocator::Allocator;
 use nalgebra::{
-    DMatrix, DVector, DefaultAllocator, DimMin, DimName, Dyn, LU, OMatrix, OVector, U4, U8, U12,
-    U16,
+    Const, DMatrix, DVector, DefaultAllocator, DimMin, DimName, Dyn, LU, OMatrix, OVector,
 };
 
 use super::basis::collocated;
@@ -108,12 +107,15 @@ pub(super) struct Linearized {
 /// the fixed sizes remove.)
 #[allow(clippy::large_enum_variant)]
 pub(super) enum Factors {
-    One(LU<f64, U4, U4>),
-    Two(LU<f64, U8, U8>),
-    Three(LU<f64, U12, U12>),
-    Four(LU<f64, U16, U16>),
+    One(Fixed<STAGES>),
+    Two(Fixed<{ 2 * STAGES }>),
+    Three(Fixed<{ 3 * STAGES }>),
+    Four(Fixed<{ 4 * STAGES }>),
     Any(LU<f64, Dyn, Dyn>),
 }
+
+/// LU factors of the fixed order M on the stack.
+type Fixed<const M: usize> = LU<f64, Const<M>, Const<M>>;
 
 /// The factors of the Jacobian at `rows` ([`fill`]) of the fixed order D.
 fn fixed<D>(nodes: &AtNodes, rows: &[Linear]) -> LU<f64, D, D>

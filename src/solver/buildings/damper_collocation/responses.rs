@@ -70,7 +70,7 @@ impl Responses {
         for k in 0..POWERS {
             for (f, el) in elements.iter().enumerate() {
                 let response = if k < 4 {
-                    let mut force = [0.0; 4];
+                    let mut force = [0.0; 6];
                     force[k] = 1.0;
                     let forcing = Forcing {
                         left: el.left,

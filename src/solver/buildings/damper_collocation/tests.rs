@@ -2,6 +2,7 @@ use super::super::config::Config;
 use super::super::contact_rk::scaled_norm;
 use super::super::damper::Damper;
 use super::super::layout::Layout;
+use super::super::poly;
 use super::super::system::System;
 use super::super::taylor::{Forcing, ORDER, Series};
 use super::basis::{basis, lagrange, node_polynomial};
@@ -71,7 +72,7 @@ fn the_responses_to_powers_of_s_serve_every_step_length() {
                 right: el.right,
                 left_rate: el.left_rate,
                 right_rate: el.right_rate,
-                force: basis(j, h),
+                force: std::array::from_fn(|k| basis(j, h).get(k).copied().unwrap_or(0.0)),
             };
             let direct = Series::forced(
                 &rest,
@@ -98,19 +99,25 @@ fn the_responses_to_powers_of_s_serve_every_step_length() {
 }
 
 /// The nodes are Radau's: the quadrature with weights b_j = ∫₀¹ ℓ_j
-/// integrates θ^k exactly for k = 0 … 2S − 2 = 6 (to 1e-15), which only
+/// integrates θ^k exactly for k = 0 … 2S − 2 (to 1e-15), which only
 /// the S-point rule with its last node at 1 does (Hairer & Wanner,
 /// IV.5), so that the collocated equations are Radau IIA's where the
 /// damper is far stiffer than the step; ℓ_j(c_i) = δ_ij and π(c_i) = 0,
-/// each to 1e-15.
+/// each to 1e-15. The weights are ℓ_j's integrals by the three-point
+/// Gauss–Legendre rule, exact to degree 5 ≥ S − 1, on ℓ_j's product
+/// form; the basis in powers of θ ([`basis`]), which the step uses, is
+/// that product to 1e-14 at θ = k/20.
 #[test]
 fn the_nodes_are_radau_iia() {
     let pi = node_polynomial(1.0);
+    let root = 0.5 * 0.6f64.sqrt();
+    let gauss = [
+        (0.5 - root, 5.0 / 18.0),
+        (0.5, 8.0 / 18.0),
+        (0.5 + root, 5.0 / 18.0),
+    ];
     let weights: Vec<f64> = (0..STAGES)
-        .map(|j| {
-            let p = basis(j, 1.0);
-            (0..STAGES).map(|k| p[k] / (k + 1) as f64).sum()
-        })
+        .map(|j| gauss.iter().map(|&(t, w)| w * lagrange(j, t)).sum())
         .collect();
     for k in 0..2 * STAGES - 1 {
         let sum: f64 = weights
@@ -129,6 +136,14 @@ fn the_nodes_are_radau_iia() {
             let value = lagrange(j, c);
             let expected = if c == node { 1.0 } else { 0.0 };
             assert!((value - expected).abs() < 1e-15, "ℓ_{j}({c}) = {value}");
+        }
+    }
+    for j in 0..STAGES {
+        let expanded = basis(j, 1.0);
+        for k in 0..=20 {
+            let theta = k as f64 / 20.0;
+            let (a, b) = (poly::eval(&expanded, theta), lagrange(j, theta));
+            assert!((a - b).abs() < 1e-14, "ℓ_{j}({theta}): {a} against {b}");
         }
     }
 }
