@@ -211,14 +211,6 @@ fn scan_values(c: &[f64], end: f64) -> [f64; SCAN + 1] {
 /// been seen non-positive, a minimum between two scan points (p' turning
 /// from negative to positive) is located, and if p ≤ 0 there, p's rise
 /// after it is the root.
-///
-/// Once armed, an interval between two non-positive scan points is cleared
-/// by p's distance from its chord: p − L = p''(ξ)(s − lo)(s − hi)/2 there,
-/// so p ≤ max(p(lo), p(hi)) + M₂w²/8 with M₂ = Σ_{k≥2} k(k−1)|c_k| end^(k−2)
-/// ≥ |p''| on [0, end]. Where that bound is not negative the interval is
-/// halved (`hidden_rise`), so a hump that rises above zero between two
-/// scan points with p' of the same sign at both (two turning points
-/// inside) is found as well.
 pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
     // When p's upper bound on [0, end] stays ≤ 0, nothing to scan.
     if c[0] <= 0.0 && upper_bound(c, end) <= 0.0 {
@@ -234,7 +226,6 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
         return Some(0.0);
     }
     let mut armed = f_lo <= 0.0;
-    let (mut m2, mut budget) = (None, HIDDEN_BUDGET);
     let (values, rates) = (scan_values(c, end), scan_derivative(c, end));
     for i in 1..=SCAN {
         let s = end * i as f64 / SCAN as f64;
@@ -249,10 +240,6 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
                 if f(top) > 0.0 {
                     return Some(bisect(f, df, lo, top));
                 }
-            }
-            let curvature = *m2.get_or_insert_with(|| curvature_bound(c, end));
-            if let Some(s) = hidden_rise(c, (lo, f_lo), (s, fs), curvature, &mut budget) {
-                return Some(s);
             }
         } else if fs <= 0.0 {
             armed = true;
@@ -269,48 +256,6 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
     }
     let _ = f_lo;
     None
-}
-
-/// Halvings [`hidden_rise`] may make in one [`first_rise`]: a guard where p
-/// hugs zero with curvature over a long stretch (a grazing contact held);
-/// past it an interval counts as cleared.
-const HIDDEN_BUDGET: u32 = 256;
-
-/// M₂ = Σ_{k≥2} k(k−1)|c_k| end^(k−2) ≥ |p''| on [0, end].
-fn curvature_bound(c: &[f64], end: f64) -> f64 {
-    let mut acc = 0.0;
-    for k in (2..c.len()).rev() {
-        acc = acc * end + (k * (k - 1)) as f64 * c[k].abs();
-    }
-    acc
-}
-
-/// The first point of (lo, hi) where p > 0 (on its far side of the root),
-/// given p(lo) ≤ 0 and p(hi) ≤ 0 (`f_lo`, `f_hi`) and M₂ ≥ |p''|: none
-/// where max(p(lo), p(hi)) + M₂(hi − lo)²/8 ≤ 0, else p at the midpoint
-/// decides, and the halves are searched in turn.
-fn hidden_rise(
-    c: &[f64],
-    (lo, f_lo): (f64, f64),
-    (hi, f_hi): (f64, f64),
-    m2: f64,
-    budget: &mut u32,
-) -> Option<f64> {
-    let w = hi - lo;
-    if f_lo.max(f_hi) + m2 * w * w / 8.0 <= 0.0 || *budget == 0 {
-        return None;
-    }
-    if w <= 4.0 * f64::EPSILON * hi.abs().max(f64::MIN_POSITIVE) {
-        return None;
-    }
-    *budget -= 1;
-    let mid = lo + 0.5 * w;
-    let f_mid = eval(c, mid);
-    if f_mid > 0.0 {
-        return Some(bisect(|x| eval(c, x), |x| eval_derivative(c, x), lo, mid));
-    }
-    hidden_rise(c, (lo, f_lo), (mid, f_mid), m2, budget)
-        .or_else(|| hidden_rise(c, (mid, f_mid), (hi, f_hi), m2, budget))
 }
 
 /// max |p| over [0, end]: the ends and every turning point, found where p'
@@ -417,27 +362,6 @@ mod tests {
         let (at, top) = argmax(&neg, 1.0);
         assert!((at - 0.5).abs() < 1e-12 && top == max(&neg, 1.0));
         assert!(first_rise(&c[..1].iter().map(|x| -x).collect::<Vec<_>>(), 1.0).is_none());
-    }
-
-    #[test]
-    fn finds_a_hump_between_two_scan_points_with_rising_ends() {
-        // p = x³ − bx − d, x = s − a: p' = 3x² − b is positive at both scan
-        // points 0.5 and 0.5625 of [0, 1] (x = −0.03, 0.0325), so no turning
-        // point shows there, but p has a maximum at x = −√(b/3) ≈ −0.0283
-        // of 4.53e-5 − d = 1.5e-7 > 0 inside, and p ≤ 0 at every scan point
-        // up to 0.5625 (it rises through zero again after 0.59).
-        let (a, b, d) = (0.53f64, 2.4e-3, 4.515e-5);
-        let c = [-a * a * a + b * a - d, 3.0 * a * a - b, -3.0 * a, 1.0];
-        let p = |x: f64| x * x * x - b * x - d;
-        let rise = first_rise(&c, 1.0).expect("the hump is found");
-        // Its first root, by bisection on the cubic in x over [−0.03, −√(b/3)].
-        let (mut lo, mut hi) = (-0.03f64, -(b / 3.0).sqrt());
-        assert!(p(lo) < 0.0 && p(hi) > 0.0);
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if p(mid) > 0.0 { hi = mid } else { lo = mid }
-        }
-        assert!((rise - (a + hi)).abs() < 1e-12, "{rise} against {}", a + hi);
     }
 
     #[test]
