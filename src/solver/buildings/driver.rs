@@ -420,7 +420,7 @@ fn drive(
     };
     run.damper_signs = damper::signs(&run.layout.dampers, &run.v);
     run.pass = WatchPass::new(&run.layout);
-    run.record_start(ground);
+    run.record_here(ground.at(0.0));
     let mut trace = options.trace.then(|| RowTrace::new(n));
     let mut resume = resume;
     'pieces: for piece in ground.pieces(options.duration) {
@@ -699,10 +699,11 @@ impl Run<'_> {
         Ok(())
     }
 
-    /// Peaks at the start: the floors' initial velocity, and the
-    /// acceleration its damping force gives (0 from rest).
-    fn record_start(&mut self, ground: &Ground) {
-        let a = ground.at(0.0);
+    /// Peaks at the current point under ground acceleration `a`, with ü
+    /// of the configuration in force out of contact: at the start (the
+    /// floors' initial velocity, and the acceleration its damping force
+    /// gives; 0 from rest), and where a continuation takes up its state.
+    fn record_here(&mut self, a: f64) {
         let mut acc = vec![0.0; self.layout.dofs];
         self.system.acceleration(&self.u, &self.v, a, &mut acc);
         self.record_point(&acc, a);
@@ -1193,9 +1194,19 @@ impl Run<'_> {
         self.system = self.propagator.systems.of(&self.layout, &self.config);
     }
 
+    /// Maps made and map steps taken by this run so far (those of the run
+    /// a continuation took up included), and the seconds spent making maps.
+    fn maps_so_far(&self) -> (usize, usize, f64) {
+        let (before, carried, p) = (self.counts_before, self.carried, &self.propagator);
+        (
+            carried.0 + p.made - before.0,
+            carried.1 + p.used - before.1,
+            carried.2 + p.seconds - before.2,
+        )
+    }
+
     fn finish(mut self, duration: f64) -> RowRun {
-        let (before, carried) = (self.counts_before, self.carried);
-        let maps_made = carried.0 + self.propagator.made - before.0;
+        let (maps_made, map_steps, exponential_seconds) = self.maps_so_far();
         self.profile.maps_made = maps_made;
         let c = self.collocation.borrow();
         self.profile.collocation = CollocationSteps {
@@ -1207,7 +1218,7 @@ impl Run<'_> {
         };
         drop(c);
         if self.timed {
-            self.profile.exponential_seconds = carried.2 + self.propagator.seconds - before.2;
+            self.profile.exponential_seconds = exponential_seconds;
         }
         let mut floors = Vec::new();
         let mut k = 0;
@@ -1258,7 +1269,7 @@ impl Run<'_> {
             final_displacement: self.u,
             final_velocity: self.v,
             maps_made,
-            map_steps: carried.1 + self.propagator.used - before.1,
+            map_steps,
             series_steps: self.series_steps,
             configurations: self.configurations.len(),
             trace: None,

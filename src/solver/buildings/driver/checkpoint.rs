@@ -122,7 +122,6 @@ impl Run<'_> {
         if !self.keep || self.snapshot.is_some() || !self.layout.dampers.is_empty() {
             return;
         }
-        let (before, carried) = (self.counts_before, self.carried);
         self.snapshot = Some(Snapshot {
             time: self.t,
             u: self.u.clone(),
@@ -138,11 +137,7 @@ impl Run<'_> {
             seen: self.seen.clone(),
             requests: self.requests,
             series_steps: self.series_steps,
-            maps: (
-                carried.0 + self.propagator.made - before.0,
-                carried.1 + self.propagator.used - before.1,
-                carried.2 + self.propagator.seconds - before.2,
-            ),
+            maps: self.maps_so_far(),
             profile: self.profile,
         });
     }
@@ -174,9 +169,6 @@ impl Run<'_> {
         // are the continued sub-step's.
         let unassigned = s.series_steps - s.profile.series.total();
         self.profile.series.add(Cause::Continued, unassigned);
-        let (a, _) = ground_at(piece, self.t);
-        let mut acc = vec![0.0; self.layout.dofs];
-        self.system.acceleration(&self.u, &self.v, a, &mut acc);
-        self.record_point(&acc, a);
+        self.record_here(ground_at(piece, self.t).0);
     }
 }
