@@ -23,9 +23,6 @@ mod common;
 
 use proptest::prelude::*;
 
-use pounding::model::ContactModel;
-use pounding::model::buildings::Ground;
-use pounding::model::simulated::Simulation;
 use pounding::solver::buildings::{RowOptions, RowRun, run_row};
 
 const TOLERANCE: f64 = 2e-11;
@@ -46,41 +43,18 @@ fn worst(
         .fold(0.0, f64::max)
 }
 
-/// Largest difference of the end states `a` and `b`, relative to `scale`,
-/// the run's peak of that quantity over every floor.
-fn state_difference(a: &[f64], b: &[f64], scale: f64) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(p, q)| (p - q).abs() / scale)
-        .fold(0.0, f64::max)
-}
-
 proptest! {
     #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
 
     #[test]
-    fn the_map_and_the_series_agree(
-        stiffness in 0.5f64..2.0,
-        yield_factor in 0.3f64..3.0,
-        gap in 0.002f64..0.05,
-        kelvin in any::<bool>(),
-        seed in 1u64..1000,
-        scale in 0.3f64..3.0,
-    ) {
-        let model = if kelvin { ContactModel::Kelvin } else { ContactModel::ImprovedKelvin };
-        let row = common::scaled_block_and_frame(stiffness, yield_factor, gap, model);
-        let record = Simulation { dt: 0.005, duration: 2.0, ..Default::default() }
-            .record("random", seed, 1);
-        let ground = Ground::from_record(&record, scale);
+    fn the_map_and_the_series_agree(case in common::random_row()) {
+        let (row, ground) = case.make();
         let quiet = RowOptions::lasting(ground.end() + 0.5);
         let series = RowOptions { series_only: true, ..quiet };
         let a = run_row(&row, &ground, &quiet).expect("runs");
         let b = run_row(&row, &ground, &series).expect("runs");
         prop_assert_eq!(b.profile.map_steps, 0);
         prop_assert!(a.profile.map_steps > 0);
-        let peak = |pick: fn(&pounding::solver::buildings::FloorPeaks) -> f64| {
-            b.floors.iter().flatten().map(pick).fold(f64::MIN_POSITIVE, f64::max)
-        };
         let counts = |r: &RowRun| r.pairs.iter().map(|p| p.impacts.len()).collect::<Vec<_>>();
         prop_assert_eq!(counts(&a), counts(&b));
         for (what, e) in [
@@ -88,8 +62,7 @@ proptest! {
             ("velocity", worst(&a, &b, |f| f.velocity)),
             ("acceleration", worst(&a, &b, |f| f.absolute_acceleration)),
             ("drift", worst(&a, &b, |f| f.drift)),
-            ("end displacement", state_difference(&a.final_displacement, &b.final_displacement, peak(|f| f.displacement))),
-            ("end velocity", state_difference(&a.final_velocity, &b.final_velocity, peak(|f| f.velocity))),
+            ("end state", common::motion_differences(&a, &b).2),
         ] {
             prop_assert!(e < TOLERANCE, "{} differs by {:e} ({} map steps)", what, e, a.profile.map_steps);
         }

@@ -22,9 +22,6 @@ mod common;
 
 use proptest::prelude::*;
 
-use pounding::model::ContactModel;
-use pounding::model::buildings::Ground;
-use pounding::model::simulated::Simulation;
 use pounding::reference::row::reference_row;
 use pounding::solver::buildings::{RowOptions, run_row};
 
@@ -34,19 +31,8 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 8, ..ProptestConfig::default() })]
 
     #[test]
-    fn the_exact_method_and_the_reference_agree(
-        stiffness in 0.5f64..2.0,
-        yield_factor in 0.3f64..3.0,
-        gap in 0.002f64..0.05,
-        kelvin in any::<bool>(),
-        seed in 1u64..1000,
-        scale in 0.3f64..3.0,
-    ) {
-        let model = if kelvin { ContactModel::Kelvin } else { ContactModel::ImprovedKelvin };
-        let row = common::scaled_block_and_frame(stiffness, yield_factor, gap, model);
-        let record = Simulation { dt: 0.005, duration: 2.0, ..Default::default() }
-            .record("random", seed, 1);
-        let ground = Ground::from_record(&record, scale);
+    fn the_exact_method_and_the_reference_agree(case in common::random_row()) {
+        let (row, ground) = case.make();
         let duration = ground.end() + 0.5;
         let exact = run_row(&row, &ground, &RowOptions::lasting(duration)).expect("runs");
         let reference = reference_row(&row, &ground, duration, 1e-13);

@@ -212,6 +212,59 @@ pub fn against_reference(
     worst.max((fe - fr).abs() / fr)
 }
 
+/// A random row and record of the solver's proptests: the inputs of
+/// [`scaled_block_and_frame`] (Kelvin or improved Kelvin), the seed of a
+/// simulated record of 2 s sampled at 5 ms, and its scale.
+#[derive(Debug, Clone, Copy)]
+pub struct RandomRow {
+    pub stiffness: f64,
+    pub yield_factor: f64,
+    pub gap: f64,
+    pub kelvin: bool,
+    pub seed: u64,
+    pub scale: f64,
+}
+
+proptest::prop_compose! {
+    /// Stiffness × 0.5–2, yield drift × 0.3–3, gaps 2–50 mm, either law,
+    /// records 1–999 at scales 0.3–3.
+    pub fn random_row()(
+        stiffness in 0.5f64..2.0,
+        yield_factor in 0.3f64..3.0,
+        gap in 0.002f64..0.05,
+        kelvin in proptest::prelude::any::<bool>(),
+        seed in 1u64..1000,
+        scale in 0.3f64..3.0,
+    ) -> RandomRow {
+        RandomRow { stiffness, yield_factor, gap, kelvin, seed, scale }
+    }
+}
+
+impl RandomRow {
+    /// The row and its ground.
+    pub fn make(
+        &self,
+    ) -> (
+        pounding::model::buildings::Row,
+        pounding::model::buildings::Ground,
+    ) {
+        let model = if self.kelvin {
+            ContactModel::Kelvin
+        } else {
+            ContactModel::ImprovedKelvin
+        };
+        let row = scaled_block_and_frame(self.stiffness, self.yield_factor, self.gap, model);
+        let record = pounding::model::simulated::Simulation {
+            dt: 0.005,
+            duration: 2.0,
+            ..Default::default()
+        }
+        .record("random", self.seed, 1);
+        let ground = pounding::model::buildings::Ground::from_record(&record, self.scale);
+        (row, ground)
+    }
+}
+
 /// block-and-frame with every storey's stiffness and yield drift scaled by
 /// `stiffness` and `yield_factor`, every joint's gap `gap` (m) and the
 /// contact law `model`: the random rows of the solver's proptests.
