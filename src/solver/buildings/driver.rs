@@ -236,6 +236,8 @@ struct Run<'a> {
     requests: usize,
     buf: Vec<f64>,
     buf2: Vec<f64>,
+    /// ü at a series step's end, reused from step to step.
+    point_acceleration: Vec<f64>,
     /// How far each floor moves over the current series step.
     reach: Reach,
     /// The last Taylor step's series, its vectors reused by the next.
@@ -394,6 +396,7 @@ fn drive(
         requests: 0,
         buf: Vec::new(),
         buf2: Vec::new(),
+        point_acceleration: Vec::new(),
         reach: Reach::default(),
         spare_series: Series::default(),
         watch: probes.iter().map(Probe::watch).collect(),
@@ -752,8 +755,11 @@ impl Run<'_> {
             self.spare.push(stack);
         }
         let n = self.layout.dofs;
-        let mut un = vec![0.0; n];
-        let mut vn = vec![0.0; n];
+        // The map steps' buffers of the next state, and of ü at each point.
+        let (mut un, mut vn) = std::mem::take(&mut self.next);
+        un.resize(n, 0.0);
+        vn.resize(n, 0.0);
+        let mut acc = std::mem::take(&mut self.point_acceleration);
         while self.t < tb {
             self.series_steps += 1;
             if self.series_steps > MAX_SERIES_STEPS {
@@ -823,12 +829,14 @@ impl Run<'_> {
             }
             // The point itself, with ü of the configuration now in force.
             let (a1, _) = ground_at(piece, self.t);
-            let acc = self.acceleration(piece, self.t, 0.0, (&self.u, &self.v));
+            self.acceleration_into(piece, self.t, (&self.u, &self.v), &mut acc);
             self.record_point(&acc, a1);
             if self.collapse.is_some() {
                 break;
             }
         }
+        self.next = (un, vn);
+        self.point_acceleration = acc;
         Ok(())
     }
 
@@ -848,6 +856,23 @@ impl Run<'_> {
             self.system
                 .acceleration(u, v, ground_at(piece, t + s).0, &mut acc);
             acc
+        }
+    }
+
+    /// [`Run::acceleration`] at time t into `out`, whose vector the linear
+    /// system's ü reuses (a series step's point takes one).
+    fn acceleration_into(
+        &self,
+        piece: &Piece,
+        t: f64,
+        (u, v): (&[f64], &[f64]),
+        out: &mut Vec<f64>,
+    ) {
+        if by_steps(&self.layout, &self.config) {
+            *out = self.acceleration(piece, t, 0.0, (u, v));
+        } else {
+            out.resize(self.layout.dofs, 0.0);
+            self.system.acceleration(u, v, ground_at(piece, t).0, out);
         }
     }
 

@@ -41,6 +41,8 @@ pub const MAX_ORDER: usize = 40;
 const MIN_ORDER: usize = 8;
 /// Relative size of the last terms at the end of a step.
 pub const TOLERANCE: f64 = 1e-17;
+/// Floors whose state [`Series::state`] evaluates side by side.
+const STATE_LANES: usize = 4;
 
 /// The ground's Taylor coefficients a_k from (a, ȧ, σ) at s = 0:
 /// a₀ = a, a₁ = ȧ, a_{k+2} = σ a_k/((k+1)(k+2)) (ä_g = σ a_g on the piece).
@@ -276,9 +278,13 @@ impl Series {
         };
         let w = top + 1;
         let mut degree = top;
+        // Whether the test below reads order k's norm (as order k or k + 1
+        // of its pair): only with `want`, and from MIN_ORDER − 1 on; the
+        // radius takes its own norms of the last two orders.
+        let tested = |k: usize| want.is_some() && k + 1 >= MIN_ORDER;
         // The norm of order k, kept from the step before (the test asks for
         // orders k and k + 1).
-        let mut last = norm(&state[..n]);
+        let mut last = if tested(0) { norm(&state[..n]) } else { 0.0 };
         for k in 0..top {
             let (done, next) = state.split_at_mut((k + 1) * n);
             let (column, next) = (&done[k * n..], &mut next[..n]);
@@ -318,7 +324,7 @@ impl Series {
             for ((x, &[_, v]), &a) in next.iter_mut().zip(column).zip(&acc[..n]) {
                 *x = [v * inv, a * inv];
             }
-            let now = norm(next);
+            let now = if tested(k + 1) { norm(next) } else { 0.0 };
             // The last two terms within the tolerance at `want`: enough.
             if let Some(want) = want
                 && k + 1 >= MIN_ORDER
@@ -377,18 +383,46 @@ impl Series {
         &self.v[i * (self.degree + 1)..(i + 1) * (self.degree + 1)]
     }
 
-    /// (u, u̇) at s.
+    /// (u, u̇) at s, each coefficient block by Horner's rule. The floors go
+    /// `STATE_LANES` (4) at a time, their 2 · STATE_LANES chains advancing
+    /// order by order side by side: one chain waits on each multiply-add in
+    /// turn, so a floor alone runs at the adder's latency, and side by side
+    /// at its throughput. Each chain is the same Horner's rule: the same
+    /// state to the bit.
     pub fn state(&self, s: f64, u: &mut [f64], v: &mut [f64]) {
-        for i in 0..self.n {
-            let (cu, cv) = (self.displacement(i), self.velocity(i));
-            let mut a = 0.0;
-            let mut b = 0.0;
-            for k in (0..=self.degree).rev() {
+        let width = self.degree + 1;
+        let (blocks_u, blocks_v) = (&self.u[..self.n * width], &self.v[..self.n * width]);
+        let lanes = STATE_LANES * width;
+        let (chunks_u, chunks_v) = (blocks_u.chunks_exact(lanes), blocks_v.chunks_exact(lanes));
+        let (rest_u, rest_v) = (chunks_u.remainder(), chunks_v.remainder());
+        let (out_u, out_v) = (
+            u.chunks_exact_mut(STATE_LANES),
+            v.chunks_exact_mut(STATE_LANES),
+        );
+        for (((cu, cv), ou), ov) in chunks_u.zip(chunks_v).zip(out_u).zip(out_v) {
+            let (mut a, mut b) = ([0.0; STATE_LANES], [0.0; STATE_LANES]);
+            for k in (0..width).rev() {
+                for j in 0..STATE_LANES {
+                    a[j] = a[j] * s + cu[j * width + k];
+                    b[j] = b[j] * s + cv[j * width + k];
+                }
+            }
+            ou.copy_from_slice(&a);
+            ov.copy_from_slice(&b);
+        }
+        let done = self.n - self.n % STATE_LANES;
+        for (j, (cu, cv)) in rest_u
+            .chunks_exact(width)
+            .zip(rest_v.chunks_exact(width))
+            .enumerate()
+        {
+            let (mut a, mut b) = (0.0, 0.0);
+            for k in (0..width).rev() {
                 a = a * s + cu[k];
                 b = b * s + cv[k];
             }
-            u[i] = a;
-            v[i] = b;
+            u[done + j] = a;
+            v[done + j] = b;
         }
     }
 
@@ -430,6 +464,7 @@ mod tests {
     use crate::model::buildings::contact::element_law;
     use crate::solver::buildings::config::{Closed, Config};
     use crate::solver::buildings::layout::Layout;
+    use crate::solver::buildings::poly;
     use crate::solver::buildings::system::System;
 
     /// Block-and-frame just after its roofs close under improved Kelvin
@@ -517,6 +552,35 @@ mod tests {
         assert_eq!(reused.v, fresh.v);
         let clone = reused.clone();
         assert_eq!((clone.u, clone.v), (fresh.u, fresh.v));
+    }
+
+    /// The state at s, taken four floors side by side, is each floor's
+    /// Horner sum ([`poly::eval`] of its block) to the bit, at the fixed
+    /// order and at the lower orders of short steps, for all eleven floors
+    /// (two groups of four and three left over).
+    #[test]
+    fn the_state_is_each_floors_horner_sum() {
+        let (system, (u, v), sc, fixed) = roof_contact();
+        let n = u.len();
+        assert_eq!(n % 4, 3, "a remainder of floors after the groups");
+        let mut short = Series::default();
+        for series in [&fixed, {
+            short.fill_over(&system, (&u, &v), GROUND, sc, 0.1 * fixed.radius);
+            &short
+        }] {
+            for s in [0.0, 0.3 * series.radius, series.radius] {
+                let (a, b) = at(series, s);
+                for i in 0..n {
+                    let (eu, ev) = (
+                        poly::eval(series.displacement(i), s),
+                        poly::eval(series.velocity(i), s),
+                    );
+                    assert_eq!(a[i].to_bits(), eu.to_bits(), "u_{i} at {s}");
+                    assert_eq!(b[i].to_bits(), ev.to_bits(), "u̇_{i} at {s}");
+                }
+            }
+        }
+        assert!(short.degree < fixed.degree, "degree {}", short.degree);
     }
 
     /// In improved Kelvin contact the fixed order's radius is short (its
