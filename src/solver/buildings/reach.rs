@@ -67,9 +67,6 @@ impl Reach {
 
     /// An upper bound over the step of q = Σ w_i u_i + Σ w'_i u̇_i + c
     /// (terms on u, terms on u̇, the constant), from its value at the start.
-    // Inlined: a series step asks it of some forty quantities, each of a
-    // few terms.
-    #[inline]
     pub fn upper(&self, (on_u, on_v): (Terms, Terms), constant: f64) -> f64 {
         let (mut start, mut size, mut reach) = (constant, constant.abs(), 0.0);
         for &(i, w) in on_u {
