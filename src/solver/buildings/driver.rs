@@ -829,7 +829,7 @@ impl Run<'_> {
             }
             // The point itself, with ü of the configuration now in force.
             let (a1, _) = ground_at(piece, self.t);
-            self.acceleration_into(piece, self.t, (&self.u, &self.v), &mut acc);
+            self.acceleration(piece, (self.t, 0.0), (&self.u, &self.v), &mut acc);
             self.record_point(&acc, a1);
             if self.collapse.is_some() {
                 break;
@@ -840,39 +840,28 @@ impl Run<'_> {
         Ok(())
     }
 
-    /// ü at (u, u̇) at time t + s on `piece` in the configuration in force:
-    /// the linear system's, and the force of every pair closed under a
+    /// ü at (u, u̇) at time t + s on `piece` in the configuration in force,
+    /// into `out` (its vector reused where the linear system gives it): the
+    /// linear system's, and the force of every pair closed under a
     /// Hertz-type law ([`Contact::rate`]), which the system leaves out.
-    fn acceleration(&self, piece: &Piece, t: f64, s: f64, (u, v): (&[f64], &[f64])) -> Vec<f64> {
+    fn acceleration(
+        &self,
+        piece: &Piece,
+        (t, s): (f64, f64),
+        (u, v): (&[f64], &[f64]),
+        out: &mut Vec<f64>,
+    ) {
         let n = self.layout.dofs;
         if by_steps(&self.layout, &self.config) {
             let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
                 ground_at(piece, t + s).0
             });
             let y: Vec<f64> = u.iter().chain(v).copied().collect();
-            contact.rate(s, &y).split_off(n)
+            *out = contact.rate(s, &y).split_off(n);
         } else {
-            let mut acc = vec![0.0; n];
+            out.resize(n, 0.0);
             self.system
-                .acceleration(u, v, ground_at(piece, t + s).0, &mut acc);
-            acc
-        }
-    }
-
-    /// [`Run::acceleration`] at time t into `out`, whose vector the linear
-    /// system's ü reuses (a series step's point takes one).
-    fn acceleration_into(
-        &self,
-        piece: &Piece,
-        t: f64,
-        (u, v): (&[f64], &[f64]),
-        out: &mut Vec<f64>,
-    ) {
-        if by_steps(&self.layout, &self.config) {
-            *out = self.acceleration(piece, t, 0.0, (u, v));
-        } else {
-            out.resize(self.layout.dofs, 0.0);
-            self.system.acceleration(u, v, ground_at(piece, t).0, out);
+                .acceleration(u, v, ground_at(piece, t + s).0, out);
         }
     }
 
@@ -1054,7 +1043,8 @@ impl Run<'_> {
                 if at > 0.0 && at < end {
                     let (mut us, mut vs) = (vec![0.0; n], vec![0.0; n]);
                     series.state(at, &mut us, &mut vs);
-                    let acc = self.acceleration(piece, self.t, at, (&us, &vs));
+                    let mut acc = Vec::new();
+                    self.acceleration(piece, (self.t, at), (&us, &vs), &mut acc);
                     let a = acc[i] + ground_at(piece, self.t + at).0;
                     raise(&mut self.envelope.acceleration[i], a);
                 }
