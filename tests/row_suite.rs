@@ -35,6 +35,12 @@ fn members(count: usize) -> Vec<SuiteMember> {
         .unwrap()
 }
 
+/// The suite's runs of `m` under `c`, as `suite --buildings` plans and
+/// makes them.
+fn suite_runs(c: &RowSuiteCase, m: &[SuiteMember]) -> Vec<RowSuiteRun> {
+    run_suite(c, m, &plan(c, m).unwrap(), &|_| {}).unwrap()
+}
+
 fn case(row: &str, level: f64) -> RowSuiteCase {
     RowSuiteCase {
         row: load(row).unwrap(),
@@ -120,7 +126,7 @@ fn a_suite_record_is_the_rows_own_run_bit_for_bit() {
 fn statistics_are_those_of_the_records_demands() {
     let c = case("three-in-series", 0.2);
     let m = members(5);
-    let runs = run_suite(&c, &m, &plan(&c, &m).unwrap(), &|_| {}).unwrap();
+    let runs = suite_runs(&c, &m);
     let st = SuiteStatistics::of(&c, &runs);
     assert_eq!(st.records, 5);
     let tall: Vec<f64> = runs
@@ -151,7 +157,7 @@ fn a_rows_fragility_is_the_maximum_likelihood_fit_of_its_counts() {
     let runs = run_levels(&c, &m, &plans, &|_| {}).unwrap();
     // Level l's records are the suite's at that level, bit for bit.
     let at = case("block-and-frame", 0.3);
-    let suite = run_suite(&at, &m, &plan(&at, &m).unwrap(), &|_| {}).unwrap();
+    let suite = suite_runs(&at, &m);
     for (a, b) in runs[2].iter().zip(&suite) {
         same_motion(&a.run, &b.run);
     }
@@ -199,7 +205,7 @@ fn a_rows_fragility_is_the_maximum_likelihood_fit_of_its_counts() {
 fn the_separation_per_joint_is_the_order_statistic_of_each_records_gap() {
     let c = case("block-and-frame", 0.3);
     let m = members(7);
-    let runs: Vec<RowSuiteRun> = run_suite(&c, &m, &plan(&c, &m).unwrap(), &|_| {}).unwrap();
+    let runs = suite_runs(&c, &m);
     let seps = joint_separations(&c, &runs, &[0.5, 0.9]);
     assert_eq!(seps.len(), 1);
     let gaps: Vec<f64> = runs
@@ -281,8 +287,7 @@ fn each_worker_keeps_its_state_and_the_order_is_kept() {
 fn a_record_that_touches_only_a_bumper_has_its_run_apart() {
     let c = case("block-and-frame-retrofit", 0.05);
     let m = members(4);
-    let scales = plan(&c, &m).unwrap();
-    let runs = run_suite(&c, &m, &scales, &|_| {}).unwrap();
+    let runs = suite_runs(&c, &m);
     let apart = c.row.apart();
     let mut seen = 0;
     for (r, member) in runs.iter().zip(&m) {
