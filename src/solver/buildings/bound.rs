@@ -33,8 +33,12 @@
 //! cannot see. B is widened by a relative 1e-6 for the round-off of the
 //! exponential and the norms, far above it.
 //!
-//! The rows cᵀ𝒜⁴ and cᵀ𝒜⁵ come from rows n … 2n of the powers 𝒜² … 𝒜⁶
-//! (five products of n + 1 rows by the sparse 𝒜, [`super::sparse`]), since
+//! Where a peak may still rise inside, the quintic Hermite through (q, q̇,
+//! q̈) at both ends is asked next ([`super::quintic`]): its error is
+//! h⁶/46080 · max|q⁽⁶⁾|, bounded the same way by ‖cᵀ𝒜⁶D⁻¹‖₁ · B.
+//!
+//! The rows cᵀ𝒜⁴, cᵀ𝒜⁵ and cᵀ𝒜⁶ come from rows n … 2n of the powers 𝒜² … 𝒜⁷
+//! (six products of n + 1 rows by the sparse 𝒜, [`super::sparse`]), since
 //! each c is a unit row or a row of 𝒜 beside one, and 𝒜̃² is one product by
 //! the sparse 𝒜̃; the map itself, e^{𝒜h} = D⁻¹e^{𝒜̃h}D, is the grid's last
 //! point, so that a configuration costs one matrix exponential (of the
@@ -45,6 +49,7 @@ use nalgebra::DMatrix;
 
 use crate::numerics::extremes::largest;
 
+use super::quintic;
 use super::sparse::Sparse;
 use super::sweep::sweep;
 use super::system::System;
@@ -76,6 +81,8 @@ pub struct Bounds {
     value_error: Vec<f64>,
     /// h⁴/384 · ‖cᵀ𝒜⁵D⁻¹‖₁ · B: the cubic of q̇.
     rate_error: Vec<f64>,
+    /// h⁶/46080 · ‖cᵀ𝒜⁶D⁻¹‖₁ · B: the quintic of q ([`super::quintic`]).
+    quintic_error: Vec<f64>,
     scale: Vec<f64>,
     /// The configuration's rest points, to measure the state from
     /// ([`Equilibrium`]); none where K is singular.
@@ -214,7 +221,7 @@ impl Bounds {
                 .map(|(x, s)| (x / s).abs())
                 .sum::<f64>()
         };
-        // cᵀ𝒜⁴ and cᵀ𝒜⁵ of each quantity from rows of 𝒜⁴, 𝒜⁵ and 𝒜⁶: c is a
+        // cᵀ𝒜⁴, cᵀ𝒜⁵ and cᵀ𝒜⁶ of each quantity from rows of 𝒜⁴ … 𝒜⁷: c is a
         // few unit rows (u_i, u̇_i) or, for ü_i + a_g, row n + i of 𝒜 and the
         // unit row of a_g, so cᵀ𝒜ᵏ = row n + i of 𝒜ᵏ⁺¹ + row 2n of 𝒜ᵏ. Only
         // rows n … 2n of the powers are made, V_k = rows n … 2n of 𝒜ᵏ, by
@@ -222,7 +229,7 @@ impl Bounds {
         // i < n of 𝒜ᵏ is row n + i of 𝒜ᵏ⁻¹, row i − n of V_{k−1}.
         let unscaled = Sparse::of(a);
         let mut v = vec![a.rows(n, n + 1).clone_owned()];
-        for _ in 1..6 {
+        for _ in 1..7 {
             let next = v.last().map(|m| unscaled.times(m)).expect("V_1");
             v.push(next);
         }
@@ -235,7 +242,9 @@ impl Bounds {
         };
         let mut value_error = Vec::with_capacity(watch.len());
         let mut rate_error = Vec::with_capacity(watch.len());
-        let (mut r4, mut r5) = (vec![0.0; d], vec![0.0; d]);
+        let mut quintic_error = Vec::with_capacity(watch.len());
+        let sixth = h.powi(6) / quintic::REMAINDER * sweep;
+        let (mut r4, mut r5, mut r6) = (vec![0.0; d], vec![0.0; d], vec![0.0; d]);
         let add = |r: &mut [f64], k: usize, row: usize, x: f64| {
             for (r, m) in r.iter_mut().zip(power_row(k, row).iter()) {
                 *r += x * m;
@@ -244,27 +253,33 @@ impl Bounds {
         for w in watch {
             r4.fill(0.0);
             r5.fill(0.0);
+            r6.fill(0.0);
             for &(i, x) in &w.terms {
                 match w.order {
                     0 | 1 => {
                         let row = w.order * n + i;
                         add(&mut r4, 4, row, x);
                         add(&mut r5, 5, row, x);
+                        add(&mut r6, 6, row, x);
                     }
                     _ => {
                         add(&mut r4, 5, n + i, x);
                         add(&mut r4, 4, 2 * n, x);
                         add(&mut r5, 6, n + i, x);
                         add(&mut r5, 5, 2 * n, x);
+                        add(&mut r6, 7, n + i, x);
+                        add(&mut r6, 6, 2 * n, x);
                     }
                 }
             }
             value_error.push(factor * scaled_norm(&r4));
             rate_error.push(factor * scaled_norm(&r5));
+            quintic_error.push(sixth * scaled_norm(&r6));
         }
         let bounds = Bounds {
             value_error,
             rate_error,
+            quintic_error,
             scale,
             equilibrium: Equilibrium::of(a, n),
         };
@@ -302,6 +317,13 @@ impl Bounds {
     /// sub-step starting from a state of size `size` ([`Bounds::size`]).
     pub fn errors(&self, k: usize, size: f64) -> (f64, f64) {
         (self.value_error[k] * size, self.rate_error[k] * size)
+    }
+
+    /// A bound on the error of the quintic of q of quantity `k`
+    /// ([`super::quintic`]), for a sub-step starting from a state of size
+    /// `size` ([`Bounds::size`]).
+    pub fn quintic_error(&self, k: usize, size: f64) -> f64 {
+        self.quintic_error[k] * size
     }
 
     /// The bounds of [`Bounds::errors`] per unit size, of every quantity:

@@ -23,7 +23,11 @@
 //! interpolant widened by a bound on its error from the whole state), no
 //! event function reaches zero and no quantity can pass its running peak
 //! inside; a quiet sub-step's interior then holds no event and no new
-//! peak, so its end is all that is recorded.
+//! peak, so its end is all that is recorded. Where a cubic's range cannot
+//! clear a floor pair's gap, an elastic storey's yield drift or a running
+//! peak, the quintic Hermite through q, q̇ and q̈ at both ends, widened by
+//! its own bound ([`super::quintic`]), is asked before the sub-step goes by
+//! the series.
 //!
 //! A run can keep its state just before its first contact onset, from which
 //! the run of the same buildings apart continues instead of repeating the
@@ -509,7 +513,9 @@ impl Run<'_> {
     /// (the Hermite cubic of each watched quantity widened by its error
     /// bound), no storey reaches yield or unloads, no floor pair closes,
     /// and no quantity can pass its running peak inside unless it is
-    /// monotone there (then its extremes are the ends, which are recorded).
+    /// monotone there (then its extremes are the ends, which are recorded);
+    /// a gap, a yield drift or a peak the cubic cannot clear is asked again
+    /// of the quintic through q, q̇, q̈ at both ends ([`super::quintic`]).
     // Out of line, so that a profile shows a map step's cost apart from
     // the loop's (one call per sub-step).
     #[inline(never)]
@@ -592,12 +598,27 @@ impl Run<'_> {
             errors: bounds.errors(k, size),
             h,
         };
+        // Whether quantity k measured from `offset` stays strictly inside
+        // `limits` on its quintic ([`super::quintic`]), asked where its
+        // cubic's range cannot tell.
+        let quintic_cleared = std::cell::Cell::new(false);
+        let quintic_clears = |k: usize, offset: f64, limits: (f64, f64)| {
+            let mut q = ends(k);
+            q.start[0] -= offset;
+            q.end[0] -= offset;
+            let clears = q.quintic_within(bounds.quintic_error(k, size), limits);
+            quintic_cleared.set(quintic_cleared.get() || clears);
+            clears
+        };
         // Quantities whose peak may rise inside, located after the events clear.
         let mut rising = Vec::new();
         let verdict = (|| {
             let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
             for (k, &d) in self.layout.gaps.iter().enumerate() {
-                if !pass.open(k) && !ends(base + k).clears(0, |(_, hi)| hi < d) {
+                if !pass.open(k)
+                    && !ends(base + k).clears(0, |(_, hi)| hi < d)
+                    && !quintic_clears(base + k, 0.0, (f64::NEG_INFINITY, d))
+                {
                     return Err(Cause::Onset);
                 }
             }
@@ -615,7 +636,8 @@ impl Run<'_> {
                     Branch::Elastic => {
                         let (p, dy) = (self.config.plastic[k], s.yield_drift);
                         let within = |(lo, hi): (f64, f64)| (lo - p).abs().max((hi - p).abs()) < dy;
-                        (q.clears(0, within), Cause::Yield)
+                        let quiet = q.clears(0, within) || quintic_clears(base + k, p, (-dy, dy));
+                        (quiet, Cause::Yield)
                     }
                     Branch::Plus => (q.clears(1, |(lo, _)| lo > 0.0), Cause::Unload),
                     Branch::Minus => (q.clears(1, |(_, hi)| hi < 0.0), Cause::Unload),
@@ -667,6 +689,23 @@ impl Run<'_> {
             }
             Ok(())
         })();
+        // A peak that may rise on the cubics' ranges but that the quintic of
+        // its ends holds within its running value ([`super::quintic`])
+        // cannot rise after all.
+        if verdict.is_ok() && !rising.is_empty() {
+            let counts = (n, self.layout.storeys.len());
+            rising.retain(|&k| {
+                let (&mut peak, signed) = rising::peak_of(&mut self.envelope, k, counts);
+                !quintic_clears(
+                    k,
+                    0.0,
+                    (if signed { f64::NEG_INFINITY } else { -peak }, peak),
+                )
+            });
+        }
+        if verdict.is_ok() && rising.is_empty() && quintic_cleared.get() {
+            self.profile.held += 1;
+        }
         // Every event cleared: the peaks that may rise are located on the
         // sub-step's closed form ([`rising`]), unless its series falls short.
         let verdict = verdict.and_then(|()| {

@@ -35,6 +35,8 @@
 //! - [`propagator`]: the cache of maps out of contact, and a map step;
 //! - [`lanes`]: the vector blocks a map step is stored in;
 //! - [`sweep`]: the growth of the map over a sub-step, for the quiet test;
+//! - [`quintic`]: the quintic Hermite of a quantity's ends, which clears a
+//!   sub-step whose peak the cubic of [`hermite`] cannot;
 //! - [`link`]: links across the joints (SPEC §14), linear and fluid viscous;
 //! - [`damper`]: the fluid viscous dampers (α < 1), their reversals events;
 //! - [`damper_collocation`]: their steps, by exponential collocation;
@@ -68,6 +70,7 @@ pub mod peaks;
 pub mod poly;
 pub mod profile;
 pub mod propagator;
+pub mod quintic;
 pub mod reach;
 pub mod result;
 pub mod sparse;

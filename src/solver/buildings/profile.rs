@@ -93,6 +93,10 @@ pub struct RowProfile {
     /// Of those, sub-steps whose rising peaks were located on their closed
     /// form (a series from their start) instead of a series walk.
     pub located: usize,
+    /// Of the map steps, those that the cubics' ranges could not clear of
+    /// an onset, a yield or a peak rising inside, and that the quintics of
+    /// [`super::quintic`] cleared of each, so that nothing was located.
+    pub held: usize,
     /// Sub-steps that went by the series, by cause.
     pub careful: PerCause,
     /// Series (or Runge–Kutta) steps, by the cause of their sub-step.

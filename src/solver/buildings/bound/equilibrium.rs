@@ -211,6 +211,7 @@ mod tests {
     use crate::solver::buildings::config::{Branch, Config};
     use crate::solver::buildings::layout::Layout;
     use crate::solver::buildings::propagator::augmented;
+    use crate::solver::buildings::quintic;
     use crate::solver::buildings::system::System;
     use nalgebra::{DMatrix, DVector};
 
@@ -226,9 +227,10 @@ mod tests {
     /// swinging by 1 mm and 1 cm/s about its static point under the load and
     /// a ground acceleration of 2 m/s² on a line, its size from that point
     /// is below a tenth of its size from the origin; and at 200 points of
-    /// a sub-step of one radian each floor's |u⁗| and |u⁽⁵⁾|, by
-    /// nalgebra's exponential (no code shared), stay within the bounds
-    /// the size gives (value_error · size · 384/h⁴).
+    /// a sub-step of one radian each floor's u, u̇ and ü + a_g has its
+    /// |q⁗| and |q⁽⁵⁾|, by nalgebra's exponential (no code shared), within
+    /// the bounds the size gives (value_error · size · 384/h⁴), and its
+    /// |q⁽⁶⁾| within the quintic's (quintic_error · size · 46080/h⁶).
     #[test]
     fn the_size_from_rest_bounds_the_derivatives_over_the_sub_step() {
         let (layout, n, s, storeys) = block_and_frame();
@@ -238,7 +240,7 @@ mod tests {
         let system = System::of(&layout, &config);
         let a = augmented(&system, 0.0);
         let h = 1.0 / s;
-        let watch: Vec<Watch> = (0..2)
+        let watch: Vec<Watch> = (0..3)
             .flat_map(|order| {
                 (0..n).map(move |i| Watch {
                     terms: vec![(i, 1.0)],
@@ -291,19 +293,42 @@ mod tests {
                 .chain([ground, rate])
                 .chain(system.load.iter().copied()),
         );
+        // Each quantity as a row cᵀ of the augmented state: a unit row of u
+        // or u̇, or row n + i of 𝒜 with a_g's unit row for ü_i + a_g.
+        let rows: Vec<DVector<f64>> = watch
+            .iter()
+            .map(|watch| {
+                let i = watch.terms[0].0;
+                match watch.order {
+                    2 => DVector::from_fn(3 * n + 2, |j, _| {
+                        a[(n + i, j)] + if j == 2 * n { 1.0 } else { 0.0 }
+                    }),
+                    order => {
+                        DVector::from_fn(
+                            3 * n + 2,
+                            |j, _| {
+                                if j == order * n + i { 1.0 } else { 0.0 }
+                            },
+                        )
+                    }
+                }
+            })
+            .collect();
         let a2 = &a * &a;
         let a4 = &a2 * &a2;
         let a5 = &a4 * &a;
+        let a6 = &a5 * &a;
         for p in 0..=200 {
             let t = h * p as f64 / 200.0;
             let x = (&a * t).exp() * &w;
-            let (d4, d5) = (&a4 * &x, &a5 * &x);
-            for (k, watch) in watch.iter().enumerate() {
-                let row = watch.order * n + watch.terms[0].0;
+            let (d4, d5, d6) = (&a4 * &x, &a5 * &x, &a6 * &x);
+            for (k, c) in rows.iter().enumerate() {
                 let (value, rate) = bounds.errors(k, plain);
                 let factor = 384.0 / h.powi(4);
-                assert!(d4[row].abs() <= value * factor, "q⁗ of {k} at {t}");
-                assert!(d5[row].abs() <= rate * factor, "q⁽⁵⁾ of {k} at {t}");
+                assert!(c.dot(&d4).abs() <= value * factor, "q⁗ of {k} at {t}");
+                assert!(c.dot(&d5).abs() <= rate * factor, "q⁽⁵⁾ of {k} at {t}");
+                let sixth = bounds.quintic_error(k, plain) * quintic::REMAINDER / h.powi(6);
+                assert!(c.dot(&d6).abs() <= sixth, "q⁽⁶⁾ of {k} at {t}");
             }
         }
     }

@@ -16,6 +16,7 @@
 
 use super::super::bound::{Stack, Watch};
 use super::super::hermite::{hull, range};
+use super::super::quintic;
 
 /// A watched quantity ([`super::watched`]): a floor's u, u̇ or ü + a_g,
 /// or the difference of two floors' u or u̇ (a drift, a relative
@@ -102,6 +103,13 @@ impl Ends {
     /// there (then its extremes are the ends, which are recorded).
     pub fn below(&self, peak: f64) -> bool {
         self.clears(0, |(lo, hi)| lo.abs().max(hi.abs()) <= peak) || self.monotone()
+    }
+
+    /// Whether q stays in `limits` over the sub-step on its quintic
+    /// Hermite through q, q̇ and q̈ at both ends, widened by `error`
+    /// ([`super::super::quintic`]).
+    pub fn quintic_within(&self, error: f64, limits: (f64, f64)) -> bool {
+        quintic::within(self.start, self.end, self.h, error, limits)
     }
 
     fn widened(

@@ -33,7 +33,7 @@
 use crate::model::buildings::ground::Piece;
 
 use super::super::bound::Watch;
-use super::super::peaks::raise;
+use super::super::peaks::{Envelope, raise};
 use super::super::poly;
 use super::super::taylor::Series;
 use super::{Run, ground_at};
@@ -61,26 +61,36 @@ impl Run<'_> {
             return false;
         }
         series.state(h, end.0, end.1);
-        let n = self.layout.dofs;
-        let storeys = self.layout.storeys.len();
+        let (n, storeys) = (self.layout.dofs, self.layout.storeys.len());
         let mut c = std::mem::take(&mut self.buf);
-        let env = &mut self.envelope;
         for &k in rising {
             quantity(&series, &self.watch[k], &mut c);
-            match k {
-                k if k < n => raise(&mut env.displacement[k], poly::max_abs(&c, h)),
-                k if k < 2 * n => raise(&mut env.velocity[k - n], poly::max_abs(&c, h)),
-                k if k < 3 * n => raise(&mut env.acceleration[k - 2 * n], poly::max_abs(&c, h)),
-                k if k < 3 * n + storeys => raise(&mut env.drift[k - 3 * n], poly::max_abs(&c, h)),
-                k => {
-                    let r = &mut env.relative[k - 3 * n - storeys];
-                    *r = r.max(poly::max(&c, h));
-                }
+            match peak_of(&mut self.envelope, k, (n, storeys)) {
+                (r, true) => *r = r.max(poly::max(&c, h)),
+                (peak, false) => raise(peak, poly::max_abs(&c, h)),
             }
         }
         self.buf = c;
         self.spare_series = series;
         true
+    }
+}
+
+/// The running peak of watched quantity `k` ([`super::watched`], in a row
+/// of `n` floors and `storeys` storeys) in `env`, and whether it is the
+/// largest signed value (a facing pair's relative displacement) rather
+/// than the largest magnitude.
+pub(super) fn peak_of(
+    env: &mut Envelope,
+    k: usize,
+    (n, storeys): (usize, usize),
+) -> (&mut f64, bool) {
+    match k {
+        k if k < n => (&mut env.displacement[k], false),
+        k if k < 2 * n => (&mut env.velocity[k - n], false),
+        k if k < 3 * n => (&mut env.acceleration[k - 2 * n], false),
+        k if k < 3 * n + storeys => (&mut env.drift[k - 3 * n], false),
+        k => (&mut env.relative[k - 3 * n - storeys], true),
     }
 }
 
