@@ -26,9 +26,9 @@ fn the_shipped_file_is_the_generator_s_output_and_reads_back() {
     assert!((r.peak / 9.80665 - 0.3).abs() < 1e-7, "{}", r.peak);
     // Dominant frequency near the filter's 2.5 Hz (5π rad/s).
     assert!(
-        r.dominant_omega > 8.0 && r.dominant_omega < 25.0,
+        r.dominant_omega() > 8.0 && r.dominant_omega() < 25.0,
         "{}",
-        r.dominant_omega
+        r.dominant_omega()
     );
 }
 

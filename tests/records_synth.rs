@@ -31,7 +31,7 @@ fn load(spec: &str) -> Vec<SuiteMember> {
 
 /// Every number of a record, as bits.
 fn bits(r: &Record) -> Vec<u64> {
-    [r.dt, r.peak, r.dominant_omega]
+    [r.dt, r.peak, r.dominant_omega()]
         .iter()
         .chain(&r.acceleration)
         .chain(&r.velocity)

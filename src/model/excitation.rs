@@ -105,7 +105,7 @@ impl RecordMotion {
         RecordMotion {
             scale: 1.0,
             amplitude: if record.peak > 0.0 { record.peak } else { 1.0 },
-            omega: record.dominant_omega,
+            omega: record.dominant_omega(),
             record,
         }
     }

@@ -38,13 +38,13 @@ pub use knet::parse_knet;
 use std::collections::HashMap;
 use std::fmt;
 use std::path::Path;
-use std::sync::{Arc, LazyLock, Mutex, MutexGuard, Weak};
+use std::sync::{Arc, LazyLock, Mutex, MutexGuard, OnceLock, Weak};
 
 /// Standard gravity, the unit of `.AT2` accelerations (m/s²).
 pub const STANDARD_GRAVITY: f64 = 9.80665;
 
 /// A sampled ground acceleration with its exact integrals.
-#[derive(Debug, PartialEq)]
+#[derive(Debug)]
 pub struct Record {
     /// The path as the user wrote it (`record:PATH` names it so).
     pub path: String,
@@ -62,9 +62,24 @@ pub struct Record {
     pub displacement: Vec<f64>,
     /// Peak |a| (m/s²), the default a_p.
     pub peak: f64,
-    /// Circular frequency (rad/s) of the largest Fourier amplitude of the
-    /// record, the default ω_p.
-    pub dominant_omega: f64,
+    /// The circular frequency of [`Record::dominant_omega`], found the first
+    /// time it is asked: a row's run never reads it, and its O(N²) sum is
+    /// a record's largest cost to make.
+    dominant: OnceLock<f64>,
+}
+
+/// Records are equal when their samples and names are: the dominant
+/// frequency follows from the samples, found or not yet.
+impl PartialEq for Record {
+    fn eq(&self, other: &Self) -> bool {
+        self.path == other.path
+            && self.spec == other.spec
+            && self.dt == other.dt
+            && self.acceleration == other.acceleration
+            && self.velocity == other.velocity
+            && self.displacement == other.displacement
+            && self.peak == other.peak
+    }
 }
 
 /// A record that could not be read: the file, the line (1-based; 0 when the
@@ -110,12 +125,20 @@ impl Record {
             path: path.to_string(),
             spec: format!("record:{path}"),
             dt,
-            dominant_omega: dominant_omega(&acceleration, dt),
+            dominant: OnceLock::new(),
             acceleration,
             velocity,
             displacement,
             peak,
         }
+    }
+
+    /// Circular frequency (rad/s) of the largest Fourier amplitude of the
+    /// record, the default ω_p (the pair's Π-groups, SPEC §12).
+    pub fn dominant_omega(&self) -> f64 {
+        *self
+            .dominant
+            .get_or_init(|| dominant_omega(&self.acceleration, self.dt))
     }
 
     /// Whether every sample is zero (peak 0): such a record cannot be
@@ -514,6 +537,28 @@ mod tests {
             .collect();
         let w = dominant_omega(&a, 0.01);
         assert!((w - 4.0 * std::f64::consts::PI).abs() < 1e-9, "{w}");
+    }
+
+    /// A record finds its dominant frequency when first asked (4π for a
+    /// 2 Hz sine), and two records of the same samples are equal whether
+    /// or not one of them has been asked.
+    #[test]
+    fn the_dominant_frequency_is_found_when_asked() {
+        let a: Vec<f64> = (0..1000)
+            .map(|k| (4.0 * std::f64::consts::PI * k as f64 * 0.01).sin())
+            .collect();
+        let (asked, fresh) = (
+            Record::from_samples("sine", 0.01, a.clone()),
+            Record::from_samples("sine", 0.01, a),
+        );
+        assert!(asked.dominant.get().is_none());
+        let w = asked.dominant_omega();
+        assert!((w - 4.0 * std::f64::consts::PI).abs() < 1e-9, "{w}");
+        assert_eq!(asked.dominant.get(), Some(&w));
+        assert_eq!(asked, fresh);
+        let mut other = fresh.acceleration.clone();
+        other[3] += 1e-9;
+        assert_ne!(asked, Record::from_samples("sine", 0.01, other));
     }
 
     /// A record file edited between two loads in one process is read
