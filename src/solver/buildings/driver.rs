@@ -598,12 +598,12 @@ impl Run<'_> {
             errors: bounds.errors(k, size),
             h,
         };
-        // Whether quantity k measured from `offset` stays strictly inside
-        // `limits` on its quintic ([`super::quintic`]), asked where its
-        // cubic's range cannot tell.
+        // Whether quantity k (its ends `q`, already made for its cubic),
+        // measured from `offset`, stays strictly inside `limits` on its
+        // quintic ([`super::quintic`]), asked where its cubic's range
+        // cannot tell.
         let quintic_cleared = std::cell::Cell::new(false);
-        let quintic_clears = |k: usize, offset: f64, limits: (f64, f64)| {
-            let mut q = ends(k);
+        let quintic_clears = |(k, mut q): (usize, Ends), offset: f64, limits: (f64, f64)| {
             q.start[0] -= offset;
             q.end[0] -= offset;
             let clears = q.quintic_within(bounds.quintic_error(k, size), limits);
@@ -615,9 +615,12 @@ impl Run<'_> {
         let verdict = (|| {
             let base = 3 * n + self.layout.storeys.len() + self.layout.facing.len();
             for (k, &d) in self.layout.gaps.iter().enumerate() {
-                if !pass.open(k)
-                    && !ends(base + k).clears(0, |(_, hi)| hi < d)
-                    && !quintic_clears(base + k, 0.0, (f64::NEG_INFINITY, d))
+                if pass.open(k) {
+                    continue;
+                }
+                let q = ends(base + k);
+                if !q.clears(0, |(_, hi)| hi < d)
+                    && !quintic_clears((base + k, q), 0.0, (f64::NEG_INFINITY, d))
                 {
                     return Err(Cause::Onset);
                 }
@@ -636,7 +639,8 @@ impl Run<'_> {
                     Branch::Elastic => {
                         let (p, dy) = (self.config.plastic[k], s.yield_drift);
                         let within = |(lo, hi): (f64, f64)| (lo - p).abs().max((hi - p).abs()) < dy;
-                        let quiet = q.clears(0, within) || quintic_clears(base + k, p, (-dy, dy));
+                        let quiet =
+                            q.clears(0, within) || quintic_clears((base + k, q), p, (-dy, dy));
                         (quiet, Cause::Yield)
                     }
                     Branch::Plus => (q.clears(1, |(lo, _)| lo > 0.0), Cause::Unload),
@@ -697,7 +701,7 @@ impl Run<'_> {
             rising.retain(|&k| {
                 let (&mut peak, signed) = rising::peak_of(&mut self.envelope, k, counts);
                 !quintic_clears(
-                    k,
+                    (k, ends(k)),
                     0.0,
                     (if signed { f64::NEG_INFINITY } else { -peak }, peak),
                 )
