@@ -36,7 +36,8 @@
 //! - [`lanes`]: the vector blocks a map step is stored in;
 //! - [`sweep`]: the growth of the map over a sub-step, for the quiet test;
 //! - [`quintic`]: the quintic Hermite of a quantity's ends, which clears a
-//!   sub-step whose peak the cubic of [`hermite`] cannot;
+//!   sub-step of a gap, a yield drift or a peak that the cubic of
+//!   [`hermite`] cannot;
 //! - [`link`]: links across the joints (SPEC §14), linear and fluid viscous;
 //! - [`damper`]: the fluid viscous dampers (α < 1), their reversals events;
 //! - [`damper_collocation`]: their steps, by exponential collocation;
