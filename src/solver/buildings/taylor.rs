@@ -44,6 +44,28 @@ pub const TOLERANCE: f64 = 1e-17;
 /// Floors whose state [`Series::state`] evaluates side by side.
 const STATE_LANES: usize = 4;
 
+/// Whether x·L^k > [`TOLERANCE`] is certain from p, L^k formed by a
+/// running product, so that the stop test of [`Series::fill_over`] need
+/// not form L^k by [`f64::powi`] to find it fails (as it does at every
+/// order but the last one or two).
+///
+/// p is within (k − 1)ε of L^k, and `powi`'s repeated squaring within
+/// 2 log₂k · ε; with both products' rounding, x·p and x·L.powi(k) differ
+/// by less than 60ε ≈ 7e-15 relative for k ≤ [`MAX_ORDER`], well inside
+/// the 1e-13 allowed here: where this says above, the test with `powi`
+/// says so too, and the order a step stops at is the same. A p below
+/// 2⁻¹⁰⁰⁰ (near or past underflow, where the relative error grows), a NaN
+/// or x = 0 leave the test to `powi`; an overflowed p is above for any
+/// x > 0, as L^k itself is past the largest float.
+#[inline]
+fn surely_above(x: f64, p: f64) -> bool {
+    const SLACK: f64 = 1.0 + 1e-13;
+    p >= TINY_POWER && x * p > TOLERANCE * SLACK
+}
+
+/// 2⁻¹⁰⁰⁰: a running power above it has not lost bits to underflow.
+const TINY_POWER: f64 = 9.332636185032189e-302;
+
 /// The ground's Taylor coefficients a_k from (a, ȧ, σ) at s = 0:
 /// a₀ = a, a₁ = ȧ, a_{k+2} = σ a_k/((k+1)(k+2)) (ä_g = σ a_g on the piece).
 pub fn ground_coefficients((a, rate, sigma): (f64, f64, f64)) -> [f64; MAX_ORDER + 1] {
@@ -285,6 +307,8 @@ impl Series {
         // The norm of order k, kept from the step before (the test asks for
         // orders k and k + 1).
         let mut last = if tested(0) { norm(&state[..n]) } else { 0.0 };
+        // want^k by a running product, for [`surely_above`].
+        let mut power = 1.0;
         for k in 0..top {
             let (done, next) = state.split_at_mut((k + 1) * n);
             let (column, next) = (&done[k * n..], &mut next[..n]);
@@ -328,6 +352,7 @@ impl Series {
             // The last two terms within the tolerance at `want`: enough.
             if let Some(want) = want
                 && k + 1 >= MIN_ORDER
+                && !surely_above(last, power)
                 && last * want.powi(k as i32) <= TOLERANCE
                 && now * want.powi(k as i32 + 1) <= TOLERANCE
             {
@@ -335,6 +360,7 @@ impl Series {
                 break;
             }
             last = now;
+            power *= want.unwrap_or(1.0);
         }
         let radius = [degree - 1, degree]
             .iter()
@@ -459,7 +485,7 @@ impl Series {
 
 #[cfg(test)]
 mod tests {
-    use super::{MAX_ORDER, ORDER, Series};
+    use super::{MAX_ORDER, ORDER, Series, TOLERANCE, surely_above};
     use crate::model::buildings;
     use crate::model::buildings::contact::element_law;
     use crate::solver::buildings::config::{Closed, Config};
@@ -581,6 +607,82 @@ mod tests {
             }
         }
         assert!(short.degree < fixed.degree, "degree {}", short.degree);
+    }
+
+    /// Every order of the series is the recurrence of the module's opening,
+    /// summed row by row on the nonzeros of (M⁻¹K, M⁻¹C) ([`System::row`])
+    /// with the improved Kelvin product's convolution, to the bit: the
+    /// columns' layout and the scatter to floors change no coefficient.
+    /// At order 0 that sum is ü of the equation of motion at the start
+    /// ([`System::acceleration`]).
+    #[test]
+    fn each_order_is_the_row_wise_recurrence() {
+        let (system, (u, v), _, fixed) = roof_contact();
+        let n = u.len();
+        let mut acc = vec![0.0; n];
+        system.acceleration(&u, &v, GROUND.0, &mut acc);
+        for (i, &a) in acc.iter().enumerate() {
+            assert!(fixed.velocity(i)[1] == a, "ü_{i}(0)");
+        }
+        let (us, vs) = (
+            |k: usize, i: usize| fixed.displacement(i)[k],
+            |k: usize, i: usize| fixed.velocity(i)[k],
+        );
+        for k in 0..fixed.degree {
+            let inv = 1.0 / (k + 1) as f64;
+            let mut rows: Vec<f64> = (0..n)
+                .map(|i| {
+                    let mut s = -fixed.ground[k];
+                    if k == 0 {
+                        s += system.load[i];
+                    }
+                    for &(j, kij, cij) in system.row(i) {
+                        s -= kij * us(k, j) + cij * vs(k, j);
+                    }
+                    s
+                })
+                .collect();
+            for p in &system.products {
+                let delta =
+                    |j: usize| us(j, p.left) - us(j, p.right) - if j == 0 { p.gap } else { 0.0 };
+                let rate = |j: usize| vs(j, p.left) - vs(j, p.right);
+                let conv: f64 = (0..=k).map(|j| delta(j) * rate(k - j)).sum();
+                rows[p.left] -= p.left_rate * conv;
+                rows[p.right] += p.right_rate * conv;
+            }
+            for (i, &row) in rows.iter().enumerate() {
+                assert!(us(k + 1, i) == vs(k, i) * inv, "u_{} of floor {i}", k + 1);
+                assert!(vs(k + 1, i) == row * inv, "u̇_{} of floor {i}", k + 1);
+            }
+        }
+    }
+
+    /// Where the running power says x·L^k is surely above the tolerance,
+    /// `powi`'s L^k says so too: for L from 1e-6 to 1e3, k to
+    /// [`MAX_ORDER`], and x at the threshold TOLERANCE/L^k moved by a few
+    /// ulps to 1e-12 either way (the near ties the slack is there for).
+    #[test]
+    fn a_running_power_is_surely_above_only_where_powi_is() {
+        let mut said = 0;
+        for e in 0..=900 {
+            let l = 10f64.powf(-6.0 + e as f64 / 100.0);
+            let mut power = 1.0;
+            for k in 0..=MAX_ORDER {
+                let exact = l.powi(k as i32);
+                for moved in [
+                    -1e-12, -1e-13, -1e-14, -1e-15, 0.0, 1e-15, 1e-14, 1e-13, 1e-12,
+                ] {
+                    let x = TOLERANCE / exact * (1.0 + moved);
+                    if surely_above(x, power) {
+                        said += 1;
+                        assert!(x * exact > TOLERANCE, "L {l}, k {k}, x {x:e}");
+                    }
+                }
+                power *= l;
+            }
+        }
+        // It does clear the ones well above (1e-12 past the threshold).
+        assert!(said > 30_000, "{said}");
     }
 
     /// In improved Kelvin contact the fixed order's radius is short (its
