@@ -96,12 +96,13 @@ fn main() {
     let p = run_row(&damped, &ground, &profiled).expect("runs").profile;
     let c = &p.collocation;
     println!(
-        "fluid viscous damper (block-and-frame-retrofit, α = 0.35), scale 1: {damper_ms:.3} ms against the bare row's {bare_ms:.3} ms, {:.1}×; collocated steps {} accepted, {} rejected, {} solves, {} Newton iterations, {} response sets",
+        "fluid viscous damper (block-and-frame-retrofit, α = 0.35), scale 1: {damper_ms:.3} ms against the bare row's {bare_ms:.3} ms, {:.1}×; collocated steps {} accepted, {} rejected, {} solves, {} Newton iterations, {} response sets; {} series steps with the damper's force in them",
         damper_ms / bare_ms,
         c.accepted,
         c.rejected,
         c.solves,
         c.newton,
-        c.responses
+        c.responses,
+        c.series
     );
 }

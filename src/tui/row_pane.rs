@@ -314,8 +314,8 @@ mod tests {
         assert_eq!(p.row.buildings[1].storeys(), 8);
     }
 
-    /// A fluid viscous damper takes the exact method's collocated steps for
-    /// the whole run, some 35 times the linear row's map: over the
+    /// A fluid viscous damper takes the exact method's series and collocated
+    /// steps for the whole run, some 25 times the linear row's map: over the
     /// explorer's budget under a record twice as long as its default one
     /// (60 s, about 5 s of runs), and said so.
     #[test]

@@ -15,9 +15,11 @@
 //! (K, C and q of the configuration's storeys: a Hertz-type law puts
 //! nothing into them; the last sum is the row's fluid viscous dampers,
 //! SPEC §14, [`super::damper`], which put their springs alone into K, and
-//! which keep a row on these steps for the whole run: out of Hertz-type
-//! contact each is [`damper_collocation`]'s step instead, the linear motion
-//! exact and only the nonlinear forces collocated), its local error held below [`TOLERANCE`] of the
+//! which keep a row off the maps for the whole run: out of Hertz-type
+//! contact each step is [`damper_collocation`]'s instead, the linear motion
+//! exact and only the nonlinear forces collocated, where the Taylor series
+//! with the dampers' forces in it does not serve, near a reversal or where
+//! a damper is stiff), its local error held below [`TOLERANCE`] of the
 //! motion's scales (largest |u| for displacements, largest |u̇| for
 //! velocities). On the accepted step each u_i is the quintic Hermite
 //! polynomial through (u, u̇, ü) at both ends (error O(h⁶), the step's own

@@ -8,9 +8,12 @@
 //! its spring k_l being in K of every configuration ([`super::link::add_linear`]).
 //! F_d is continuous but not smooth where Δv = 0, and its slope
 //! c_l α |Δv|^(α−1) has no bound there, so no configuration's linear map
-//! carries it: a row with a damper goes by the steps of
-//! [`super::contact_rk`] for the whole run, each the configuration's linear
-//! motion with F_d collocated at the nodes of Radau IIA
+//! carries it: a row with a damper never takes a map step. Away from a
+//! reversal, where F_d is analytic in time, and where the damper is not
+//! stiff over the step, a step is the Taylor series of the motion with F_d
+//! in it ([`super::power_series`], chosen by `driver/damped.rs`); else it
+//! is a step of [`super::contact_rk`], the configuration's linear motion
+//! with F_d collocated at the nodes of Radau IIA
 //! ([`super::damper_collocation`]), or, through a Hertz-type contact, the
 //! Runge–Kutta steps with F_d in their right-hand side.
 //!
@@ -101,8 +104,18 @@ impl Damper {
     /// are not watched as events (they would chop the steps without end),
     /// and the step's error control alone holds the motion.
     pub fn stiff(&self, rate: f64, h: f64) -> bool {
-        let slope = self.damping * self.exponent * rate.abs().powf(self.exponent - 1.0);
-        slope * (self.left_rate + self.right_rate) * h > 1.0
+        self.slope(rate) * (self.left_rate + self.right_rate) * h > 1.0
+    }
+
+    /// The relaxation time m̄/(c_l α |Δv|^(α−1)) at Δv = `rate` (s): the
+    /// longest step over which the damper is not [`Damper::stiff`].
+    pub fn relaxation(&self, rate: f64) -> f64 {
+        1.0 / (self.slope(rate) * (self.left_rate + self.right_rate))
+    }
+
+    /// The law's slope dF/dΔv = c_l α |Δv|^(α−1) (N·s/m).
+    fn slope(&self, rate: f64) -> f64 {
+        self.damping * self.exponent * rate.abs().powf(self.exponent - 1.0)
     }
 }
 

@@ -1,7 +1,9 @@
 //! The step of a row with fluid viscous dampers (SPEC §14) by exponential
 //! collocation: the linear motion of the configuration carried exactly, and
 //! only the nonlinear forces across floor pairs collocated, each as a
-//! polynomial in time.
+//! polynomial in time: the step near a damper's reversal and where a
+//! damper is stiff over the step; elsewhere the Taylor series carries the
+//! dampers' forces itself ([`super::power_series`], `driver/damped.rs`).
 //!
 //! Out of Hertz-type contact the row is linear but for its dampers' forces
 //! F_d = c_l |Δv_d|^α sgn Δv_d and, in a contact of the improved Kelvin law,

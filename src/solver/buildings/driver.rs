@@ -14,9 +14,12 @@
 //!   |Δ| = collapse_drift_ratio · h (SPEC §15): the run stops there;
 //! - a fluid viscous damper's Δv changes sign (SPEC §14, [`super::damper`]).
 //!
-//! While a pair under a Hertz-type law is closed, and through the whole run
-//! of a row with a fluid viscous damper, the steps are those of the
-//! Runge–Kutta pair of [`super::contact_rk`] instead of the series.
+//! While a pair under a Hertz-type law is closed the steps are those of the
+//! Runge–Kutta pair of [`super::contact_rk`] instead of the series. A row
+//! with a fluid viscous damper takes no map step: each step is the series
+//! with the dampers' forces in it where that reaches as far as the
+//! collocated step of [`super::damper_collocation`] would, else that
+//! collocated step (`driver/damped.rs`).
 //!
 //! A sub-step is quiet when, on rigorous ranges of every watched quantity
 //! and of its rate over the sub-step ([`super::bound`]: the cubic Hermite
@@ -64,6 +67,9 @@ use super::taylor::Series;
 #[cfg(test)]
 mod cache_check;
 mod checkpoint;
+mod damped;
+#[cfg(test)]
+mod damped_check;
 #[cfg(test)]
 mod quiet_check;
 mod ranges;
@@ -813,9 +819,19 @@ impl Run<'_> {
             let su = self.u.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
             let sv = self.v.iter().fold(1e-6f64, |m, x| m.max(x.abs()));
             let ground = (a, rate, piece.sigma);
+            // Whether the step is the series with the dampers' forces in it.
+            let mut damped = false;
             let (series, mut rk) = if by_steps(&self.layout, &self.config) {
-                let (series, step) = self.contact_step(piece, rem, ground, (su, sv));
-                (series, Some(step))
+                match self.damped_series(rem, ground, (su, sv)) {
+                    Some(series) => {
+                        damped = true;
+                        (series, None)
+                    }
+                    None => {
+                        let (series, step) = self.contact_step(piece, rem, ground, (su, sv));
+                        (series, Some(step))
+                    }
+                }
             } else {
                 let mut series = std::mem::take(&mut self.spare_series);
                 series.fill_over(&self.system, (&self.u, &self.v), ground, (su, sv), rem);
@@ -839,6 +855,12 @@ impl Run<'_> {
                 *step = contact.settle((y0, f0), g, end, sv);
                 end = step.h;
             }
+            #[cfg(test)]
+            if damped {
+                self.check_damped(&series, end);
+            }
+            #[cfg(not(test))]
+            let _ = damped;
             // The events' search left the reach over [0, whole] of this series.
             let reached = events && end == whole;
             self.peaks_on(&series, end, rk.is_some().then_some(piece), reached);
@@ -1096,7 +1118,7 @@ impl Run<'_> {
         link_peaks::peaks_on(
             &self.layout.links,
             series,
-            end,
+            (end, rk.is_none()),
             &mut self.links,
             (&mut c, &mut self.buf2),
         );
@@ -1279,6 +1301,7 @@ impl Run<'_> {
             solves: c.solves,
             newton: c.newton,
             responses: c.made,
+            series: self.profile.collocation.series,
         };
         drop(c);
         if self.timed {

@@ -69,6 +69,7 @@ pub mod link_peaks;
 pub mod newmark;
 pub mod peaks;
 pub mod poly;
+pub mod power_series;
 pub mod profile;
 pub mod propagator;
 pub mod quintic;

@@ -83,6 +83,9 @@ pub struct CollocationSteps {
     pub solves: usize,
     pub newton: usize,
     pub responses: usize,
+    /// Steps of such a row taken instead by the series with the dampers'
+    /// forces in it ([`super::power_series`]).
+    pub series: usize,
 }
 
 /// The profile of one run.

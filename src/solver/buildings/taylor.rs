@@ -10,7 +10,9 @@
 //! piece where ä_g = σ a_g) and (δδ̇)_k = Σ_j δ_j δ̇_{k−j} the improved Kelvin
 //! law's product, so that a contact phase of the Kelvin family is carried
 //! exactly too; a force given as a polynomial in s ([`Forcing`]) adds its
-//! coefficients to ü's. The series is used on [0, radius], where its last two terms
+//! coefficients to ü's, and a fluid viscous damper's c_l|Δv|^α sgn Δv
+//! (SPEC §14) its own, by the recurrence of a real power of a series
+//! ([`super::power_series`]), where [`Series::fill_damped`] carries it. The series is used on [0, radius], where its last two terms
 //! are below [`TOLERANCE`] of the state's scale.
 //!
 //! A step that needs only [0, L] ([`Series::fill_over`]) stops at the lowest
@@ -30,6 +32,8 @@
 //! coefficients fall only like ρ^{−k}, the radius is ρ·TOLERANCE^{1/K}
 //! (0.2ρ at K = 24, 0.38ρ at K = 40), and only more orders lengthen its steps.
 
+use super::damper::Damper;
+use super::power_series::DamperPowers;
 use super::system::{Product, System};
 
 /// Highest order kept.
@@ -117,14 +121,15 @@ pub struct Series {
 /// thousands of steps allocate nothing: the coefficients order by order
 /// ((u_k, u̇_k) of every floor side by side, so that a row of (M⁻¹K, M⁻¹C)
 /// reads both of a floor's in one place), ü's coefficient being summed,
-/// and each product's δ_k and δ̇_k. They hold nothing between fills: a
-/// clone starts empty.
+/// each product's δ_k and δ̇_k, and each damper's powers. They hold
+/// nothing between fills: a clone starts empty.
 #[derive(Debug, Default)]
 pub struct Workspace {
     state: Vec<[f64; 2]>,
     acc: Vec<f64>,
     delta: Vec<f64>,
     rate_d: Vec<f64>,
+    powers: DamperPowers,
 }
 
 impl Clone for Workspace {
@@ -213,7 +218,7 @@ impl Series {
             start,
             ground,
             scale,
-            forcing,
+            (forcing, &[]),
             None,
         );
     }
@@ -228,8 +233,24 @@ impl Series {
         scale: (f64, f64),
         want: f64,
     ) {
+        self.fill_damped(system, start, ground, scale, (want, &[]));
+    }
+
+    /// [`Series::fill_over`] with the fluid viscous dampers' forces in the
+    /// series (SPEC §14, [`super::power_series`]): each damper's Δv at the
+    /// start must not be 0; where the force weighs on the motion, the
+    /// radius stops short of Δv's nearest zero, the force's branch point.
+    pub fn fill_damped(
+        &mut self,
+        system: &System,
+        start: (&[f64], &[f64]),
+        ground: (f64, f64, f64),
+        scale: (f64, f64),
+        (want, dampers): (f64, &[Damper]),
+    ) {
         let products = &system.products;
-        self.fill_with(system, products, start, ground, scale, &[], Some(want));
+        let forces = (&[][..], dampers);
+        self.fill_with(system, products, start, ground, scale, forces, Some(want));
     }
 
     /// [`Series::fill_over`] of the configuration's linear motion alone:
@@ -244,7 +265,7 @@ impl Series {
         scale: (f64, f64),
         want: f64,
     ) {
-        self.fill_with(system, &[], start, ground, scale, &[], Some(want));
+        self.fill_with(system, &[], start, ground, scale, (&[], &[]), Some(want));
     }
 
     /// The series with the products `products` in place of the system's,
@@ -266,7 +287,7 @@ impl Series {
         (u0, v0): (&[f64], &[f64]),
         ground: (f64, f64, f64),
         scale: (f64, f64),
-        forcing: &[Forcing],
+        (forcing, dampers): (&[Forcing], &[Damper]),
         want: Option<f64>,
     ) {
         let top = if want.is_some() { MAX_ORDER } else { ORDER };
@@ -274,11 +295,13 @@ impl Series {
         let g = ground_coefficients(ground);
         let work = &mut self.work;
         work.size(n, products.len(), top);
+        work.powers.size(dampers.len(), top);
         let Workspace {
             state,
             acc,
             delta,
             rate_d,
+            powers,
         } = work;
         for ((x, &u), &v) in state[..n].iter_mut().zip(u0).zip(v0) {
             *x = [u, v];
@@ -343,6 +366,12 @@ impl Series {
                     acc[f.left] -= f.left_rate * x;
                     acc[f.right] += f.right_rate * x;
                 }
+            }
+            for (di, d) in dampers.iter().enumerate() {
+                let rate = column[d.left][1] - column[d.right][1];
+                let f = powers.force(di, d, k, rate);
+                acc[d.left] -= d.left_rate * f;
+                acc[d.right] += d.right_rate * f;
             }
             let inv = 1.0 / (k + 1) as f64;
             for ((x, &[_, v]), &a) in next.iter_mut().zip(column).zip(&acc[..n]) {
