@@ -41,7 +41,7 @@ impl Run<'_> {
     ///   low orders into the damper's fast mode, magnified up to e^(h/τ)
     ///   (e³ = 20 ulps at three);
     /// - the step is within each damper's force's own radius, its last two
-    ///   coefficients F_k h^k within [`TOLERANCE`] of F_0: the motion's
+    ///   coefficients F_k h^k within [`FORCE_TOLERANCE`] of F_0: the motion's
     ///   test sees F only through F/m against the motion's scales, so a
     ///   weak damper's series could run past Δv's zero, where the series
     ///   of F, from which the link's peak force is taken, diverges;
