@@ -106,8 +106,9 @@ pub fn row_seconds(row: &Row, duration: f64, newmark_step: Option<f64>) -> f64 {
 /// series wherever it is analytic and not stiff, the same bench gives 12.9–25.0×
 /// (median 17.8×, five rounds interleaved with the build before it, which
 /// gave 21.6–31.7×, median 27.0×), and the 30 s sine 0.75–0.80 s against
-/// 1.10–1.32 s before (a bare run 40–60 ms by the command line); 25 keeps
-/// the largest of those with room over the median.
+/// 1.10–1.32 s before (a bare run 40–60 ms by the command line); with its
+/// steps up to six relaxation times of the damper, 15.6–16.2× (three
+/// rounds); 25 keeps the largest of those with room over the median.
 pub const FLUID_DAMPER_EXACT: f64 = 25.0;
 
 #[cfg(test)]
