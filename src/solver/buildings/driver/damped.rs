@@ -72,14 +72,24 @@ impl Run<'_> {
         {
             return None;
         }
+        // The relaxation bound is known from the start's Δv alone: where it
+        // already falls short of both the sub-step's end and the
+        // collocation's next step, the series would be declined, and is
+        // not filled.
+        let stiffest = dampers
+            .iter()
+            .map(|d| RELAXATIONS * d.relaxation(d.rate(&self.v)))
+            .fold(f64::INFINITY, f64::min);
+        if stiffest < rem && stiffest < self.next_contact_step {
+            return None;
+        }
         let mut series = std::mem::take(&mut self.spare_series);
         let start = (&self.u[..], &self.v[..]);
         series.fill_damped(&self.system, start, ground, scale, (rem, dampers));
         let finite = series.u.iter().chain(&series.v).all(|x| x.is_finite());
-        let mut reach = series.radius;
+        let mut reach = series.radius.min(stiffest);
         let (mut rate, mut force) = (Vec::new(), Vec::new());
         for d in dampers {
-            reach = reach.min(RELAXATIONS * d.relaxation(d.rate(&self.v)));
             series.combine(&[], &[(d.left, 1.0), (d.right, -1.0)], &mut rate);
             force_coefficients(d.damping, d.exponent, &rate, &mut force);
             let k = force.len() - 1;
