@@ -1118,7 +1118,7 @@ impl Run<'_> {
         link_peaks::peaks_on(
             &self.layout.links,
             series,
-            (end, rk.is_none()),
+            end,
             &mut self.links,
             (&mut c, &mut self.buf2),
         );

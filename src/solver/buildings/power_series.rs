@@ -39,20 +39,6 @@ pub fn power_coefficient(x: &[f64], w: &[f64], alpha: f64) -> f64 {
     sum / (kf * x[0])
 }
 
-/// The coefficients of F = c_l |Δv|^α sgn Δv (N) into `out`, from those of
-/// Δv (`rate`, Δv_0 ≠ 0) to the same order: c_l σ w_k by the recurrence.
-pub fn force_coefficients(damping: f64, exponent: f64, rate: &[f64], out: &mut Vec<f64>) {
-    let sign = if rate[0] < 0.0 { -1.0 } else { 1.0 };
-    let x: Vec<f64> = rate.iter().map(|r| sign * r).collect();
-    let mut w = Vec::with_capacity(x.len());
-    for k in 0..x.len() {
-        let c = power_coefficient(&x[..=k], &w, exponent);
-        w.push(c);
-    }
-    out.clear();
-    out.extend(w.iter().map(|w| damping * sign * w));
-}
-
 /// The dampers' x_k = σΔv_k and w_k, order by order, for one series:
 /// each damper's coefficients in a block of `width`, its σ kept.
 #[derive(Debug, Default)]
@@ -91,6 +77,17 @@ impl DamperPowers {
         let w = power_coefficient(&self.x[row..=row + k], &self.w[row..row + k], d.exponent);
         self.w[row + k] = w;
         d.damping * sign * w
+    }
+
+    /// Appends F_k = c_l σ w_k of damper `d` (the `index`-th), orders 0 to
+    /// `width` − 1, all reached in turn by [`DamperPowers::force`].
+    pub fn write_forces(&self, index: usize, d: &Damper, width: usize, out: &mut Vec<f64>) {
+        let (row, sign) = (index * self.width, self.sign[index]);
+        out.extend(
+            self.w[row..row + width]
+                .iter()
+                .map(|w| d.damping * sign * w),
+        );
     }
 }
 

@@ -113,6 +113,10 @@ pub struct Series {
     /// Highest order of u held (coefficients above it are zero):
     /// [`ORDER`] for the series, less for a polynomial written as one.
     pub degree: usize,
+    /// Each fluid viscous damper's force F_k (N), damper by damper in
+    /// blocks of [`Series::degree`] + 1, where the series carries the
+    /// dampers ([`Series::fill_damped`]); empty otherwise.
+    pub forces: Vec<f64>,
     /// The recurrence's buffers, reused from fill to fill.
     pub work: Workspace,
 }
@@ -168,6 +172,7 @@ impl Default for Series {
             ground: [0.0; MAX_ORDER + 1],
             radius: 0.0,
             degree: 0,
+            forces: Vec::new(),
             work: Workspace::default(),
         }
     }
@@ -420,10 +425,27 @@ impl Series {
                 v[i * width + k] = y;
             }
         }
+        // Each damper's force to the degree written out: its order
+        // `degree`, one past the last the motion's recurrence needed, from
+        // that order's Δv, then F_k = c_l σ w_k block by block.
+        self.forces.clear();
+        let column = &state[degree * n..width * n];
+        for (di, d) in dampers.iter().enumerate() {
+            powers.force(di, d, degree, column[d.left][1] - column[d.right][1]);
+            powers.write_forces(di, d, width, &mut self.forces);
+        }
         self.n = n;
         self.ground = g;
         self.radius = radius;
         self.degree = degree;
+    }
+
+    /// The force coefficients F_0 … F_degree of the `index`-th fluid
+    /// viscous damper, where the series carries the dampers.
+    #[inline]
+    pub fn damper_force(&self, index: usize) -> Option<&[f64]> {
+        let width = self.degree + 1;
+        self.forces.get(index * width..(index + 1) * width)
     }
 
     /// The coefficients of u_i, orders 0 to [`Series::degree`].

@@ -13,7 +13,6 @@
 //! that over a step of many relaxation times of a stiff damper it would
 //! magnify rounding as e^(h/τ): see [`Run::damped_series`].
 
-use super::super::power_series::force_coefficients;
 use super::super::taylor::Series;
 use super::Run;
 
@@ -88,11 +87,8 @@ impl Run<'_> {
         series.fill_damped(&self.system, start, ground, scale, (rem, dampers));
         let finite = series.u.iter().chain(&series.v).all(|x| x.is_finite());
         let mut reach = series.radius.min(stiffest);
-        let (mut rate, mut force) = (Vec::new(), Vec::new());
-        for d in dampers {
-            series.combine(&[], &[(d.left, 1.0), (d.right, -1.0)], &mut rate);
-            force_coefficients(d.damping, d.exponent, &rate, &mut force);
-            let k = force.len() - 1;
+        for force in series.forces.chunks_exact(series.degree + 1) {
+            let k = series.degree;
             for (j, f) in [(k - 1, force[k - 1]), (k, force[k])] {
                 if f != 0.0 {
                     let r = (FORCE_TOLERANCE * force[0].abs() / f.abs()).powf(1.0 / j as f64);
