@@ -209,12 +209,16 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         let (u, v) = y.split_at(n);
         let mut out = vec![0.0; 2 * n];
         out[..n].copy_from_slice(v);
-        let acc = &mut out[n..];
+        self.acceleration(s, u, v, &mut out[n..]);
+        out
+    }
+
+    /// ü at offset s into `acc`: the second half of [`Contact::rate`].
+    pub fn acceleration(&self, s: f64, u: &[f64], v: &[f64], acc: &mut [f64]) {
         self.hertz_acceleration(s, u, v, acc);
         for d in self.dampers {
             d.add_to(v, acc);
         }
-        out
     }
 
     /// ü at offset s without the dampers' forces: the linear system's and

@@ -906,9 +906,10 @@ impl Run<'_> {
     }
 
     /// ü at (u, u̇) at time t + s on `piece` in the configuration in force,
-    /// into `out` (its vector reused where the linear system gives it): the
-    /// linear system's, and the force of every pair closed under a
-    /// Hertz-type law ([`Contact::rate`]), which the system leaves out.
+    /// into `out` (its vector reused): the linear system's, and where the
+    /// row goes by steps the force of every pair closed under a Hertz-type
+    /// law and of every fluid viscous damper ([`Contact::acceleration`]),
+    /// which the system leaves out.
     fn acceleration(
         &self,
         piece: &Piece,
@@ -916,15 +917,13 @@ impl Run<'_> {
         (u, v): (&[f64], &[f64]),
         out: &mut Vec<f64>,
     ) {
-        let n = self.layout.dofs;
+        out.resize(self.layout.dofs, 0.0);
         if by_steps(&self.layout, &self.config) {
             let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
                 ground_at(piece, t + s).0
             });
-            let y: Vec<f64> = u.iter().chain(v).copied().collect();
-            *out = contact.rate(s, &y).split_off(n);
+            contact.acceleration(s, u, v, out);
         } else {
-            out.resize(n, 0.0);
             self.system
                 .acceleration(u, v, ground_at(piece, t + s).0, out);
         }
