@@ -193,12 +193,6 @@ impl System {
         &self.entries[self.row_start[i]..self.row_start[i + 1]]
     }
 
-    /// Every row of (M⁻¹K, M⁻¹C) in turn, as [`System::row`] gives each.
-    #[inline]
-    pub fn rows(&self) -> impl Iterator<Item = &[(usize, f64, f64)]> {
-        self.row_start.windows(2).map(|w| &self.entries[w[0]..w[1]])
-    }
-
     /// ü at (u, u̇) under ground acceleration a (the equation above).
     pub fn acceleration(&self, u: &[f64], v: &[f64], a: f64, out: &mut [f64]) {
         for (i, out) in out.iter_mut().enumerate() {

@@ -340,18 +340,12 @@ impl Series {
         for k in 0..top {
             let (done, next) = state.split_at_mut((k + 1) * n);
             let (column, next) = (&done[k * n..], &mut next[..n]);
-            let ground_k = -g[k];
-            for ((acc, row), &load) in acc[..n].iter_mut().zip(system.rows()).zip(&system.load) {
-                let mut s = ground_k;
-                if k == 0 {
-                    s += load;
-                }
-                for &(j, kij, cij) in row {
-                    let [uj, vj] = column[j];
-                    s -= kij * uj + cij * vj;
-                }
-                *acc = s;
-            }
+            // ü's coefficient before the contacts: −a_k − Σ_j ((M⁻¹K)_ij u_k,j
+            // + (M⁻¹C)_ij u̇_k,j), plus M⁻¹q at k = 0, rows in vector blocks.
+            let load = (k == 0).then_some(&system.load[..]);
+            system
+                .columns
+                .rate_of_pairs(column, load, g[k], &mut acc[..n]);
             for (pi, p) in products.iter().enumerate() {
                 let row = pi * w;
                 let ([ul, vl], [ur, vr]) = (column[p.left], column[p.right]);

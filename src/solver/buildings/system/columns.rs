@@ -1,5 +1,6 @@
 //! M⁻¹K and M⁻¹C of one configuration stored by columns in vector blocks
-//! ([`super::super::lanes`]), for the rates of a map step's ends (SPEC §13).
+//! ([`super::super::lanes`]), for the rates of a map step's ends and the
+//! orders of the Taylor series (SPEC §13).
 //!
 //! At each end of a quiet sub-step the quiet test needs ü, u⃛ and u⁗ of
 //! every floor ([`super::super::bound::Stack`]), each one product of the
@@ -9,7 +10,10 @@
 //! r_i = b_i − Σ_j ((M⁻¹K)_ij x_j + (M⁻¹C)_ij y_j),
 //! ```
 //!
-//! (x, y) = (u, u̇), (u̇, ü), (ü, u⃛) and b_i = (M⁻¹q)_i − a_g, −ȧ_g, −σa_g.
+//! (x, y) = (u, u̇), (u̇, ü), (ü, u⃛) and b_i = (M⁻¹q)_i − a_g, −ȧ_g, −σa_g;
+//! each order k of the series ([`super::super::taylor`]) needs the same
+//! with (x, y) = (u_k, u̇_k) and b_i = (M⁻¹q)_i − a_0 at k = 0, −a_k above
+//! ([`Columns::rate_of_pairs`]).
 //! Row by row on the nonzeros ([`super::System::row`]), each r_i is a short
 //! serial sum with an index per term; here a block of [`LANES`] rows goes
 //! column by column, its LANES sums together. A zero entry subtracts a
@@ -76,26 +80,82 @@ impl Columns {
         let n = self.dofs;
         let (x, y) = (&x[..n], &y[..n]);
         out.clear();
+        self.sums(
+            |span| x[span.clone()].iter().copied().zip(y[span].iter().copied()),
+            (load, g),
+            |_, s| out.extend_from_slice(s),
+        );
+    }
+
+    /// [`Columns::rate`] of (x_j, y_j) held side by side as `xy[j]`, into
+    /// `out[..n]`: a Taylor coefficient's column of the series
+    /// ([`super::super::taylor`]), whose rows are the same sums.
+    pub fn rate_of_pairs(&self, xy: &[[f64; 2]], load: Option<&[f64]>, g: f64, out: &mut [f64]) {
+        let xy = &xy[..self.dofs];
+        self.sums(
+            |span| xy[span].iter().map(|&[x, y]| (x, y)),
+            (load, g),
+            |start, s| match <&[f64; LANES]>::try_from(s) {
+                // A full block's lanes as one store.
+                Ok(s) => out[start..start + LANES].copy_from_slice(s),
+                Err(_) => out[start..start + s.len()].copy_from_slice(s),
+            },
+        );
+    }
+
+    /// The sums of [`Columns::rate`], each block's handed to `emit` with the
+    /// index of its first row (the last block's rows alone), (x_j, y_j)
+    /// read from `values(span)` in the order of j. Without a load every
+    /// block starts from −g in all its lanes, one vector; with one, a full
+    /// block from its b_i as one vector, the last lane by lane.
+    #[inline(always)]
+    fn sums<I: Iterator<Item = (f64, f64)>>(
+        &self,
+        values: impl Fn(std::ops::Range<usize>) -> I,
+        (load, g): (Option<&[f64]>, f64),
+        mut emit: impl FnMut(usize, &[f64]),
+    ) {
+        match load {
+            None => self.sums_from(&values, |_| [-g; LANES], &mut emit),
+            Some(load) => self.sums_from(
+                &values,
+                |rows| match <&[f64; LANES]>::try_from(&load[rows.clone()]) {
+                    Ok(q) => std::array::from_fn(|l| q[l] - g),
+                    Err(_) => {
+                        let mut s = [-g; LANES];
+                        for (s, &q) in s.iter_mut().zip(&load[rows]) {
+                            *s = q - g;
+                        }
+                        s
+                    }
+                },
+                &mut emit,
+            ),
+        }
+    }
+
+    /// Each block's LANES sums from `start(rows)` over the columns of its span.
+    #[inline(always)]
+    fn sums_from<I: Iterator<Item = (f64, f64)>>(
+        &self,
+        values: impl Fn(std::ops::Range<usize>) -> I,
+        start: impl Fn(std::ops::Range<usize>) -> [f64; LANES],
+        mut emit: impl FnMut(usize, &[f64]),
+    ) {
+        let n = self.dofs;
         let blocks = self.blocks.chunks_exact(2 * n * LANES);
         for (b, (block, span)) in blocks.zip(&self.spans).enumerate() {
             let rows = b * LANES..((b + 1) * LANES).min(n);
-            let mut s = [0.0; LANES];
-            for (s, i) in s.iter_mut().zip(rows.clone()) {
-                *s = match load {
-                    Some(load) => load[i] - g,
-                    None => -g,
-                };
-            }
+            let mut s = start(rows.clone());
             let block = &block[2 * LANES * span.start..2 * LANES * span.end];
-            let (x, y) = (&x[span.clone()], &y[span.clone()]);
-            for (column, (&xj, &yj)) in block.chunks_exact(2 * LANES).zip(x.iter().zip(y)) {
+            for (column, (xj, yj)) in block.chunks_exact(2 * LANES).zip(values(span.clone())) {
                 let column: &[f64; 2 * LANES] = column.try_into().expect("a block's columns");
                 let (k, c) = column.split_at(LANES);
                 for l in 0..LANES {
                     s[l] -= k[l] * xj + c[l] * yj;
                 }
             }
-            out.extend_from_slice(&s[..rows.len()]);
+            emit(rows.start, &s[..rows.len()]);
         }
     }
 }
@@ -127,7 +187,8 @@ mod tests {
     proptest! {
         /// On random sparse M⁻¹K, M⁻¹C of 1 to 13 floors the blocks give
         /// the row-wise sum on the nonzeros bit for bit (but the sign of
-        /// a zero), with and without a load.
+        /// a zero), with and without a load, from (x, y) as two slices
+        /// and as pairs side by side.
         #[test]
         fn the_blocks_give_the_sum_on_the_nonzeros_bit_for_bit(
             ([k, c], [x, y, load], g) in case(),
@@ -153,6 +214,16 @@ mod tests {
                 // Equal as numbers: bit for bit but the sign of a zero.
                 prop_assert!(g == w, "{} against {}", g, w);
             }
+            // The same (x_j, y_j) side by side, as the series holds them,
+            // into a longer buffer: its first n the same sums, the rest
+            // untouched.
+            let xy: Vec<[f64; 2]> = x.iter().zip(&y).map(|(&x, &y)| [x, y]).collect();
+            let mut pairs = vec![7.0; n + 3];
+            Columns::of(&k, &c).rate_of_pairs(&xy, load, g, &mut pairs);
+            for (p, w) in pairs.iter().zip(&want) {
+                prop_assert!(p == w, "{} against {}", p, w);
+            }
+            prop_assert_eq!(&pairs[n..], &[7.0; 3]);
         }
     }
 }
