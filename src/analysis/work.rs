@@ -108,7 +108,14 @@ pub fn row_seconds(row: &Row, duration: f64, newmark_step: Option<f64>) -> f64 {
 /// gave 21.6–31.7×, median 27.0×), and the 30 s sine 0.75–0.80 s against
 /// 1.10–1.32 s before (a bare run 40–60 ms by the command line); with its
 /// steps up to six relaxation times of the damper, 15.6–16.2× (three
-/// rounds); 25 keeps the largest of those with room over the median.
+/// rounds). With the series not filled where the damper's relaxation
+/// time already rules it out, and the force's coefficients kept from the
+/// fill, 10.7–11.0× (median 10.8×, five rounds interleaved with the build
+/// before, which gave 15.5–15.8×); but under a 60 s sine (3 m/s², ω = 6,
+/// 171 impacts) the run takes 1.50 s against the bare row's 70 ms (21×)
+/// in improved Kelvin contact, whose closed pairs are collocated with the
+/// damper, and 0.58 s against 51 ms (11×) in Kelvin contact: 25 keeps
+/// the largest with room.
 pub const FLUID_DAMPER_EXACT: f64 = 25.0;
 
 #[cfg(test)]
