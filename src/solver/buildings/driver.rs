@@ -1176,13 +1176,8 @@ impl Run<'_> {
                 Some(h) => contact_rk::force_polynomial(h, c, dd, end),
                 None => (0..c.len())
                     .map(|k| {
-                        // Σ_j δ_j δ̇_{k−j}, j rising, on slices (no index
-                        // checks in the chain of adds).
-                        let conv: f64 = c[..=k]
-                            .iter()
-                            .zip(dd[..=k].iter().rev())
-                            .map(|(d, r)| d * r)
-                            .sum();
+                        // Σ_j δ_j δ̇_{k−j}.
+                        let conv = poly::product_coefficient(&c[..=k], &dd[..=k]);
                         law.stiffness * c[k] + law.linear_damping * dd[k] + law.hertz_damping * conv
                     })
                     .collect(),

@@ -12,6 +12,14 @@ pub fn eval(c: &[f64], s: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &x| acc * s + x)
 }
 
+/// The coefficient of s^k in the product of two series from their first
+/// k + 1 coefficients each (`a`, `b`, of one length): Σ_j a_j b_{k−j},
+/// j rising, on slices (no index checks in the chain of adds).
+#[inline]
+pub fn product_coefficient(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b.iter().rev()).map(|(x, y)| x * y).sum()
+}
+
 /// p(0) = c₀, which [`eval`] at 0 also gives (every higher term times 0
 /// adds a zero), without its chain of multiply-adds.
 #[inline]

@@ -33,6 +33,7 @@
 //! (0.2ρ at K = 24, 0.38ρ at K = 40), and only more orders lengthen its steps.
 
 use super::damper::Damper;
+use super::poly;
 use super::power_series::DamperPowers;
 use super::system::{Product, System};
 
@@ -351,12 +352,8 @@ impl Series {
                 let ([ul, vl], [ur, vr]) = (column[p.left], column[p.right]);
                 delta[row + k] = ul - ur - if k == 0 { p.gap } else { 0.0 };
                 rate_d[row + k] = vl - vr;
-                // Σ_j δ_j δ̇_{k−j}, j rising.
-                let conv: f64 = delta[row..=row + k]
-                    .iter()
-                    .zip(rate_d[row..=row + k].iter().rev())
-                    .map(|(d, r)| d * r)
-                    .sum();
+                // Σ_j δ_j δ̇_{k−j}.
+                let conv = poly::product_coefficient(&delta[row..=row + k], &rate_d[row..=row + k]);
                 acc[p.left] -= p.left_rate * conv;
                 acc[p.right] += p.right_rate * conv;
             }

@@ -59,10 +59,10 @@ impl Run<'_> {
     ///   where the series' steps shrink with the distance to it, and where
     ///   the damper is stiff over the collocation's step, the collocation
     ///   takes over. The balance sits at equal lengths: on
-    ///   block-and-frame-retrofit at
-    ///   α = 0.35 under synthetic:2000, series steps allowed down to half
-    ///   or 0.7 of the collocation's made the run 1.2 and 1.06 times
-    ///   longer, held to 1.5 or 2.5 times it, 1.04 and 1.15 times.
+    ///   block-and-frame-retrofit at α = 0.35 under synthetic:2000, series
+    ///   steps allowed down to half or 0.7 of the collocation's made the
+    ///   run 1.2 and 1.06 times longer, held to 1.5 or 2.5 times it, 1.04
+    ///   and 1.15 times.
     pub(super) fn damped_series(
         &mut self,
         rem: f64,
