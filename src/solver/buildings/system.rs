@@ -16,6 +16,8 @@
 //! - A link (SPEC §14) adds its spring k_l to K in every configuration, and
 //!   its dashpot c_l to C when it is linear (α = 1) ([`super::link`]).
 
+use std::sync::Arc;
+
 use nalgebra::DMatrix;
 
 use super::config::{Branch, Config};
@@ -39,20 +41,25 @@ pub struct Product {
 }
 
 /// M⁻¹K, M⁻¹C, M⁻¹q and the nonlinear terms of one configuration.
+///
+/// The matrices and their two sparse forms are shared, never changed once
+/// made: a configuration met again out of contact differs only in M⁻¹q
+/// ([`Systems`]), so its system takes the kept matrices by reference
+/// count instead of copying them at every event.
 #[derive(Debug, Clone)]
 pub struct System {
-    pub stiffness: DMatrix<f64>,
-    pub damping: DMatrix<f64>,
+    pub stiffness: Arc<DMatrix<f64>>,
+    pub damping: Arc<DMatrix<f64>>,
     pub load: Vec<f64>,
     pub products: Vec<Product>,
     /// The nonzero entries of M⁻¹K and M⁻¹C together, row by row: (j,
     /// (M⁻¹K)_ij, (M⁻¹C)_ij) for row i in `entries[row_start[i]..row_start[i + 1]]`,
     /// in the order of j. A floor couples only to its storeys' other floors
     /// and its contacts, so a row holds a few of the n entries.
-    entries: Vec<(usize, f64, f64)>,
-    row_start: Vec<usize>,
+    entries: Arc<[(usize, f64, f64)]>,
+    row_start: Arc<[usize]>,
     /// M⁻¹K and M⁻¹C by columns, for the rates at a map step's ends.
-    pub columns: Columns,
+    pub columns: Arc<Columns>,
 }
 
 /// Storey `i`'s stiffness k_e on its branch of `config`, less its P-Δ
@@ -162,13 +169,13 @@ impl System {
             row_start.push(entries.len());
         }
         System {
-            columns: Columns::of(&k, &c),
-            stiffness: k,
-            damping: c,
+            columns: Arc::new(Columns::of(&k, &c)),
+            stiffness: Arc::new(k),
+            damping: Arc::new(c),
             load: load(layout, config),
             products,
-            entries,
-            row_start,
+            entries: entries.into(),
+            row_start: row_start.into(),
         }
     }
 
@@ -177,13 +184,13 @@ impl System {
     /// (the plastic offsets enter M⁻¹q alone), bit for bit.
     pub fn with_load_of(&self, layout: &Layout, config: &Config) -> System {
         System {
-            stiffness: self.stiffness.clone(),
-            damping: self.damping.clone(),
+            stiffness: Arc::clone(&self.stiffness),
+            damping: Arc::clone(&self.damping),
             load: load(layout, config),
             products: self.products.clone(),
-            entries: self.entries.clone(),
-            row_start: self.row_start.clone(),
-            columns: self.columns.clone(),
+            entries: Arc::clone(&self.entries),
+            row_start: Arc::clone(&self.row_start),
+            columns: Arc::clone(&self.columns),
         }
     }
 

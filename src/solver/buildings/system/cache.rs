@@ -4,7 +4,8 @@
 //! columns depend on the branches alone; the plastic offsets p enter only
 //! M⁻¹q ([`System`]'s opening), which is made afresh each time. A system
 //! made from the kept one is therefore the one [`System::of`] makes, bit
-//! for bit, at about a sixth of its cost (its n × n passes skipped).
+//! for bit, at the cost of M⁻¹q alone: its matrices and their sparse
+//! forms are the kept one's, shared by reference count, not copied.
 //! Configurations with a closed pair, whose law depends on the approach
 //! velocity at onset, are made afresh.
 
