@@ -316,6 +316,41 @@ pub fn first_rise(c: &[f64], end: f64) -> Option<f64> {
     None
 }
 
+/// Relative margin by which p' must clear zero on [0, end] for
+/// [`keeps_slope`]: far above the rounding of p' by Horner's rule at any
+/// degree kept (γ_{2K} ≈ 9e-15 at K = 40) and of the bound's own sums.
+const SLOPE_MARGIN: f64 = 1e-12;
+
+/// Whether p' keeps one sign on [0, end] by a margin that no rounding of
+/// the scan of [`scan_derivative`] can cross, so that the scan would find
+/// no sign change and p's extremes on [0, end] are its ends. On [0, s],
+///
+/// ```text
+/// p'(t) = (c₁ + 2c₂t) + Σ_{k≥3} k c_k t^{k−1},   |Σ_{k≥3} …| ≤ T = Σ_{k≥3} k|c_k| s^{k−1},
+/// ```
+///
+/// the linear part's range exactly (its ends), so p' > 0 throughout when
+/// min(c₁, c₁ + 2c₂s) − T exceeds the margin times the terms' size
+/// |c₁| + 2|c₂|s + T, which bounds the rounding of every p'(s_i) computed
+/// at the scan points s_i ≤ s (and p' < 0 likewise). One pass over the
+/// coefficients against the scan's [`SCAN`] + 1: most steps' peaks lie at
+/// an end (a step is at most a radian of the fastest mode), where this
+/// answers. A NaN or an infinity fails every comparison and goes to the
+/// scan.
+#[inline]
+fn keeps_slope(c: &[f64], end: f64) -> bool {
+    let at = |k: usize| c.get(k).copied().unwrap_or(0.0);
+    let (c1, c2) = (at(1), at(2));
+    let far = c1 + 2.0 * c2 * end;
+    let mut tail = 0.0;
+    for k in (3..c.len()).rev() {
+        tail = tail * end + k as f64 * c[k].abs();
+    }
+    let tail = tail * end * end;
+    let margin = SLOPE_MARGIN * (c1.abs() + 2.0 * c2.abs() * end + tail);
+    c1.min(far) - tail > margin || c1.max(far) + tail < -margin
+}
+
 /// max |p| over [0, end]: the ends and every turning point, found where p'
 /// changes sign on `SCAN` points.
 pub fn max_abs(c: &[f64], end: f64) -> f64 {
@@ -323,11 +358,14 @@ pub fn max_abs(c: &[f64], end: f64) -> f64 {
 }
 
 /// Where on [0, end] |p| is largest, and that largest |p|, by the scan of
-/// [`max_abs`].
+/// [`max_abs`] (its ends alone where a bound of p' keeps one sign).
 pub fn argmax_abs(c: &[f64], end: f64) -> (f64, f64) {
     let f = |s: f64| eval(c, s);
     let (f0, f1) = (at_zero(c).abs(), f(end).abs());
     let mut best = if f1 > f0 { (end, f1) } else { (0.0, f0) };
+    if keeps_slope(c, end) {
+        return best;
+    }
     let scan = scan_derivative(c, end);
     let mut lo = 0.0;
     let mut d_lo = scan[0];
@@ -357,6 +395,9 @@ pub fn argmax(c: &[f64], end: f64) -> (f64, f64) {
     let f = |s: f64| eval(c, s);
     let (f0, f1) = (at_zero(c), f(end));
     let mut best = if f1 > f0 { (end, f1) } else { (0.0, f0) };
+    if keeps_slope(c, end) {
+        return best;
+    }
     let scan = scan_derivative(c, end);
     let mut lo = 0.0;
     let mut d_lo = scan[0];
@@ -547,6 +588,72 @@ mod tests {
                 (bound(&c, 0.7) - horner).abs() <= 1e-15 * horner.max(1.0),
                 "{len}"
             );
+        }
+    }
+
+    /// The ends' shortcut where p' keeps its sign ([`keeps_slope`]) on the
+    /// closed forms: sin on [0, 1] rises (p' = cos ≥ 0.54) and is taken at
+    /// its ends, sin on [0, 3] turns at π/2 and is not; e^{−s} on [0, 0.5]
+    /// falls throughout (on [0, 2] too, but there the slope's linear part
+    /// c₁ + 2c₂s = s − 1 changes sign, and the bound leaves it to the
+    /// scan). The values are the scan's, to the bit.
+    #[test]
+    fn a_polynomial_whose_slope_keeps_its_sign_peaks_at_an_end() {
+        // Σ_k sign(k) s^k / k! to 30 terms.
+        let taylor = |sign: fn(usize) -> f64| {
+            let factorials = (0..30).scan(1.0, |f, k| {
+                *f *= k.max(1) as f64;
+                Some(*f)
+            });
+            factorials
+                .enumerate()
+                .map(|(k, f)| sign(k) / f)
+                .collect::<Vec<_>>()
+        };
+        let sin = taylor(|k| [0.0, 1.0, 0.0, -1.0][k % 4]);
+        let decay = taylor(|k| if k % 2 == 0 { 1.0 } else { -1.0 });
+        assert!(keeps_slope(&sin, 1.0));
+        assert_eq!(argmax_abs(&sin, 1.0), (1.0, eval(&sin, 1.0).abs()));
+        assert!((max_abs(&sin, 1.0) - 1f64.sin()).abs() < 1e-15);
+        assert!(!keeps_slope(&sin, 3.0));
+        assert!((max_abs(&sin, 3.0) - 1.0).abs() < 1e-14);
+        assert!(keeps_slope(&decay, 0.5));
+        assert_eq!(argmax(&decay, 0.5), (0.0, 1.0));
+        assert_eq!(argmax_abs(&decay, 0.5), (0.0, 1.0));
+        assert!(!keeps_slope(&decay, 2.0));
+        assert_eq!(argmax_abs(&decay, 2.0), (0.0, 1.0));
+        // A NaN goes to the scan.
+        assert!(!keeps_slope(&[0.0, 1.0, f64::NAN], 1.0));
+    }
+
+    proptest::proptest! {
+        /// Wherever [`keeps_slope`] holds, the scan of p' finds no sign
+        /// change and no zero, so the ends alone are what the scan gives:
+        /// random polynomials of degree 2 to 40 whose slope at 0 is made
+        /// to nearly balance the rest (the test's edge), on steps up to 2.
+        #[test]
+        fn where_the_slope_keeps_its_sign_the_scan_finds_no_turn(
+            raw in proptest::collection::vec(-1.0f64..1.0, 3..41),
+            decay in 0.05f64..1.5,
+            balance in 0.9f64..1.1,
+            end in 0.01f64..2.0,
+        ) {
+            // Coefficients falling like decay^k / k!, as a step's series do.
+            let mut c: Vec<f64> = raw.clone();
+            let mut scale = 1.0;
+            for (k, x) in c.iter_mut().enumerate() {
+                if k > 0 {
+                    scale *= decay / k as f64;
+                }
+                *x *= scale;
+            }
+            let rest: f64 = (2..c.len()).map(|k| k as f64 * c[k].abs() * end.powi(k as i32 - 1)).sum();
+            c[1] = c[1].signum() * balance * rest;
+            if keeps_slope(&c, end) {
+                let scan = scan_derivative(&c, end);
+                let rising = scan[0] > 0.0;
+                proptest::prop_assert!(scan.iter().all(|&d| d != 0.0 && (d > 0.0) == rising));
+            }
         }
     }
 }
