@@ -73,12 +73,22 @@ const TINY_POWER: f64 = 9.332636185032189e-302;
 
 /// The ground's Taylor coefficients a_k from (a, ȧ, σ) at s = 0:
 /// a₀ = a, a₁ = ȧ, a_{k+2} = σ a_k/((k+1)(k+2)) (ä_g = σ a_g on the piece).
+///
+/// On a record's pieces (lines, σ = 0) σ a_k is already a zero (or a NaN),
+/// which the division leaves as it is: the products alone, without the
+/// chain of divisions, give the same coefficients to the bit.
 pub fn ground_coefficients((a, rate, sigma): (f64, f64, f64)) -> [f64; MAX_ORDER + 1] {
     let mut g = [0.0; MAX_ORDER + 1];
     g[0] = a;
     g[1] = rate;
-    for k in 0..MAX_ORDER - 1 {
-        g[k + 2] = sigma * g[k] / ((k + 1) * (k + 2)) as f64;
+    if sigma == 0.0 {
+        for k in 0..MAX_ORDER - 1 {
+            g[k + 2] = sigma * g[k];
+        }
+    } else {
+        for k in 0..MAX_ORDER - 1 {
+            g[k + 2] = sigma * g[k] / ((k + 1) * (k + 2)) as f64;
+        }
     }
     g
 }
@@ -527,7 +537,7 @@ impl Series {
 
 #[cfg(test)]
 mod tests {
-    use super::{MAX_ORDER, ORDER, Series, TOLERANCE, surely_above};
+    use super::{MAX_ORDER, ORDER, Series, TOLERANCE, ground_coefficients, surely_above};
     use crate::model::buildings;
     use crate::model::buildings::contact::element_law;
     use crate::solver::buildings::config::{Closed, Config};
@@ -766,5 +776,36 @@ mod tests {
             .fold(0.0, f64::max);
         println!("radius gain {gain}, {steps} steps, worst {worst:e}");
         assert!(worst < 1e-14, "worst {worst:e}, radius gain {gain}");
+    }
+
+    /// On a line (σ = ±0) the ground's coefficients are the recurrence's
+    /// a_{k+2} = σ a_k/((k+1)(k+2)) to the bit, the sign of each zero
+    /// included, and a sine's (σ = −ω²) follow a cos(ωs) + (ȧ/ω) sin(ωs).
+    #[test]
+    fn the_ground_series_is_the_recurrence_on_lines_and_sines() {
+        let recurrence = |(a, rate, sigma): (f64, f64, f64)| {
+            let mut g = [0.0; MAX_ORDER + 1];
+            g[0] = a;
+            g[1] = rate;
+            for k in 0..MAX_ORDER - 1 {
+                g[k + 2] = sigma * g[k] / ((k + 1) * (k + 2)) as f64;
+            }
+            g
+        };
+        let bits = |g: [f64; MAX_ORDER + 1]| g.map(f64::to_bits);
+        for a in [1.5, -2.0, 0.0, -0.0, 1e300] {
+            for rate in [0.25, -3.0, 0.0, -0.0] {
+                for sigma in [0.0, -0.0] {
+                    let ground = (a, rate, sigma);
+                    assert_eq!(bits(ground_coefficients(ground)), bits(recurrence(ground)));
+                }
+            }
+        }
+        let (a, rate, w) = (0.7, -1.3, 3.0);
+        let g = ground_coefficients((a, rate, -w * w));
+        let s = 0.4f64;
+        let sum: f64 = g.iter().rev().fold(0.0, |acc, &c| acc * s + c);
+        let exact = a * (w * s).cos() + rate / w * (w * s).sin();
+        assert!((sum - exact).abs() < 1e-15, "{sum} against {exact}");
     }
 }
