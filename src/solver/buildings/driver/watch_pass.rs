@@ -88,6 +88,25 @@ fn clears(
     numbers & (lower <= (low - e) - p) & ((high + e) - p <= upper)
 }
 
+/// Each storey's drift of floor rates `x` (order 0: u; 1: u̇; 2: ü) into
+/// `out`: storey k's x_k − w_k x_b, b = k − 1 over a floor (w_k = 1) and
+/// b = k on the ground (w_k = 0), as [`Difference::at`] forms it, with b
+/// chosen by a select so that the loop runs as vector operations.
+#[inline(always)]
+fn storey_drifts(x: &[f64], grounds: &[f64], out: &mut [f64]) {
+    let n = out.len();
+    let (x, grounds) = (&x[..n], &grounds[..n]);
+    if n == 0 {
+        return;
+    }
+    out[0] = x[0] - grounds[0] * x[0];
+    let (below, here) = (&x[..n - 1], &x[1..]);
+    for (((o, &w), &xb), &xk) in out[1..].iter_mut().zip(&grounds[1..]).zip(below).zip(here) {
+        let b = if w != 0.0 { xb } else { xk };
+        *o = xk - w * b;
+    }
+}
+
 /// The questions past the floors' (each storey's peak and event, each
 /// facing pair's peak, each gap), one array per operand: each one's q (or
 /// q̇) and its rate at both ends, its error bound, offset and limits.
@@ -163,7 +182,13 @@ impl Questions {
 pub(super) struct WatchPass {
     /// Floors n.
     dofs: usize,
-    storeys: Vec<Difference>,
+    /// Storey k joins floor k to floor k − 1 (w_k = 1) or to the ground
+    /// (w_k = 0, a building's first storey): its drift is x_k − w_k x_b
+    /// with b = k − 1 or k ([`Difference`]'s form, read in one pass).
+    grounds: Vec<f64>,
+    /// Each storey's drift, its rate and its second rate at the start and
+    /// at the end of the sub-step (orders 0 to 2 of [`storey_drifts`]).
+    drifts: [[Vec<f64>; 3]; 2],
     facing: Vec<Difference>,
     gaps: Vec<Difference>,
     /// Each storey's limits while elastic, ((−Δ_y)⁺, Δ_y⁻), and each gap's
@@ -183,18 +208,28 @@ impl WatchPass {
             w: 1.0,
         };
         let n = layout.dofs;
-        let questions = 2 * layout.storeys.len() + layout.facing.len() + layout.pairs.len();
+        let storeys = layout.storeys.len();
+        // Storey k is floor k's (Layout::of lays them out so), over floor
+        // k − 1 or the ground.
+        assert!(
+            storeys == n
+                && layout
+                    .storeys
+                    .iter()
+                    .enumerate()
+                    .all(|(k, s)| s.upper == k && s.lower.is_none_or(|lower| lower + 1 == k)),
+            "storey k joins floor k to floor k − 1 or the ground"
+        );
+        let questions = layout.facing.len() + layout.pairs.len();
+        let drift = || [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
         WatchPass {
             dofs: n,
-            storeys: layout
+            grounds: layout
                 .storeys
                 .iter()
-                .map(|s| Difference {
-                    a: s.upper,
-                    b: s.lower.unwrap_or(s.upper),
-                    w: if s.lower.is_some() { 1.0 } else { 0.0 },
-                })
+                .map(|s| if s.lower.is_some() { 1.0 } else { 0.0 })
                 .collect(),
+            drifts: [drift(), drift()],
             facing: layout.facing.iter().map(pair).collect(),
             gaps: layout.pairs.iter().map(pair).collect(),
             yield_limits: layout
@@ -204,7 +239,7 @@ impl WatchPass {
                 .collect(),
             gap_limits: layout.gaps.iter().map(|d| d.next_down()).collect(),
             questions: Questions::new(questions),
-            cleared: vec![false; 3 * n + questions],
+            cleared: vec![false; 3 * n + 2 * storeys + questions],
         }
     }
 
@@ -220,7 +255,6 @@ impl WatchPass {
         (config, env): (&Config, &Envelope),
     ) {
         let n = self.dofs;
-        let storeys = self.storeys.len();
         // Every floor's u, u̇, ü + a_g against its running peak, read
         // straight from the stacks (the ground added to ü).
         let peaks = [&env.displacement, &env.velocity, &env.acceleration];
@@ -241,51 +275,71 @@ impl WatchPass {
                 out[i] = clears(ends, h, (errors[i] * size, 0.0), (-peaks[i], peaks[i]));
             }
         }
-        // Every storey's drift against its running peak, then its event;
-        // every facing pair's u_A − u_B under its running peak; every
-        // contact element's u_A − u_B under its gap.
-        let questions = &mut self.questions;
-        let base = 3 * n;
-        for (k, d) in self.storeys.iter().enumerate() {
-            let ends = (d.at(start, 0), d.at(end, 0));
-            let peak = env.drift[k];
-            questions.set(k, ends, (value[base + k] * size, 0.0), (-peak, peak));
-        }
-        for (k, (d, &limits)) in self.storeys.iter().zip(&self.yield_limits).enumerate() {
-            let j = storeys + k;
-            match config.branch[k] {
-                Branch::Elastic => {
-                    let ends = (d.at(start, 0), d.at(end, 0));
-                    let error = value[base + k] * size;
-                    questions.set(j, ends, (error, config.plastic[k]), limits);
-                }
-                branch => {
-                    let ends = (d.at(start, 1), d.at(end, 1));
-                    let limits = if branch == Branch::Plus {
-                        (0f64.next_up(), f64::INFINITY)
-                    } else {
-                        (f64::NEG_INFINITY, 0f64.next_down())
-                    };
-                    questions.set(j, ends, (rate[base + k] * size, 0.0), limits);
-                }
+        // Every storey's drift against its running peak, then its event,
+        // in plain loops over the drifts of both ends.
+        let storeys = self.grounds.len();
+        for (drifts, stack) in self.drifts.iter_mut().zip([start, end]) {
+            for (order, out) in drifts.iter_mut().enumerate() {
+                storey_drifts(&stack.rates[order], &self.grounds, out);
             }
         }
+        let ([s0, s1, s2], [e0, e1, e2]) = (&self.drifts[0], &self.drifts[1]);
+        let base = 3 * n;
+        let (peaks, out) = (
+            &env.drift[..storeys],
+            &mut self.cleared[base..base + storeys],
+        );
+        let errors = &value[base..base + storeys];
+        for k in 0..storeys {
+            let ends = ((s0[k], s1[k]), (e0[k], e1[k]));
+            out[k] = clears(ends, h, (errors[k] * size, 0.0), (-peaks[k], peaks[k]));
+        }
+        let out = &mut self.cleared[base + storeys..base + 2 * storeys];
+        let rates = &rate[base..base + storeys];
+        let (branch, plastic) = (&config.branch[..storeys], &config.plastic[..storeys]);
+        let limits = &self.yield_limits[..storeys];
+        for k in 0..storeys {
+            // Elastic: the drift within its yield drift of the plastic
+            // offset; yielding: the drift's rate keeps its sign.
+            let (ends, error, offset, limits) = match branch[k] {
+                Branch::Elastic => (
+                    ((s0[k], s1[k]), (e0[k], e1[k])),
+                    errors[k],
+                    plastic[k],
+                    limits[k],
+                ),
+                Branch::Plus => (
+                    ((s1[k], s2[k]), (e1[k], e2[k])),
+                    rates[k],
+                    0.0,
+                    (0f64.next_up(), f64::INFINITY),
+                ),
+                Branch::Minus => (
+                    ((s1[k], s2[k]), (e1[k], e2[k])),
+                    rates[k],
+                    0.0,
+                    (f64::NEG_INFINITY, 0f64.next_down()),
+                ),
+            };
+            out[k] = clears(ends, h, (error * size, offset), limits);
+        }
+        // Every facing pair's u_A − u_B under its running peak; every
+        // contact element's u_A − u_B under its gap.
+        let questions = &mut self.questions;
+        let base = base + storeys;
         for (k, d) in self.facing.iter().enumerate() {
             let ends = (d.at(start, 0), d.at(end, 0));
             let limits = (f64::NEG_INFINITY, env.relative[k]);
-            let error = value[base + storeys + k] * size;
-            questions.set(2 * storeys + k, ends, (error, 0.0), limits);
+            let error = value[base + k] * size;
+            questions.set(k, ends, (error, 0.0), limits);
         }
-        let (j, base) = (
-            2 * storeys + self.facing.len(),
-            base + storeys + self.facing.len(),
-        );
+        let (j, base) = (self.facing.len(), base + self.facing.len());
         for (k, (d, &gap)) in self.gaps.iter().zip(&self.gap_limits).enumerate() {
             let ends = (d.at(start, 0), d.at(end, 0));
             let limits = (f64::NEG_INFINITY, gap);
             questions.set(j + k, ends, (value[base + k] * size, 0.0), limits);
         }
-        questions.verdicts(h, &mut self.cleared[3 * n..]);
+        questions.verdicts(h, &mut self.cleared[3 * n + 2 * storeys..]);
     }
 
     /// Whether floor i's u (`order` 0), u̇ (1) or ü + a_g (2) stays within
@@ -301,17 +355,17 @@ impl WatchPass {
 
     /// Whether storey k neither yields (elastic) nor unloads (yielding).
     pub fn storey_quiet(&self, k: usize) -> bool {
-        self.cleared[3 * self.dofs + self.storeys.len() + k]
+        self.cleared[3 * self.dofs + self.grounds.len() + k]
     }
 
     /// Whether facing pair k's u_A − u_B stays under its running peak.
     pub fn relative_below(&self, k: usize) -> bool {
-        self.cleared[3 * self.dofs + 2 * self.storeys.len() + k]
+        self.cleared[3 * self.dofs + 2 * self.grounds.len() + k]
     }
 
     /// Whether contact element k stays open.
     pub fn open(&self, k: usize) -> bool {
-        self.cleared[3 * self.dofs + 2 * self.storeys.len() + self.facing.len() + k]
+        self.cleared[3 * self.dofs + 2 * self.grounds.len() + self.facing.len() + k]
     }
 }
 
