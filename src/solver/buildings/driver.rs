@@ -246,6 +246,8 @@ struct Run<'a> {
     requests: usize,
     buf: Vec<f64>,
     buf2: Vec<f64>,
+    /// A closed pair's contact force polynomial on the current series step.
+    force: Vec<f64>,
     /// ü at a series step's end, reused from step to step.
     point_acceleration: Vec<f64>,
     /// How far each floor moves over the current series step.
@@ -406,6 +408,7 @@ fn drive(
         requests: 0,
         buf: Vec::new(),
         buf2: Vec::new(),
+        force: Vec::new(),
         point_acceleration: Vec::new(),
         reach: Reach::default(),
         spare_series: Series::default(),
@@ -1172,18 +1175,19 @@ impl Run<'_> {
             let dd = &mut self.buf2;
             series.combine(&[], &[(a, 1.0), (b, -1.0)], dd);
             let law = &closed.law;
-            let force: Vec<f64> = match &law.hertzian {
-                Some(h) => contact_rk::force_polynomial(h, c, dd, end),
-                None => (0..c.len())
-                    .map(|k| {
-                        // Σ_j δ_j δ̇_{k−j}.
-                        let conv = poly::product_coefficient(&c[..=k], &dd[..=k]);
-                        law.stiffness * c[k] + law.linear_damping * dd[k] + law.hertz_damping * conv
-                    })
-                    .collect(),
-            };
-            let (at, f) = if passes(&force, |l| l.max_force) {
-                poly::argmax(&force, end)
+            let force = &mut self.force;
+            force.clear();
+            match &law.hertzian {
+                Some(h) => force.extend(contact_rk::force_polynomial(h, c, dd, end)),
+                None => force.extend((0..c.len()).map(|k| {
+                    // Σ_j δ_j δ̇_{k−j}.
+                    let conv = poly::product_coefficient(&c[..=k], &dd[..=k]);
+                    law.stiffness * c[k] + law.linear_damping * dd[k] + law.hertz_damping * conv
+                })),
+            }
+            let force = &self.force[..];
+            let (at, f) = if passes(force, |l| l.max_force) {
+                poly::argmax(force, end)
             } else {
                 (0.0, f64::NEG_INFINITY)
             };
@@ -1193,7 +1197,7 @@ impl Run<'_> {
                 if at > 0.0 && at < end {
                     history.push(pi, self.t + at, f);
                 }
-                history.push(pi, self.t + end, poly::eval(&force, end));
+                history.push(pi, self.t + end, poly::eval(force, end));
             }
             if let Some(last) = self.pairs[pi].impacts.last_mut() {
                 last.max_penetration = last.max_penetration.max(penetration);
