@@ -27,7 +27,7 @@ mod cache;
 mod columns;
 
 pub use cache::Systems;
-pub use columns::Columns;
+pub use columns::{Columns, padded};
 
 /// The nonlinear term of one closed pair: h δ δ̇.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -35,7 +35,7 @@
 use super::damper::Damper;
 use super::poly;
 use super::power_series::DamperPowers;
-use super::system::{Product, System};
+use super::system::{Product, System, padded};
 
 /// Highest order kept.
 pub const ORDER: usize = 24;
@@ -163,7 +163,7 @@ impl Workspace {
             self.state.resize(w * n, [0.0; 2]);
         }
         for (buffer, len) in [
-            (&mut self.acc, n),
+            (&mut self.acc, padded(n)),
             (&mut self.delta, products * w),
             (&mut self.rate_d, products * w),
         ] {
@@ -356,7 +356,7 @@ impl Series {
             let load = (k == 0).then_some(&system.load[..]);
             system
                 .columns
-                .rate_of_pairs(column, load, g[k], &mut acc[..n]);
+                .rate_of_pairs(column, load, g[k], &mut acc[..padded(n)]);
             for (pi, p) in products.iter().enumerate() {
                 let row = pi * w;
                 let ([ul, vl], [ur, vr]) = (column[p.left], column[p.right]);

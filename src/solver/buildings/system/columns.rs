@@ -42,6 +42,12 @@ pub struct Columns {
     spans: Vec<std::ops::Range<usize>>,
 }
 
+/// n rounded up to whole blocks of [`LANES`] rows: the length of a buffer
+/// into which [`Columns::rate_of_pairs`] stores every block whole.
+pub fn padded(n: usize) -> usize {
+    n.next_multiple_of(LANES)
+}
+
 impl Columns {
     /// From M⁻¹K and M⁻¹C (n × n).
     pub fn of(stiffness: &DMatrix<f64>, damping: &DMatrix<f64>) -> Columns {
@@ -80,31 +86,39 @@ impl Columns {
         let n = self.dofs;
         let (x, y) = (&x[..n], &y[..n]);
         out.clear();
+        // Every block's lanes as one store of known length, the last
+        // block's past n cut off after.
         self.sums(
             |span| x[span.clone()].iter().copied().zip(y[span].iter().copied()),
             (load, g),
             |_, s| out.extend_from_slice(s),
         );
+        out.truncate(n);
     }
 
     /// [`Columns::rate`] of (x_j, y_j) held side by side as `xy[j]`, into
     /// `out[..n]`: a Taylor coefficient's column of the series
-    /// ([`super::super::taylor`]), whose rows are the same sums.
+    /// ([`super::super::taylor`]), whose rows are the same sums. Where
+    /// `out` reaches past n to the end of the last block of [`LANES`] rows
+    /// ([`padded`]), that block's lanes are stored whole, as every other
+    /// block's (a store of known length, not a copy of n mod LANES), and
+    /// its lanes past n hold no row.
     pub fn rate_of_pairs(&self, xy: &[[f64; 2]], load: Option<&[f64]>, g: f64, out: &mut [f64]) {
-        let xy = &xy[..self.dofs];
+        let n = self.dofs;
+        let xy = &xy[..n];
         self.sums(
             |span| xy[span].iter().map(|&[x, y]| (x, y)),
             (load, g),
-            |start, s| match <&[f64; LANES]>::try_from(s) {
-                // A full block's lanes as one store.
-                Ok(s) => out[start..start + LANES].copy_from_slice(s),
-                Err(_) => out[start..start + s.len()].copy_from_slice(s),
+            |start, s| match out.get_mut(start..start + LANES) {
+                Some(lanes) => lanes.copy_from_slice(s),
+                None => out[start..n].copy_from_slice(&s[..n - start]),
             },
         );
     }
 
     /// The sums of [`Columns::rate`], each block's handed to `emit` with the
-    /// index of its first row (the last block's rows alone), (x_j, y_j)
+    /// index of its first row (all its lanes, the last block's past n
+    /// too), (x_j, y_j)
     /// read from `values(span)` in the order of j. Without a load every
     /// block starts from −g in all its lanes, one vector; with one, a full
     /// block from its b_i as one vector, the last lane by lane.
@@ -113,7 +127,7 @@ impl Columns {
         &self,
         values: impl Fn(std::ops::Range<usize>) -> I,
         (load, g): (Option<&[f64]>, f64),
-        mut emit: impl FnMut(usize, &[f64]),
+        mut emit: impl FnMut(usize, &[f64; LANES]),
     ) {
         match load {
             None => self.sums_from(&values, |_| [-g; LANES], &mut emit),
@@ -140,7 +154,7 @@ impl Columns {
         &self,
         values: impl Fn(std::ops::Range<usize>) -> I,
         start: impl Fn(std::ops::Range<usize>) -> [f64; LANES],
-        mut emit: impl FnMut(usize, &[f64]),
+        mut emit: impl FnMut(usize, &[f64; LANES]),
     ) {
         let n = self.dofs;
         let blocks = self.blocks.chunks_exact(2 * n * LANES);
@@ -155,7 +169,7 @@ impl Columns {
                     s[l] -= k[l] * xj + c[l] * yj;
                 }
             }
-            emit(rows.start, &s[..rows.len()]);
+            emit(rows.start, &s);
         }
     }
 }
@@ -215,15 +229,19 @@ mod tests {
                 prop_assert!(g == w, "{} against {}", g, w);
             }
             // The same (x_j, y_j) side by side, as the series holds them,
-            // into a longer buffer: its first n the same sums, the rest
-            // untouched.
+            // into a buffer of n and into one past the blocks' end: the
+            // first n the same sums; past n, only the last block's lanes
+            // may be written, and only where the buffer holds the block.
             let xy: Vec<[f64; 2]> = x.iter().zip(&y).map(|(&x, &y)| [x, y]).collect();
-            let mut pairs = vec![7.0; n + 3];
-            Columns::of(&k, &c).rate_of_pairs(&xy, load, g, &mut pairs);
-            for (p, w) in pairs.iter().zip(&want) {
-                prop_assert!(p == w, "{} against {}", p, w);
+            let blocks = super::padded(n);
+            for len in [n, blocks + 3] {
+                let mut pairs = vec![7.0; len];
+                Columns::of(&k, &c).rate_of_pairs(&xy, load, g, &mut pairs);
+                for (p, w) in pairs.iter().zip(&want) {
+                    prop_assert!(p == w, "{} against {}", p, w);
+                }
+                prop_assert!(pairs[blocks.min(len)..].iter().all(|&p| p == 7.0));
             }
-            prop_assert_eq!(&pairs[n..], &[7.0; 3]);
         }
     }
 }
