@@ -134,7 +134,7 @@ use super::taylor::{ORDER, Series};
 use crate::model::buildings::retrofit::dashpot_force;
 use basis::{collocated, defect_polynomial, lagrange_at};
 use estimate::kappa;
-use newton::{Forces, Solved, solve};
+use newton::{Forces, Newton, Solved};
 use responses::Responses;
 
 /// Stages S of the collocation: 4, 5 or 6 (the tabled nodes); four, for
@@ -247,6 +247,8 @@ pub struct Collocation {
     /// The last step's forces ([`Forces`]), Newton's first guess for the
     /// next.
     forces: Option<Forces>,
+    /// The Newton solves' buffers and the last one's linearization.
+    solver: Newton,
 }
 
 /// The free motion from a step's start, with what fixes it: the start
@@ -401,7 +403,9 @@ impl Collocation {
         h: f64,
         guess: Option<DVector<f64>>,
     ) -> Option<Solved> {
-        let (end, iterations) = solve(row, &self.elements, &self.sets[set], (free, y0), h, guess);
+        let (end, iterations) =
+            self.solver
+                .solve(row, &self.elements, &self.sets[set], (free, y0), h, guess);
         self.solves += 1;
         self.newton += iterations;
         end
@@ -524,14 +528,15 @@ impl Collocation {
     ) -> Option<(Vec<f64>, Vec<f64>)> {
         let n = y0.len() / 2;
         let guess = self.guess(y0, h);
-        let (whole, x, linearized) = self.solve(row, set, (free, y0), h, guess)?;
+        let (whole, x) = self.solve(row, set, (free, y0), h, guess)?;
         let ne = self.elements.len();
         let kappa = kappa(&self.elements, y0, &x);
         if let Some(slope) = self.defect_model(set, free, h, &x, &kappa, row.scale.1) {
             let model: Vec<[f64; POWERS]> = (0..ne)
                 .map(|e| defect_polynomial(kappa[e], slope[e], h))
                 .collect();
-            let feedback = self.feedback(set, (h, free.degree), &model, &linearized)?;
+            let linearized = self.solver.linearized()?;
+            let feedback = self.feedback(set, (h, free.degree), &model, linearized)?;
             let model: Vec<[f64; POWERS]> = (0..ne)
                 .map(|e| {
                     let mut p = model[e];
@@ -628,7 +633,7 @@ impl Collocation {
             let start = (&y[..n], &y[n..]);
             let ground = (row.ground)(k as f64 * part);
             free.fill_linear(row.system, start, ground, row.scale, part);
-            let (solved, _) = solve(
+            let (solved, _) = self.solver.solve(
                 row,
                 &self.elements,
                 &self.sets[set],

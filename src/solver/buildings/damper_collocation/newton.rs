@@ -86,9 +86,9 @@ impl Collocation {
     }
 }
 
-/// A solve's end (u, u̇), its nodes' forces X, and its equations
-/// linearized there.
-pub(super) type Solved = (Vec<f64>, DVector<f64>, Linearized);
+/// A solve's end (u, u̇) and its nodes' forces X; its equations
+/// linearized there are the solver's ([`Newton::linearized`]).
+pub(super) type Solved = (Vec<f64>, DVector<f64>);
 
 /// The LU factors of the collocated equations' Jacobian at a solve's last
 /// iterate, and each element's Δu, Δv at the nodes there (row i·E + e).
@@ -99,7 +99,7 @@ pub(super) struct Linearized {
 }
 
 /// LU factors with partial pivoting of a Jacobian of order S·E: on the
-/// stack for one to four elements (a damper and up to three contacts of
+/// stack for one to five elements (a damper and up to four contacts of
 /// the improved Kelvin law closed), else on the heap. nalgebra's LU is
 /// one algorithm over every size, so all give the same factors and
 /// solutions to the bit. (The variants differ in size by design: boxing
@@ -111,6 +111,7 @@ pub(super) enum Factors {
     Two(Fixed<{ 2 * STAGES }>),
     Three(Fixed<{ 3 * STAGES }>),
     Four(Fixed<{ 4 * STAGES }>),
+    Five(Fixed<{ 5 * STAGES }>),
     Any(LU<f64, Dyn, Dyn>),
 }
 
@@ -118,7 +119,7 @@ pub(super) enum Factors {
 type Fixed<const M: usize> = LU<f64, Const<M>, Const<M>>;
 
 /// The factors of the Jacobian at `rows` ([`fill`]) of the fixed order D.
-fn fixed<D>(nodes: &AtNodes, rows: &[Linear]) -> LU<f64, D, D>
+fn fixed<D>(nodes: &AtNodes, rows: &Rows) -> LU<f64, D, D>
 where
     D: DimName + DimMin<D, Output = D>,
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
@@ -144,14 +145,15 @@ where
 impl Factors {
     /// The factors of the Jacobian at the linearized rows `rows`
     /// ([`fill`]).
-    fn of(nodes: &AtNodes, rows: &[Linear]) -> Factors {
-        match rows.len() / STAGES {
+    fn of(nodes: &AtNodes, rows: &Rows) -> Factors {
+        match rows.diagonal.len() / STAGES {
             1 => Factors::One(fixed(nodes, rows)),
             2 => Factors::Two(fixed(nodes, rows)),
             3 => Factors::Three(fixed(nodes, rows)),
             4 => Factors::Four(fixed(nodes, rows)),
+            5 => Factors::Five(fixed(nodes, rows)),
             _ => {
-                let m = rows.len();
+                let m = rows.diagonal.len();
                 let mut jacobian = DMatrix::zeros(m, m);
                 fill(nodes, rows, jacobian.as_mut_slice());
                 Factors::Any(jacobian.lu())
@@ -166,17 +168,53 @@ impl Factors {
             Factors::Two(lu) => solve_fixed(lu, b),
             Factors::Three(lu) => solve_fixed(lu, b),
             Factors::Four(lu) => solve_fixed(lu, b),
+            Factors::Five(lu) => solve_fixed(lu, b),
             Factors::Any(lu) => lu.solve_mut(b),
         }
     }
 }
 
-/// One row of the collocated equations linearized at an iterate: a
-/// damper's ψ'(X_r), a product's (h, δ̇_r, δ_r).
-#[derive(Debug, Clone, Copy)]
-enum Linear {
-    Damper(f64),
-    Product(f64, f64, f64),
+/// The collocated equations linearized at an iterate, row by row
+/// (r = i·E + e): the diagonal term, a damper's ψ'(X_r) or a product's 1,
+/// and a product's (h, δ̇_r, δ_r). The elements are the dampers first
+/// ([`super::elements_into`]), so that each node's block of E rows is
+/// `dampers` damper rows and then product rows, and [`fill`] writes each
+/// kind's entries in a loop of its own, with no branch per entry.
+#[derive(Debug, Default)]
+struct Rows {
+    dampers: usize,
+    elements: usize,
+    diagonal: Vec<f64>,
+    coefficient: Vec<f64>,
+    rate: Vec<f64>,
+    stretch: Vec<f64>,
+}
+
+impl Rows {
+    /// Rows for the elements `elements` at the nodes, their values zero.
+    fn reset(&mut self, elements: &[Element]) {
+        let ne = elements.len();
+        self.elements = ne;
+        self.dampers = elements
+            .iter()
+            .take_while(|el| matches!(el.law, Law::Damper { .. }))
+            .count();
+        debug_assert!(
+            elements[self.dampers..]
+                .iter()
+                .all(|el| matches!(el.law, Law::Product { .. })),
+            "the dampers come first"
+        );
+        for v in [
+            &mut self.diagonal,
+            &mut self.coefficient,
+            &mut self.rate,
+            &mut self.stretch,
+        ] {
+            v.clear();
+            v.resize(STAGES * ne, 0.0);
+        }
+    }
 }
 
 /// The Jacobian of the collocated equations, column by column:
@@ -187,131 +225,209 @@ enum Linear {
 /// ```
 ///
 /// Δu_r[ℓ_q], Δv_r[ℓ_q] the responses at the nodes ([`AtNodes`]), into
-/// `jacobian` (m × m, column-major).
-fn fill(nodes: &AtNodes, rows: &[Linear], jacobian: &mut [f64]) {
-    let m = rows.len();
+/// `jacobian` (m × m, column-major): in each node's block of rows the
+/// dampers' entries, then the products', then the diagonal.
+fn fill(nodes: &AtNodes, rows: &Rows, jacobian: &mut [f64]) {
+    let m = rows.diagonal.len();
+    let (ne, nd) = (rows.elements, rows.dampers);
     let columns = jacobian.chunks_exact_mut(m);
     let strokes = nodes.stroke.as_slice().chunks_exact(m);
     let rates = nodes.rate.as_slice().chunks_exact(m);
     for (q, ((column, stroke), rate)) in columns.zip(strokes).zip(rates).enumerate() {
-        for (((j, row), s), v) in column.iter_mut().zip(rows).zip(stroke).zip(rate) {
-            *j = match *row {
-                Linear::Damper(_) => -v,
-                Linear::Product(coefficient, rate, stretch) => {
-                    -coefficient * (rate * s + stretch * v)
-                }
-            };
+        let blocks = column
+            .chunks_exact_mut(ne)
+            .zip(stroke.chunks_exact(ne))
+            .zip(rate.chunks_exact(ne));
+        let linear = rows
+            .coefficient
+            .chunks_exact(ne)
+            .zip(rows.rate.chunks_exact(ne))
+            .zip(rows.stretch.chunks_exact(ne));
+        for (((block, stroke), rate), ((coefficient, speed), stretch)) in blocks.zip(linear) {
+            let (dampers, products) = block.split_at_mut(nd);
+            for (j, v) in dampers.iter_mut().zip(rate) {
+                *j = -v;
+            }
+            let product = stroke[nd..]
+                .iter()
+                .zip(&rate[nd..])
+                .zip(&coefficient[nd..])
+                .zip(&speed[nd..])
+                .zip(&stretch[nd..]);
+            for (j, ((((s, v), c), r), d)) in products.iter_mut().zip(product) {
+                *j = -c * (r * s + d * v);
+            }
         }
-        column[q] += match rows[q] {
-            Linear::Damper(slope) => slope,
-            Linear::Product(..) => 1.0,
-        };
+        column[q] += rows.diagonal[q];
     }
 }
 
-/// The nodes' forces over a step of length h on the free motion `free`
-/// (from y0), by Newton's method: the end (u, u̇) when it converged (to
-/// 1e-15 of each damper's force at the motion's speed, 1e-14 of each
-/// product), and the iterations taken.
-pub(super) fn solve(
-    row: &Row,
-    elements: &[Element],
-    responses: &Responses,
-    (free, y0): (&Series, &[f64]),
-    h: f64,
-    guess: Option<DVector<f64>>,
-) -> (Option<Solved>, usize) {
-    let n = y0.len() / 2;
-    let ne = elements.len();
-    let m = STAGES * ne;
-    let nodes = AtNodes::of(responses, elements, (h, free.degree));
-    // The free motion's Δu, Δv at the nodes.
-    let mut free_stroke = DVector::zeros(m);
-    let mut free_rate = DVector::zeros(m);
-    let mut p = [0.0; ORDER + 1];
-    for (i, &c) in NODES.iter().enumerate() {
-        poly::powers(c * h, &mut p);
-        for (e, el) in elements.iter().enumerate() {
-            let (ul, ur) = (free.displacement(el.left), free.displacement(el.right));
-            let (vl, vr) = (free.velocity(el.left), free.velocity(el.right));
-            free_stroke[i * ne + e] = poly::dot(ul, &p) - poly::dot(ur, &p);
-            free_rate[i * ne + e] = poly::dot(vl, &p) - poly::dot(vr, &p);
-        }
+/// `v` of length m, its values left as they are where it has that
+/// length already (they are written over before they are read).
+fn sized(v: &mut DVector<f64>, m: usize) {
+    if v.len() != m {
+        *v = DVector::zeros(m);
     }
-    // First guess: each force as at the start.
-    let (u0, v0) = y0.split_at(n);
-    let x = guess.unwrap_or_else(|| {
-        let start = values(elements, u0, v0);
-        DVector::from_fn(m, |r, _| start[r % ne])
-    });
-    let mut x = x;
-    // Each damper's bound on Newton's update: 1e-15 of its force at the
-    // motion's speed, and never below the smallest normal number. A
-    // vanishing damper (c = 1e-300) would otherwise ask for updates among
-    // the subnormals, whose precision falls with their size, so that
-    // whether Newton converges would rest on rounding; a force that small
-    // moves no floor.
-    let bounds: Vec<f64> = elements
-        .iter()
-        .map(|el| match el.law {
+}
+
+/// The buffers of the Newton solves of a run's collocated steps, reused
+/// from solve to solve, and the last solve's linearization.
+#[derive(Default)]
+pub(super) struct Newton {
+    /// The responses at the step's nodes.
+    nodes: AtNodes,
+    /// The free motion's Δu, Δv at the nodes.
+    free_stroke: DVector<f64>,
+    free_rate: DVector<f64>,
+    /// Each damper's bound on Newton's update (zero for a product).
+    bounds: Vec<f64>,
+    /// The residual, then the update.
+    delta: DVector<f64>,
+    rows: Rows,
+    /// The equations linearized at the last converged solve's iterate.
+    last: Option<Linearized>,
+}
+
+impl Newton {
+    /// The equations linearized at the last solve's converged iterate
+    /// (None where it failed).
+    pub(super) fn linearized(&self) -> Option<&Linearized> {
+        self.last.as_ref()
+    }
+
+    /// The nodes' forces over a step of length h on the free motion
+    /// `free` (from y0), by Newton's method: the end (u, u̇) when it
+    /// converged (to 1e-15 of each damper's force at the motion's speed,
+    /// 1e-14 of each product), and the iterations taken.
+    pub(super) fn solve(
+        &mut self,
+        row: &Row,
+        elements: &[Element],
+        responses: &Responses,
+        (free, y0): (&Series, &[f64]),
+        h: f64,
+        guess: Option<DVector<f64>>,
+    ) -> (Option<Solved>, usize) {
+        let n = y0.len() / 2;
+        let ne = elements.len();
+        let m = STAGES * ne;
+        let nodes = &mut self.nodes;
+        nodes.refill(responses, elements, (h, free.degree));
+        // The free motion's Δu, Δv at the nodes.
+        let (free_stroke, free_rate) = (&mut self.free_stroke, &mut self.free_rate);
+        sized(free_stroke, m);
+        sized(free_rate, m);
+        let mut p = [0.0; ORDER + 1];
+        for (i, &c) in NODES.iter().enumerate() {
+            poly::powers(c * h, &mut p);
+            for (e, el) in elements.iter().enumerate() {
+                let (ul, ur) = (free.displacement(el.left), free.displacement(el.right));
+                let (vl, vr) = (free.velocity(el.left), free.velocity(el.right));
+                free_stroke[i * ne + e] = poly::dot(ul, &p) - poly::dot(ur, &p);
+                free_rate[i * ne + e] = poly::dot(vl, &p) - poly::dot(vr, &p);
+            }
+        }
+        // First guess: each force as at the start.
+        let (u0, v0) = y0.split_at(n);
+        let mut x = guess.unwrap_or_else(|| {
+            let start = values(elements, u0, v0);
+            DVector::from_fn(m, |r, _| start[r % ne])
+        });
+        // Each damper's bound on Newton's update: 1e-15 of its force at the
+        // motion's speed, and never below the smallest normal number. A
+        // vanishing damper (c = 1e-300) would otherwise ask for updates
+        // among the subnormals, whose precision falls with their size, so
+        // that whether Newton converges would rest on rounding; a force
+        // that small moves no floor.
+        self.bounds.clear();
+        self.bounds.extend(elements.iter().map(|el| match el.law {
             Law::Damper { damping, exponent } => {
                 (1e-15 * damping * row.scale.1.powf(exponent)).max(f64::MIN_POSITIVE)
             }
             Law::Product { .. } => 0.0,
-        })
-        .collect();
-    let mut delta = DVector::zeros(m);
-    let (mut stroke, mut rate) = (DVector::zeros(m), DVector::zeros(m));
-    // Each row's law linearized at the iterate: a damper's ψ'(X) on the
-    // diagonal, a product's (h, δ̇, δ) and 1 there.
-    let mut rows = vec![Linear::Damper(0.0); m];
-    for iteration in 1..=NEWTON {
-        nodes.stroke.mul_to(&x, &mut stroke);
-        stroke += &free_stroke;
-        nodes.rate.mul_to(&x, &mut rate);
-        rate += &free_rate;
-        for r in 0..m {
-            match elements[r % ne].law {
-                Law::Damper { damping, exponent } => {
-                    // ψ(F) = α F ψ'(F): one power for both.
-                    let slope = dashpot_velocity_slope(damping, exponent, x[r]);
-                    delta[r] = exponent * x[r] * slope - rate[r];
-                    rows[r] = Linear::Damper(slope);
-                }
-                Law::Product { gap, coefficient } => {
-                    let stretch = stroke[r] - gap;
-                    delta[r] = x[r] - coefficient * stretch * rate[r];
-                    rows[r] = Linear::Product(coefficient, rate[r], stretch);
+        }));
+        let delta = &mut self.delta;
+        sized(delta, m);
+        // The last solve's buffers, written over.
+        let (mut stroke, mut rate) = match self.last.take() {
+            Some(last) => (last.stroke, last.rate),
+            None => (DVector::zeros(m), DVector::zeros(m)),
+        };
+        sized(&mut stroke, m);
+        sized(&mut rate, m);
+        // Each row's law linearized at the iterate: a damper's ψ'(X) on
+        // the diagonal, a product's (h, δ̇, δ) and 1 there.
+        let rows = &mut self.rows;
+        rows.reset(elements);
+        for iteration in 1..=NEWTON {
+            nodes.stroke.mul_to(&x, &mut stroke);
+            stroke += &*free_stroke;
+            nodes.rate.mul_to(&x, &mut rate);
+            rate += &*free_rate;
+            for i in 0..STAGES {
+                for (e, el) in elements.iter().enumerate() {
+                    let r = i * ne + e;
+                    match el.law {
+                        Law::Damper { damping, exponent } => {
+                            // ψ(F) = α F ψ'(F): one power for both.
+                            let slope = dashpot_velocity_slope(damping, exponent, x[r]);
+                            delta[r] = exponent * x[r] * slope - rate[r];
+                            rows.diagonal[r] = slope;
+                        }
+                        Law::Product { gap, coefficient } => {
+                            let stretch = stroke[r] - gap;
+                            delta[r] = x[r] - coefficient * stretch * rate[r];
+                            rows.diagonal[r] = 1.0;
+                            rows.coefficient[r] = coefficient;
+                            rows.rate[r] = rate[r];
+                            rows.stretch[r] = stretch;
+                        }
+                    }
                 }
             }
+            let factors = Factors::of(nodes, rows);
+            // The update, the residual solved in place.
+            if !factors.solve_mut(delta) {
+                return (None, iteration);
+            }
+            x -= &*delta;
+            let bounds = &self.bounds;
+            let converged = (0..STAGES).all(|i| {
+                elements.iter().enumerate().all(|(e, el)| {
+                    let r = i * ne + e;
+                    let bound = match el.law {
+                        Law::Damper { .. } => bounds[e],
+                        Law::Product { .. } => 1e-14 * x[r].abs().max(1e-300),
+                    };
+                    delta[r].abs() <= bound
+                })
+            });
+            if converged {
+                // (u, u̇) side by side.
+                let mut u = vec![0.0; 2 * n];
+                let (eu, ev) = u.split_at_mut(n);
+                free.state(h, eu, ev);
+                let w = responses.weights(ne, |e| collocated(&x, ne, e, h));
+                responses.add_state(&w, (h, free.degree), (eu, ev));
+                self.last = Some(Linearized {
+                    jacobian: factors,
+                    stroke,
+                    rate,
+                });
+                return (Some((u, x)), iteration);
+            }
         }
-        let factors = Factors::of(&nodes, &rows);
-        // The update, the residual solved in place.
-        if !factors.solve_mut(&mut delta) {
-            return (None, iteration);
-        }
-        x -= &delta;
-        let converged = (0..m).all(|r| {
-            let bound = match elements[r % ne].law {
-                Law::Damper { .. } => bounds[r % ne],
-                Law::Product { .. } => 1e-14 * x[r].abs().max(1e-300),
-            };
-            delta[r].abs() <= bound
-        });
-        if converged {
-            // (u, u̇) side by side.
-            let mut u = vec![0.0; 2 * n];
-            let (eu, ev) = u.split_at_mut(n);
-            free.state(h, eu, ev);
-            let w = responses.weights(ne, |e| collocated(&x, ne, e, h));
-            responses.add_state(&w, (h, free.degree), (eu, ev));
-            let linearized = Linearized {
-                jacobian: factors,
-                stroke,
-                rate,
-            };
-            return (Some((u, x, linearized)), iteration);
-        }
+        (None, NEWTON)
     }
-    (None, NEWTON)
 }
+
+impl std::fmt::Debug for Newton {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Newton")
+            .field("converged", &self.last.is_some())
+            .finish_non_exhaustive()
+    }
+}
+
+#[cfg(test)]
+mod tests;

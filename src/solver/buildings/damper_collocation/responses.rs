@@ -145,23 +145,40 @@ impl Responses {
     }
 }
 
+impl Default for AtNodes {
+    fn default() -> AtNodes {
+        AtNodes {
+            stroke: DMatrix::zeros(0, 0),
+            rate: DMatrix::zeros(0, 0),
+        }
+    }
+}
+
 impl AtNodes {
     /// The responses to x_f = ℓ_j(s/h) at the nodes c_i h, from the
-    /// responses to s^k: ℓ_j(s/h) = Σ_k ℓ_{j,k} s^k ([`basis`]). Δu is
-    /// made for the contacts' products alone (a damper's law reads Δv
-    /// only; its rows of `stroke` are left zero). The responses are
-    /// summed to the degree `degree` of the step's free motion, as in
-    /// [`Responses::add_state`].
-    pub(super) fn of(
+    /// responses to s^k: ℓ_j(s/h) = Σ_k ℓ_{j,k} s^k ([`basis`]), written
+    /// over the last step's. Δu is made for the contacts' products alone
+    /// (a damper's law reads Δv only; its rows of `stroke` are left zero).
+    /// The responses are summed to the degree `degree` of the step's free
+    /// motion, as in [`Responses::add_state`].
+    pub(super) fn refill(
+        &mut self,
         responses: &Responses,
         elements: &[Element],
         (h, degree): (f64, usize),
-    ) -> AtNodes {
+    ) {
         let ne = elements.len();
         let m = STAGES * ne;
-        let mut stroke = DMatrix::zeros(m, m);
-        let mut rate = DMatrix::zeros(m, m);
+        let (stroke, rate) = (&mut self.stroke, &mut self.rate);
+        for matrix in [&mut *stroke, &mut *rate] {
+            if matrix.shape() == (m, m) {
+                matrix.fill(0.0);
+            } else {
+                *matrix = DMatrix::zeros(m, m);
+            }
+        }
         let bases: [[f64; STAGES]; STAGES] = std::array::from_fn(|j| basis(j, h));
+        let (strokes, rates) = (stroke.as_mut_slice(), rate.as_mut_slice());
         let mut p = [0.0; ORDER + 1];
         let p = &mut p[..=degree.min(ORDER)];
         for (i, &c) in NODES.iter().enumerate() {
@@ -175,14 +192,15 @@ impl AtNodes {
                             Law::Product { .. } => poly::dot(&responses.stroke[row][..p.len()], p),
                         };
                         let dv = poly::dot(&responses.rate[row][..p.len()], p);
+                        // Entry (i·E + e, j·E + f), column-major.
                         for (j, b) in bases.iter().enumerate() {
-                            stroke[(i * ne + e, j * ne + f)] += b[k] * du;
-                            rate[(i * ne + e, j * ne + f)] += b[k] * dv;
+                            let at = (j * ne + f) * m + i * ne + e;
+                            strokes[at] += b[k] * du;
+                            rates[at] += b[k] * dv;
                         }
                     }
                 }
             }
         }
-        AtNodes { stroke, rate }
     }
 }

@@ -64,7 +64,8 @@ fn the_responses_to_powers_of_s_serve_every_step_length() {
     let zero = vec![0.0; n];
     let (mut u, mut v) = (vec![0.0; n], vec![0.0; n]);
     for h in [1e-4, 1.3e-3, 2e-2] {
-        let nodes = AtNodes::of(&cache.sets[set], &cache.elements, (h, ORDER));
+        let mut nodes = AtNodes::default();
+        nodes.refill(&cache.sets[set], &cache.elements, (h, ORDER));
         let largest = nodes.rate.amax();
         for j in 0..STAGES {
             let forcing = Forcing {
