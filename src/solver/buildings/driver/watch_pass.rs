@@ -6,7 +6,9 @@
 //! on the widened hull of its Hermite cubic, straight from the two ends'
 //! stacks, in plain loops over arrays that the compiler turns into vector
 //! operations: the floors' questions read the stacks' rates in place, the
-//! others are gathered first into one array per operand.
+//! storeys' the drifts formed from them in one pass (storey k joins floor
+//! k to floor k − 1 or the ground), the facing pairs' and the gaps' are
+//! gathered first into one array per operand.
 //!
 //! Each question asks whether the rigorous range of q (or of q̇) lies
 //! within limits. On the hull of the control points c ∈ {q0, q0 + d0h/3,
@@ -107,9 +109,9 @@ fn storey_drifts(x: &[f64], grounds: &[f64], out: &mut [f64]) {
     }
 }
 
-/// The questions past the floors' (each storey's peak and event, each
-/// facing pair's peak, each gap), one array per operand: each one's q (or
-/// q̇) and its rate at both ends, its error bound, offset and limits.
+/// The questions past the floors' and the storeys' (each facing pair's
+/// peak, each gap), one array per operand: each one's q and its rate at
+/// both ends, its error bound, offset and limits.
 #[derive(Debug, Clone, Default)]
 struct Questions {
     q0: Vec<f64>,
@@ -138,7 +140,7 @@ impl Questions {
     }
 
     /// Question `j`: ((q0, q̇0), (q1, q̇1)), error, offset, (lower, upper).
-    // Always inline: called once per question and sub-step (26 times a
+    // Always inline: called once per question and sub-step (6 times a
     // map step in block-and-frame), its eight stores cost less than the
     // call that passes them, which a plain hint left out of line.
     #[inline(always)]
