@@ -117,11 +117,10 @@ impl Columns {
     }
 
     /// The sums of [`Columns::rate`], each block's handed to `emit` with the
-    /// index of its first row (all its lanes, the last block's past n
-    /// too), (x_j, y_j)
-    /// read from `values(span)` in the order of j. Without a load every
-    /// block starts from −g in all its lanes, one vector; with one, a full
-    /// block from its b_i as one vector, the last lane by lane.
+    /// index of its first row (all its lanes, the last block's past n too),
+    /// (x_j, y_j) read from `values(span)` in the order of j. Without a
+    /// load every block starts from −g in all its lanes, one vector; with
+    /// one, a full block from its b_i as one vector, the last lane by lane.
     #[inline(always)]
     fn sums<I: Iterator<Item = (f64, f64)>>(
         &self,
