@@ -75,20 +75,19 @@ const TINY_POWER: f64 = 9.332636185032189e-302;
 /// a₀ = a, a₁ = ȧ, a_{k+2} = σ a_k/((k+1)(k+2)) (ä_g = σ a_g on the piece).
 ///
 /// On a record's pieces (lines, σ = 0) σ a_k is already a zero (or a NaN),
-/// which the division leaves as it is: the products alone, without the
-/// chain of divisions, give the same coefficients to the bit.
+/// which the division leaves as it is: the product alone, without the
+/// chain of divisions, gives the same coefficients to the bit.
 pub fn ground_coefficients((a, rate, sigma): (f64, f64, f64)) -> [f64; MAX_ORDER + 1] {
     let mut g = [0.0; MAX_ORDER + 1];
     g[0] = a;
     g[1] = rate;
-    if sigma == 0.0 {
-        for k in 0..MAX_ORDER - 1 {
-            g[k + 2] = sigma * g[k];
-        }
-    } else {
-        for k in 0..MAX_ORDER - 1 {
-            g[k + 2] = sigma * g[k] / ((k + 1) * (k + 2)) as f64;
-        }
+    for k in 0..MAX_ORDER - 1 {
+        let product = sigma * g[k];
+        g[k + 2] = if sigma == 0.0 {
+            product
+        } else {
+            product / ((k + 1) * (k + 2)) as f64
+        };
     }
     g
 }
