@@ -8,6 +8,7 @@ use crate::model::buildings::matrices::RowMatrices;
 use crate::model::buildings::{ContactElement, FloorPair, LinkElement, Row};
 
 use super::damper::Damper;
+use super::sparse::Sparse;
 
 /// One storey: it joins floor `lower` (None: the ground) and floor `upper`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -32,6 +33,11 @@ pub struct Layout {
     pub mass: Vec<f64>,
     /// M⁻¹C (Rayleigh, SPEC §13).
     pub damping: DMatrix<f64>,
+    /// M⁻¹C's rows by their nonzeros (the columns of its transpose, each
+    /// in the order of j): a shear building's Rayleigh damping is
+    /// tridiagonal, so that a sum over a row's nonzeros is its dense sum,
+    /// the zeros adding nothing, at a third of the products or less.
+    pub damping_rows: Sparse,
     pub storeys: Vec<Storey>,
     /// The contact elements' floors and gaps: the joints' own at each floor
     /// pair first, then the bumpers' (SPEC §14, [`Row::contact_elements`]).
@@ -99,6 +105,7 @@ impl Layout {
             facing: row.facing_floors(),
             dofs: n,
             mass,
+            damping_rows: Sparse::of(&damping.transpose()),
             damping,
             storeys,
             pairs,

@@ -90,7 +90,8 @@ impl Run<'_> {
         let n = layout.dofs;
         let mut p = RowEnergy::default();
         for i in 0..n {
-            let cv: f64 = (0..n).map(|j| layout.damping[(i, j)] * v[j]).sum();
+            let row = layout.damping_rows.column(i);
+            let cv: f64 = row.iter().map(|&(j, c)| c * v[j]).sum();
             p.damping += layout.mass[i] * v[i] * cv;
             p.input -= layout.mass[i] * v[i] * ag;
         }
