@@ -1087,18 +1087,19 @@ impl Run<'_> {
         for i in 0..n {
             let env = &mut self.envelope;
             // |u_i| and |u̇_i| cannot pass their peaks on the step ([`Reach`]),
-            // or their polynomials' bounds decide.
-            let u = series.displacement(i);
-            if self.reach.magnitude(&[(i, 1.0)]) > env.displacement[i]
-                && poly::magnitude_bound(u, end) > env.displacement[i]
-            {
-                raise(&mut env.displacement[i], poly::max_abs(u, end));
+            // or their polynomials' bounds decide (on a copy of the floor's
+            // coefficients, taken only then).
+            if self.reach.magnitude(&[(i, 1.0)]) > env.displacement[i] {
+                series.displacement_into(i, &mut c);
+                if poly::magnitude_bound(&c, end) > env.displacement[i] {
+                    raise(&mut env.displacement[i], poly::max_abs(&c, end));
+                }
             }
-            let v = series.velocity(i);
-            if self.reach.speed(i) > env.velocity[i]
-                && poly::magnitude_bound(v, end) > env.velocity[i]
-            {
-                raise(&mut env.velocity[i], poly::max_abs(v, end));
+            if self.reach.speed(i) > env.velocity[i] {
+                series.velocity_into(i, &mut c);
+                if poly::magnitude_bound(&c, end) > env.velocity[i] {
+                    raise(&mut env.velocity[i], poly::max_abs(&c, end));
+                }
             }
             series.absolute_acceleration(i, &mut c);
             if poly::magnitude_bound(&c, end) > env.acceleration[i] {
