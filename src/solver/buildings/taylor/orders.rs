@@ -19,6 +19,8 @@
 //! coefficients in the same order as from blocks: the numbers are the same
 //! to the bit.
 
+use std::cell::OnceCell;
+
 use super::{ORDER, Series};
 
 /// Entries of a column whose chains [`Series::state`] runs side by side.
@@ -34,12 +36,14 @@ pub(super) struct Floors {
 
 impl Clone for Series {
     /// The orders up to the degree, not the buffer past them; the
-    /// workspace starts empty.
+    /// floor-by-floor copies are made again if asked for (a clone is
+    /// usually written to, which drops them), and the workspace starts
+    /// empty.
     fn clone(&self) -> Series {
         Series {
             n: self.n,
             orders: self.held().to_vec(),
-            floors: self.floors.clone(),
+            floors: OnceCell::new(),
             ground: self.ground,
             radius: self.radius,
             degree: self.degree,
@@ -194,36 +198,51 @@ impl Series {
     }
 
     /// Coefficients of Σ_i (wu_i u_i + wv_i u̇_i) over the given (dof,
-    /// weight) terms: each term added to every order in turn, the terms in
-    /// the order given (u's, then u̇'s), each floor's coefficient read 2n
-    /// apart.
+    /// weight) terms: each order's sum from 0, the terms added in the
+    /// order given (u's, then u̇'s), each floor's coefficient read from
+    /// the order's column. The usual two terms (a drift, a gap, a pair's
+    /// Δu or Δv) go in one pass, ((0 + w₁x₁) + w₂x₂) for each order, the
+    /// sum a term at a time forms.
     pub fn combine(&self, du: &[(usize, f64)], dv: &[(usize, f64)], out: &mut Vec<f64>) {
         out.clear();
-        out.resize(self.degree + 1, 0.0);
         let (n, held) = (self.n, self.held());
-        for (at, w) in du
-            .iter()
-            .copied()
-            .chain(dv.iter().map(|&(i, w)| (n + i, w)))
-        {
-            for (o, column) in out.iter_mut().zip(held.chunks_exact(2 * n)) {
-                *o += w * column[at];
+        // Term t as (its entry in a column, its weight).
+        let term = |t: usize| match du.get(t) {
+            Some(&term) => term,
+            None => {
+                let (i, w) = dv[t - du.len()];
+                (n + i, w)
+            }
+        };
+        let columns = held.chunks_exact((2 * n).max(1));
+        match du.len() + dv.len() {
+            2 => {
+                let ((a, wa), (b, wb)) = (term(0), term(1));
+                out.extend(columns.map(|c| 0.0 + wa * c[a] + wb * c[b]));
+            }
+            count => {
+                out.resize(self.degree + 1, 0.0);
+                for (at, w) in (0..count).map(term) {
+                    for (o, column) in out.iter_mut().zip(columns.clone()) {
+                        *o += w * column[at];
+                    }
+                }
             }
         }
     }
 
     /// Coefficients of the absolute acceleration ü_i + ü_g (one order
-    /// fewer): (k + 1) u̇_{k+1} + a_k up to the degree, then the ground's
-    /// alone to [`ORDER`].
+    /// fewer): k u̇_k + a_{k−1} for k = 1 … [`Series::degree`], then the
+    /// ground's alone to [`ORDER`].
     pub fn absolute_acceleration(&self, i: usize, out: &mut Vec<f64>) {
         out.clear();
-        // u̇_1 … u̇_K of the floor, then k u̇_k + a_{k−1} in place.
         let (n, held) = (self.n, self.held());
-        out.extend(held.chunks_exact(2 * n).skip(1).map(|column| column[n + i]));
-        let rates = out.iter_mut().zip(1..).zip(&self.ground);
-        for ((x, k), &a) in rates {
-            *x = k as f64 * *x + a;
-        }
+        let rates = held[2 * n..].chunks_exact((2 * n).max(1)).zip(&self.ground);
+        out.extend(
+            rates
+                .enumerate()
+                .map(|(j, (column, &a))| (j + 1) as f64 * column[n + i] + a),
+        );
         let top = ORDER.max(self.degree);
         out.extend(self.ground[self.degree..top].iter().map(|&a| 0.0 + a));
     }
@@ -277,26 +296,46 @@ mod tests {
     }
 
     /// A combination of floors is the sum of their blocks term by term in
-    /// the order given (the same bits); the absolute acceleration is
+    /// the order given, to the bit, with one, two (on u, on u̇, on both)
+    /// and three terms; the absolute acceleration is
     /// k u̇_k + a_{k−1}, then the ground's own coefficients to
     /// [`super::ORDER`].
     #[test]
     fn combinations_and_accelerations_are_the_blocks_sums() {
         let (series, _, _) = quintics();
         let width = series.degree + 1;
-        let (du, dv) = ([(2, 1.5), (0, -0.75)], [(1, 0.25)]);
+        // Sum of the terms' blocks, a term at a time from 0.
+        type Terms<'a> = &'a [(usize, f64)];
+        let blockwise = |du: Terms, dv: Terms| -> Vec<f64> {
+            let mut sum = vec![0.0; width];
+            for (terms, rates) in [(du, false), (dv, true)] {
+                for &(i, w) in terms {
+                    let block = if rates {
+                        series.velocity(i)
+                    } else {
+                        series.displacement(i)
+                    };
+                    for (s, x) in sum.iter_mut().zip(block) {
+                        *s += w * x;
+                    }
+                }
+            }
+            sum
+        };
         let mut got = Vec::new();
-        series.combine(&du, &dv, &mut got);
-        let want: Vec<f64> = (0..width)
-            .map(|k| {
-                let mut sum = 0.0;
-                sum += 1.5 * series.displacement(2)[k];
-                sum += -0.75 * series.displacement(0)[k];
-                sum += 0.25 * series.velocity(1)[k];
-                sum
-            })
-            .collect();
-        assert_eq!(got, want);
+        let cases: [(Terms, Terms); 5] = [
+            (&[(2, 1.5), (0, -0.75)], &[(1, 0.25)]),
+            (&[(2, 1.0), (1, -1.0)], &[]),
+            (&[], &[(0, 1.0), (2, -1.0)]),
+            (&[(1, -3.0)], &[(1, 0.5)]),
+            (&[(0, 2.0)], &[]),
+        ];
+        for (du, dv) in cases {
+            series.combine(du, dv, &mut got);
+            let want = blockwise(du, dv);
+            let bits = |x: &[f64]| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&got), bits(&want), "{du:?} {dv:?}");
+        }
         series.absolute_acceleration(1, &mut got);
         assert_eq!(got.len(), super::ORDER);
         for (k, &a) in got.iter().enumerate() {
