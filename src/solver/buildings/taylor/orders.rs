@@ -246,6 +246,35 @@ impl Series {
         let top = ORDER.max(self.degree);
         out.extend(self.ground[self.degree..top].iter().map(|&a| 0.0 + a));
     }
+
+    /// [`Series::absolute_acceleration`] of every floor into `out`, floor
+    /// by floor in blocks of the returned width ([`ORDER`] or the degree,
+    /// if higher), each block the same to the bit: a step's search for
+    /// peaks asks every floor's, and one pass over the orders forms them
+    /// all, k u̇_k + a_{k−1} across a column at a time.
+    pub fn absolute_accelerations(&self, out: &mut Vec<f64>) -> usize {
+        let (n, degree) = (self.n, self.degree);
+        let width = ORDER.max(degree);
+        // Every entry is written below: what a longer buffer held is
+        // overwritten, not cleared.
+        out.resize(n * width, 0.0);
+        let rates = self.held()[2 * n..]
+            .chunks_exact((2 * n).max(1))
+            .zip(&self.ground);
+        for (j, (column, &a)) in rates.enumerate() {
+            let rate = (j + 1) as f64;
+            for (block, &v) in out.chunks_exact_mut(width).zip(&column[n..]) {
+                block[j] = rate * v + a;
+            }
+        }
+        let ground = &self.ground[degree..width];
+        for block in out.chunks_exact_mut(width) {
+            for (x, &a) in block[degree..].iter_mut().zip(ground) {
+                *x = 0.0 + a;
+            }
+        }
+        width
+    }
 }
 
 #[cfg(test)]
@@ -299,7 +328,8 @@ mod tests {
     /// the order given, to the bit, with one, two (on u, on u̇, on both)
     /// and three terms; the absolute acceleration is
     /// k u̇_k + a_{k−1}, then the ground's own coefficients to
-    /// [`super::ORDER`].
+    /// [`super::ORDER`], the same floor by floor and for all floors in
+    /// one pass.
     #[test]
     fn combinations_and_accelerations_are_the_blocks_sums() {
         let (series, _, _) = quintics();
@@ -335,6 +365,12 @@ mod tests {
             let want = blockwise(du, dv);
             let bits = |x: &[f64]| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
             assert_eq!(bits(&got), bits(&want), "{du:?} {dv:?}");
+        }
+        let mut every = Vec::new();
+        let width = series.absolute_accelerations(&mut every);
+        for i in 0..series.n {
+            series.absolute_acceleration(i, &mut got);
+            assert_eq!(every[i * width..(i + 1) * width], got[..], "floor {i}");
         }
         series.absolute_acceleration(1, &mut got);
         assert_eq!(got.len(), super::ORDER);
