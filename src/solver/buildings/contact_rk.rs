@@ -473,15 +473,10 @@ pub fn series(
             v[at + k] = (k + 1) as f64 * q.c[k + 1];
         }
     }
-    Series {
-        n,
-        u,
-        v,
-        ground: ground_coefficients(ground),
-        radius: step.h,
-        degree: 5,
-        ..Series::default()
-    }
+    let mut series = Series::from_floors(n, 5, (&u, &v));
+    series.ground = ground_coefficients(ground);
+    series.radius = step.h;
+    series
 }
 
 /// f = law(δ, δ̇) on [0, end] as the quintic through six equally spaced

@@ -463,15 +463,9 @@ impl Collocation {
             if wr == 0.0 {
                 continue;
             }
-            let blocks = series
-                .u
-                .chunks_exact(ORDER + 1)
-                .zip(series.v.chunks_exact(ORDER + 1));
-            let into = motion
-                .u
-                .chunks_exact_mut(width)
-                .zip(motion.v.chunks_exact_mut(width));
-            for ((mu, mv), (ru, rv)) in into.zip(blocks) {
+            for k in 0..width.min(series.degree + 1) {
+                let (ru, rv) = series.order(k);
+                let (mu, mv) = motion.order_mut(k);
                 for (m, r) in mu.iter_mut().zip(ru) {
                     *m += wr * r;
                 }

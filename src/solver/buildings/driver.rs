@@ -252,6 +252,8 @@ struct Run<'a> {
     point_acceleration: Vec<f64>,
     /// How far each floor moves over the current series step.
     reach: Reach,
+    /// Every floor's absolute acceleration polynomial on a series step.
+    accelerations: Vec<f64>,
     /// The last Taylor step's series, its vectors reused by the next.
     spare_series: Series,
     /// The quantities of the quiet test ([`watched`]), and each as read
@@ -411,6 +413,7 @@ fn drive(
         force: Vec::new(),
         point_acceleration: Vec::new(),
         reach: Reach::default(),
+        accelerations: Vec::new(),
         spare_series: Series::default(),
         watch: probes.iter().map(Probe::watch).collect(),
         probes,
@@ -1084,29 +1087,33 @@ impl Run<'_> {
         if !reached {
             self.reach.set(series, end);
         }
+        // Every floor's |ü + ü_g| polynomial, formed in one pass.
+        let mut accelerations = std::mem::take(&mut self.accelerations);
+        let width = series.absolute_accelerations(&mut accelerations);
         for i in 0..n {
             let env = &mut self.envelope;
             // |u_i| and |u̇_i| cannot pass their peaks on the step ([`Reach`]),
-            // or their polynomials' bounds decide.
-            let u = series.displacement(i);
-            if self.reach.magnitude(&[(i, 1.0)]) > env.displacement[i]
-                && poly::magnitude_bound(u, end) > env.displacement[i]
-            {
-                raise(&mut env.displacement[i], poly::max_abs(u, end));
+            // or their polynomials' bounds decide (on a copy of the floor's
+            // coefficients, taken only then).
+            if self.reach.magnitude(&[(i, 1.0)]) > env.displacement[i] {
+                series.displacement_into(i, &mut c);
+                if poly::magnitude_bound(&c, end) > env.displacement[i] {
+                    raise(&mut env.displacement[i], poly::max_abs(&c, end));
+                }
             }
-            let v = series.velocity(i);
-            if self.reach.speed(i) > env.velocity[i]
-                && poly::magnitude_bound(v, end) > env.velocity[i]
-            {
-                raise(&mut env.velocity[i], poly::max_abs(v, end));
+            if self.reach.speed(i) > env.velocity[i] {
+                series.velocity_into(i, &mut c);
+                if poly::magnitude_bound(&c, end) > env.velocity[i] {
+                    raise(&mut env.velocity[i], poly::max_abs(&c, end));
+                }
             }
-            series.absolute_acceleration(i, &mut c);
-            if poly::magnitude_bound(&c, end) > env.acceleration[i] {
+            let c = &accelerations[i * width..(i + 1) * width];
+            if poly::magnitude_bound(c, end) > env.acceleration[i] {
                 let Some(piece) = rk else {
-                    raise(&mut env.acceleration[i], poly::max_abs(&c, end));
+                    raise(&mut env.acceleration[i], poly::max_abs(c, end));
                     continue;
                 };
-                let (at, _) = poly::argmax_abs(&c, end);
+                let (at, _) = poly::argmax_abs(c, end);
                 if at > 0.0 && at < end {
                     let (mut us, mut vs) = (vec![0.0; n], vec![0.0; n]);
                     series.state(at, &mut us, &mut vs);
@@ -1117,6 +1124,7 @@ impl Run<'_> {
                 }
             }
         }
+        self.accelerations = accelerations;
         link_peaks::peaks_on(
             &self.layout.links,
             series,

@@ -86,6 +86,50 @@ pub fn bound(c: &[f64], s: f64) -> f64 {
     head + chains * power_below_four(s, rest.len())
 }
 
+/// [`bound`] of many polynomials side by side, Σ_k |c_k| s^k of each lane
+/// into `out`: `c` holds c_0 of every lane, then c_1, …, each as wide as
+/// `out`; `chains` is a buffer. Each lane runs [`bound`]'s four chains in
+/// s⁴ and its head in s, the same operations in the same order (the same
+/// bound to the bit), the lanes together: four orders' coefficients lie
+/// side by side as the four chains' lanes, one multiply-add across them
+/// all. A step's reach asks it of every floor's u and u̇ at once.
+pub fn bound_lanes(c: &[f64], s: f64, chains: &mut Vec<f64>, out: &mut [f64]) {
+    let lanes = out.len();
+    if lanes == 0 {
+        return;
+    }
+    let s2 = s * s;
+    let s4 = s2 * s2;
+    chains.clear();
+    chains.resize(4 * lanes, 0.0);
+    // c_r … c_{len−1} in blocks of four from the top, as `rchunks_exact`
+    // takes them: chain j holds each block's j-th, at j·lanes + lane.
+    let mut blocks = c.rchunks_exact(4 * lanes);
+    for block in &mut blocks {
+        for (a, &x) in chains.iter_mut().zip(block) {
+            *a = *a * s4 + x.abs();
+        }
+    }
+    out.fill(0.0);
+    let rest = blocks.remainder();
+    for column in rest.rchunks_exact(lanes) {
+        for (a, &x) in out.iter_mut().zip(column) {
+            *a = *a * s + x.abs();
+        }
+    }
+    let power = power_below_four(s, rest.len() / lanes);
+    let (a0, a1, a2, a3) = (
+        &chains[..lanes],
+        &chains[lanes..2 * lanes],
+        &chains[2 * lanes..3 * lanes],
+        &chains[3 * lanes..],
+    );
+    for (l, head) in out.iter_mut().enumerate() {
+        let chains = a0[l] + s * (a1[l] + s * (a2[l] + s * a3[l]));
+        *head += chains * power;
+    }
+}
+
 /// s^r for r < 4 as [`f64::powi`] forms it (by repeated squaring: 1, s,
 /// s², s·s²), to the bit, without its call into the runtime's loop.
 #[inline]
@@ -548,6 +592,40 @@ mod tests {
                     want.to_bits(),
                     "{s}^{r}: {got} against {want}"
                 );
+            }
+        }
+    }
+
+    /// Side by side, each lane's bound is [`bound`] of its own
+    /// coefficients to the bit: for every length from 0 to 41 (each
+    /// remainder mod 4, the series' degrees), seven lanes of mixed signs
+    /// and magnitudes (a zero, a subnormal, a NaN among them), and s from
+    /// 0 to past 1.
+    #[test]
+    fn bounds_side_by_side_are_each_lanes_bound() {
+        const LANES: usize = 7;
+        let coefficient = |lane: usize, k: usize| match (lane, k) {
+            (5, 3) => f64::NAN,
+            (6, _) => 5e-324 * k as f64,
+            _ => ((lane * 7 + k * 13) as f64).sin() * 10f64.powi((k % 9) as i32 - 4),
+        };
+        let mut chains = Vec::new();
+        for len in 0..=41 {
+            let columns: Vec<Vec<f64>> = (0..len)
+                .map(|k| (0..LANES).map(|lane| coefficient(lane, k)).collect())
+                .collect();
+            for s in [0.0, 1e-3, 0.37, 1.0, 2.5] {
+                let mut out = [7.0; LANES];
+                bound_lanes(&columns.concat(), s, &mut chains, &mut out);
+                for (lane, got) in out.iter().enumerate() {
+                    let c: Vec<f64> = (0..len).map(|k| coefficient(lane, k)).collect();
+                    let want = bound(&c, s);
+                    assert_eq!(
+                        got.to_bits(),
+                        want.to_bits(),
+                        "len {len}, lane {lane}, s {s}"
+                    );
+                }
             }
         }
     }

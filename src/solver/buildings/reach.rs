@@ -34,60 +34,61 @@ pub type Terms<'a> = &'a [(usize, f64)];
 const ROUNDING: f64 = 1e-12;
 
 /// R_u and R_v of every floor over [0, s] of one step, with u_0 and u̇_0
-/// (where they start), reused from step to step.
+/// (where they start), reused from step to step: each as the series holds
+/// an order ([`super::taylor::orders`]), the n floors' u, then their u̇.
 #[derive(Debug, Clone, Default)]
 pub struct Reach {
-    u: Vec<f64>,
-    v: Vec<f64>,
-    start_u: Vec<f64>,
-    start_v: Vec<f64>,
+    n: usize,
+    reach: Vec<f64>,
+    start: Vec<f64>,
+    /// [`poly::bound_lanes`]' chains.
+    chains: Vec<f64>,
 }
 
 impl Reach {
-    /// The reaches of every floor of `series` over [0, s].
+    /// The reaches of every floor of `series` over [0, s]: R = s Σ_{k≥1}
+    /// |c_k| s^{k−1} by [`poly::bound`]'s chains on c_1 … c_K, every
+    /// floor's u and u̇ side by side.
     pub fn set(&mut self, series: &Series, s: f64) {
         let n = series.n;
-        let reach = |c: &[f64]| {
-            if c.len() < 2 {
-                0.0
-            } else {
-                poly::bound(&c[1..], s) * s
-            }
-        };
-        self.u.clear();
-        self.u.extend((0..n).map(|i| reach(series.displacement(i))));
-        self.v.clear();
-        self.v.extend((0..n).map(|i| reach(series.velocity(i))));
-        self.start_u.clear();
-        self.start_u
-            .extend((0..n).map(|i| series.displacement(i)[0]));
-        self.start_v.clear();
-        self.start_v.extend((0..n).map(|i| series.velocity(i)[0]));
+        self.n = n;
+        self.start.clear();
+        self.start.extend_from_slice(series.column(0));
+        self.reach.clear();
+        self.reach.resize(2 * n, 0.0);
+        if series.degree == 0 {
+            return;
+        }
+        let c = &series.held()[2 * n..];
+        poly::bound_lanes(c, s, &mut self.chains, &mut self.reach);
+        for r in &mut self.reach {
+            *r *= s;
+        }
     }
 
     /// An upper bound over the step of q = Σ w_i u_i + Σ w'_i u̇_i + c
     /// (terms on u, terms on u̇, the constant), from its value at the start.
     pub fn upper(&self, (on_u, on_v): (Terms, Terms), constant: f64) -> f64 {
         let (mut start, mut size, mut reach) = (constant, constant.abs(), 0.0);
-        for &(i, w) in on_u {
-            let x = w * self.start_u[i];
+        // u_i at i, u̇_i at n + i.
+        let n = self.n;
+        let terms = on_u
+            .iter()
+            .copied()
+            .chain(on_v.iter().map(|&(i, w)| (n + i, w)));
+        for (at, w) in terms {
+            let x = w * self.start[at];
             start += x;
             size += x.abs();
-            reach += w.abs() * self.u[i];
-        }
-        for &(i, w) in on_v {
-            let x = w * self.start_v[i];
-            start += x;
-            size += x.abs();
-            reach += w.abs() * self.v[i];
+            reach += w.abs() * self.reach[at];
         }
         start + reach + ROUNDING * (size + reach)
     }
 
     /// An upper bound over the step of |u̇_i|.
     pub fn speed(&self, i: usize) -> f64 {
-        let start = self.start_v[i].abs();
-        start + self.v[i] + ROUNDING * (start + self.v[i])
+        let (start, reach) = (self.start[self.n + i].abs(), self.reach[self.n + i]);
+        start + reach + ROUNDING * (start + reach)
     }
 
     /// An upper bound over the step of |q|, q as in [`Reach::upper`] with
@@ -111,6 +112,61 @@ mod tests {
     use crate::solver::buildings::system::System;
     use crate::solver::buildings::taylor::Series;
 
+    /// Block-and-frame at rest in its configuration, and `count` states
+    /// of a few centimetres and tens of centimetres per second, signs
+    /// mixed, each with a ground (a, ȧ, 0): a deterministic spread.
+    type State = (Vec<f64>, Vec<f64>, (f64, f64, f64));
+    fn scattered(count: u32) -> (Layout, System, Vec<State>) {
+        let row = buildings::load("block-and-frame").expect("shipped");
+        let layout = Layout::of(&row);
+        let n = layout.dofs;
+        let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
+        let system = System::of(&layout, &config);
+        let states = (1..=count)
+            .map(|seed| {
+                let wave = |i: usize, k: u32| ((i as f64 + 1.0) * 0.7 * f64::from(seed + k)).sin();
+                let u: Vec<f64> = (0..n).map(|i| 0.03 * wave(i, 0)).collect();
+                let v: Vec<f64> = (0..n).map(|i| 0.4 * wave(i, 11)).collect();
+                (u, v, (3.0 * wave(0, 5), 200.0 * wave(1, 7), 0.0))
+            })
+            .collect();
+        (layout, system, states)
+    }
+
+    /// Every floor's reach, taken side by side, is the one of its own
+    /// polynomial, Σ_{k≥1}|c_k| s^k = [`poly::bound`] of c_1 … c_K times s,
+    /// to the bit, and its start is c_0: block-and-frame from scattered
+    /// states, at the fixed order and at the lower orders of shorter steps
+    /// (every degree mod 4 among them).
+    #[test]
+    fn every_floors_reach_is_its_polynomials_bound() {
+        let (layout, system, states) = scattered(19);
+        let n = layout.dofs;
+        let mut reach = Reach::default();
+        let mut series = Series::default();
+        let mut degrees = std::collections::BTreeSet::new();
+        for (u, v, ground) in states {
+            let fixed = Series::new(&system, &u, &v, ground, (0.03, 0.4));
+            for part in [1.0, 0.5, 0.3, 0.15, 0.05, 0.02, 0.01, 3e-3, 1e-3, 1e-4] {
+                let want = part * fixed.radius;
+                series.fill_over(&system, (&u, &v), ground, (0.03, 0.4), want);
+                for (series, s) in [(&fixed, want), (&series, want)] {
+                    degrees.insert(series.degree);
+                    reach.set(series, s);
+                    for i in 0..n {
+                        for (at, c) in [(i, series.displacement(i)), (n + i, series.velocity(i))] {
+                            let want = poly::bound(&c[1..], s) * s;
+                            assert_eq!(reach.reach[at].to_bits(), want.to_bits(), "floor {i}");
+                            assert_eq!(reach.start[at].to_bits(), c[0].to_bits());
+                        }
+                    }
+                }
+            }
+        }
+        let remainders: std::collections::BTreeSet<usize> = degrees.iter().map(|d| d % 4).collect();
+        assert_eq!(remainders.len(), 4, "degrees {degrees:?}");
+    }
+
     /// Block-and-frame from scattered states, on steps up to the series'
     /// radius: every drift and relative displacement, sampled densely on
     /// its polynomial, stays within the reach's bounds, which are at least
@@ -118,20 +174,11 @@ mod tests {
     /// passes over is one the polynomial's search would find nothing in).
     #[test]
     fn the_reach_bounds_every_quantity_and_its_polynomial_bound() {
-        let row = buildings::load("block-and-frame").expect("shipped");
-        let layout = Layout::of(&row);
+        let (layout, system, states) = scattered(39);
         let n = layout.dofs;
-        let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
-        let system = System::of(&layout, &config);
         let mut reach = Reach::default();
         let mut checked = 0;
-        for seed in 1..40u32 {
-            // A deterministic spread of states of a few centimetres and
-            // tens of centimetres per second, signs mixed.
-            let wave = |i: usize, k: u32| ((i as f64 + 1.0) * 0.7 * f64::from(seed + k)).sin();
-            let u: Vec<f64> = (0..n).map(|i| 0.03 * wave(i, 0)).collect();
-            let v: Vec<f64> = (0..n).map(|i| 0.4 * wave(i, 11)).collect();
-            let ground = (3.0 * wave(0, 5), 200.0 * wave(1, 7), 0.0);
+        for (u, v, ground) in states {
             let series = Series::new(&system, &u, &v, ground, (0.03, 0.4));
             let end = series.radius.min(0.01);
             reach.set(&series, end);

@@ -32,10 +32,15 @@
 //! coefficients fall only like ρ^{−k}, the radius is ρ·TOLERANCE^{1/K}
 //! (0.2ρ at K = 24, 0.38ρ at K = 40), and only more orders lengthen its steps.
 
+pub mod orders;
+
+use std::cell::OnceCell;
+
 use super::damper::Damper;
 use super::poly;
 use super::power_series::DamperPowers;
 use super::system::{Product, System, padded};
+use orders::Floors;
 
 /// Highest order kept.
 pub const ORDER: usize = 24;
@@ -46,8 +51,6 @@ pub const MAX_ORDER: usize = 40;
 const MIN_ORDER: usize = 8;
 /// Relative size of the last terms at the end of a step.
 pub const TOLERANCE: f64 = 1e-17;
-/// Floors whose state [`Series::state`] evaluates side by side.
-const STATE_LANES: usize = 4;
 
 /// Whether x·L^k > [`TOLERANCE`] is certain from p, L^k formed by a
 /// running product, so that the stop test of [`Series::fill_over`] need
@@ -108,14 +111,18 @@ pub struct Forcing {
     pub force: [f64; 6],
 }
 
-/// Coefficients of u and u̇, floor by floor (each a block of
-/// [`Series::degree`] + 1, lowest order first), so that one floor's
-/// polynomial is one slice.
-#[derive(Debug, Clone)]
+/// The coefficients of u and u̇ ([`orders`]: order by order, every
+/// floor's side by side, as the recurrence forms them).
+#[derive(Debug)]
 pub struct Series {
     pub n: usize,
-    pub u: Vec<f64>,
-    pub v: Vec<f64>,
+    /// Order k's 2n coefficients at [2nk, 2n(k + 1)): u_k of every floor,
+    /// then u̇_k; orders 0 to [`Series::degree`] are the series' (the
+    /// buffer may run on past them, left from a longer fill).
+    orders: Vec<f64>,
+    /// Floor by floor copies of `orders`, made on a reader's first ask
+    /// for a floor's polynomial as one slice ([`Series::displacement`]).
+    floors: OnceCell<Floors>,
     /// The ground's coefficients a_k.
     pub ground: [f64; MAX_ORDER + 1],
     /// Where the series stays within [`TOLERANCE`].
@@ -132,14 +139,11 @@ pub struct Series {
 }
 
 /// The buffers of [`Series::fill`]'s recurrence, kept so that a run's
-/// thousands of steps allocate nothing: the coefficients order by order
-/// ((u_k, u̇_k) of every floor side by side, so that a row of (M⁻¹K, M⁻¹C)
-/// reads both of a floor's in one place), ü's coefficient being summed,
+/// thousands of steps allocate nothing: ü's coefficient being summed,
 /// each product's δ_k and δ̇_k, and each damper's powers. They hold
 /// nothing between fills: a clone starts empty.
 #[derive(Debug, Default)]
 pub struct Workspace {
-    state: Vec<[f64; 2]>,
     acc: Vec<f64>,
     delta: Vec<f64>,
     rate_d: Vec<f64>,
@@ -158,9 +162,6 @@ impl Workspace {
     /// the buffers are grown, never cleared.
     fn size(&mut self, n: usize, products: usize, top: usize) {
         let w = top + 1;
-        if self.state.len() < w * n {
-            self.state.resize(w * n, [0.0; 2]);
-        }
         for (buffer, len) in [
             (&mut self.acc, padded(n)),
             (&mut self.delta, products * w),
@@ -177,8 +178,8 @@ impl Default for Series {
     fn default() -> Series {
         Series {
             n: 0,
-            u: Vec::new(),
-            v: Vec::new(),
+            orders: Vec::new(),
+            floors: OnceCell::new(),
             ground: [0.0; MAX_ORDER + 1],
             radius: 0.0,
             degree: 0,
@@ -287,13 +288,12 @@ impl Series {
     /// to [`ORDER`], or with `want` to the order that carries it over
     /// [0, want].
     ///
-    /// The recurrence runs order by order on the [`Workspace`]'s columns
-    /// (all floors' (u_k, u̇_k) side by side), so that u_{k+1} = u̇_k/(k+1),
-    /// each row of (M⁻¹K, M⁻¹C) and the norms of the test run over
-    /// contiguous memory; the
-    /// coefficients are then written out floor by floor. Each sum is taken
-    /// in the same order as floor by floor: the series is the same to the
-    /// bit.
+    /// The recurrence runs order by order on the series' own columns
+    /// ([`orders`]: all floors' u_k, then all their u̇_k), so that
+    /// u_{k+1} = u̇_k/(k+1), each row of (M⁻¹K, M⁻¹C) and the norms of the
+    /// test run over contiguous memory, and the coefficients stay where
+    /// they are formed. Each sum is taken in the same order as floor by
+    /// floor: the series is the same to the bit.
     #[allow(clippy::too_many_arguments)]
     fn fill_with(
         &mut self,
@@ -308,35 +308,41 @@ impl Series {
         let top = if want.is_some() { MAX_ORDER } else { ORDER };
         let n = u0.len();
         let g = ground_coefficients(ground);
-        let work = &mut self.work;
+        let w = top + 1;
+        // The floors' copies are of the last fill's orders.
+        self.floors.take();
+        let (orders, work) = (&mut self.orders, &mut self.work);
+        // Grown, never cleared: every order up to the one reached is
+        // written before it is read.
+        if orders.len() < 2 * n * w {
+            orders.resize(2 * n * w, 0.0);
+        }
         work.size(n, products.len(), top);
         work.powers.size(dampers.len(), top);
         let Workspace {
-            state,
             acc,
             delta,
             rate_d,
             powers,
         } = work;
-        for ((x, &u), &v) in state[..n].iter_mut().zip(u0).zip(v0) {
-            *x = [u, v];
-        }
+        orders[..n].copy_from_slice(u0);
+        orders[n..2 * n].copy_from_slice(v0);
         // max_i |u_k,i| / scale_u against max_i |u̇_k,i| / scale_v (a NaN
         // passed over, as f64::max does, without its test for one).
-        let norm = |column: &[[f64; 2]]| {
-            let (mut nu, mut nv) = (0.0f64, 0.0f64);
-            for &[u, v] in column {
-                let (u, v) = (u.abs(), v.abs());
-                if u > nu {
-                    nu = u;
+        let norm = |column: &[f64]| {
+            let (u, v) = column.split_at(n);
+            let largest = |x: &[f64]| {
+                let mut m = 0.0f64;
+                for x in x {
+                    let x = x.abs();
+                    if x > m {
+                        m = x;
+                    }
                 }
-                if v > nv {
-                    nv = v;
-                }
-            }
-            (nu / scale.0).max(nv / scale.1)
+                m
+            };
+            (largest(u) / scale.0).max(largest(v) / scale.1)
         };
-        let w = top + 1;
         let mut degree = top;
         // Whether the test below reads order k's norm (as order k or k + 1
         // of its pair): only with `want`, and from MIN_ORDER − 1 on; the
@@ -344,23 +350,27 @@ impl Series {
         let tested = |k: usize| want.is_some() && k + 1 >= MIN_ORDER;
         // The norm of order k, kept from the step before (the test asks for
         // orders k and k + 1).
-        let mut last = if tested(0) { norm(&state[..n]) } else { 0.0 };
+        let mut last = if tested(0) {
+            norm(&orders[..2 * n])
+        } else {
+            0.0
+        };
         // want^k by a running product, for [`surely_above`].
         let mut power = 1.0;
         for k in 0..top {
-            let (done, next) = state.split_at_mut((k + 1) * n);
-            let (column, next) = (&done[k * n..], &mut next[..n]);
+            let (done, next) = orders.split_at_mut(2 * n * (k + 1));
+            let (uk, vk) = done[2 * n * k..].split_at(n);
+            let next = &mut next[..2 * n];
             // ü's coefficient before the contacts: −a_k − Σ_j ((M⁻¹K)_ij u_k,j
             // + (M⁻¹C)_ij u̇_k,j), plus M⁻¹q at k = 0, rows in vector blocks.
             let load = (k == 0).then_some(&system.load[..]);
             system
                 .columns
-                .rate_of_pairs(column, load, g[k], &mut acc[..padded(n)]);
+                .rate_into((uk, vk), load, g[k], &mut acc[..padded(n)]);
             for (pi, p) in products.iter().enumerate() {
                 let row = pi * w;
-                let ([ul, vl], [ur, vr]) = (column[p.left], column[p.right]);
-                delta[row + k] = ul - ur - if k == 0 { p.gap } else { 0.0 };
-                rate_d[row + k] = vl - vr;
+                delta[row + k] = uk[p.left] - uk[p.right] - if k == 0 { p.gap } else { 0.0 };
+                rate_d[row + k] = vk[p.left] - vk[p.right];
                 // Σ_j δ_j δ̇_{k−j}.
                 let conv = poly::product_coefficient(&delta[row..=row + k], &rate_d[row..=row + k]);
                 acc[p.left] -= p.left_rate * conv;
@@ -373,14 +383,18 @@ impl Series {
                 }
             }
             for (di, d) in dampers.iter().enumerate() {
-                let rate = column[d.left][1] - column[d.right][1];
+                let rate = vk[d.left] - vk[d.right];
                 let f = powers.force(di, d, k, rate);
                 acc[d.left] -= d.left_rate * f;
                 acc[d.right] += d.right_rate * f;
             }
             let inv = 1.0 / (k + 1) as f64;
-            for ((x, &[_, v]), &a) in next.iter_mut().zip(column).zip(&acc[..n]) {
-                *x = [v * inv, a * inv];
+            let (un, vn) = next.split_at_mut(n);
+            for (x, &v) in un.iter_mut().zip(vk) {
+                *x = v * inv;
+            }
+            for (x, &a) in vn.iter_mut().zip(&acc[..n]) {
+                *x = a * inv;
             }
             let now = if tested(k + 1) { norm(next) } else { 0.0 };
             // The last two terms within the tolerance at `want`: enough.
@@ -399,7 +413,7 @@ impl Series {
         let radius = [degree - 1, degree]
             .iter()
             .map(|&k| {
-                let nk = norm(&state[k * n..(k + 1) * n]);
+                let nk = norm(&orders[2 * n * k..2 * n * (k + 1)]);
                 if nk > 0.0 {
                     (TOLERANCE / nk).powf(1.0 / k as f64)
                 } else {
@@ -413,25 +427,14 @@ impl Series {
             Some(want) if degree < top => radius.max(want),
             _ => radius,
         };
-        // Floor by floor, blocks of degree + 1 coefficients: each order's
-        // column read in turn and scattered to its place in every block.
-        let width = degree + 1;
-        let (u, v) = (&mut self.u, &mut self.v);
-        u.resize(n * width, 0.0);
-        v.resize(n * width, 0.0);
-        for (k, column) in state[..width * n].chunks_exact(n).enumerate() {
-            for (i, &[x, y]) in column.iter().enumerate() {
-                u[i * width + k] = x;
-                v[i * width + k] = y;
-            }
-        }
         // Each damper's force to the degree written out: its order
         // `degree`, one past the last the motion's recurrence needed, from
         // that order's Δv, then F_k = c_l σ w_k block by block.
         self.forces.clear();
-        let column = &state[degree * n..width * n];
+        let width = degree + 1;
+        let vd = &orders[2 * n * degree + n..2 * n * width];
         for (di, d) in dampers.iter().enumerate() {
-            powers.force(di, d, degree, column[d.left][1] - column[d.right][1]);
+            powers.force(di, d, degree, vd[d.left] - vd[d.right]);
             powers.write_forces(di, d, width, &mut self.forces);
         }
         self.n = n;
@@ -446,91 +449,6 @@ impl Series {
     pub fn damper_force(&self, index: usize) -> Option<&[f64]> {
         let width = self.degree + 1;
         self.forces.get(index * width..(index + 1) * width)
-    }
-
-    /// The coefficients of u_i, orders 0 to [`Series::degree`].
-    #[inline]
-    pub fn displacement(&self, i: usize) -> &[f64] {
-        &self.u[i * (self.degree + 1)..(i + 1) * (self.degree + 1)]
-    }
-
-    /// The coefficients of u̇_i, orders 0 to [`Series::degree`].
-    #[inline]
-    pub fn velocity(&self, i: usize) -> &[f64] {
-        &self.v[i * (self.degree + 1)..(i + 1) * (self.degree + 1)]
-    }
-
-    /// (u, u̇) at s, each coefficient block by Horner's rule. The floors go
-    /// `STATE_LANES` (4) at a time, their 2 · STATE_LANES chains advancing
-    /// order by order side by side: one chain waits on each multiply-add in
-    /// turn, so a floor alone runs at the adder's latency, and side by side
-    /// at its throughput. Each chain is the same Horner's rule: the same
-    /// state to the bit.
-    pub fn state(&self, s: f64, u: &mut [f64], v: &mut [f64]) {
-        let width = self.degree + 1;
-        let (blocks_u, blocks_v) = (&self.u[..self.n * width], &self.v[..self.n * width]);
-        let lanes = STATE_LANES * width;
-        let (chunks_u, chunks_v) = (blocks_u.chunks_exact(lanes), blocks_v.chunks_exact(lanes));
-        let (rest_u, rest_v) = (chunks_u.remainder(), chunks_v.remainder());
-        let (out_u, out_v) = (
-            u.chunks_exact_mut(STATE_LANES),
-            v.chunks_exact_mut(STATE_LANES),
-        );
-        for (((cu, cv), ou), ov) in chunks_u.zip(chunks_v).zip(out_u).zip(out_v) {
-            let (mut a, mut b) = ([0.0; STATE_LANES], [0.0; STATE_LANES]);
-            for k in (0..width).rev() {
-                for j in 0..STATE_LANES {
-                    a[j] = a[j] * s + cu[j * width + k];
-                    b[j] = b[j] * s + cv[j * width + k];
-                }
-            }
-            ou.copy_from_slice(&a);
-            ov.copy_from_slice(&b);
-        }
-        let done = self.n - self.n % STATE_LANES;
-        for (j, (cu, cv)) in rest_u
-            .chunks_exact(width)
-            .zip(rest_v.chunks_exact(width))
-            .enumerate()
-        {
-            let (mut a, mut b) = (0.0, 0.0);
-            for k in (0..width).rev() {
-                a = a * s + cu[k];
-                b = b * s + cv[k];
-            }
-            u[done + j] = a;
-            v[done + j] = b;
-        }
-    }
-
-    /// Coefficients of Σ_i (wu_i u_i + wv_i u̇_i) over the given (dof, weight) terms.
-    pub fn combine(&self, du: &[(usize, f64)], dv: &[(usize, f64)], out: &mut Vec<f64>) {
-        out.clear();
-        out.resize(self.degree + 1, 0.0);
-        for &(i, w) in du {
-            for (o, &x) in out.iter_mut().zip(self.displacement(i)) {
-                *o += w * x;
-            }
-        }
-        for &(i, w) in dv {
-            for (o, &x) in out.iter_mut().zip(self.velocity(i)) {
-                *o += w * x;
-            }
-        }
-    }
-
-    /// Coefficients of the absolute acceleration ü_i + ü_g (one order fewer).
-    pub fn absolute_acceleration(&self, i: usize, out: &mut Vec<f64>) {
-        out.clear();
-        // (k + 1) u̇_{k+1} + a_k up to the degree, then the ground's alone.
-        let rates = self.velocity(i)[1..].iter().zip(1..);
-        out.extend(
-            rates
-                .zip(&self.ground)
-                .map(|((&v, k), &a)| k as f64 * v + a),
-        );
-        let top = ORDER.max(self.degree);
-        out.extend(self.ground[self.degree..top].iter().map(|&a| 0.0 + a));
     }
 }
 
@@ -625,10 +543,9 @@ mod tests {
         assert!(fresh.degree < MAX_ORDER, "degree {}", fresh.degree);
         assert_eq!(reused.degree, fresh.degree);
         assert_eq!(reused.radius.to_bits(), fresh.radius.to_bits());
-        assert_eq!(reused.u, fresh.u);
-        assert_eq!(reused.v, fresh.v);
+        assert_eq!(reused.held(), fresh.held());
         let clone = reused.clone();
-        assert_eq!((clone.u, clone.v), (fresh.u, fresh.v));
+        assert_eq!(clone.held(), fresh.held());
     }
 
     /// The state at s, taken four floors side by side, is each floor's
@@ -663,7 +580,7 @@ mod tests {
     /// Every order of the series is the recurrence of the module's opening,
     /// summed row by row on the nonzeros of (M⁻¹K, M⁻¹C) ([`System::row`])
     /// with the improved Kelvin product's convolution, to the bit: the
-    /// columns' layout and the scatter to floors change no coefficient.
+    /// columns' layout, kept as the series holds it, changes no coefficient.
     /// At order 0 that sum is ü of the equation of motion at the start
     /// ([`System::acceleration`]).
     #[test]

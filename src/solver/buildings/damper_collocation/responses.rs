@@ -41,17 +41,19 @@ pub(super) struct AtNodes {
 /// coefficient by coefficient; the one above the series' order is left
 /// out, as the series itself leaves out its own.
 pub(super) fn integrated(previous: &Series, k: usize) -> Series {
-    let width = previous.degree + 1;
     let scale = k as f64;
     let mut response = previous.clone();
-    for i in 0..previous.n {
-        let u = previous.displacement(i);
-        let at = i * width;
-        response.u[at] = 0.0;
-        for j in 1..width {
-            response.u[at + j] = scale * u[j - 1] / j as f64;
+    for j in 0..=previous.degree {
+        let (ru, rv) = response.order_mut(j);
+        match j.checked_sub(1) {
+            Some(below) => {
+                for (r, &u) in ru.iter_mut().zip(previous.order(below).0) {
+                    *r = scale * u / j as f64;
+                }
+            }
+            None => ru.fill(0.0),
         }
-        for (v, &u) in response.v[at..at + width].iter_mut().zip(u) {
+        for (v, &u) in rv.iter_mut().zip(previous.order(j).0) {
             *v = scale * u;
         }
     }
@@ -135,11 +137,11 @@ impl Responses {
             if wr == 0.0 {
                 continue;
             }
-            for (x, c) in u.iter_mut().zip(series.u.chunks_exact(ORDER + 1)) {
-                *x += wr * poly::dot(&c[..p.len()], p);
+            for (i, x) in u.iter_mut().enumerate() {
+                *x += wr * poly::dot(&series.displacement(i)[..p.len()], p);
             }
-            for (x, c) in v.iter_mut().zip(series.v.chunks_exact(ORDER + 1)) {
-                *x += wr * poly::dot(&c[..p.len()], p);
+            for (i, x) in v.iter_mut().enumerate() {
+                *x += wr * poly::dot(&series.velocity(i)[..p.len()], p);
             }
         }
     }

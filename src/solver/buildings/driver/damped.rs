@@ -89,7 +89,7 @@ impl Run<'_> {
         let mut series = std::mem::take(&mut self.spare_series);
         let start = (&self.u[..], &self.v[..]);
         series.fill_damped(&self.system, start, ground, scale, (rem, dampers));
-        let finite = series.u.iter().chain(&series.v).all(|x| x.is_finite());
+        let finite = series.held().iter().all(|x| x.is_finite());
         let mut reach = series.radius.min(stiffest);
         for force in series.forces.chunks_exact(series.degree + 1) {
             let k = series.degree;

@@ -13,7 +13,7 @@
 //! (x, y) = (u, u̇), (u̇, ü), (ü, u⃛) and b_i = (M⁻¹q)_i − a_g, −ȧ_g, −σa_g;
 //! each order k of the series ([`super::super::taylor`]) needs the same
 //! with (x, y) = (u_k, u̇_k) and b_i = (M⁻¹q)_i − a_0 at k = 0, −a_k above
-//! ([`Columns::rate_of_pairs`]).
+//! ([`Columns::rate_into`]).
 //! Row by row on the nonzeros ([`super::System::row`]), each r_i is a short
 //! serial sum with an index per term; here a block of [`LANES`] rows goes
 //! column by column, its LANES sums together. A zero entry subtracts a
@@ -43,7 +43,7 @@ pub struct Columns {
 }
 
 /// n rounded up to whole blocks of [`LANES`] rows: the length of a buffer
-/// into which [`Columns::rate_of_pairs`] stores every block whole.
+/// into which [`Columns::rate_into`] stores every block whole.
 pub fn padded(n: usize) -> usize {
     n.next_multiple_of(LANES)
 }
@@ -96,18 +96,23 @@ impl Columns {
         out.truncate(n);
     }
 
-    /// [`Columns::rate`] of (x_j, y_j) held side by side as `xy[j]`, into
-    /// `out[..n]`: a Taylor coefficient's column of the series
-    /// ([`super::super::taylor`]), whose rows are the same sums. Where
-    /// `out` reaches past n to the end of the last block of [`LANES`] rows
-    /// ([`padded`]), that block's lanes are stored whole, as every other
-    /// block's (a store of known length, not a copy of n mod LANES), and
-    /// its lanes past n hold no row.
-    pub fn rate_of_pairs(&self, xy: &[[f64; 2]], load: Option<&[f64]>, g: f64, out: &mut [f64]) {
+    /// [`Columns::rate`] into `out[..n]`: a Taylor coefficient's column of
+    /// the series ([`super::super::taylor`]), whose rows are the same sums.
+    /// Where `out` reaches past n to the end of the last block of [`LANES`]
+    /// rows ([`padded`]), that block's lanes are stored whole, as every
+    /// other block's (a store of known length, not a copy of n mod LANES),
+    /// and its lanes past n hold no row.
+    pub fn rate_into(
+        &self,
+        (x, y): (&[f64], &[f64]),
+        load: Option<&[f64]>,
+        g: f64,
+        out: &mut [f64],
+    ) {
         let n = self.dofs;
-        let xy = &xy[..n];
+        let (x, y) = (&x[..n], &y[..n]);
         self.sums(
-            |span| xy[span].iter().map(|&[x, y]| (x, y)),
+            |span| x[span.clone()].iter().copied().zip(y[span].iter().copied()),
             (load, g),
             |start, s| match out.get_mut(start..start + LANES) {
                 Some(lanes) => lanes.copy_from_slice(s),
@@ -200,8 +205,8 @@ mod tests {
     proptest! {
         /// On random sparse M⁻¹K, M⁻¹C of 1 to 13 floors the blocks give
         /// the row-wise sum on the nonzeros bit for bit (but the sign of
-        /// a zero), with and without a load, from (x, y) as two slices
-        /// and as pairs side by side.
+        /// a zero), with and without a load, into a growing vector and
+        /// into a buffer of fixed length.
         #[test]
         fn the_blocks_give_the_sum_on_the_nonzeros_bit_for_bit(
             ([k, c], [x, y, load], g) in case(),
@@ -227,15 +232,13 @@ mod tests {
                 // Equal as numbers: bit for bit but the sign of a zero.
                 prop_assert!(g == w, "{} against {}", g, w);
             }
-            // The same (x_j, y_j) side by side, as the series holds them,
-            // into a buffer of n and into one past the blocks' end: the
+            // Into a buffer of n and into one past the blocks' end: the
             // first n the same sums; past n, only the last block's lanes
             // may be written, and only where the buffer holds the block.
-            let xy: Vec<[f64; 2]> = x.iter().zip(&y).map(|(&x, &y)| [x, y]).collect();
             let blocks = super::padded(n);
             for len in [n, blocks + 3] {
                 let mut pairs = vec![7.0; len];
-                Columns::of(&k, &c).rate_of_pairs(&xy, load, g, &mut pairs);
+                Columns::of(&k, &c).rate_into((&x, &y), load, g, &mut pairs);
                 for (p, w) in pairs.iter().zip(&want) {
                     prop_assert!(p == w, "{} against {}", p, w);
                 }
