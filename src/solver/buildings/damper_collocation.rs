@@ -459,19 +459,16 @@ impl Collocation {
         // step to the series' tolerance.
         let width = free.degree + 1;
         let mut motion = free.clone();
+        // Both series hold their orders in the same columns, so that the
+        // orders they share are one run of memory in each.
         for (series, &wr) in responses.series.iter().zip(&w) {
             if wr == 0.0 {
                 continue;
             }
-            for k in 0..width.min(series.degree + 1) {
-                let (ru, rv) = series.order(k);
-                let (mu, mv) = motion.order_mut(k);
-                for (m, r) in mu.iter_mut().zip(ru) {
-                    *m += wr * r;
-                }
-                for (m, r) in mv.iter_mut().zip(rv) {
-                    *m += wr * r;
-                }
+            let shared = width.min(series.degree + 1);
+            let r = &series.held()[..2 * series.n * shared];
+            for (m, r) in motion.orders_mut(shared).iter_mut().zip(r) {
+                *m += wr * r;
             }
         }
         motion.radius = h;

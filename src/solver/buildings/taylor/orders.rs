@@ -82,6 +82,15 @@ impl Series {
         &self.orders[..2 * self.n * (self.degree + 1)]
     }
 
+    /// Orders 0 to `count` − 1 as one slice to write, in the layout of
+    /// the module's opening (the floor-by-floor copies, if made, are
+    /// dropped).
+    #[inline]
+    pub fn orders_mut(&mut self, count: usize) -> &mut [f64] {
+        self.floors.take();
+        &mut self.orders[..2 * self.n * count]
+    }
+
     /// Order k's 2n coefficients: u_k of every floor, then u̇_k.
     #[inline]
     pub fn column(&self, k: usize) -> &[f64] {
