@@ -188,7 +188,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
     /// of the pair with f at its end, its error estimate, and as
     /// its dense output the line from y0 to y1 (its own series left in the
     /// cache where `dense`); None where it does not apply or its Newton's
-    /// method fails.
+    /// method fails ([`Collocation::step`]).
     fn collocated(
         &self,
         (y0, _): (&Vec<f64>, &Vec<f64>),
@@ -410,12 +410,15 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
     /// on the motion: Newton's method s ← s − g/ġ, with g and ġ from a step
     /// retaken to each trial, until the update is a few ulps; then moved
     /// just past the root (g > 0), so that the event is applied on its far
-    /// side, as on the series.
+    /// side, as on the series. Every trial stays within the accepted step
+    /// the event was found on, of length `within`: where ġ is all but zero
+    /// at the root, Newton's update would otherwise leave it (a retake
+    /// a second long is no step of this motion).
     pub fn settle(
         &self,
         start: (&Vec<f64>, &Vec<f64>),
         g: &EventFunction,
-        mut s: f64,
+        (mut s, within): (f64, f64),
         speed: f64,
     ) -> Step<Vec<f64>> {
         let n = start.0.len() / 2;
@@ -427,7 +430,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
         for _ in 0..NEWTON {
             let (gs, rate) = value(&step);
             let ds = -gs / rate;
-            if !ds.is_finite() || rate <= 0.0 || s + ds < 0.0 {
+            if !ds.is_finite() || rate <= 0.0 || s + ds < 0.0 || s + ds > within {
                 break;
             }
             if ds.abs() <= 4.0 * f64::EPSILON * s && gs > 0.0 {
@@ -442,7 +445,11 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
                 break;
             }
             let ds = if rate > 0.0 { -gs / rate } else { 0.0 };
-            s = (s + 2.0 * ds).max(s.next_up().next_up());
+            let next = (s + 2.0 * ds).max(s.next_up().next_up()).min(within);
+            if next <= s {
+                break;
+            }
+            s = next;
             step = self.retake(start, s, speed);
         }
         step
@@ -490,3 +497,6 @@ pub fn force_polynomial(law: &Hertzian, delta: &[f64], rate: &[f64], end: f64) -
     });
     equispaced_quintic(&values, end).c[..=5].to_vec()
 }
+
+#[cfg(test)]
+mod tests;

@@ -827,6 +827,9 @@ impl Run<'_> {
             let ground = (a, rate, piece.sigma);
             // Whether the step is the series with the dampers' forces in it.
             let mut damped = false;
+            // Whether the series is the quintic through a Runge–Kutta
+            // step's ends, not a collocated step's own motion.
+            let mut quintic = false;
             let (series, mut rk) = if by_steps(&self.layout, &self.config) {
                 match self.damped_series(rem, ground, (su, sv)) {
                     Some(series) => {
@@ -834,7 +837,8 @@ impl Run<'_> {
                         (series, None)
                     }
                     None => {
-                        let (series, step) = self.contact_step(piece, rem, ground, (su, sv));
+                        let (series, step, own) = self.contact_step(piece, rem, ground, (su, sv));
+                        quintic = !own;
                         (series, Some(step))
                     }
                 }
@@ -858,7 +862,7 @@ impl Run<'_> {
                     ground_at(piece, t + s).0
                 })
                 .with_collocation(&self.collocation, &ground);
-                *step = contact.settle((y0, f0), g, end, sv);
+                *step = contact.settle((y0, f0), g, (end, step.h), sv);
                 end = step.h;
             }
             #[cfg(test)]
@@ -869,7 +873,7 @@ impl Run<'_> {
             let _ = damped;
             // The events' search left the reach over [0, whole] of this series.
             let reached = events && end == whole;
-            self.peaks_on(&series, end, rk.is_some().then_some(piece), reached);
+            self.peaks_on(&series, end, quintic.then_some(piece), reached);
             if self.energy.is_some() {
                 self.work_on(&series, end);
             }
@@ -937,14 +941,16 @@ impl Run<'_> {
 
     /// One Runge–Kutta step of a Hertz-type contact phase
     /// ([`super::contact_rk`]) from the current state, at most `rem` long,
-    /// as a series on its length, with its start (y, ẏ) and the step.
+    /// as a series on its length, with its start (y, ẏ), the step, and
+    /// whether the series is the step's own (a collocated step's motion)
+    /// rather than the quintic through its ends.
     fn contact_step(
         &mut self,
         piece: &Piece,
         rem: f64,
         ground: (f64, f64, f64),
         scale: (f64, f64),
-    ) -> (Series, Taken) {
+    ) -> (Series, Taken, bool) {
         let t = self.t;
         let at = |s: f64| ground_triple(piece, t + s);
         let contact = Contact::new(&self.layout, &self.config, &self.system, |s| {
@@ -963,11 +969,11 @@ impl Run<'_> {
         let (step, next) = contact.step((&y0, &f0), (guess, rem, 1e-12 * fastest), scale);
         self.next_contact_step = next;
         // A collocated step's own series, else the quintic through its ends.
-        let series = match self.collocation.borrow_mut().last.take() {
-            Some(series) => series,
-            None => contact_rk::series((&y0, &f0), &step, ground),
+        let (series, own) = match self.collocation.borrow_mut().last.take() {
+            Some(series) => (series, true),
+            None => (contact_rk::series((&y0, &f0), &step, ground), false),
         };
-        (series, (y0, f0, step))
+        (series, (y0, f0, step), own)
     }
 
     /// Each event that can happen from the current configuration, with its
@@ -1079,8 +1085,14 @@ impl Run<'_> {
     /// shortest steps (near an event) swamps ü: there the acceleration's
     /// largest point is located on the polynomial and its value taken from
     /// the equation of motion at the interpolated state; the ends are the
-    /// recorded points. With `reached`, the run's reach already holds
-    /// that of `series` over [0, end].
+    /// recorded points. A collocated step's own series is not such a
+    /// quintic (`rk` None): its ü is the linear motion's under the
+    /// collocated forces, where the equation of motion at an interpolated
+    /// state would take a damper's force from the law at its Δv, which
+    /// is ill-conditioned where the damper all but locks (F = c|Δv|^α
+    /// moves by α ε/|Δv| of itself for an error ε in Δv, and Δv is the
+    /// collocation's algebraic part). With `reached`, the run's reach
+    /// already holds that of `series` over [0, end].
     fn peaks_on(&mut self, series: &Series, end: f64, rk: Option<&Piece>, reached: bool) {
         let mut c = std::mem::take(&mut self.buf);
         let n = self.layout.dofs;
