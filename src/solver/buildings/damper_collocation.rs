@@ -139,10 +139,10 @@
 //! where this estimate keeps it within 1.4e-10 (but for α = 0.2 and
 //! c = 1e7, where the run at a hundredth of the tolerance itself stands
 //! 1.4e-8 from the runs at a tenth and at the tolerance, which agree to
-//! 9e-11). Capping the discount at
-//! 10 or 30 times did not hold 1e-9 either (2.2e-9, 2.5e-9); at 3 it did,
-//! for a tenth fewer steps; and counting the rest at a tenth of the
-//! tolerance left the run only a tenth shorter.
+//! 9e-11). Capping the discount at 10 or 30 times did not hold 1e-9
+//! either (2.2e-9, 2.5e-9); at 3 it did, for a tenth fewer steps; and
+//! counting the rest at a tenth of the tolerance left the run only a
+//! tenth shorter.
 //!
 //! **Cost.** A step's free motion is filled to the order that carries it
 //! over the step (not the fixed order's radius), and kept for the steps
