@@ -124,8 +124,9 @@
 //! median 1e-3 of it, 6e-2 at the 90th percentile), and an error ε there
 //! is not carried on as it stands: the damper relaxes it within its
 //! relaxation time τ, leaving ετ in the stroke and the floors' momentum
-//! as it was (measured on the motion itself: 13τ on, 4e-5 of ε is left
-//! and the stroke has moved by ετ to 0.4 %). Counting ε by what it
+//! as it was (measured on the motion itself, the module's test
+//! `a_stiff_damper_relaxes_an_error_in_its_rate`: 13τ on, 4e-5 of ε is
+//! left and the stroke has moved by ετ to 0.4 %). Counting ε by what it
 //! leaves (with τ at |Δv| + |ε|, the law's slope falling as |Δv| grows)
 //! took the run above from 3,630 collocated steps to 2,085 and from 11
 //! to 8.4 times the bare row, each step's true local error still within

@@ -307,3 +307,64 @@ fn the_last_steps_forces_start_newton_near_the_solution() {
         cold.newton
     );
 }
+
+/// A damper stiff over a step forgets an error in its Δv within its
+/// relaxation time: on block-and-frame-retrofit with its damper at
+/// α = 0.35, locked 75 ms after sliding at 0.2 m/s under a constant
+/// ground (Δv = 3.4e-5 m/s, its relaxation time τ = 0.15 ms), Δv is put
+/// off by ε = 1e-3 |Δv| with the floors' momentum kept, and both motions
+/// are carried 2 ms = 13τ on (256 collocated parts of 7.8 µs). At the end
+/// the error left in Δv is below 1e-4 ε (measured 4e-5: what the moved
+/// stroke's springs ask of the damper), the momentum m_A u̇_A + m_B u̇_B is
+/// as it was to 1e-3 of m_A ε (2e-4), and the floors' stroke has moved by
+/// ετ to within 2 % (0.4 %; τ at the start, which moves with Δv). This is
+/// why most of a locked step's error estimate, which lies in Δv, is not
+/// carried on as it stands (the module's doc, "Why the estimate counts
+/// Δv's error as it stands").
+#[test]
+fn a_stiff_damper_relaxes_an_error_in_its_rate() {
+    let (layout, system, dampers) = retrofit();
+    let n = layout.dofs;
+    let (at, sliding) = sliding(&layout, &system, &dampers);
+    let d = dampers[0];
+    let mut cache = Collocation::default();
+    let locked = cache
+        .substepped(&at, &sliding, 0.075, 300)
+        .expect("converges");
+    let rate = d.rate(&locked[n..]);
+    let h = 2e-3;
+    let tau = d.relaxation(rate);
+    assert!(d.stiff(rate, h), "Δv = {rate:e}, τ = {tau:e}");
+    let epsilon = 1e-3 * rate.abs();
+    let sum = d.left_rate + d.right_rate;
+    let (a, b) = (d.left_rate / sum, d.right_rate / sum);
+    let mut off = locked.clone();
+    off[n + d.left] += epsilon * a;
+    off[n + d.right] -= epsilon * b;
+    let parts = 256;
+    let base = cache.substepped(&at, &locked, h, parts).expect("converges");
+    let moved = cache.substepped(&at, &off, h, parts).expect("converges");
+    let diff: Vec<f64> = moved.iter().zip(&base).map(|(x, y)| x - y).collect();
+    let (ma, mb) = (1.0 / d.left_rate, 1.0 / d.right_rate);
+    let left = d.rate(&diff[n..]);
+    let momentum = ma * diff[n + d.left] + mb * diff[n + d.right];
+    let stroke = diff[d.left] - diff[d.right];
+    println!(
+        "Δv = {rate:e}, τ = {tau:e} (part {:e}): Δv's error left {:e} of ε, momentum {:e} of m_A ε, stroke {:e} against ετ = {:e}",
+        h / parts as f64,
+        left / epsilon,
+        momentum / (ma * epsilon),
+        stroke,
+        epsilon * tau
+    );
+    assert!(left.abs() < 1e-4 * epsilon, "Δv's error left: {left:e}");
+    assert!(
+        momentum.abs() < 1e-3 * ma * epsilon,
+        "momentum {momentum:e}"
+    );
+    assert!(
+        (stroke - epsilon * tau).abs() < 0.02 * epsilon * tau,
+        "stroke {stroke:e} against ετ = {:e}",
+        epsilon * tau
+    );
+}
