@@ -168,7 +168,7 @@ mod newton;
 mod nodes;
 mod responses;
 #[cfg(test)]
-mod tests;
+pub(super) mod tests;
 
 use std::collections::HashMap;
 

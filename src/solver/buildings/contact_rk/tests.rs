@@ -1,11 +1,9 @@
 use std::cell::RefCell;
 
 use super::Contact;
-use crate::model::buildings;
 use crate::solver::buildings::config::Config;
 use crate::solver::buildings::damper_collocation::Collocation;
-use crate::solver::buildings::layout::Layout;
-use crate::solver::buildings::system::System;
+use crate::solver::buildings::damper_collocation::tests::retrofit;
 
 /// A collocated step so short that its basis in powers of 1/h overflows
 /// (h = 1e-79: h⁻⁷ is past f64's range) is no step: [`Contact::retake`],
@@ -18,14 +16,11 @@ use crate::solver::buildings::system::System;
 /// Δv = 0.2 m/s under a constant ground.
 #[test]
 fn a_step_too_short_for_the_collocation_falls_back() {
-    let row = buildings::load_with("block-and-frame-retrofit", &["link1.exponent=0.35".into()])
-        .expect("shipped");
-    let layout = Layout::of(&row);
+    let (layout, system, dampers) = retrofit();
     let config = Config::at_rest(layout.storeys.len(), layout.pairs.len());
-    let system = System::of(&layout, &config);
     let n = layout.dofs;
     let mut y0 = vec![0.0; 2 * n];
-    y0[n + layout.dampers[0].left] = 0.2;
+    y0[n + dampers[0].left] = 0.2;
     let ground = |_: f64| (0.5, 0.0, 0.0);
     let cache = RefCell::new(Collocation::default());
     let contact =

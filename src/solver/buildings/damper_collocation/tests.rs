@@ -11,8 +11,8 @@ use super::{Collocation, NODES, Row, STAGES, elements_into};
 use crate::model::buildings;
 
 /// block-and-frame-retrofit with its damper at α = 0.35, at rest: its
-/// layout, system and dampers.
-fn retrofit() -> (Layout, System, Vec<Damper>) {
+/// layout, system and dampers (also the contact steps' tests' row).
+pub(in crate::solver::buildings) fn retrofit() -> (Layout, System, Vec<Damper>) {
     let row = buildings::load_with("block-and-frame-retrofit", &["link1.exponent=0.35".into()])
         .expect("shipped");
     let layout = Layout::of(&row);
