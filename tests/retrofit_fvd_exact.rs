@@ -49,24 +49,42 @@ fn worst(a: &RowRun, b: &RowRun) -> f64 {
 /// link its work is all dissipation, E_l = ∫ c|Δv|^(α+1) dt, to 1e-9.
 #[test]
 fn the_energy_balance_closes_with_a_damper() {
-    let ground = record_ground(1.0);
     for damping in ["4e6", "1e5"] {
         let row = damped(0.35, &[&format!("link1.damping={damping}")]);
-        let options = RowOptions {
-            energy: true,
-            ..RowOptions::lasting(2.0)
-        };
-        let run = run_row(&row, &ground, &options).unwrap();
-        let e = run.energy.unwrap();
-        let el = run.links[0].energy;
-        println!("c = {damping}: residual {:e}, E_l = {el} J", e.residual());
-        assert!(e.residual() < 1e-9, "residual {:e}", e.residual());
-        assert!(
-            el > 0.0 && (e.link - el).abs() < 1e-9 * el,
-            "{} {el}",
-            e.link
-        );
+        closes(&row, 2.0, &format!("c = {damping}"));
     }
+}
+
+/// The balance over the record's first `duration` seconds closes to 1e-9,
+/// and the link's work, all dissipation, is its E_l to 1e-9.
+fn closes(row: &pounding::model::buildings::Row, duration: f64, label: &str) {
+    let options = RowOptions {
+        energy: true,
+        ..RowOptions::lasting(duration)
+    };
+    let run = run_row(row, &record_ground(1.0), &options).unwrap();
+    let e = run.energy.unwrap();
+    let el = run.links[0].energy;
+    println!("{label}: residual {:e}, E_l = {el} J", e.residual());
+    assert!(e.residual() < 1e-9, "{label}: residual {:e}", e.residual());
+    assert!(
+        el > 0.0 && (e.link - el).abs() < 1e-9 * el,
+        "{label}: {} {el}",
+        e.link
+    );
+}
+
+/// A damper all but locked (α = 0.2, c = 1e7, Kelvin contact, over the
+/// record's first 4 s): its work is taken with the force the steps
+/// carry, to which their motion is the exact answer, so the balance still
+/// closes to 1e-9. Taken with the law at the steps' interpolated Δv, it
+/// did not: where |Δv| is some 1e-12 m/s, its interior error counts in
+/// c|Δv|^(α+1) as dissipation, always positive (measured: the residual
+/// 8.6e-8 with the law, 5.3e-12 now).
+#[test]
+fn the_energy_balance_closes_with_a_locked_damper() {
+    let row = damped(0.2, &["link1.damping=1e7", "model=kelvin"]);
+    closes(&row, 4.0, "α = 0.2, c = 1e7");
 }
 
 /// The exact method against the reference (an independent integration of

@@ -498,6 +498,27 @@ impl Collocation {
             }
         }
         motion.radius = h;
+        // Each damper's force, the polynomial the motion answers, in the
+        // series' blocks of its degree + 1 (the dampers are the first
+        // elements): where the damper all but locks, its law at the
+        // motion's interpolated Δv amplifies Δv's error by α/|Δv|, and
+        // always adds to the dissipation c|Δv|^(α+1), however Δv errs.
+        motion.forces.clear();
+        if width >= POWERS {
+            for (e, el) in self.elements.iter().enumerate() {
+                if !matches!(el.law, Law::Damper { .. }) {
+                    break;
+                }
+                let mut p = collocated(x, ne, e, h);
+                for (p, q) in p.iter_mut().zip(model[e]) {
+                    *p += q;
+                }
+                motion.forces.extend_from_slice(&p);
+                motion
+                    .forces
+                    .extend(std::iter::repeat_n(0.0, width - POWERS));
+            }
+        }
         motion
     }
 

@@ -1,7 +1,8 @@
 //! The links' peaks inside one step of the exact method (SPEC §14), on the
 //! polynomials of its [`Series`]: |Δu| and |Δv| on theirs, |F| on its own
 //! for a linear link, and for a damper on a step of the series with its
-//! force in it (its Taylor series, [`super::power_series`]).
+//! force in it (its Taylor series, [`super::power_series`]) or a
+//! collocated step (its force polynomial).
 
 use crate::model::buildings::LinkElement;
 use crate::solver::exact::contact_rk::equispaced_quintic;
@@ -16,9 +17,12 @@ use super::taylor::Series;
 /// the series with the damper's force in it ([`Series::damper_force`]: F
 /// is analytic over the step, and that series is the one the motion
 /// carried; a step 0.3 to 0.4 of the way to Δv's nearest zero is too long
-/// for the quintic, which missed the peak force by 1.5e-9 at c = 1e5),
-/// else on the quintic through six equally spaced values of F, as the
-/// Hertz-type contact forces are taken on the collocated steps.
+/// for the quintic, which missed the peak force by 1.5e-9 at c = 1e5) and
+/// on a collocated step's force polynomial (the force its motion
+/// answers, where the law at an all but locked damper's interpolated Δv
+/// would amplify Δv's error), else on the quintic through six equally
+/// spaced values of F, as the Hertz-type contact forces are taken on the
+/// Runge–Kutta steps.
 pub fn peaks_on(
     links: &[LinkElement],
     series: &Series,

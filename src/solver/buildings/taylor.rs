@@ -132,7 +132,9 @@ pub struct Series {
     pub degree: usize,
     /// Each fluid viscous damper's force F_k (N), damper by damper in
     /// blocks of [`Series::degree`] + 1, where the series carries the
-    /// dampers ([`Series::fill_damped`]); empty otherwise.
+    /// dampers ([`Series::fill_damped`]) or is a collocated step's motion
+    /// (the force polynomial it answers, [`super::damper_collocation`]);
+    /// empty otherwise.
     pub forces: Vec<f64>,
     /// The recurrence's buffers, reused from fill to fill.
     pub work: Workspace,
