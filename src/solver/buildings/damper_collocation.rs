@@ -185,7 +185,7 @@ use super::damper::Damper;
 use super::system::System;
 use super::taylor::{ORDER, Series};
 use crate::model::buildings::retrofit::dashpot_force;
-use basis::{collocated, defect_polynomial, lagrange_at};
+use basis::{corrected, defect_polynomial, lagrange_at};
 use estimate::kappa;
 use newton::{Forces, Newton, Solved};
 use responses::Responses;
@@ -481,13 +481,9 @@ impl Collocation {
     ) -> Series {
         let ne = self.elements.len();
         let responses = &self.sets[set];
-        let w = responses.weights(ne, |e| {
-            let mut p = collocated(x, ne, e, h);
-            for (p, q) in p.iter_mut().zip(model[e]) {
-                *p += q;
-            }
-            p
-        });
+        let forces: Vec<[f64; POWERS]> =
+            (0..ne).map(|e| corrected(x, ne, e, h, &model[e])).collect();
+        let w = responses.weights(ne, |e| forces[e]);
         // The responses to the free motion's degree, which carries the
         // step to the series' tolerance.
         let width = free.degree + 1;
@@ -512,15 +508,12 @@ impl Collocation {
         // always adds to the dissipation c|Δv|^(α+1), however Δv errs.
         motion.forces.clear();
         if width >= POWERS {
-            for (e, el) in self.elements.iter().enumerate() {
-                if !matches!(el.law, Law::Damper { .. }) {
-                    break;
-                }
-                let mut p = collocated(x, ne, e, h);
-                for (p, q) in p.iter_mut().zip(model[e]) {
-                    *p += q;
-                }
-                motion.forces.extend_from_slice(&p);
+            let dampers = self
+                .elements
+                .iter()
+                .take_while(|el| matches!(el.law, Law::Damper { .. }));
+            for (p, _) in forces.iter().zip(dampers) {
+                motion.forces.extend_from_slice(p);
                 motion
                     .forces
                     .extend(std::iter::repeat_n(0.0, width - POWERS));
@@ -613,13 +606,7 @@ impl Collocation {
             let linearized = self.solver.linearized()?;
             let feedback = self.feedback(set, (h, free.degree), &model, linearized)?;
             let model: Vec<[f64; POWERS]> = (0..ne)
-                .map(|e| {
-                    let mut p = model[e];
-                    for (p, q) in p.iter_mut().zip(collocated(&feedback, ne, e, h)) {
-                        *p += q;
-                    }
-                    p
-                })
+                .map(|e| corrected(&feedback, ne, e, h, &model[e]))
                 .collect();
             // The end under the corrected force, and the error the
             // difference: from the dense output where it is made.

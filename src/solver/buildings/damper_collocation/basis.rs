@@ -138,6 +138,23 @@ pub(super) fn collocated(x: &DVector<f64>, ne: usize, e: usize, h: f64) -> [f64;
     p
 }
 
+/// Element e's force over the step: its collocated polynomial
+/// ([`collocated`]) plus `model` (its defect model, or the forces' answer
+/// to it), in powers of s.
+pub(super) fn corrected(
+    x: &DVector<f64>,
+    ne: usize,
+    e: usize,
+    h: f64,
+    model: &[f64; POWERS],
+) -> [f64; POWERS] {
+    let mut p = collocated(x, ne, e, h);
+    for (p, q) in p.iter_mut().zip(model) {
+        *p += q;
+    }
+    p
+}
+
 /// The defect model's polynomial (κ + Σ_q a_q θ^q) π(θ), θ = s/h, with
 /// `slope` = (a_1, …, a_{S−1}), in powers of s.
 pub(super) fn defect_polynomial(kappa: f64, slope: [f64; MODEL], h: f64) -> [f64; POWERS] {

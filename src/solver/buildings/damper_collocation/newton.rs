@@ -6,7 +6,7 @@ use nalgebra::{
     Const, DMatrix, DVector, DefaultAllocator, DimMin, DimName, Dyn, LU, OMatrix, OVector,
 };
 
-use super::basis::collocated;
+use super::basis::{collocated, corrected};
 use super::responses::{AtNodes, Responses};
 use super::{Collocation, Element, Law, NEWTON, NODES, POWERS, Row, STAGES, values};
 use crate::model::buildings::retrofit::dashpot_velocity_slope;
@@ -48,13 +48,9 @@ impl Collocation {
             polynomials: Vec::new(),
         });
         forces.polynomials.clear();
-        forces.polynomials.extend((0..ne).map(|e| {
-            let mut p = collocated(x, ne, e, h);
-            for (p, q) in p.iter_mut().zip(model[e]) {
-                *p += q;
-            }
-            p
-        }));
+        forces
+            .polynomials
+            .extend((0..ne).map(|e| corrected(x, ne, e, h, &model[e])));
         forces.start.clear();
         forces.start.extend_from_slice(y0);
         forces.end.clear();

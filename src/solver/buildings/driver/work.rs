@@ -22,6 +22,7 @@ use super::super::propagator::{DAMPING, FIRST_LINK, INPUT};
 use super::super::taylor::{ORDER, Series};
 use super::{Run, ground_at};
 use crate::model::buildings::ground::Piece;
+use crate::model::buildings::retrofit::dashpot_force;
 
 /// The sums of the balance so far, the quadrature rule, and the buffers
 /// of the map steps.
@@ -121,18 +122,18 @@ impl Run<'_> {
         for (l, out) in layout.links.iter().zip(dissipation) {
             let (a, b) = (l.pair.left_dof, l.pair.right_dof);
             let rate = v[a] - v[b];
-            match dashpots {
+            let (dashpot, dissipated) = match dashpots {
                 Some(forces) if !l.is_linear() => {
-                    let dashpot = forces[damper];
                     damper += 1;
-                    p.link += (l.link.stiffness * (u[a] - u[b]) + dashpot) * rate;
-                    *out = dashpot * rate;
+                    (forces[damper - 1], forces[damper - 1] * rate)
                 }
-                _ => {
-                    p.link += l.force(u[a] - u[b], rate) * rate;
-                    *out = l.dissipation(rate);
-                }
-            }
+                _ => (
+                    dashpot_force(l.link.damping, l.link.exponent, rate),
+                    l.dissipation(rate),
+                ),
+            };
+            p.link += (l.link.stiffness * (u[a] - u[b]) + dashpot) * rate;
+            *out = dissipated;
         }
         p
     }
