@@ -881,6 +881,7 @@ impl Run<'_> {
                 Some((_, _, step)) => {
                     un.copy_from_slice(&step.y1[..n]);
                     vn.copy_from_slice(&step.y1[n..]);
+                    self.collocation.borrow_mut().recycle(series);
                 }
                 None => {
                     series.state(end, &mut un, &mut vn);

@@ -6,6 +6,7 @@ use nalgebra::{DVector, SMatrix, SVector};
 
 use super::basis::{collocated, lagrange_at, node_value};
 use super::newton::Linearized;
+use super::responses::weighted;
 use super::{Collocation, Element, Law, MODEL, NODES, POWERS, STAGES, values};
 use crate::model::buildings::retrofit::dashpot_force;
 use crate::solver::buildings::poly;
@@ -84,20 +85,21 @@ impl Collocation {
         let ne = self.elements.len();
         let w = responses.weights(ne, |e| model[e]);
         let mut b = DVector::zeros(STAGES * ne);
-        let mut p = [0.0; ORDER + 1];
-        let p = &mut p[..=degree.min(ORDER)];
-        for (i, &c) in NODES.iter().enumerate() {
-            poly::powers(c * h, p);
-            for (e, el) in self.elements.iter().enumerate() {
-                let (mut du, mut dv) = (0.0, 0.0);
-                for (r, &wr) in w.iter().enumerate() {
-                    if wr != 0.0 {
-                        dv += wr * poly::dot(&responses.rate[r * ne + e][..p.len()], p);
-                        if let Law::Product { .. } = el.law {
-                            du += wr * poly::dot(&responses.stroke[r * ne + e][..p.len()], p);
-                        }
-                    }
-                }
+        let width = degree.min(ORDER) + 1;
+        let powers: [[f64; ORDER + 1]; STAGES] = std::array::from_fn(|i| {
+            let mut p = [0.0; ORDER + 1];
+            poly::powers(NODES[i] * h, &mut p[..width]);
+            p
+        });
+        for (e, el) in self.elements.iter().enumerate() {
+            // The model's Δv (and a product's Δu) as one polynomial.
+            let (mut du, mut dv) = ([0.0; ORDER + 1], [0.0; ORDER + 1]);
+            weighted(&responses.rate, &w, (ne, e), width, &mut dv);
+            if let Law::Product { .. } = el.law {
+                weighted(&responses.stroke, &w, (ne, e), width, &mut du);
+            }
+            for (i, p) in powers.iter().enumerate() {
+                let (du, dv) = (poly::dot(&du[..width], p), poly::dot(&dv[..width], p));
                 let row = i * ne + e;
                 b[row] = match el.law {
                     Law::Damper { .. } => dv,
@@ -147,9 +149,10 @@ impl Collocation {
             .enumerate()
             .map(|(e, el)| {
                 // The element's Δu or Δv at s on the collocated motion: the
-                // free motion's (left less right) and the forces' responses.
-                let along = |(left, right): (&[f64], &[f64]), response: &[Vec<f64>], s: f64| {
-                    let mut x = poly::eval(left, s) - poly::eval(right, s);
+                // free motion's (left less right, each floor's by Horner's
+                // rule down the series' columns) and the forces' responses.
+                let along = |free: f64, response: &[Vec<f64>], s: f64| {
+                    let mut x = free;
                     for (r, &wr) in w.iter().enumerate() {
                         if wr != 0.0 {
                             x += wr * poly::eval(&response[r * ne + e][..width], s);
@@ -160,14 +163,14 @@ impl Collocation {
                 // d at the point FIT[k].
                 let defect = |k: usize| {
                     let s = FIT[k] * h;
-                    let velocities = (free.velocity(el.left), free.velocity(el.right));
+                    let velocities = free.velocity_at(el.left, s) - free.velocity_at(el.right, s);
                     let rate = along(velocities, &responses.rate, s);
                     let force: f64 = (0..STAGES).map(|j| x[j * ne + e] * AT_FIT[k][j]).sum();
                     let law = match el.law {
                         Law::Damper { damping, exponent } => dashpot_force(damping, exponent, rate),
                         Law::Product { gap, coefficient } => {
-                            let displacements =
-                                (free.displacement(el.left), free.displacement(el.right));
+                            let displacements = free.displacement_at(el.left, s)
+                                - free.displacement_at(el.right, s);
                             let stroke = along(displacements, &responses.stroke, s);
                             coefficient * (stroke - gap) * rate
                         }

@@ -120,28 +120,56 @@ impl Responses {
         w
     }
 
-    /// Σ_r w_r (u, u̇)_r(s), added to (u, v): each floor's coefficients
-    /// against the powers of s, to the degree `degree` of the free motion
-    /// of the step, which carries it to the series' tolerance (the
-    /// responses' terms past it are as small as its own).
+    /// Σ_r w_r (u, u̇)_r(s), added to (u, v), to the degree `degree` of
+    /// the free motion of the step, which carries it to the series'
+    /// tolerance (the responses' terms past it are as small as its own):
+    /// Σ_k s^k Σ_r w_r c_{r,k} by Horner's rule, order by order on the
+    /// responses' columns (each order's 2n coefficients one run of
+    /// memory, [`Series::held`]), rather than a dot product per floor and
+    /// response: one pass over the same coefficients, in runs of 2n.
     pub(super) fn add_state(
         &self,
         w: &[f64],
         (s, degree): (f64, usize),
         (u, v): (&mut [f64], &mut [f64]),
     ) {
-        let mut p = [0.0; ORDER + 1];
-        poly::powers(s, &mut p);
-        let p = &p[..=degree.min(ORDER)];
-        for (series, &wr) in self.series.iter().zip(w) {
-            if wr == 0.0 {
-                continue;
+        let n = u.len();
+        let mut sum = vec![0.0; 2 * n];
+        for k in (0..=degree.min(ORDER)).rev() {
+            for x in &mut sum {
+                *x *= s;
             }
-            for (i, x) in u.iter_mut().enumerate() {
-                *x += wr * poly::dot(&series.displacement(i)[..p.len()], p);
+            for (series, &wr) in self.series.iter().zip(w) {
+                if wr == 0.0 || k > series.degree {
+                    continue;
+                }
+                let column = &series.held()[2 * n * k..2 * n * (k + 1)];
+                for (x, c) in sum.iter_mut().zip(column) {
+                    *x += wr * c;
+                }
             }
-            for (i, x) in v.iter_mut().enumerate() {
-                *x += wr * poly::dot(&series.velocity(i)[..p.len()], p);
+        }
+        for (x, y) in u.iter_mut().chain(v.iter_mut()).zip(&sum) {
+            *x += y;
+        }
+    }
+}
+
+/// Σ_r w_r p_{r,e}: element e's Δu (`polynomials` the responses'
+/// `stroke`) or Δv (their `rate`) under the weights w, to `width`
+/// coefficients, added to `out` (which holds at least `width`): one
+/// polynomial to evaluate at a step's points instead of one per response.
+pub(super) fn weighted(
+    polynomials: &[Vec<f64>],
+    w: &[f64],
+    (ne, e): (usize, usize),
+    width: usize,
+    out: &mut [f64],
+) {
+    for (r, &wr) in w.iter().enumerate() {
+        if wr != 0.0 {
+            for (o, c) in out[..width].iter_mut().zip(&polynomials[r * ne + e]) {
+                *o += wr * c;
             }
         }
     }

@@ -51,6 +51,19 @@ impl Clone for Series {
             work: self.work.clone(),
         }
     }
+
+    /// The same series written over this one, its vectors reused (its
+    /// workspace kept: it holds nothing between fills).
+    fn clone_from(&mut self, source: &Series) {
+        self.n = source.n;
+        self.orders.clear();
+        self.orders.extend_from_slice(source.held());
+        self.floors.take();
+        self.ground = source.ground;
+        self.radius = source.radius;
+        self.degree = source.degree;
+        self.forces.clone_from(&source.forces);
+    }
 }
 
 impl Series {
@@ -133,6 +146,25 @@ impl Series {
     pub fn velocity_into(&self, i: usize, out: &mut Vec<f64>) {
         out.clear();
         out.extend(self.along(self.n + i));
+    }
+
+    /// u_i(s) by Horner's rule down the series' columns: [`super::poly::eval`] on
+    /// the floor's coefficients, to the bit, without the floor-by-floor
+    /// copies ([`Series::displacement`]), which a series filled afresh at
+    /// every step would make again each time.
+    pub fn displacement_at(&self, i: usize, s: f64) -> f64 {
+        self.entry_at(i, s)
+    }
+
+    /// u̇_i(s), as [`Series::displacement_at`].
+    pub fn velocity_at(&self, i: usize, s: f64) -> f64 {
+        self.entry_at(self.n + i, s)
+    }
+
+    /// Entry `at` of the columns (u_i, then u̇_i) at s by Horner's rule.
+    fn entry_at(&self, at: usize, s: f64) -> f64 {
+        let columns = self.held().chunks_exact((2 * self.n).max(1));
+        columns.rev().fold(0.0, |acc, column| acc * s + column[at])
     }
 
     /// The floor-by-floor copies, made on the first ask.
