@@ -401,7 +401,8 @@ impl Newton {
             }
             x -= &*delta;
             let bounds = &self.bounds;
-            // The update against its bound, the largest over the rows.
+            // The update against its bound, the largest over the rows (NaN
+            // where one is: such an update never converges).
             let mut size = 0.0f64;
             for i in 0..STAGES {
                 for (e, el) in elements.iter().enumerate() {
@@ -410,7 +411,10 @@ impl Newton {
                         Law::Damper { .. } => bounds[e],
                         Law::Product { .. } => 1e-14 * x[r].abs().max(1e-300),
                     };
-                    size = size.max(delta[r].abs() / bound);
+                    let ratio = delta[r].abs() / bound;
+                    if ratio.is_nan() || ratio > size {
+                        size = ratio;
+                    }
                 }
             }
             // Converged where the update is within its bound, or where the
