@@ -71,6 +71,8 @@ mod damped;
 #[cfg(test)]
 mod damped_check;
 #[cfg(test)]
+mod event_check;
+#[cfg(test)]
 mod quiet_check;
 mod ranges;
 mod rising;
@@ -847,13 +849,17 @@ impl Run<'_> {
                 series.fill_over(&self.system, (&self.u, &self.v), ground, (su, sv), rem);
                 (series, None)
             };
-            let mut end = rem.min(series.radius);
-            let whole = end;
+            let whole = rem.min(series.radius);
+            let mut end = whole;
             let mut event = None;
+            // The functions whose root on a Runge–Kutta step's polynomial
+            // the motion does not reach ([`Contact::settle`]): the events
+            // are looked for again without them.
+            let mut unreached = Vec::new();
             if events {
-                self.find_events(&series, &mut end, &mut event);
+                self.find_events(&series, &mut end, &mut event, &unreached);
             }
-            if let (Some((y0, f0, step)), Some((_, g))) = (&mut rk, &event)
+            while let (Some((y0, f0, step)), Some((_, g))) = (&mut rk, &event)
                 && end < step.h
             {
                 let t = self.t;
@@ -862,8 +868,17 @@ impl Run<'_> {
                     ground_at(piece, t + s).0
                 })
                 .with_collocation(&self.collocation, &ground);
-                *step = contact.settle((y0, f0), g, (end, step.h), sv);
-                end = step.h;
+                match contact.settle((y0, f0), g, (end, step.h), sv) {
+                    Some(settled) => {
+                        *step = settled;
+                        end = step.h;
+                    }
+                    None => {
+                        unreached.push(*g);
+                        (end, event) = (whole, None);
+                        self.find_events(&series, &mut end, &mut event, &unreached);
+                    }
+                }
             }
             #[cfg(test)]
             if damped {
@@ -891,7 +906,11 @@ impl Run<'_> {
             std::mem::swap(&mut self.u, &mut un);
             std::mem::swap(&mut self.v, &mut vn);
             self.t = if end >= rem { tb } else { self.t + end };
-            if let Some((e, _)) = event {
+            if let Some((e, g)) = event {
+                #[cfg(test)]
+                self.check_event(&g, (su, sv));
+                #[cfg(not(test))]
+                let _ = g;
                 self.apply(e);
             }
             // A damper that had no sign (from rest), or whose crossings
@@ -1050,17 +1069,23 @@ impl Run<'_> {
         }
     }
 
+    /// The first event on `series` over [0, `end`] (`end` moved to it),
+    /// of the functions [`Run::watched_events`] gives but `unreached`.
     fn find_events(
         &mut self,
         series: &Series,
         end: &mut f64,
         event: &mut Option<(Event, EventFunction)>,
+        unreached: &[EventFunction],
     ) {
         let mut c = std::mem::take(&mut self.buf);
         // The reach over the whole step holds over any shorter part of it.
         let mut reach = std::mem::take(&mut self.reach);
         reach.set(series, *end);
         self.watched_events(|e, g| {
+            if unreached.contains(&g) {
+                return;
+            }
             // g cannot turn positive on the step: first_rise finds nothing.
             if reach.upper((&g.on_u, &g.on_v), g.constant) < 0.0 {
                 return;
