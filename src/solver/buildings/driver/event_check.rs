@@ -18,6 +18,8 @@ impl Run<'_> {
     /// Panics where g at the current state lies below zero by more than
     /// 1e-9 of the motion's scales `scale` (displacement, velocity).
     pub(super) fn check_event(&self, g: &EventFunction, scale: (f64, f64)) {
+        // g reads u and u̇ alone; its rate, which reads ü, is not wanted
+        // (u̇ stands in for ü).
         let (value, _) = g.at(&self.u, &self.v, &self.v);
         let size = if g.on_v.iter().any(|&(_, w)| w != 0.0) {
             scale.1
