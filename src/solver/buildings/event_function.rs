@@ -46,18 +46,27 @@ impl EventFunction {
         out[0] += self.constant;
     }
 
-    /// (g, ġ) at the state (u, u̇, ü).
-    pub fn at(&self, u: &[f64], v: &[f64], acc: &[f64]) -> (f64, f64) {
+    /// g at the state (u, u̇).
+    pub fn value(&self, u: &[f64], v: &[f64]) -> f64 {
         let mut g = self.constant;
-        let mut rate = 0.0;
         for &(i, w) in &self.on_u {
             g += w * u[i];
-            rate += w * v[i];
         }
         for &(i, w) in &self.on_v {
             g += w * v[i];
+        }
+        g
+    }
+
+    /// (g, ġ) at the state (u, u̇, ü).
+    pub fn at(&self, u: &[f64], v: &[f64], acc: &[f64]) -> (f64, f64) {
+        let mut rate = 0.0;
+        for &(i, w) in &self.on_u {
+            rate += w * v[i];
+        }
+        for &(i, w) in &self.on_v {
             rate += w * acc[i];
         }
-        (g, rate)
+        (self.value(u, v), rate)
     }
 }

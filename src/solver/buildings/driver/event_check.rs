@@ -18,9 +18,7 @@ impl Run<'_> {
     /// Panics where g at the current state lies below zero by more than
     /// 1e-9 of the motion's scales `scale` (displacement, velocity).
     pub(super) fn check_event(&self, g: &EventFunction, scale: (f64, f64)) {
-        // g reads u and u̇ alone; its rate, which reads ü, is not wanted
-        // (u̇ stands in for ü).
-        let (value, _) = g.at(&self.u, &self.v, &self.v);
+        let value = g.value(&self.u, &self.v);
         let size = if g.on_v.iter().any(|&(_, w)| w != 0.0) {
             scale.1
         } else {
@@ -40,6 +38,7 @@ mod tests {
     use super::CHECKED;
     use crate::model::ContactModel;
     use crate::model::buildings::{self, Ground, Row};
+    use crate::model::physical::G;
     use crate::solver::buildings::{RowOptions, run_row};
 
     /// block-and-frame-retrofit in Hertz contact with its damper at
@@ -64,7 +63,7 @@ mod tests {
             model: ContactModel::Hertz,
             ..row
         };
-        let ground = Ground::sine(0.3 * 9.80665, 2.0 * std::f64::consts::PI, 10.0);
+        let ground = Ground::sine(0.3 * G, 2.0 * std::f64::consts::PI, 10.0);
         let run = run_row(&row, &ground, &RowOptions::lasting(10.0)).expect("runs");
         // Every floor at 10 s, by the same row run at a hundredth
         // of the tolerance (contact_rk's TOLERANCE at 1e-14).
