@@ -254,8 +254,9 @@ struct Run<'a> {
     point_acceleration: Vec<f64>,
     /// How far each floor moves over the current series step.
     reach: Reach,
-    /// Every floor's absolute acceleration polynomial on a series step.
-    accelerations: Vec<f64>,
+    /// Every floor's absolute acceleration polynomial on a series step,
+    /// order by order, and their bounds.
+    accelerations: Accelerations,
     /// The last Taylor step's series, its vectors reused by the next.
     spare_series: Series,
     /// The quantities of the quiet test ([`watched`]), and each as read
@@ -333,6 +334,17 @@ pub fn run_row_from(
 /// h, σ) and of the row alone, so a run takes bit for bit the steps it
 /// takes with a fresh cache; only the count of maps it made is smaller.
 /// Given another row, the cache starts afresh.
+/// Every floor's |ü + ü_g| polynomial on a series step, order by order
+/// ([`Series::absolute_accelerations`]), each floor's bound on it over the
+/// step, and [`poly::bound_lanes`]' chains: buffers reused from step to
+/// step.
+#[derive(Default)]
+struct Accelerations {
+    orders: Vec<f64>,
+    bounds: Vec<f64>,
+    chains: Vec<f64>,
+}
+
 #[derive(Debug, Default)]
 pub struct MapCache {
     row: Option<Row>,
@@ -415,7 +427,7 @@ fn drive(
         force: Vec::new(),
         point_acceleration: Vec::new(),
         reach: Reach::default(),
-        accelerations: Vec::new(),
+        accelerations: Accelerations::default(),
         spare_series: Series::default(),
         watch: probes.iter().map(Probe::watch).collect(),
         probes,
@@ -1125,9 +1137,17 @@ impl Run<'_> {
         if !reached {
             self.reach.set(series, end);
         }
-        // Every floor's |ü + ü_g| polynomial, formed in one pass.
+        // Every floor's |ü + ü_g| polynomial, formed in one pass, and its
+        // bound over the step, all floors side by side.
         let mut accelerations = std::mem::take(&mut self.accelerations);
-        let width = series.absolute_accelerations(&mut accelerations);
+        let Accelerations {
+            orders,
+            bounds,
+            chains,
+        } = &mut accelerations;
+        series.absolute_accelerations(orders);
+        bounds.resize(n, 0.0);
+        poly::magnitude_bound_lanes(orders, end, chains, bounds);
         for i in 0..n {
             let env = &mut self.envelope;
             // |u_i| and |u̇_i| cannot pass their peaks on the step ([`Reach`]),
@@ -1145,13 +1165,14 @@ impl Run<'_> {
                     raise(&mut env.velocity[i], poly::max_abs(&c, end));
                 }
             }
-            let c = &accelerations[i * width..(i + 1) * width];
-            if poly::magnitude_bound(c, end) > env.acceleration[i] {
+            // |ü_i + ü_g| likewise, its polynomial gathered only then.
+            if bounds[i] > env.acceleration[i] {
+                Series::gather(orders, n, i, &mut c);
                 let Some(piece) = rk else {
-                    raise(&mut env.acceleration[i], poly::max_abs(c, end));
+                    raise(&mut env.acceleration[i], poly::max_abs(&c, end));
                     continue;
                 };
-                let (at, _) = poly::argmax_abs(c, end);
+                let (at, _) = poly::argmax_abs(&c, end);
                 if at > 0.0 && at < end {
                     let (mut us, mut vs) = (vec![0.0; n], vec![0.0; n]);
                     series.state(at, &mut us, &mut vs);

@@ -159,6 +159,27 @@ pub fn magnitude_bound(c: &[f64], s: f64) -> f64 {
     top.abs().max(bottom.abs()) + tail(c, s)
 }
 
+/// [`magnitude_bound`] of many polynomials side by side into `out` (one
+/// per lane, laid as [`bound_lanes`] takes them, each at least three
+/// orders long), the same to the bit: each lane's quadratic part exactly,
+/// its tail by [`bound_lanes`] (`chains` its buffer). A step's search for
+/// peaks asks it of every floor's acceleration at once.
+pub fn magnitude_bound_lanes(c: &[f64], s: f64, chains: &mut Vec<f64>, out: &mut [f64]) {
+    let lanes = out.len();
+    debug_assert!(c.len() >= 3 * lanes && c.len() % lanes.max(1) == 0);
+    if c.len() > 3 * lanes {
+        bound_lanes(&c[3 * lanes..], s, chains, out);
+    } else {
+        out.fill(0.0);
+    }
+    let tail = c.len() > 3 * lanes;
+    for (l, bound) in out.iter_mut().enumerate() {
+        let (top, bottom) = quadratic_range(&[c[l], c[lanes + l], c[2 * lanes + l]], s);
+        let tail = if tail { *bound * s * s * s } else { 0.0 };
+        *bound = top.abs().max(bottom.abs()) + tail;
+    }
+}
+
 /// (max, min) of c₀ + c₁t + c₂t² over t ∈ [0, s].
 #[inline]
 fn quadratic_range(c: &[f64], s: f64) -> (f64, f64) {
@@ -620,6 +641,41 @@ mod tests {
                 for (lane, got) in out.iter().enumerate() {
                     let c: Vec<f64> = (0..len).map(|k| coefficient(lane, k)).collect();
                     let want = bound(&c, s);
+                    assert_eq!(
+                        got.to_bits(),
+                        want.to_bits(),
+                        "len {len}, lane {lane}, s {s}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// Side by side, each lane's magnitude bound is [`magnitude_bound`] of
+    /// its own coefficients to the bit, for every length from 3 to 41 and
+    /// lanes whose quadratic parts turn inside [0, s] or not, and s from 0
+    /// to past 1.
+    #[test]
+    fn magnitude_bounds_side_by_side_are_each_lanes_bound() {
+        const LANES: usize = 6;
+        let coefficient = |lane: usize, k: usize| match (lane, k) {
+            // A vertex at s = 0.25 (c₁ = −0.5 c₂).
+            (0, 1) => -0.5,
+            (0, 2) => 1.0,
+            (5, _) => 5e-324 * k as f64,
+            _ => ((lane * 5 + k * 11) as f64).cos() * 10f64.powi((k % 7) as i32 - 3),
+        };
+        let mut chains = Vec::new();
+        for len in 3..=41 {
+            let columns: Vec<Vec<f64>> = (0..len)
+                .map(|k| (0..LANES).map(|lane| coefficient(lane, k)).collect())
+                .collect();
+            for s in [0.0, 1e-3, 0.37, 1.0, 2.5] {
+                let mut out = [7.0; LANES];
+                magnitude_bound_lanes(&columns.concat(), s, &mut chains, &mut out);
+                for (lane, got) in out.iter().enumerate() {
+                    let c: Vec<f64> = (0..len).map(|k| coefficient(lane, k)).collect();
+                    let want = magnitude_bound(&c, s);
                     assert_eq!(
                         got.to_bits(),
                         want.to_bits(),

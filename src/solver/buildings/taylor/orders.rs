@@ -288,11 +288,17 @@ impl Series {
         out.extend(self.ground[self.degree..top].iter().map(|&a| 0.0 + a));
     }
 
-    /// [`Series::absolute_acceleration`] of every floor into `out`, floor
-    /// by floor in blocks of the returned width ([`ORDER`] or the degree,
-    /// if higher), each block the same to the bit: a step's search for
-    /// peaks asks every floor's, and one pass over the orders forms them
-    /// all, k u̇_k + a_{k−1} across a column at a time.
+    /// [`Series::absolute_acceleration`] of every floor into `out`, order
+    /// by order: order k of every floor side by side (floor i's at
+    /// k·n + i), the orders to the returned width ([`ORDER`] or the
+    /// degree, if higher), each floor's coefficients the same to the bit.
+    /// One pass over the series' columns forms them all, k u̇_k + a_{k−1}
+    /// across a column at a time, without moving them floor by floor: a
+    /// step's search for peaks bounds every floor's at once
+    /// ([`poly::magnitude_bound_lanes`]) and gathers the few whose bound
+    /// passes their peak ([`Series::gather`]).
+    ///
+    /// [`poly::magnitude_bound_lanes`]: super::super::poly::magnitude_bound_lanes
     pub fn absolute_accelerations(&self, out: &mut Vec<f64>) -> usize {
         let (n, degree) = (self.n, self.degree);
         let width = ORDER.max(degree);
@@ -304,17 +310,22 @@ impl Series {
             .zip(&self.ground);
         for (j, (column, &a)) in rates.enumerate() {
             let rate = (j + 1) as f64;
-            for (block, &v) in out.chunks_exact_mut(width).zip(&column[n..]) {
-                block[j] = rate * v + a;
+            for (x, &v) in out[j * n..(j + 1) * n].iter_mut().zip(&column[n..]) {
+                *x = rate * v + a;
             }
         }
-        let ground = &self.ground[degree..width];
-        for block in out.chunks_exact_mut(width) {
-            for (x, &a) in block[degree..].iter_mut().zip(ground) {
-                *x = 0.0 + a;
-            }
+        for (j, &a) in (degree..width).zip(&self.ground[degree..width]) {
+            out[j * n..(j + 1) * n].fill(0.0 + a);
         }
         width
+    }
+
+    /// Floor i's polynomial out of coefficients laid order by order, as
+    /// [`Series::absolute_accelerations`] lays them (`width` orders of n
+    /// floors), into `out`.
+    pub fn gather(orders: &[f64], n: usize, i: usize, out: &mut Vec<f64>) {
+        out.clear();
+        out.extend(orders.iter().skip(i).step_by(n.max(1)));
     }
 }
 
@@ -409,9 +420,13 @@ mod tests {
         }
         let mut every = Vec::new();
         let width = series.absolute_accelerations(&mut every);
+        assert_eq!(every.len(), width * series.n);
+        let mut gathered = Vec::new();
         for i in 0..series.n {
             series.absolute_acceleration(i, &mut got);
-            assert_eq!(every[i * width..(i + 1) * width], got[..], "floor {i}");
+            Series::gather(&every, series.n, i, &mut gathered);
+            let bits = |x: &[f64]| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&gathered), bits(&got), "floor {i}");
         }
         series.absolute_acceleration(1, &mut got);
         assert_eq!(got.len(), super::ORDER);
