@@ -166,7 +166,7 @@ pub fn magnitude_bound(c: &[f64], s: f64) -> f64 {
 /// peaks asks it of every floor's acceleration at once.
 pub fn magnitude_bound_lanes(c: &[f64], s: f64, chains: &mut Vec<f64>, out: &mut [f64]) {
     let lanes = out.len();
-    debug_assert!(c.len() >= 3 * lanes && c.len() % lanes.max(1) == 0);
+    debug_assert!(c.len() >= 3 * lanes && c.len().is_multiple_of(lanes.max(1)));
     if c.len() > 3 * lanes {
         bound_lanes(&c[3 * lanes..], s, chains, out);
     } else {
