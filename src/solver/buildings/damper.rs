@@ -122,14 +122,16 @@ impl Damper {
 /// The sign of each damper's Δv at `v`, 0 where it is 0 (at rest: the
 /// phase has no sign until Δv takes one).
 pub fn signs(dampers: &[Damper], v: &[f64]) -> Vec<f64> {
-    dampers
-        .iter()
-        .map(|d| match d.rate(v) {
-            r if r > 0.0 => 1.0,
-            r if r < 0.0 => -1.0,
-            _ => 0.0,
-        })
-        .collect()
+    dampers.iter().map(|d| sign(d.rate(v))).collect()
+}
+
+/// The sign of a damper's Δv = `rate`, 0 where it is 0.
+pub fn sign(rate: f64) -> f64 {
+    match rate {
+        r if r > 0.0 => 1.0,
+        r if r < 0.0 => -1.0,
+        _ => 0.0,
+    }
 }
 
 /// Where on a step some damper's Δv first changes sign, as the fraction θ

@@ -326,6 +326,9 @@ pub struct Collocation {
     /// A series whose vectors the next dense output reuses
     /// ([`Collocation::recycle`]).
     spare: Series,
+    /// The free motion from a doubled step's middle, its vectors reused
+    /// from one doubled step to the next.
+    middle: Series,
 }
 
 /// The free motion from a step's start, with what fixes it: the start
@@ -697,7 +700,7 @@ impl Collocation {
         };
         let (half, ..) = self.solve(row, set, (free, y0), 0.5 * h, Some(guess(0)))?;
         let (u, v) = half.split_at(n);
-        let mut middle = Series::default();
+        let mut middle = std::mem::take(&mut self.middle);
         middle.fill_linear(
             row.system,
             (u, v),
@@ -705,7 +708,9 @@ impl Collocation {
             row.scale,
             0.5 * h,
         );
-        let (twice, ..) = self.solve(row, set, (&middle, &half), 0.5 * h, Some(guess(1)))?;
+        let twice = self.solve(row, set, (&middle, &half), 0.5 * h, Some(guess(1)));
+        self.middle = middle;
+        let (twice, ..) = twice?;
         let divisor = doubling(&self.elements);
         let error = whole
             .iter()

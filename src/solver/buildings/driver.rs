@@ -931,7 +931,7 @@ impl Run<'_> {
             for (sign, d) in self.damper_signs.iter_mut().zip(&self.layout.dampers) {
                 let rate = d.rate(&self.v);
                 if *sign == 0.0 || d.stiff(rate, h) {
-                    *sign = damper::signs(std::slice::from_ref(d), &self.v)[0];
+                    *sign = damper::sign(rate);
                 }
             }
             // The point itself, with ü of the configuration now in force.
