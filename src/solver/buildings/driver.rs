@@ -829,6 +829,9 @@ impl Run<'_> {
         un.resize(n, 0.0);
         vn.resize(n, 0.0);
         let mut acc = std::mem::take(&mut self.point_acceleration);
+        // Whether `acc` is ü at the current point (recorded in this loop,
+        // on this piece, in the configuration in force).
+        let mut known = false;
         while self.t < tb {
             self.series_steps += 1;
             if self.series_steps > MAX_SERIES_STEPS {
@@ -851,7 +854,9 @@ impl Run<'_> {
                         (series, None)
                     }
                     None => {
-                        let (series, step, own) = self.contact_step(piece, rem, ground, (su, sv));
+                        let known = known.then_some(&acc[..]);
+                        let (series, step, own) =
+                            self.contact_step(piece, (rem, known), ground, (su, sv));
                         quintic = !own;
                         (series, Some(step))
                     }
@@ -937,6 +942,7 @@ impl Run<'_> {
             // The point itself, with ü of the configuration now in force.
             let (a1, _) = ground_at(piece, self.t);
             self.acceleration(piece, (self.t, 0.0), (&self.u, &self.v), &mut acc);
+            known = true;
             self.record_point(&acc, a1);
             if self.collapse.is_some() {
                 break;
@@ -975,11 +981,13 @@ impl Run<'_> {
     /// ([`super::contact_rk`]) from the current state, at most `rem` long,
     /// as a series on its length, with its start (y, ẏ), the step, and
     /// whether the series is the step's own (a collocated step's motion)
-    /// rather than the quintic through its ends.
+    /// rather than the quintic through its ends. `known`: ü at the current
+    /// state on `piece` in the configuration in force, where the point was
+    /// just recorded ([`Run::acceleration`], the same sum as ẏ's).
     fn contact_step(
         &mut self,
         piece: &Piece,
-        rem: f64,
+        (rem, known): (f64, Option<&[f64]>),
         ground: (f64, f64, f64),
         scale: (f64, f64),
     ) -> (Series, Taken, bool) {
@@ -990,7 +998,10 @@ impl Run<'_> {
         })
         .with_collocation(&self.collocation, &at);
         let y0: Vec<f64> = self.u.iter().chain(&self.v).copied().collect();
-        let f0 = contact.rate(0.0, &y0);
+        let f0 = match known {
+            Some(acc) => self.v.iter().chain(acc).copied().collect(),
+            None => contact.rate(0.0, &y0),
+        };
         let fastest = 1.0 / self.layout.rate;
         let guess = match self.next_contact_step {
             h if h > 0.0 => h,
