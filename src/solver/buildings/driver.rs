@@ -328,12 +328,6 @@ pub fn run_row_from(
     Ok(drive(twin, ground, options, cache, (false, resume))?.0)
 }
 
-/// The linear maps of one row's configurations, kept from run to run: a
-/// study runs the same row under many records, whose configurations and
-/// sub-step lengths recur. A map is a function of its key (configuration,
-/// h, σ) and of the row alone, so a run takes bit for bit the steps it
-/// takes with a fresh cache; only the count of maps it made is smaller.
-/// Given another row, the cache starts afresh.
 /// Every floor's |ü + ü_g| polynomial on a series step, order by order
 /// ([`Series::absolute_accelerations`]), each floor's bound on it over the
 /// step, and [`poly::bound_lanes`]' chains: buffers reused from step to
@@ -345,6 +339,12 @@ struct Accelerations {
     chains: Vec<f64>,
 }
 
+/// The linear maps of one row's configurations, kept from run to run: a
+/// study runs the same row under many records, whose configurations and
+/// sub-step lengths recur. A map is a function of its key (configuration,
+/// h, σ) and of the row alone, so a run takes bit for bit the steps it
+/// takes with a fresh cache; only the count of maps it made is smaller.
+/// Given another row, the cache starts afresh.
 #[derive(Debug, Default)]
 pub struct MapCache {
     row: Option<Row>,
