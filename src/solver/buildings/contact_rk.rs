@@ -517,7 +517,7 @@ impl<'a, G: Fn(f64) -> f64> Contact<'a, G> {
             g.at(u, v, &step.f1[n..])
         };
         // Past the root, or on it where g reads the displacements alone.
-        let displacements = g.on_v.iter().all(|&(_, w)| w == 0.0);
+        let displacements = !g.reads_velocities();
         let past = |gs: f64| gs > 0.0 || (displacements && gs == 0.0);
         let resolved = |step: &Step<Vec<f64>>, gs: f64| {
             let (u, _) = step.y1.split_at(n);

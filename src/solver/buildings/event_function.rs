@@ -46,6 +46,12 @@ impl EventFunction {
         out[0] += self.constant;
     }
 
+    /// Whether g reads a velocity (unloading, the Jankowski law's switch, a
+    /// damper's reversal) rather than displacements alone.
+    pub fn reads_velocities(&self) -> bool {
+        self.on_v.iter().any(|&(_, w)| w != 0.0)
+    }
+
     /// g at the state (u, u̇).
     pub fn value(&self, u: &[f64], v: &[f64]) -> f64 {
         let mut g = self.constant;

@@ -167,12 +167,10 @@ pub fn magnitude_bound(c: &[f64], s: f64) -> f64 {
 pub fn magnitude_bound_lanes(c: &[f64], s: f64, chains: &mut Vec<f64>, out: &mut [f64]) {
     let lanes = out.len();
     debug_assert!(c.len() >= 3 * lanes && c.len().is_multiple_of(lanes.max(1)));
-    if c.len() > 3 * lanes {
-        bound_lanes(&c[3 * lanes..], s, chains, out);
-    } else {
-        out.fill(0.0);
-    }
     let tail = c.len() > 3 * lanes;
+    if tail {
+        bound_lanes(&c[3 * lanes..], s, chains, out);
+    }
     for (l, bound) in out.iter_mut().enumerate() {
         let (top, bottom) = quadratic_range(&[c[l], c[lanes + l], c[2 * lanes + l]], s);
         let tail = if tail { *bound * s * s * s } else { 0.0 };
@@ -630,17 +628,31 @@ mod tests {
             (6, _) => 5e-324 * k as f64,
             _ => ((lane * 7 + k * 13) as f64).sin() * 10f64.powi((k % 9) as i32 - 4),
         };
+        each_lane_is_its_own(LANES, 0..=41, coefficient, bound_lanes, bound);
+    }
+
+    /// Lanes side by side ([`bound_lanes`]' layout) of `lanes`
+    /// polynomials, each of every length in `lengths` (coefficient k of
+    /// lane l `coefficient(l, k)`), for s from 0 to past 1: each lane's
+    /// `side_by_side` result is `one` of its own coefficients to the bit.
+    fn each_lane_is_its_own(
+        lanes: usize,
+        lengths: std::ops::RangeInclusive<usize>,
+        coefficient: impl Fn(usize, usize) -> f64,
+        side_by_side: Lanes,
+        one: fn(&[f64], f64) -> f64,
+    ) {
         let mut chains = Vec::new();
-        for len in 0..=41 {
+        for len in lengths {
             let columns: Vec<Vec<f64>> = (0..len)
-                .map(|k| (0..LANES).map(|lane| coefficient(lane, k)).collect())
+                .map(|k| (0..lanes).map(|lane| coefficient(lane, k)).collect())
                 .collect();
             for s in [0.0, 1e-3, 0.37, 1.0, 2.5] {
-                let mut out = [7.0; LANES];
-                bound_lanes(&columns.concat(), s, &mut chains, &mut out);
+                let mut out = vec![7.0; lanes];
+                side_by_side(&columns.concat(), s, &mut chains, &mut out);
                 for (lane, got) in out.iter().enumerate() {
                     let c: Vec<f64> = (0..len).map(|k| coefficient(lane, k)).collect();
-                    let want = bound(&c, s);
+                    let want = one(&c, s);
                     assert_eq!(
                         got.to_bits(),
                         want.to_bits(),
@@ -650,6 +662,9 @@ mod tests {
             }
         }
     }
+
+    /// A bound of many polynomials side by side, as [`bound_lanes`].
+    type Lanes = fn(&[f64], f64, &mut Vec<f64>, &mut [f64]);
 
     /// Side by side, each lane's magnitude bound is [`magnitude_bound`] of
     /// its own coefficients to the bit, for every length from 3 to 41 and
@@ -665,25 +680,13 @@ mod tests {
             (5, _) => 5e-324 * k as f64,
             _ => ((lane * 5 + k * 11) as f64).cos() * 10f64.powi((k % 7) as i32 - 3),
         };
-        let mut chains = Vec::new();
-        for len in 3..=41 {
-            let columns: Vec<Vec<f64>> = (0..len)
-                .map(|k| (0..LANES).map(|lane| coefficient(lane, k)).collect())
-                .collect();
-            for s in [0.0, 1e-3, 0.37, 1.0, 2.5] {
-                let mut out = [7.0; LANES];
-                magnitude_bound_lanes(&columns.concat(), s, &mut chains, &mut out);
-                for (lane, got) in out.iter().enumerate() {
-                    let c: Vec<f64> = (0..len).map(|k| coefficient(lane, k)).collect();
-                    let want = magnitude_bound(&c, s);
-                    assert_eq!(
-                        got.to_bits(),
-                        want.to_bits(),
-                        "len {len}, lane {lane}, s {s}"
-                    );
-                }
-            }
-        }
+        each_lane_is_its_own(
+            LANES,
+            3..=41,
+            coefficient,
+            magnitude_bound_lanes,
+            magnitude_bound,
+        );
     }
 
     #[test]

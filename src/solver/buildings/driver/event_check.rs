@@ -19,7 +19,7 @@ impl Run<'_> {
     /// 1e-9 of the motion's scales `scale` (displacement, velocity).
     pub(super) fn check_event(&self, g: &EventFunction, scale: (f64, f64)) {
         let value = g.value(&self.u, &self.v);
-        let size = if g.on_v.iter().any(|&(_, w)| w != 0.0) {
+        let size = if g.reads_velocities() {
             scale.1
         } else {
             scale.0
